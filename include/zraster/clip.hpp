@@ -1,0 +1,79 @@
+// Clipping in homogeneous clip space with the Sutherland-Hodgman algorithm
+// (Sutherland & Hodgman 1974, "Reentrant polygon clipping"; Blinn & Newell 1978, "Clipping using
+// homogeneous coordinates").
+//
+// Clipping happens before the perspective divide, where the view volume is convex and linear:
+// a vertex is inside plane p when dot(p, v) >= 0. That handles triangles crossing w = 0 or lying
+// partly behind the eye exactly: no division by a vanishing w ever happens on a kept vertex.
+//
+// Cost: O(vertices x planes) per polygon; only triangles that cross a plane pay it, the others
+// are accepted or rejected from their vertex outcodes.
+#pragma once
+#include <zraster/camera.hpp>
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <cstdint>
+#include <span>
+
+namespace zraster {
+
+// Bits of a clip-space outcode: which planes a vertex is outside of.
+enum ClipPlaneBit : std::uint32_t {
+    kClipDepthMin = 1u << 0,  // z >= -w (OpenGL) or z >= 0 (zero-to-one)
+    kClipDepthMax = 1u << 1,  // z <= w
+    kClipLeft = 1u << 2,  // guard band planes
+    kClipRight = 1u << 3,
+    kClipBottom = 1u << 4,
+    kClipTop = 1u << 5,
+    kClipUser0 = 1u << 6,  // user planes 0..kMaxUserClipPlanes-1
+};
+inline constexpr int kMaxUserClipPlanes = 6;
+
+// A vertex of a clipped polygon: its clip-space position and its barycentric weights relative to
+// the original triangle, so any vertex attribute can be recovered as sum(weights[i] * attr[i])
+// without carrying attributes through the clipper.
+struct ClipVertex {
+    glm::vec4 position;
+    glm::vec3 weights;
+};
+
+// A triangle clipped by up to 2 + 4 + kMaxUserClipPlanes planes has at most 3 + that many
+// vertices.
+inline constexpr int kMaxClippedVertices = 3 + 2 + 4 + kMaxUserClipPlanes;
+
+struct ClippedPolygon {
+    std::array<ClipVertex, kMaxClippedVertices> vertices;
+    int count = 0;
+};
+
+struct ClipSettings {
+    ClipDepthRange depth_range = ClipDepthRange::NegativeOneToOne;
+    // Guard band half-extent in NDC units (kGuardBand / (viewport half size)); vertices within
+    // |x| <= guard_x * w and |y| <= guard_y * w need no x/y clipping.
+    float guard_x = 1.0f;
+    float guard_y = 1.0f;
+    int user_plane_count = 0;
+};
+
+// Outcode of one vertex. user_distances holds the vertex's signed distance to each user plane
+// (inside when >= 0).
+std::uint32_t clip_outcode(const glm::vec4& v, const ClipSettings& settings,
+                           std::span<const float> user_distances);
+
+// Clips triangle (v[0], v[1], v[2]) against every plane named in `planes` (a mask of
+// ClipPlaneBit). user_distances[k][i] is vertex i's distance to user plane k.
+// Result: a convex polygon (count may be 0). Intersections on an edge are always computed from
+// the inside vertex towards the outside one, so two triangles sharing an edge produce
+// bit-identical new vertices on it (no cracks after clipping).
+void clip_triangle(const std::array<glm::vec4, 3>& v, std::uint32_t planes,
+                   const ClipSettings& settings,
+                   std::span<const std::array<float, 3>> user_distances, ClippedPolygon& out);
+
+// Sutherland-Hodgman against one homogeneous plane (keep dot(plane, v) >= 0); the building block,
+// also usable on its own. Writes at most in.size() + 1 vertices to out and returns the count.
+int clip_polygon_against_plane(std::span<const ClipVertex> in, const glm::vec4& plane,
+                               std::span<ClipVertex> out);
+
+}  // namespace zraster

@@ -1,0 +1,109 @@
+// Triangle setup and coverage: fixed-point vertices, exact integer edge functions (Pineda 1988,
+// "A parallel algorithm for polygon rasterization"), the top-left fill rule, and plane equations
+// for depth and perspective-correct barycentrics (Heckbert & Moreton 1991).
+//
+// Window coordinates: x to the right, y DOWN (row 0 is the top row of the image), pixel (px, py)
+// has its center at (px + 0.5, py + 0.5). A pixel is covered when its center is strictly inside
+// the triangle, or exactly on a top or left edge (Direct3D's rule, also what GL implementations
+// use): see precision.hpp for the exactness argument and the limits.
+#pragma once
+#include <zraster/camera.hpp>
+#include <zraster/precision.hpp>
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <cstdint>
+
+namespace zraster {
+
+struct Viewport {
+    int width = 0;
+    int height = 0;
+};
+
+enum class CullMode { None, Back, Front };
+enum class FrontFace { CounterClockwise, Clockwise };  // as seen on screen with y up (OpenGL)
+enum class Interpolation {
+    PerspectiveCorrect,  // attributes interpolated through 1/w: right
+    ScreenLinear,        // attributes linear in screen space: wrong under perspective (affine)
+};
+
+// v(px, py) = c + a * (px - origin_x) + b * (py - origin_y), evaluated in float in exactly this
+// order so that a SIMD kernel can reproduce the scalar result bit for bit.
+struct PlaneEquation {
+    float a = 0, b = 0, c = 0;
+    float at(int dx, int dy) const {
+        return (c + a * static_cast<float>(dx)) + b * static_cast<float>(dy);
+    }
+};
+
+struct TriangleSetup {
+    // Snapped window positions in 1/kSubpixelScale pixels (y down), in input order.
+    std::array<std::int64_t, 3> x{}, y{};
+    // Edge functions over pixel indices, E_k(px, py) = a[k] * px + b[k] * py + c[k], positive
+    // inside; c[k] already includes the fill-rule bias (-1 on edges that are not top or left),
+    // so a pixel is covered iff all three are >= 0.
+    std::array<std::int64_t, 3> edge_a{}, edge_b{}, edge_c{};
+    // Inclusive pixel bounding box, clipped to the viewport; the plane equations' origin.
+    int min_x = 0, min_y = 0, max_x = -1, max_y = -1;
+    bool front_facing = true;
+    // Window depth (clamped to [0, 1] by the user), and the perspective-correct barycentric
+    // numerators: q = sum(lambda_i / w_i), p1 = lambda_1 / w_1, p2 = lambda_2 / w_2 (scaled by a
+    // common factor), so beta_1 = p1 / q, beta_2 = p2 / q. l1, l2 are the screen-linear
+    // barycentrics lambda_1, lambda_2. All relative to input vertex order.
+    PlaneEquation depth, q, p1, p2, l1, l2;
+};
+
+enum class SetupResult {
+    Visible,      // covers at least the bounding box of one pixel center
+    Degenerate,   // zero area after snapping
+    Culled,       // back- (or front-) facing per the cull mode
+    NoCoverage,   // its bounding box contains no pixel center inside the viewport
+};
+
+struct SetupSettings {
+    Viewport viewport;
+    ClipDepthRange depth_range = ClipDepthRange::NegativeOneToOne;
+    CullMode cull = CullMode::Back;
+    FrontFace front_face = FrontFace::CounterClockwise;
+};
+
+// Snaps a window-space position to the fixed-point grid. Window x = (ndc_x + 1) / 2 * width,
+// y = (1 - ndc_y) / 2 * height (flipped so row 0 is the top).
+std::array<std::int64_t, 2> snap_to_grid(const glm::dvec2& window);
+
+// Sets up a triangle whose clip-space vertices all lie inside the guard band with w > 0 (what
+// the clipper guarantees). Divides by w, maps to the viewport, snaps, orients the edges, applies
+// the fill rule and the cull mode, and computes the plane equations.
+SetupResult setup_triangle(const std::array<glm::vec4, 3>& clip, const SetupSettings& settings,
+                           TriangleSetup& out);
+
+// Barycentric weights of the input vertices at pixel (px, py) of a set-up triangle.
+glm::vec3 barycentrics(const TriangleSetup& t, int px, int py, Interpolation interpolation);
+
+// Window depth at pixel (px, py), clamped to [0, 1].
+float depth_at(const TriangleSetup& t, int px, int py);
+
+// Calls fn(px, py) for every covered pixel of t inside [x0, x1) x [y0, y1), row by row, left to
+// right. This is the reference (scalar) coverage loop: every faster kernel must agree with it.
+template <class Fn>
+void for_each_covered_pixel(const TriangleSetup& t, int x0, int y0, int x1, int y1, Fn&& fn) {
+    const int bx0 = x0 > t.min_x ? x0 : t.min_x;
+    const int by0 = y0 > t.min_y ? y0 : t.min_y;
+    const int bx1 = x1 - 1 < t.max_x ? x1 - 1 : t.max_x;
+    const int by1 = y1 - 1 < t.max_y ? y1 - 1 : t.max_y;
+    for (int py = by0; py <= by1; ++py) {
+        std::int64_t e0 = t.edge_a[0] * bx0 + t.edge_b[0] * py + t.edge_c[0];
+        std::int64_t e1 = t.edge_a[1] * bx0 + t.edge_b[1] * py + t.edge_c[1];
+        std::int64_t e2 = t.edge_a[2] * bx0 + t.edge_b[2] * py + t.edge_c[2];
+        for (int px = bx0; px <= bx1; ++px) {
+            if ((e0 | e1 | e2) >= 0) fn(px, py);
+            e0 += t.edge_a[0];
+            e1 += t.edge_a[1];
+            e2 += t.edge_a[2];
+        }
+    }
+}
+
+}  // namespace zraster

@@ -1,0 +1,100 @@
+// The Renderer: one frame of a Scene through the whole pipeline.
+//
+//   instances --frustum cull--> vertex stage --assemble/cull--> clip --> setup --> bin into
+//   tiles --> per tile, in parallel: coverage, depth test, shading --> targets
+//
+// Tiles own their pixels and process their triangles in submission order, so the images are
+// bit-identical for any thread count.
+#pragma once
+#include <zraster/camera.hpp>
+#include <zraster/depth_buffer.hpp>
+#include <zraster/lighting.hpp>
+#include <zraster/raster.hpp>
+#include <zraster/scene.hpp>
+#include <zraster/texture.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace zraster {
+
+struct RenderOptions {
+    int width = 1920;
+    int height = 1080;
+    int threads = 0;  // 0: all hardware threads
+
+    // No camera: fit_camera() over the scene's world-space vertices (the benchmark framing).
+    std::optional<Camera> camera;
+
+    ShadingMode shading = ShadingMode::Phong;
+    LightingModel lighting;
+    TextureFilter texture_filter = TextureFilter::Trilinear;
+    Interpolation interpolation = Interpolation::PerspectiveCorrect;
+    bool textures = true;
+    // Back faces are lit with the negated normal (two-sided lighting), as the benchmark shader does.
+    bool two_sided_lighting = true;
+
+    CullMode cull = CullMode::Back;
+    FrontFace front_face = FrontFace::CounterClockwise;
+
+    DepthFormat depth_format = DepthFormat::D32F;
+    // Unset: LESS, or GREATER with a reversed-Z camera.
+    std::optional<CompareFunc> depth_compare;
+    bool depth_test = true;
+    bool depth_write = true;
+
+    // World-space planes (n.x, n.y, n.z, d): points with dot(n, p) + d >= 0 are kept.
+    std::vector<glm::vec4> clip_planes;
+
+    glm::vec3 background{0.2f, 0.2f, 0.2f};  // 0..1
+
+    // Which targets to produce; depth is always kept.
+    bool color_target = true;
+    bool normal_target = false;
+    bool id_targets = false;
+    // Per-pixel counts of front- and back-facing fragments that passed the depth test
+    // (with depth_test = false: every fragment): the watertightness check.
+    bool coverage_counts = false;
+};
+
+struct RenderTargets {
+    int width = 0, height = 0;
+    // All rows top to bottom.
+    std::vector<std::uint8_t> color;        // RGBA8
+    std::vector<float> depth;               // window-space depth as stored (decoded)
+    std::vector<glm::vec3> normal;          // world-space shading normal, (0,0,0) where empty
+    std::vector<std::int32_t> instance_id;  // -1 where empty
+    std::vector<std::int32_t> primitive_id; // triangle index within its mesh, -1 where empty
+    std::vector<std::uint32_t> front_hits, back_hits;
+};
+
+struct RenderStats {
+    std::uint64_t instances = 0, instances_frustum_culled = 0;
+    std::uint64_t triangles_in = 0;
+    std::uint64_t triangles_trivially_rejected = 0;  // all vertices outside one plane
+    std::uint64_t triangles_non_finite = 0;          // NaN/Inf vertex: dropped
+    std::uint64_t triangles_clipped = 0;             // went through the clipper
+    std::uint64_t triangles_backface_culled = 0;
+    std::uint64_t triangles_degenerate = 0;
+    std::uint64_t triangles_no_coverage = 0;  // no pixel center in their bounding box
+    std::uint64_t triangles_rasterized = 0;   // set up and binned (after clipping: pieces)
+    std::uint64_t fragments_shaded = 0;
+    Camera camera;  // the camera actually used
+    double setup_ms = 0, raster_ms = 0, total_ms = 0;
+};
+
+struct RenderResult {
+    RenderTargets targets;
+    RenderStats stats;
+};
+
+// Renders one frame. Throws InputError for unusable options (size out of range, more user clip
+// planes than supported, a non-finite camera).
+RenderResult render(const Scene& scene, const RenderOptions& options);
+
+// The options' effective depth compare function and clear value.
+CompareFunc effective_depth_compare(const RenderOptions& options);
+float depth_clear_value(const RenderOptions& options);
+
+}  // namespace zraster

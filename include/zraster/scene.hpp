@@ -1,0 +1,37 @@
+// A scene: meshes, their materials, instances placing them in the world, lights.
+#pragma once
+#include <zraster/lighting.hpp>
+#include <zraster/mesh.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace zraster {
+
+struct Instance {
+    std::uint32_t mesh = 0;
+    glm::mat4 transform{1.0f};  // object to world
+    std::optional<ShadingMode> shading;  // overrides the render option for this instance
+    std::string name;
+};
+
+struct Scene {
+    std::vector<Mesh> meshes;
+    std::vector<Material> materials{Material{}};  // index 0 is the default material
+    std::vector<Instance> instances;
+    std::vector<std::string> warnings;  // non-fatal problems found while loading
+    std::string source;                 // file name or builtin name, for messages
+
+    // World-space bounds of all instances (each mesh box transformed).
+    Bounds3f bounds() const;
+    // World-space positions of every instanced vertex (for exact camera fitting).
+    std::vector<glm::vec3> world_positions() const;
+    std::size_t triangle_count() const;  // over instances
+    std::size_t vertex_count() const;    // over instances
+};
+
+// A scene with one instance (identity transform) of each mesh.
+Scene scene_from_meshes(std::vector<Mesh> meshes);
+
+}  // namespace zraster

@@ -1,0 +1,55 @@
+// Procedural scenes: the benchmark scenes of BENCH-SCENES.md (bit-exact generators), simple
+// primitives, and the built-in default scene.
+#pragma once
+#include <zraster/camera.hpp>
+#include <zraster/scene.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace zraster {
+
+// splitmix64 (Steele, Lea, Flood 2014), exactly as BENCH-SCENES.md specifies.
+struct SplitMix64 {
+    std::uint64_t state;
+    explicit SplitMix64(std::uint64_t seed) : state(seed) {}
+    std::uint64_t next() {
+        std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+        return z ^ (z >> 31);
+    }
+    double unit() { return double(next() >> 11) * 0x1.0p-53; }  // [0, 1), exact
+    double uniform(double a, double b) { return a + (b - a) * unit(); }
+};
+
+// The benchmark generators: exactly the geometry of BENCH-SCENES.md (checked by geometry_hash).
+Mesh make_bench_sphere(long n);
+Mesh make_bench_city(long n, std::uint64_t seed = 1);
+Mesh make_bench_soup(long n, std::uint64_t seed = 1);
+
+// FNV-1a 64 over the float32 little-endian x, y, z bytes of the 3 corners of every triangle in
+// draw order (BENCH-SCENES.md).
+std::uint64_t geometry_hash(const Mesh& mesh);
+
+// Primitives with normals and UVs, counter-clockwise front faces seen from outside.
+Mesh make_uv_sphere(float radius, int stacks, int slices);
+Mesh make_box(const glm::vec3& half_extent);
+Mesh make_torus(float major_radius, float minor_radius, int rings, int sides);
+// A square in the xz plane facing +y, side `size`, UVs repeated `uv_repeat` times.
+Mesh make_ground_plane(float size, float uv_repeat);
+
+// True if spec names a procedural scene: "sphere:N", "city:N[:SEED]", "soup:N[:SEED]" or
+// "builtin:NAME".
+bool is_procedural_spec(std::string_view spec);
+// Builds the scene for such a spec; throws InputError for a malformed spec or absurd N.
+// builtin names: "default" (the showcase scene), "sphere", "cube".
+Scene make_procedural_scene(std::string_view spec);
+
+// The recommended camera for a builtin scene, framed for a 16:9 image: for "builtin:default" a
+// low eye looking slightly down, the ground receding to the horizon. nullopt for other specs
+// (frame those with fit_camera).
+std::optional<Camera> builtin_camera(std::string_view spec);
+
+}  // namespace zraster

@@ -1,0 +1,29 @@
+#include "io/input_file_check.hpp"
+
+#include <zraster/error.hpp>
+
+#include <cerrno>
+#include <fstream>
+#include <system_error>
+
+namespace zraster::io {
+
+std::uintmax_t check_input_file(const std::filesystem::path& path, std::uintmax_t max_bytes) {
+    const std::string name = path.string();
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (!std::filesystem::exists(status)) throw InputError(name, "file not found");
+    if (!std::filesystem::is_regular_file(status)) throw InputError(name, "not a regular file");
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (ec) throw InputError(name, "cannot read: " + ec.message());
+    if (size == 0) throw InputError(name, "empty file");
+    if (size > max_bytes)
+        throw InputError(name, "file too large (" + std::to_string(size) + " bytes, limit " +
+                                   std::to_string(max_bytes) + ")");
+    // Assimp only says it cannot open the file; find out why first.
+    std::ifstream probe(path, std::ios::binary);
+    if (!probe) throw InputError(name, "cannot read: " + std::generic_category().message(errno));
+    return size;
+}
+
+}  // namespace zraster::io

@@ -1,0 +1,103 @@
+// The Renderer: joins the stages for one frame (see include/zraster/render.hpp).
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <thread>
+
+#include <zraster/error.hpp>
+
+#include "render/frame.hpp"
+
+namespace zraster {
+
+CompareFunc effective_depth_compare(const RenderOptions& options) {
+    if (options.depth_compare) return *options.depth_compare;
+    const bool reversed = options.camera && options.camera->reversed_z;
+    return reversed ? CompareFunc::Greater : CompareFunc::Less;
+}
+
+float depth_clear_value(const RenderOptions& options) {
+    const bool reversed = options.camera && options.camera->reversed_z;
+    return reversed ? 0.0f : 1.0f;
+}
+
+namespace {
+
+bool finite(const glm::dvec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+void validate(const RenderOptions& options) {
+    if (options.width < 1 || options.height < 1 || options.width > kMaxViewport ||
+        options.height > kMaxViewport)
+        throw InputError("", "image size " + std::to_string(options.width) + "x" +
+                                 std::to_string(options.height) + " out of range (1.." +
+                                 std::to_string(kMaxViewport) + " per side)");
+    if (options.clip_planes.size() > std::size_t(kMaxUserClipPlanes))
+        throw InputError("", "at most " + std::to_string(kMaxUserClipPlanes) +
+                                 " user clip planes are supported");
+    if (options.threads < 0) throw InputError("", "thread count must be >= 0");
+    if (options.camera) {
+        const Camera& c = *options.camera;
+        if (!finite(c.eye) || !finite(c.target) || !finite(c.up) || !std::isfinite(c.near) ||
+            !std::isfinite(c.far) || !std::isfinite(c.fovy_degrees))
+            throw InputError("", "camera parameters must be finite");
+        if (glm::length(c.target - c.eye) == 0.0)
+            throw InputError("", "camera eye and target coincide");
+        if (glm::length(glm::cross(c.target - c.eye, c.up)) == 0.0)
+            throw InputError("", "camera up vector is parallel to the view direction");
+        if (!(c.near > 0.0) || (!c.infinite_far && !(c.far > c.near)))
+            throw InputError("", "camera needs 0 < near < far");
+        if (c.projection == Camera::Projection::Perspective &&
+            !(c.fovy_degrees > 0.0 && c.fovy_degrees < 180.0))
+            throw InputError("", "field of view must be in (0, 180) degrees");
+    }
+}
+
+}  // namespace
+
+RenderResult render(const Scene& scene, const RenderOptions& options) {
+    validate(options);
+    const auto start = std::chrono::steady_clock::now();
+    RenderResult result;
+    detail::Frame frame;
+    frame.scene = &scene;
+    frame.options = &options;
+    frame.camera = options.camera ? *options.camera : fit_camera(scene.world_positions());
+    frame.eye = glm::vec3(frame.camera.eye);
+    const glm::dvec3 axis = frame.camera.eye - frame.camera.target;
+    frame.view_axis = glm::vec3(glm::normalize(axis));
+    frame.clip_settings.depth_range = frame.camera.clip_depth_range();
+    frame.clip_settings.guard_x = static_cast<float>(kGuardBand / (0.5 * options.width));
+    frame.clip_settings.guard_y = static_cast<float>(kGuardBand / (0.5 * options.height));
+    frame.clip_settings.user_plane_count = static_cast<int>(options.clip_planes.size());
+    frame.setup_settings.viewport = {options.width, options.height};
+    frame.setup_settings.depth_range = frame.camera.clip_depth_range();
+    frame.setup_settings.cull = options.cull;
+    frame.setup_settings.front_face = options.front_face;
+    result.stats.camera = frame.camera;
+
+    const int threads = options.threads > 0
+                            ? options.threads
+                            : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+        detail::run_vertex_stage(frame, result.stats);
+        detail::assemble_and_setup(frame, result.stats);
+        const auto setup_done = std::chrono::steady_clock::now();
+        result.stats.setup_ms =
+            std::chrono::duration<double, std::milli>(setup_done - start).count();
+        detail::rasterize_tiles(frame, result.targets, result.stats);
+        result.stats.raster_ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - setup_done)
+                .count();
+    });
+    result.stats.total_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace zraster

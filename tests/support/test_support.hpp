@@ -1,0 +1,26 @@
+// Helpers shared by the test suites: where the shared meshes live, and skipping when they do not.
+#pragma once
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+namespace zraster::test {
+
+// Path of a file under ../shared/data (e.g. "meshes/obj/bunny.obj").
+std::filesystem::path shared_data(const std::string& relative);
+
+// True when ../shared/data is beside the repository (it is in CI, not in a user's clone).
+bool have_shared_data();
+
+// A fresh, empty directory for one test's output files.
+std::filesystem::path temp_dir(const std::string& name);
+
+}  // namespace zraster::test
+
+// Skips the current test with a clear message when ../shared/data is absent.
+#define ZRASTER_REQUIRE_SHARED_DATA()                                                        \
+    do {                                                                                     \
+        if (!::zraster::test::have_shared_data())                                            \
+            GTEST_SKIP() << "../shared/data is absent (a bare clone): skipping this test";   \
+    } while (0)

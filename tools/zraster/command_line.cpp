@@ -1,0 +1,67 @@
+#include "command_line.hpp"
+
+#include <zraster/load.hpp>
+#include <zraster/scenes.hpp>
+
+#include <charconv>
+#include <cmath>
+#include <vector>
+
+namespace zraster::cli {
+namespace {
+
+std::vector<double> parse_numbers(const std::string& option, const std::string& text,
+                                  std::size_t count, const char* shape) {
+    std::vector<double> values;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t comma = std::min(text.find(',', start), text.size());
+        const std::string piece = text.substr(start, comma - start);
+        double v = 0.0;
+        const auto [end, ec] = std::from_chars(piece.data(), piece.data() + piece.size(), v);
+        if (piece.empty() || ec != std::errc() || end != piece.data() + piece.size())
+            throw InputError(option, "expected " + std::string(shape) + ", got '" + text + "'");
+        if (!std::isfinite(v)) throw InputError(option, "values must be finite, got '" + text + "'");
+        values.push_back(v);
+        start = comma + 1;
+    }
+    if (values.size() != count)
+        throw InputError(option, "expected " + std::string(shape) + ", got '" + text + "'");
+    return values;
+}
+
+}  // namespace
+
+glm::dvec3 parse_vec3(const std::string& option, const std::string& text) {
+    const auto v = parse_numbers(option, text, 3, "X,Y,Z");
+    return {v[0], v[1], v[2]};
+}
+
+glm::dvec4 parse_vec4(const std::string& option, const std::string& text) {
+    const auto v = parse_numbers(option, text, 4, "A,B,C,D");
+    return {v[0], v[1], v[2], v[3]};
+}
+
+glm::ivec2 parse_size(const std::string& option, const std::string& text, int limit) {
+    const std::size_t x = text.find('x');
+    int w = 0, h = 0;
+    bool ok = x != std::string::npos;
+    if (ok) {
+        const auto r1 = std::from_chars(text.data(), text.data() + x, w);
+        const auto r2 = std::from_chars(text.data() + x + 1, text.data() + text.size(), h);
+        ok = r1.ec == std::errc() && r1.ptr == text.data() + x && r2.ec == std::errc() &&
+             r2.ptr == text.data() + text.size();
+    }
+    if (!ok) throw InputError(option, "expected WIDTHxHEIGHT, got '" + text + "'");
+    if (w < 1 || h < 1 || w > limit || h > limit)
+        throw InputError(option, "size " + text + " out of range (1.." + std::to_string(limit) +
+                                     " per side)");
+    return {w, h};
+}
+
+Scene load_scene_or_procedural(const std::string& spec) {
+    if (is_procedural_spec(spec)) return make_procedural_scene(spec);
+    return load_scene(spec);
+}
+
+}  // namespace zraster::cli

@@ -1,0 +1,25 @@
+// Shared pieces of the zraster command: value parsers and exit codes.
+#pragma once
+#include <zraster/error.hpp>
+#include <zraster/scene.hpp>
+
+#include <glm/glm.hpp>
+
+#include <string>
+
+namespace zraster::cli {
+
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitInternal = 1;
+inline constexpr int kExitBadInput = 2;
+
+// "X,Y,Z" -> vec3; throws InputError naming the option on malformed or non-finite values.
+glm::dvec3 parse_vec3(const std::string& option, const std::string& text);
+glm::dvec4 parse_vec4(const std::string& option, const std::string& text);
+// "WxH" with 1 <= W, H <= limit.
+glm::ivec2 parse_size(const std::string& option, const std::string& text, int limit);
+
+// A mesh file path, or a procedural spec (builtin:NAME, sphere:N, city:N[:SEED], soup:N[:SEED]).
+Scene load_scene_or_procedural(const std::string& spec);
+
+}  // namespace zraster::cli

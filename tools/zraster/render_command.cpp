@@ -1,0 +1,237 @@
+// `zraster render`: a scene to a PNG, with optional depth, normal and id outputs.
+#include "render_command.hpp"
+
+#include <zraster/depth_buffer.hpp>
+#include <zraster/image_io.hpp>
+#include <zraster/render.hpp>
+#include <zraster/scenes.hpp>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+
+#include "command_line.hpp"
+#include "output_maps.hpp"
+
+namespace zraster::cli {
+
+void add_render_command(CLI::App& app, RenderArguments& a) {
+    CLI::App* cmd = app.add_subcommand("render", "Render a mesh file or a procedural scene to a PNG");
+    add_render_arguments(*cmd, a);
+    cmd->add_option("-o,--output", a.output, "Output PNG (color)")->capture_default_str();
+    cmd->add_option("--depth-out", a.depth_out,
+                    "Depth map: .npy (float32, HxW, window depth in [0,1], 1 = empty) or .png "
+                    "(16-bit gray)");
+    cmd->add_option("--normal-out", a.normal_out, "World-space normals as PNG (n * 0.5 + 0.5)");
+    cmd->add_option("--id-out", a.id_out,
+                    "Instance/primitive ids: .npy (int32 primitive id, -1 empty) or .png "
+                    "(false color by instance and primitive)");
+    cmd->add_flag("--stats", a.print_stats, "Print pipeline statistics");
+}
+
+void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
+    cmd.add_option("scene", a.scene,
+                   "Mesh file (OBJ, PLY, STL, glTF/GLB, 3DS, OFF, ...) or builtin:default, "
+                   "builtin:sphere, builtin:cube, sphere:N, city:N[:SEED], soup:N[:SEED]")
+        ->capture_default_str();
+    cmd.add_option("--size", a.size, "Image size WIDTHxHEIGHT")->capture_default_str();
+    cmd.add_option("--threads", a.threads, "Worker threads (0: all cores)")->capture_default_str();
+    cmd.add_option("--eye", a.eye, "Camera position X,Y,Z (default: frame the bounding sphere)");
+    cmd.add_option("--target", a.target, "Point looked at X,Y,Z");
+    cmd.add_option("--up", a.up, "Up vector X,Y,Z")->capture_default_str();
+    cmd.add_option("--orbit", a.orbit,
+                   "Orbit camera AZIMUTH,ELEVATION,DISTANCE (degrees, degrees, scene radii) around "
+                   "the scene center");
+    cmd.add_option("--fovy", a.fovy, "Vertical field of view in degrees");
+    cmd.add_option("--near", a.near, "Near plane distance");
+    cmd.add_option("--far", a.far, "Far plane distance");
+    cmd.add_flag("--ortho", a.ortho, "Orthographic projection (frames the bounding sphere)");
+    cmd.add_flag("--reversed-z", a.reversed_z, "Reversed-Z projection (near->1, far->0, GREATER)");
+    cmd.add_flag("--infinite-far", a.infinite_far, "Far plane at infinity");
+    cmd.add_option("--shading", a.shading, "flat|gouraud|phong")
+        ->check(CLI::IsMember({"flat", "gouraud", "phong"}))
+        ->capture_default_str();
+    cmd.add_option("--reflection", a.reflection, "Specular model: blinn-phong|phong")
+        ->check(CLI::IsMember({"blinn-phong", "phong"}))
+        ->capture_default_str();
+    cmd.add_flag("--infinite-viewer", a.infinite_viewer,
+                 "Constant view direction for specular (default: local viewer)");
+    cmd.add_option("--light-dir", a.light_dirs,
+                   "Directional light towards the light X,Y,Z (repeatable; default "
+                   "-1/3,2/3,2/3)");
+    cmd.add_option("--point-light", a.point_lights, "Point light position X,Y,Z (repeatable)");
+    cmd.add_option("--cull", a.cull, "Face culling back|front|none")
+        ->check(CLI::IsMember({"back", "front", "none"}))
+        ->capture_default_str();
+    cmd.add_flag("--no-cull", a.no_cull, "Same as --cull none");
+    cmd.add_option("--front-face", a.front_face, "Front-face winding ccw|cw")
+        ->check(CLI::IsMember({"ccw", "cw"}))
+        ->capture_default_str();
+    cmd.add_option("--depth-format", a.depth_format, "d32f|d24|d16")
+        ->check(CLI::IsMember({"d32f", "d24", "d16"}))
+        ->capture_default_str();
+    cmd.add_option("--depth-compare", a.depth_compare,
+                   "never|less|lequal|equal|notequal|gequal|greater|always (default less, "
+                   "greater with --reversed-z)")
+        ->check(CLI::IsMember(
+            {"never", "less", "lequal", "equal", "notequal", "gequal", "greater", "always"}));
+    cmd.add_flag("--no-depth-test", a.no_depth_test, "Disable the depth test");
+    cmd.add_flag("--no-depth-write", a.no_depth_write, "Do not write depth");
+    cmd.add_option("--interpolation", a.interpolation,
+                   "perspective|linear (linear = screen-space, shows affine texture warping)")
+        ->check(CLI::IsMember({"perspective", "linear"}))
+        ->capture_default_str();
+    cmd.add_option("--texture-filter", a.texture_filter, "nearest|bilinear|trilinear")
+        ->check(CLI::IsMember({"nearest", "bilinear", "trilinear"}))
+        ->capture_default_str();
+    cmd.add_flag("--no-textures", a.no_textures, "Ignore textures");
+    cmd.add_option("--clip-plane", a.clip_planes,
+                   "User clip plane A,B,C,D in world space, keeps Ax+By+Cz+D >= 0 (repeatable)");
+    cmd.add_option("--background", a.background, "Background color R,G,B (0-255)")
+        ->capture_default_str();
+}
+
+namespace {
+
+Camera make_camera(const RenderArguments& a, const Scene& scene, double aspect) {
+    Camera camera;
+    if (auto builtin = builtin_camera(a.scene)) camera = *builtin;
+    else camera = fit_camera(scene.world_positions());
+    const BoundingSphere sphere = bounding_sphere(scene.world_positions());
+    const double radius = sphere.radius > 0.0 ? sphere.radius : 1.0;
+    if (!a.orbit.empty()) {
+        const glm::dvec3 o = parse_vec3("--orbit", a.orbit);
+        if (!(o.z > 0.0)) throw InputError("--orbit", "distance must be positive");
+        const double distance = o.z * radius;
+        camera = orbit_camera(sphere.center, distance, o.x, o.y, camera.fovy_degrees);
+        camera.near = std::max(distance - 1.01 * radius, distance * 1e-3);
+        camera.far = distance + 1.01 * radius;
+    }
+    if (!a.eye.empty()) camera.eye = parse_vec3("--eye", a.eye);
+    if (!a.target.empty()) camera.target = parse_vec3("--target", a.target);
+    camera.up = parse_vec3("--up", a.up);
+    if (!a.eye.empty() || !a.target.empty()) {
+        // Near/far from the bounding sphere as seen from the new eye, unless given.
+        const double d = glm::length(sphere.center - camera.eye);
+        camera.near = std::max(d - 1.01 * radius, std::max(d + 1.01 * radius, 1e-6) * 1e-4);
+        camera.far = d + 1.01 * radius;
+    }
+    if (a.fovy) camera.fovy_degrees = *a.fovy;
+    if (a.near) camera.near = *a.near;
+    if (a.far) camera.far = *a.far;
+    camera.reversed_z = a.reversed_z;
+    camera.infinite_far = a.infinite_far;
+    if (a.ortho) {
+        camera.projection = Camera::Projection::Orthographic;
+        camera.ortho_height = 2.0 * radius;
+        (void)aspect;
+    }
+    return camera;
+}
+
+}  // namespace
+
+RenderOptions make_render_options(const RenderArguments& a, const Scene& scene) {
+    RenderOptions o;
+    const glm::ivec2 size = parse_size("--size", a.size, kMaxViewport);
+    o.width = size.x;
+    o.height = size.y;
+    if (a.threads < 0) throw InputError("--threads", "must be >= 0");
+    o.threads = a.threads;
+    o.camera = make_camera(a, scene, double(o.width) / double(o.height));
+    const std::map<std::string, ShadingMode> shading{
+        {"flat", ShadingMode::Flat}, {"gouraud", ShadingMode::Gouraud}, {"phong", ShadingMode::Phong}};
+    o.shading = shading.at(a.shading);
+    o.lighting.reflection =
+        a.reflection == "phong" ? ReflectionModel::Phong : ReflectionModel::BlinnPhong;
+    o.lighting.local_viewer = !a.infinite_viewer;
+    if (!a.light_dirs.empty() || !a.point_lights.empty()) o.lighting.lights.clear();
+    for (const std::string& text : a.light_dirs) {
+        Light light;
+        const glm::dvec3 d = parse_vec3("--light-dir", text);
+        if (glm::length(d) == 0.0) throw InputError("--light-dir", "direction must be non-zero");
+        light.direction = glm::vec3(glm::normalize(d));
+        o.lighting.lights.push_back(light);
+    }
+    for (const std::string& text : a.point_lights) {
+        Light light;
+        light.type = Light::Type::Point;
+        light.position = glm::vec3(parse_vec3("--point-light", text));
+        o.lighting.lights.push_back(light);
+    }
+    o.cull = a.no_cull || a.cull == "none" ? CullMode::None
+             : a.cull == "front"           ? CullMode::Front
+                                           : CullMode::Back;
+    o.front_face = a.front_face == "cw" ? FrontFace::Clockwise : FrontFace::CounterClockwise;
+    parse_depth_format(a.depth_format, o.depth_format);
+    if (!a.depth_compare.empty()) {
+        CompareFunc f{};
+        parse_compare_func(a.depth_compare, f);
+        o.depth_compare = f;
+    }
+    o.depth_test = !a.no_depth_test;
+    o.depth_write = !a.no_depth_write;
+    o.interpolation = a.interpolation == "linear" ? Interpolation::ScreenLinear
+                                                  : Interpolation::PerspectiveCorrect;
+    o.texture_filter = a.texture_filter == "nearest"    ? TextureFilter::Nearest
+                       : a.texture_filter == "bilinear" ? TextureFilter::Bilinear
+                                                        : TextureFilter::Trilinear;
+    o.textures = !a.no_textures;
+    for (const std::string& text : a.clip_planes)
+        o.clip_planes.push_back(glm::vec4(parse_vec4("--clip-plane", text)));
+    const glm::dvec3 bg = parse_vec3("--background", a.background);
+    if (glm::any(glm::lessThan(bg, glm::dvec3(0.0))) || glm::any(glm::greaterThan(bg, glm::dvec3(255.0))))
+        throw InputError("--background", "components must be in 0..255");
+    o.background = glm::vec3(bg / 255.0);
+    return o;
+}
+
+int run_render(const RenderArguments& a) {
+    const Scene scene = load_scene_or_procedural(a.scene);
+    for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
+    RenderOptions options = make_render_options(a, scene);
+    options.normal_target = !a.normal_out.empty();
+    options.id_targets = !a.id_out.empty();
+    const RenderResult result = render(scene, options);
+    const RenderTargets& t = result.targets;
+
+    // RGBA -> RGB: the alpha channel is always opaque.
+    std::vector<std::uint8_t> rgb(std::size_t(t.width) * std::size_t(t.height) * 3);
+    for (std::size_t i = 0, n = rgb.size() / 3; i < n; ++i)
+        std::copy_n(&t.color[i * 4], 3, &rgb[i * 3]);
+    write_png8(a.output, t.width, t.height, 3, rgb);
+    if (!a.depth_out.empty()) write_depth_map(a.depth_out, t);
+    if (!a.normal_out.empty()) write_normal_map(a.normal_out, t);
+    if (!a.id_out.empty()) {
+        std::vector<std::int64_t> first_triangle;
+        std::int64_t total = 0;
+        for (const Instance& instance : scene.instances) {
+            first_triangle.push_back(total);
+            total += static_cast<std::int64_t>(scene.meshes[instance.mesh].triangle_count());
+        }
+        write_id_map(a.id_out, t, first_triangle);
+    }
+
+    if (a.print_stats) {
+        const RenderStats& s = result.stats;
+        fmt::print("scene {}: {} instances ({} frustum-culled), {} triangles in\n", a.scene,
+                   s.instances, s.instances_frustum_culled, s.triangles_in);
+        fmt::print("  trivially rejected {}, clipped {}, back-face culled {}, degenerate {}, "
+                   "no pixel covered {}, non-finite {}, rasterized {}\n",
+                   s.triangles_trivially_rejected, s.triangles_clipped,
+                   s.triangles_backface_culled, s.triangles_degenerate, s.triangles_no_coverage,
+                   s.triangles_non_finite, s.triangles_rasterized);
+        fmt::print("  fragments shaded {}; setup {:.1f} ms, raster {:.1f} ms, total {:.1f} ms\n",
+                   s.fragments_shaded, s.setup_ms, s.raster_ms, s.total_ms);
+        fmt::print("  camera eye ({:.6g}, {:.6g}, {:.6g}) target ({:.6g}, {:.6g}, {:.6g}) near "
+                   "{:.6g} far {:.6g}\n",
+                   s.camera.eye.x, s.camera.eye.y, s.camera.eye.z, s.camera.target.x,
+                   s.camera.target.y, s.camera.target.z, s.camera.near, s.camera.far);
+    }
+    return kExitOk;
+}
+
+}  // namespace zraster::cli
