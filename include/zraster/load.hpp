@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <string>
 
 namespace zraster {
 
@@ -21,5 +22,11 @@ struct LoadOptions {
 // Throws InputError (one line naming the file and the cause) for a missing or unreadable file,
 // an unknown format, malformed or truncated content, no triangles, or NaN/Inf coordinates.
 Scene load_scene(const std::filesystem::path& path, const LoadOptions& options = {});
+
+// A human-readable summary (for `zraster info`), one item per line, each line ending in '\n':
+// source, meshes (name, triangles, vertices, material, mesh-space bounds), instances, totals
+// over instances, exact world bounds, materials (name, base color, texture size) and warnings.
+// Long lists are cut after 50 entries with a count of the rest.
+std::string describe_scene(const Scene& scene);
 
 }  // namespace zraster

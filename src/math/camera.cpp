@@ -19,9 +19,13 @@ glm::dvec3 normalize_by_length(const glm::dvec3& v) {
     return {v.x / length, v.y / length, v.z / length};
 }
 
-double dot3(const glm::dvec3& a, const glm::dvec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+double dot3(const glm::dvec3& a, const glm::dvec3& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 
-double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+double radians(double degrees) {
+    return degrees * std::numbers::pi / 180.0;
+}
 
 }  // namespace
 
@@ -41,7 +45,9 @@ glm::dmat4 look_at(const glm::dvec3& eye, const glm::dvec3& target, const glm::d
     return m;
 }
 
-glm::dmat4 Camera::view() const { return look_at(eye, target, up); }
+glm::dmat4 Camera::view() const {
+    return look_at(eye, target, up);
+}
 
 glm::dmat4 Camera::projection_matrix(double aspect) const {
     if (projection == Projection::Orthographic) {
@@ -85,7 +91,8 @@ Camera fit_camera(std::span<const glm::vec3> world_points, double fovy_degrees) 
         }
         center = (lo + hi) / 2.0;
         double r2 = 0.0;
-        for (const glm::vec3& p : world_points) r2 = std::max(r2, dot3(glm::dvec3(p) - center, glm::dvec3(p) - center));
+        for (const glm::vec3& p : world_points)
+            r2 = std::max(r2, dot3(glm::dvec3(p) - center, glm::dvec3(p) - center));
         radius = std::sqrt(r2);
     }
     if (!(radius > 0.0) || !std::isfinite(radius)) radius = 1.0;

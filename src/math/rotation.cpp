@@ -24,12 +24,18 @@ struct Axes {
 
 Axes axes_of(EulerOrder order) {
     switch (order) {
-        case EulerOrder::XYZ: return {0, 1, 2, 1.0};
-        case EulerOrder::YZX: return {1, 2, 0, 1.0};
-        case EulerOrder::ZXY: return {2, 0, 1, 1.0};
-        case EulerOrder::XZY: return {0, 2, 1, -1.0};
-        case EulerOrder::YXZ: return {1, 0, 2, -1.0};
-        case EulerOrder::ZYX: return {2, 1, 0, -1.0};
+        case EulerOrder::XYZ:
+            return {0, 1, 2, 1.0};
+        case EulerOrder::YZX:
+            return {1, 2, 0, 1.0};
+        case EulerOrder::ZXY:
+            return {2, 0, 1, 1.0};
+        case EulerOrder::XZY:
+            return {0, 2, 1, -1.0};
+        case EulerOrder::YXZ:
+            return {1, 0, 2, -1.0};
+        case EulerOrder::ZYX:
+            return {2, 1, 0, -1.0};
     }
     return {0, 1, 2, 1.0};
 }
@@ -37,7 +43,7 @@ Axes axes_of(EulerOrder order) {
 glm::dmat3 axis_rotation(int axis, double angle) {
     const double c = std::cos(angle), s = std::sin(angle);
     const int a = (axis + 1) % 3, b = (axis + 2) % 3;  // the plane rotated, a towards b
-    glm::dmat3 m(1.0);                                  // m[column][row]
+    glm::dmat3 m(1.0);                                 // m[column][row]
     m[a][a] = c;
     m[b][b] = c;
     m[a][b] = s;
@@ -126,8 +132,7 @@ glm::vec3 matrix_to_euler(const glm::mat3& mf, EulerOrder order) {
     // c from R_k(c) = M R_i(a)^T R_j(b)^T, so that c is consistent with the a found (this stays
     // accurate near the lock, where c from e(i,i), e(j,i) alone would be noise over cos b).
     const double sa = std::sin(a), ca = std::cos(a);
-    const double c =
-        std::atan2(sa * e(i, k) - p * ca * e(i, j), ca * e(j, j) - p * sa * e(j, k));
+    const double c = std::atan2(sa * e(i, k) - p * ca * e(i, j), ca * e(j, j) - p * sa * e(j, k));
     glm::vec3 out;
     out[i] = float(a);
     out[j] = float(b);
@@ -161,13 +166,17 @@ glm::quat axis_angle_to_quat(const AxisAngle& aa) {
     return q;
 }
 
-AxisAngle quat_to_axis_angle(const glm::quat& q) { return dquat_to_axis_angle(glm::dquat(q)); }
+AxisAngle quat_to_axis_angle(const glm::quat& q) {
+    return dquat_to_axis_angle(glm::dquat(q));
+}
 
 glm::mat3 quat_to_matrix(const glm::quat& q) {
     return glm::mat3(glm::mat3_cast(glm::normalize(glm::dquat(q))));
 }
 
-glm::quat matrix_to_quat(const glm::mat3& m) { return glm::quat(matrix_to_dquat(glm::dmat3(m))); }
+glm::quat matrix_to_quat(const glm::mat3& m) {
+    return glm::quat(matrix_to_dquat(glm::dmat3(m)));
+}
 
 glm::quat euler_to_quat(const glm::vec3& angles, EulerOrder order) {
     const Axes a = axes_of(order);

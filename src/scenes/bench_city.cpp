@@ -19,8 +19,7 @@ void add_quad(Mesh& mesh, const glm::dvec3& q0, const glm::dvec3& q1, const glm:
         mesh.positions.push_back(glm::vec3(q));
         mesh.normals.push_back(normal);
     }
-    mesh.indices.insert(mesh.indices.end(),
-                        {base, base + 1, base + 2, base, base + 2, base + 3});
+    mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
 }
 
 }  // namespace

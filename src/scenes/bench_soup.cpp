@@ -32,8 +32,8 @@ Mesh make_bench_soup(long n, std::uint64_t seed) {
         }
         // From the stored float positions, so the normal matches the triangle actually drawn.
         const glm::dvec3 a{mesh.positions[base]};
-        const glm::dvec3 n_raw =
-            glm::cross(glm::dvec3(mesh.positions[base + 1]) - a, glm::dvec3(mesh.positions[base + 2]) - a);
+        const glm::dvec3 n_raw = glm::cross(glm::dvec3(mesh.positions[base + 1]) - a,
+                                            glm::dvec3(mesh.positions[base + 2]) - a);
         const double len = std::sqrt(glm::dot(n_raw, n_raw));
         const glm::vec3 normal = len > 0 ? glm::vec3(n_raw / len) : glm::vec3(0, 1, 0);
         mesh.normals.insert(mesh.normals.end(), {normal, normal, normal});

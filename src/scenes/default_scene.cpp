@@ -76,14 +76,13 @@ Scene make_default_scene() {
     add_instance(scene, ground_mesh, translation(0.0f, 0.0f, -25.0f), "ground");
 
     const glm::mat4 box =
-        glm::rotate(translation(-3.2f, 0.7f, -2.2f), glm::radians(25.0f), glm::vec3(0, 1, 0));
+        glm::rotate(translation(-3.2f, 0.7f, -2.2f), glm::radians(-30.0f), glm::vec3(0, 1, 0));
     add_instance(scene, box_mesh, box, "box");
     // Standing upright (ring in the xy plane), its left arc through the box, its bottom through
     // the ground.
-    const glm::mat4 torus =
-        glm::rotate(glm::rotate(translation(-2.25f, 0.95f, -2.1f), glm::radians(-20.0f),
-                                glm::vec3(0, 1, 0)),
-                    glm::radians(90.0f), glm::vec3(1, 0, 0));
+    const glm::mat4 torus = glm::rotate(
+        glm::rotate(translation(-2.25f, 0.95f, -2.1f), glm::radians(-20.0f), glm::vec3(0, 1, 0)),
+        glm::radians(90.0f), glm::vec3(1, 0, 0));
     add_instance(scene, torus_mesh, torus, "torus");
 
     add_instance(scene, big_sphere, translation(3.0f, 0.45f, -2.4f), "sunken_sphere");

@@ -65,9 +65,9 @@ Mesh make_box(const glm::vec3& half_extent) {
         glm::vec3 normal, right, up;  // cross(right, up) = normal: counter-clockwise outside
     };
     static constexpr Face faces[6] = {
-        {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}},  {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},
-        {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}},  {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},
-        {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},   {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}},
+        {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}}, {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},
+        {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}}, {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},
+        {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},  {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}},
     };
     // Bottom left, bottom right, top right, top left; v = 0 is the image's top row.
     static constexpr float corner_right[4] = {-1, 1, 1, -1};
@@ -80,7 +80,8 @@ Mesh make_box(const glm::vec3& half_extent) {
         const auto base = std::uint32_t(mesh.positions.size());
         for (int k = 0; k < 4; ++k) {
             // Every coordinate is exactly +-half_extent, so shared corners coincide exactly.
-            const glm::vec3 unit = face.normal + corner_right[k] * face.right + corner_up[k] * face.up;
+            const glm::vec3 unit =
+                face.normal + corner_right[k] * face.right + corner_up[k] * face.up;
             mesh.positions.push_back(unit * half_extent);
             mesh.normals.push_back(face.normal);
             mesh.uvs.push_back(corner_uv[k]);

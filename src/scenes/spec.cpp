@@ -73,8 +73,8 @@ Scene make_builtin_scene(std::string_view spec) {
 
 // A prefix is enough: "sphere:abc" is a malformed spec to report as such, not a file to look for.
 bool is_procedural_spec(std::string_view spec) {
-    return has_prefix(spec, "sphere:") || has_prefix(spec, "city:") ||
-           has_prefix(spec, "soup:") || has_prefix(spec, "builtin:");
+    return has_prefix(spec, "sphere:") || has_prefix(spec, "city:") || has_prefix(spec, "soup:") ||
+           has_prefix(spec, "builtin:");
 }
 
 Scene make_procedural_scene(std::string_view spec) {
@@ -89,12 +89,9 @@ Scene make_procedural_scene(std::string_view spec) {
 
     const std::uint64_t limit = kind == "city" ? max_boxes_spec : max_triangles_spec;
     std::uint64_t n = 0;
-    switch (parse_unsigned(parts[1], n)) {
-        case ParseResult::Malformed: throw InputError(file, malformed_message);
-        case ParseResult::OutOfRange: n = 0; break;  // reported just below
-        case ParseResult::Ok: break;
-    }
-    if (n < 1 || n > limit)
+    const ParseResult parsed = parse_unsigned(parts[1], n);
+    if (parsed == ParseResult::Malformed) throw InputError(file, malformed_message);
+    if (parsed == ParseResult::OutOfRange || n < 1 || n > limit)
         throw InputError(file, "N out of range (1.." + std::to_string(limit) + ")");
 
     std::uint64_t seed = 1;

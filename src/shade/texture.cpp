@@ -27,8 +27,7 @@ Footprint footprint(std::int64_t x, std::int64_t in_size, std::int64_t out_size)
     return {int(x * in_size / out_size), int(((x + 1) * in_size - 1) / out_size)};
 }
 
-std::uint64_t overlap(std::int64_t s, std::int64_t x, std::int64_t in_size,
-                      std::int64_t out_size) {
+std::uint64_t overlap(std::int64_t s, std::int64_t x, std::int64_t in_size, std::int64_t out_size) {
     const std::int64_t lo = std::max(s * out_size, x * in_size);
     const std::int64_t hi = std::min((s + 1) * out_size, (x + 1) * in_size);
     return std::uint64_t(hi - lo);
@@ -66,7 +65,9 @@ float wrap_unit(float u) {
     return f >= 0.0f && f <= 1.0f ? f : 0.0f;
 }
 
-glm::vec4 lerp4(const glm::vec4& a, const glm::vec4& b, float t) { return a + (b - a) * t; }
+glm::vec4 lerp4(const glm::vec4& a, const glm::vec4& b, float t) {
+    return a + (b - a) * t;
+}
 
 }  // namespace
 
@@ -74,7 +75,8 @@ Texture::Texture(int width, int height, std::span<const std::uint8_t> rgba) {
     if (width <= 0 || height <= 0) throw std::invalid_argument("Texture: non-positive size");
     const std::size_t bytes = std::size_t(width) * std::size_t(height) * 4;
     if (rgba.size() < bytes) throw std::invalid_argument("Texture: rgba buffer too short");
-    levels_.push_back({width, height, std::vector<std::uint8_t>(rgba.begin(), rgba.begin() + bytes)});
+    levels_.push_back(
+        {width, height, std::vector<std::uint8_t>(rgba.begin(), rgba.begin() + bytes)});
     while (levels_.back().width > 1 || levels_.back().height > 1) {
         const Level& in = levels_.back();
         const int nw = std::max(1, in.width / 2), nh = std::max(1, in.height / 2);
@@ -83,11 +85,21 @@ Texture::Texture(int width, int height, std::span<const std::uint8_t> rgba) {
     }
 }
 
-int Texture::width() const { return levels_.front().width; }
-int Texture::height() const { return levels_.front().height; }
-int Texture::levels() const { return int(levels_.size()); }
-int Texture::level_width(int level) const { return levels_.at(std::size_t(level)).width; }
-int Texture::level_height(int level) const { return levels_.at(std::size_t(level)).height; }
+int Texture::width() const {
+    return levels_.front().width;
+}
+int Texture::height() const {
+    return levels_.front().height;
+}
+int Texture::levels() const {
+    return int(levels_.size());
+}
+int Texture::level_width(int level) const {
+    return levels_.at(std::size_t(level)).width;
+}
+int Texture::level_height(int level) const {
+    return levels_.at(std::size_t(level)).height;
+}
 
 glm::vec4 Texture::texel(int level, int x, int y) const {
     const Level& l = levels_[std::size_t(std::clamp(level, 0, levels() - 1))];
@@ -100,7 +112,7 @@ glm::vec4 Texture::texel(int level, int x, int y) const {
 }
 
 float Texture::level_of_detail(glm::vec2 duv_dx, glm::vec2 duv_dy) const {
-    const glm::vec2 size(float(width()), float(height()));
+    const glm::vec2 size{float(width()), float(height())};
     const float rho = std::max(glm::length(duv_dx * size), glm::length(duv_dy * size));
     return std::log2(rho);  // -inf for a zero footprint: clamped to level 0 by the samplers
 }
@@ -156,8 +168,10 @@ glm::vec4 Texture::sample_trilinear(glm::vec2 uv, float lod) const {
 glm::vec4 Texture::sample(glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy,
                           TextureFilter filter) const {
     switch (filter) {
-        case TextureFilter::Nearest: return sample_nearest(uv, 0);
-        case TextureFilter::Bilinear: return sample_bilinear(uv, 0);
+        case TextureFilter::Nearest:
+            return sample_nearest(uv, 0);
+        case TextureFilter::Bilinear:
+            return sample_bilinear(uv, 0);
         case TextureFilter::Trilinear:
             return sample_trilinear(uv, level_of_detail(duv_dx, duv_dy));
     }

@@ -25,8 +25,8 @@ TEST(DefaultScene, Contents) {
         ASSERT_LT(i.mesh, s.meshes.size());
         if (i.shading) modes.insert(*i.shading);
     }
-    EXPECT_EQ(modes, (std::set<ShadingMode>{ShadingMode::Flat, ShadingMode::Gouraud,
-                                            ShadingMode::Phong}));
+    EXPECT_EQ(modes,
+              (std::set<ShadingMode>{ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong}));
 
     bool textured = false;
     for (const Mesh& m : s.meshes) {

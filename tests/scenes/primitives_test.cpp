@@ -38,7 +38,8 @@ void expect_closed_and_oriented(const Mesh& m) {
     for (std::size_t t = 0; t < m.indices.size(); t += 3) {
         const std::uint32_t w[3] = {weld[m.indices[t]], weld[m.indices[t + 1]],
                                     weld[m.indices[t + 2]]};
-        ASSERT_TRUE(w[0] != w[1] && w[1] != w[2] && w[2] != w[0]) << "degenerate triangle " << t / 3;
+        ASSERT_TRUE(w[0] != w[1] && w[1] != w[2] && w[2] != w[0])
+            << "degenerate triangle " << t / 3;
         for (int k = 0; k < 3; ++k) ++directed[{w[k], w[(k + 1) % 3]}];
     }
     for (const auto& [edge, count] : directed) {

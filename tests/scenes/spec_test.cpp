@@ -26,7 +26,8 @@ TEST(ProceduralSpec, Recognized) {
     for (const char* spec : {"sphere:100", "city:5", "city:5:9", "soup:3:1", "builtin:default",
                              "builtin:cube", "sphere:oops"})
         EXPECT_TRUE(is_procedural_spec(spec)) << spec;
-    for (const char* spec : {"bunny.obj", "sphere", "spheres:1", "", "meshes/city:1.obj", "Sphere:1"})
+    for (const char* spec :
+         {"bunny.obj", "sphere", "spheres:1", "", "meshes/city:1.obj", "Sphere:1"})
         EXPECT_FALSE(is_procedural_spec(spec)) << spec;
 }
 

@@ -6,7 +6,10 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <exception>
+#include <string>
+#include <vector>
 #include <new>
 
 #include "command_line.hpp"
@@ -22,8 +25,13 @@ int main(int argc, char** argv) {
     InfoArguments info_args;
     add_info_command(app, info_args);
 
+    // `zraster -o x.png --size ...` means `zraster render -o x.png --size ...`.
+    std::vector<std::string> args(argv + 1, argv + argc);
+    if (!args.empty() && args[0].starts_with("-") && args[0] != "-h" && args[0] != "--help")
+        args.insert(args.begin(), "render");
+    std::reverse(args.begin(), args.end());  // CLI11 takes a reversed vector
     try {
-        app.parse(argc, argv);
+        app.parse(args);
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
     } catch (const CLI::CallForAllHelp& e) {

@@ -189,7 +189,39 @@ RenderOptions make_render_options(const RenderArguments& a, const Scene& scene) 
     return o;
 }
 
+namespace {
+
+std::string lower_extension(const std::string& path) {
+    std::string e = std::filesystem::path(path).extension().string();
+    for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return e;
+}
+
+// Checks every output path before any work, so a bad one fails without leaving other outputs.
+void validate_output(const std::string& path, std::initializer_list<const char*> extensions,
+                     const char* what) {
+    if (path.empty()) return;
+    const std::string ext = lower_extension(path);
+    bool ok = false;
+    std::string names;
+    for (const char* e : extensions) {
+        ok |= ext == e;
+        names += names.empty() ? e : std::string(" or ") + e;
+    }
+    if (!ok) throw InputError(path, std::string(what) + " must end in " + names);
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    if (!parent.empty() && !std::filesystem::is_directory(parent))
+        throw InputError(path, "cannot write: directory '" + parent.string() + "' does not exist");
+    if (std::filesystem::is_directory(path)) throw InputError(path, "cannot write: is a directory");
+}
+
+}  // namespace
+
 int run_render(const RenderArguments& a) {
+    validate_output(a.output, {".png"}, "the color output");
+    validate_output(a.depth_out, {".npy", ".png"}, "the depth output");
+    validate_output(a.normal_out, {".png"}, "the normal output");
+    validate_output(a.id_out, {".npy", ".png"}, "the id output");
     const Scene scene = load_scene_or_procedural(a.scene);
     for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
     RenderOptions options = make_render_options(a, scene);

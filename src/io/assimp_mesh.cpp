@@ -1,0 +1,95 @@
+#include "io/assimp_mesh.hpp"
+
+#include <zraster/error.hpp>
+
+#include "io/weld_vertices.hpp"
+
+#include <assimp/mesh.h>
+
+#include <cmath>
+
+namespace zraster::io {
+
+namespace {
+
+bool finite(const aiVector3D& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// File normals are used when usable: unit length after normalisation. Returns false when some
+// are not (zero or non-finite); those are replaced by computed ones.
+bool copy_normals(const aiMesh& source, Mesh& mesh) {
+    bool all_valid = true;
+    mesh.normals.resize(source.mNumVertices);
+    for (unsigned v = 0; v < source.mNumVertices; ++v) {
+        const aiVector3D& n = source.mNormals[v];
+        const float length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+        if (finite(n) && std::isfinite(length) && length > 0.0f) {
+            mesh.normals[v] = glm::vec3(n.x, n.y, n.z) / length;
+        } else {
+            mesh.normals[v] = glm::vec3(std::nanf(""));
+            all_valid = false;
+        }
+    }
+    return all_valid;
+}
+
+}  // namespace
+
+Mesh convert_mesh(const aiMesh& source, const MeshConversion& how,
+                  std::vector<std::string>& warnings) {
+    const std::string& label = how.label;
+    const std::string& file = how.file;
+    Mesh mesh;
+    mesh.name = source.mName.C_Str();
+    const unsigned count = source.mNumVertices;
+
+    mesh.positions.reserve(count);
+    for (unsigned v = 0; v < count; ++v) {
+        const aiVector3D& p = source.mVertices[v];
+        if (!finite(p))
+            throw InputError(file, "non-finite vertex coordinates (mesh " + label + ", vertex " +
+                                       std::to_string(v) + ")");
+        mesh.positions.emplace_back(p.x, p.y, p.z);
+    }
+
+    mesh.indices.reserve(std::size_t{source.mNumFaces} * 3);
+    for (unsigned f = 0; f < source.mNumFaces; ++f) {
+        const aiFace& face = source.mFaces[f];
+        if (face.mNumIndices != 3) continue;  // points and lines: not drawn
+        for (unsigned k = 0; k < 3; ++k) {
+            if (face.mIndices[k] >= count)
+                throw InputError(file, "vertex index out of range (mesh " + label + ", face " +
+                                           std::to_string(f) + ")");
+            mesh.indices.push_back(face.mIndices[k]);
+        }
+    }
+
+    if (source.HasTextureCoords(0)) {
+        bool replaced = false;
+        mesh.uvs.reserve(count);
+        for (unsigned v = 0; v < count; ++v) {
+            const aiVector3D& t = source.mTextureCoords[0][v];
+            const bool ok = std::isfinite(t.x) && std::isfinite(t.y);
+            replaced |= !ok;
+            mesh.uvs.push_back(ok ? glm::vec2(t.x, t.y) : glm::vec2(0.0f));
+        }
+        if (replaced)
+            warnings.push_back("mesh " + label +
+                               ": non-finite texture coordinates replaced by (0, 0)");
+    }
+
+    if (source.HasNormals()) {
+        if (!copy_normals(source, mesh)) {
+            const std::vector<glm::vec3> computed = normals_over_shared_positions(mesh);
+            for (std::size_t v = 0; v < mesh.normals.size(); ++v)
+                if (std::isnan(mesh.normals[v].x)) mesh.normals[v] = computed[v];
+        }
+    }
+    if (how.weld) weld_identical_vertices(mesh);
+    if (mesh.normals.empty()) mesh.normals = normals_over_shared_positions(mesh);
+    update_bounds(mesh);
+    return mesh;
+}
+
+}  // namespace zraster::io

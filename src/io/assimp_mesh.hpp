@@ -1,0 +1,26 @@
+// One triangulated Assimp mesh to a zraster Mesh: positions, unit normals (computed when the file
+// has none), uv channel 0, indices and bounds.
+#pragma once
+#include <zraster/mesh.hpp>
+
+#include <string>
+#include <vector>
+
+struct aiMesh;
+
+namespace zraster::io {
+
+struct MeshConversion {
+    std::string label;  // names the mesh in messages
+    std::string file;   // for InputError
+    // Merge bitwise-equal vertices: Assimp's OBJ importer emits one vertex per face corner,
+    // which other importers do not, so OBJ meshes get their sharing back this way.
+    bool weld = false;
+};
+
+// Throws InputError for non-finite positions or indices out of range; non-finite uvs are zeroed
+// with a warning cause appended to `warnings`.
+Mesh convert_mesh(const aiMesh& source, const MeshConversion& how,
+                  std::vector<std::string>& warnings);
+
+}  // namespace zraster::io

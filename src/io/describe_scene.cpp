@@ -1,0 +1,101 @@
+// The text `zraster info` prints about a scene.
+#include <zraster/load.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace zraster {
+
+namespace {
+
+constexpr std::size_t kMaxListed = 50;
+
+std::string number(double v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.4g", v);
+    return buffer;
+}
+
+std::string vec(const glm::vec3& v) {
+    return "(" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + ")";
+}
+
+std::string box(const Bounds3f& b) {
+    if (b.empty()) return "empty";
+    return vec(b.lo) + " - " + vec(b.hi);
+}
+
+std::string transform_text(const glm::mat4& m) {
+    if (m == glm::mat4(1.0f)) return "identity";
+    glm::mat4 translation(1.0f);
+    translation[3] = m[3];
+    if (m == translation) return "translation " + vec(glm::vec3(m[3]));
+    std::string out = "matrix [";
+    for (int row = 0; row < 4; ++row) {
+        out += row ? "; " : "";
+        for (int col = 0; col < 4; ++col) out += (col ? " " : "") + number(m[col][row]);
+    }
+    return out + "]";
+}
+
+std::string quoted(const std::string& s) { return "'" + s + "'"; }
+
+// Exact: the box of the transformed vertices (Scene::bounds transforms boxes, which is larger
+// under rotation).
+Bounds3f exact_world_bounds(const Scene& scene) {
+    Bounds3f b;
+    for (const Instance& instance : scene.instances) {
+        if (instance.mesh >= scene.meshes.size()) continue;
+        for (const glm::vec3& p : scene.meshes[instance.mesh].positions) {
+            const glm::vec4 q = instance.transform * glm::vec4(p, 1.0f);
+            b.extend(glm::vec3(q) / q.w);
+        }
+    }
+    return b;
+}
+
+template <typename Item>
+void list(std::string& out, const char* title, const std::vector<Item>& items, auto describe) {
+    out += std::string(title) + ": " + std::to_string(items.size()) + "\n";
+    for (std::size_t i = 0; i < items.size() && i < kMaxListed; ++i)
+        out += "  " + describe(i, items[i]) + "\n";
+    if (items.size() > kMaxListed)
+        out += "  ... and " + std::to_string(items.size() - kMaxListed) + " more\n";
+}
+
+}  // namespace
+
+std::string describe_scene(const Scene& scene) {
+    std::string out = "source: " + scene.source + "\n";
+    list(out, "meshes", scene.meshes, [&](std::size_t i, const Mesh& m) {
+        std::string material = std::to_string(m.material);
+        if (m.material < scene.materials.size())
+            material += " " + quoted(scene.materials[m.material].name);
+        return "mesh " + std::to_string(i) + " " + quoted(m.name) + ": " +
+               std::to_string(m.triangle_count()) + " triangles, " +
+               std::to_string(m.vertex_count()) + " vertices, material " + material +
+               ", bounds " + box(m.bounds);
+    });
+    list(out, "instances", scene.instances, [&](std::size_t i, const Instance& instance) {
+        return "instance " + std::to_string(i) + " " + quoted(instance.name) + ": mesh " +
+               std::to_string(instance.mesh) + ", " + transform_text(instance.transform);
+    });
+    out += "total: " + std::to_string(scene.triangle_count()) + " triangles, " +
+           std::to_string(scene.vertex_count()) + " vertices (over instances)\n";
+    out += "world bounds: " + box(exact_world_bounds(scene)) + "\n";
+    list(out, "materials", scene.materials, [&](std::size_t i, const Material& m) {
+        std::string texture = "none";
+        if (m.base_color_texture)
+            texture = std::to_string(m.base_color_texture->width()) + "x" +
+                      std::to_string(m.base_color_texture->height());
+        return "material " + std::to_string(i) + " " + quoted(m.name) + ": base color " +
+               vec(m.base_color) + ", texture " + texture;
+    });
+    if (!scene.warnings.empty())
+        list(out, "warnings", scene.warnings,
+             [](std::size_t, const std::string& w) { return w; });
+    return out;
+}
+
+}  // namespace zraster

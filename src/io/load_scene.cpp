@@ -1,0 +1,197 @@
+// Scene loading through Assimp: checks before the import, the import itself, and the conversion
+// to zraster's arrays (meshes, materials with textures, node instances).
+#include <zraster/error.hpp>
+#include <zraster/load.hpp>
+
+#include "io/assimp_material.hpp"
+#include "io/assimp_mesh.hpp"
+#include "io/assimp_nodes.hpp"
+#include "io/declared_counts_check.hpp"
+#include "io/input_file_check.hpp"
+#include "io/obj_material_libraries.hpp"
+#include "io/text_util.hpp"
+#include "io/texture_loader.hpp"
+
+#include <assimp/Importer.hpp>
+#include <assimp/config.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <cctype>
+#include <cmath>
+#include <optional>
+#include <set>
+
+namespace zraster {
+
+namespace {
+
+constexpr unsigned kNoMesh = ~0u;
+
+// Faces of three or more corners in the imported (not yet triangulated) scene.
+std::size_t count_polygons(const aiScene& scene) {
+    std::size_t n = 0;
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+        const aiMesh* mesh = scene.mMeshes[m];
+        if (mesh == nullptr || mesh->mFaces == nullptr) continue;
+        for (unsigned f = 0; f < mesh->mNumFaces; ++f)
+            if (mesh->mFaces[f].mNumIndices >= 3 && mesh->mFaces[f].mIndices != nullptr) ++n;
+    }
+    return n;
+}
+
+std::string mesh_label(const aiMesh& mesh, unsigned index) {
+    const std::string name = mesh.mName.C_Str();
+    return name.empty() ? "#" + std::to_string(index) : name;
+}
+
+bool finite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// A node transform can turn finite positions into infinities or NaN. If the transformed box is
+// finite, so is every point in it; otherwise find the first bad vertex for the message.
+void check_instance_finite(const Mesh& mesh, const glm::mat4& transform, const std::string& label,
+                           const std::string& file) {
+    const Bounds3f box = mesh.bounds.transformed(transform);
+    if (finite(box.lo) && finite(box.hi)) return;
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+        const glm::vec4 q = transform * glm::vec4(mesh.positions[v], 1.0f);
+        if (!finite(glm::vec3(q) / q.w))
+            throw InputError(file, "non-finite vertex coordinates (mesh " + label + ", vertex " +
+                                       std::to_string(v) + ")");
+    }
+}
+
+bool is_obj(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return extension == ".obj";
+}
+
+class MaterialTable {
+public:
+    MaterialTable(const aiScene& scene, const std::filesystem::path& path, Scene& out,
+                  std::vector<std::string>& warnings)
+        : scene_(scene), out_(out), warnings_(warnings), textures_(scene, path, warnings),
+          map_(scene.mNumMaterials, kNoMesh) {
+        if (is_obj(path)) {
+            io::ObjMaterialLibraries libraries = io::scan_obj_material_libraries(path);
+            warnings.insert(warnings.end(), libraries.warnings.begin(), libraries.warnings.end());
+            obj_missing_library_ = !libraries.warnings.empty();
+            obj_defined_ = std::move(libraries.defined_materials);
+        }
+    }
+
+    // Our index for an Assimp material, converting it on first use.
+    std::uint32_t index_of(unsigned ai_index) {
+        if (ai_index >= scene_.mNumMaterials || scene_.mMaterials[ai_index] == nullptr) return 0;
+        if (map_[ai_index] != kNoMesh) return map_[ai_index];
+        const aiMaterial& source = *scene_.mMaterials[ai_index];
+        map_[ai_index] = 0;
+        if (io::is_placeholder_material(source)) return 0;
+        const std::string name = io::material_name(source);
+        // Assimp's OBJ importer invents a material for a `usemtl` that no library defines.
+        if (obj_defined_ && !obj_defined_->contains(name)) {
+            if (!obj_missing_library_)
+                warnings_.push_back("material '" + name +
+                                    "' is not defined, using the default material");
+            return 0;
+        }
+        Material material = io::convert_material(source);
+        if (material.name == Material{}.name) material.name = "material " + std::to_string(ai_index);
+        if (auto reference = io::base_color_texture_reference(source))
+            material.base_color_texture = textures_.load(*reference);
+        map_[ai_index] = static_cast<std::uint32_t>(out_.materials.size());
+        out_.materials.push_back(std::move(material));
+        return map_[ai_index];
+    }
+
+private:
+    const aiScene& scene_;
+    Scene& out_;
+    std::vector<std::string>& warnings_;
+    io::TextureLoader textures_;
+    std::vector<unsigned> map_;
+    std::optional<std::set<std::string>> obj_defined_;
+    bool obj_missing_library_ = false;
+};
+
+}  // namespace
+
+Scene load_scene(const std::filesystem::path& path, const LoadOptions& options) {
+    const std::string file = path.string();
+    const std::uintmax_t size = io::check_input_file(path, options.max_file_bytes);
+    io::check_declared_counts(path, size);
+
+    Assimp::Importer importer;
+    // Points and lines are not drawn: drop them while sorting primitives by type.
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                                aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    auto malformed = [&](const std::string& why) {
+        return InputError(file, "unsupported or malformed file: " + io::one_line(why));
+    };
+    const aiScene* ai = nullptr;
+    try {
+        ai = importer.ReadFile(file, 0);
+        if (ai == nullptr) throw malformed(importer.GetErrorString());
+        // Checked before post-processing, which rejects faceless meshes as "invalid".
+        if (count_polygons(*ai) == 0) throw InputError(file, "no triangles");
+        // Validation first: Debian's Assimp keeps its assertions, and triangulating a face with
+        // missing indices (a short OFF body) would abort the process. No vertex joining, no
+        // degenerate removal (the rasterizer handles degenerate triangles), no generated
+        // normals. FlipUVs gives v = 0 at the image's first row, zraster's convention.
+        ai = importer.ApplyPostProcessing(aiProcess_ValidateDataStructure | aiProcess_Triangulate |
+                                          aiProcess_SortByPType | aiProcess_FlipUVs);
+        if (ai == nullptr) throw malformed(importer.GetErrorString());
+    } catch (const std::exception& e) {
+        if (dynamic_cast<const InputError*>(&e)) throw;
+        throw malformed(e.what());
+    }
+
+    const std::vector<io::NodeMesh> placements = io::collect_node_meshes(*ai);
+    std::size_t triangles = 0;
+    std::vector<bool> referenced(ai->mNumMeshes, false);
+    for (const io::NodeMesh& p : placements) {
+        if (p.mesh >= ai->mNumMeshes) throw malformed("node refers to a missing mesh");
+        const aiMesh& mesh = *ai->mMeshes[p.mesh];
+        if (!(mesh.mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
+        triangles += mesh.mNumFaces;
+        referenced[p.mesh] = true;
+    }
+    if (triangles == 0) throw InputError(file, "no triangles");
+    if (triangles > options.max_triangles)
+        throw InputError(file, "too many triangles (" + std::to_string(triangles) + ", limit " +
+                                   std::to_string(options.max_triangles) + ")");
+
+    Scene scene;
+    scene.source = file;
+    std::vector<std::string> warnings;
+    MaterialTable materials(*ai, path, scene, warnings);
+    std::vector<unsigned> our_mesh(ai->mNumMeshes, kNoMesh);
+    std::vector<std::string> labels(ai->mNumMeshes);
+    for (unsigned m = 0; m < ai->mNumMeshes; ++m) {
+        if (!referenced[m]) continue;
+        labels[m] = mesh_label(*ai->mMeshes[m], m);
+        Mesh mesh = io::convert_mesh(*ai->mMeshes[m], {labels[m], file, is_obj(path)}, warnings);
+        if (mesh.indices.empty()) continue;
+        mesh.material = materials.index_of(ai->mMeshes[m]->mMaterialIndex);
+        our_mesh[m] = static_cast<unsigned>(scene.meshes.size());
+        scene.meshes.push_back(std::move(mesh));
+    }
+
+    for (const io::NodeMesh& p : placements) {
+        if (our_mesh[p.mesh] == kNoMesh) continue;
+        const Mesh& mesh = scene.meshes[our_mesh[p.mesh]];
+        check_instance_finite(mesh, p.transform, labels[p.mesh], file);
+        Instance instance;
+        instance.mesh = our_mesh[p.mesh];
+        instance.transform = p.transform;
+        instance.name = p.node_name.empty() ? mesh.name : p.node_name;
+        scene.instances.push_back(std::move(instance));
+    }
+    for (const std::string& w : warnings) scene.warnings.push_back(file + ": " + w);
+    return scene;
+}
+
+}  // namespace zraster

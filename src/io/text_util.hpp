@@ -1,0 +1,30 @@
+// Small string helpers for messages and line-based formats.
+#pragma once
+#include <string>
+#include <string_view>
+
+namespace zraster::io {
+
+inline std::string_view trim(std::string_view s) {
+    const auto space = [](char c) {
+        return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
+    };
+    while (!s.empty() && space(s.front())) s.remove_prefix(1);
+    while (!s.empty() && space(s.back())) s.remove_suffix(1);
+    return s;
+}
+
+// Messages are one line ("FILE: cause"): Assimp's may span several.
+inline std::string one_line(std::string_view s) {
+    std::string out;
+    bool space = false;
+    for (char c : trim(s)) {
+        if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+        if (c == ' ' && space) continue;
+        space = c == ' ';
+        out.push_back(c);
+    }
+    return out;
+}
+
+}  // namespace zraster::io

@@ -1,0 +1,36 @@
+// Base-color textures of a loaded model: embedded ones (glTF binary, data URIs) and image files
+// beside the model. Each image is decoded once and shared by the materials that use it.
+#pragma once
+#include <zraster/texture.hpp>
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+struct aiScene;
+
+namespace zraster::io {
+
+class TextureLoader {
+public:
+    // Problems are appended to `warnings` (as causes, without the model's name).
+    TextureLoader(const aiScene& scene, std::filesystem::path model_path,
+                  std::vector<std::string>& warnings);
+
+    // The texture a material refers to, or null (with a warning) when it is missing or
+    // unreadable: the material's color is used then.
+    std::shared_ptr<const Texture> load(const std::string& reference);
+
+private:
+    std::shared_ptr<const Texture> load_embedded(const std::string& reference);
+    std::shared_ptr<const Texture> load_external(const std::string& reference);
+
+    const aiScene& scene_;
+    std::filesystem::path model_dir_;
+    std::vector<std::string>& warnings_;
+    std::map<std::string, std::shared_ptr<const Texture>> cache_;  // null entries: warned once
+};
+
+}  // namespace zraster::io

@@ -1,0 +1,143 @@
+// The zraster command as a user runs it: exit codes, one-line errors naming the file and the
+// cause, and no output file left behind on failure.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <string>
+
+#include "support/test_support.hpp"
+
+namespace zraster::test {
+namespace {
+
+struct CommandResult {
+    int exit_code;
+    std::string output;  // stdout and stderr
+};
+
+CommandResult run(const std::string& arguments, const std::filesystem::path& cwd = {}) {
+    std::string command;
+    if (!cwd.empty()) command = "cd '" + cwd.string() + "' && ";
+    command += std::string("'") + ZRASTER_CLI + "' " + arguments + " 2>&1 </dev/null";
+    FILE* pipe = popen(command.c_str(), "r");
+    std::string out;
+    std::array<char, 4096> buffer;
+    while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) out.append(buffer.data(), n);
+    const int status = pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+bool single_line(const std::string& s) {
+    return !s.empty() && s.find('\n') == s.size() - 1;
+}
+
+TEST(Cli, NoArgumentsRendersTheDefaultSceneToZrasterPng) {
+    const auto dir = temp_dir("cli-default");
+    const CommandResult plain = run("", dir);
+    ASSERT_EQ(plain.exit_code, 0) << plain.output;
+    EXPECT_TRUE(std::filesystem::exists(dir / "zraster.png"));
+    EXPECT_GT(std::filesystem::file_size(dir / "zraster.png"), 10000u);
+}
+
+TEST(Cli, HelpOnEverySubcommand) {
+    for (const char* sub : {"", "render ", "info "}) {
+        const CommandResult r = run(std::string(sub) + "--help");
+        EXPECT_EQ(r.exit_code, 0) << sub;
+        EXPECT_NE(r.output.find("Usage"), std::string::npos) << sub;
+    }
+}
+
+TEST(Cli, MissingFileIsExitTwoWithTheFileNamed) {
+    const auto dir = temp_dir("cli-missing");
+    const CommandResult r = run("render /nonexistent/model.obj -o out.png", dir);
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_TRUE(single_line(r.output)) << r.output;
+    EXPECT_NE(r.output.find("/nonexistent/model.obj"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("not found"), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+}
+
+TEST(Cli, MalformedFileIsExitTwo) {
+    const auto dir = temp_dir("cli-malformed");
+    std::ofstream(dir / "bad.stl") << "solid x\nfacet normal 0 0 1\nouter loop\nvertex 1 2\n";
+    const CommandResult r = run("render bad.stl -o out.png", dir);
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find("bad.stl"), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+}
+
+TEST(Cli, BadOptionsAreExitTwoAndWriteNothing) {
+    const auto dir = temp_dir("cli-options");
+    const char* cases[] = {
+        "render builtin:cube --size 0x10 -o out.png",
+        "render builtin:cube --size 1000000x1000000 -o out.png",
+        "render builtin:cube --size abc -o out.png",
+        "render builtin:cube --eye nan,0,0 -o out.png",
+        "render builtin:cube --eye 1,2 -o out.png",
+        "render builtin:cube --shading toon -o out.png",
+        "render builtin:cube --threads -3 -o out.png",
+        "render builtin:cube --background 300,0,0 -o out.png",
+        "render builtin:cube --depth-out depth.txt -o out.png",
+        "render builtin:cube -o out.jpg",
+        "render builtin:cube -o missing-dir/out.png",
+        "render builtin:cube --near 5 --far 1 -o out.png",
+        "render sphere:0 -o out.png",
+        "render sphere:abc -o out.png",
+        "render builtin:nothing -o out.png",
+        "render --no-such-option",
+        "frobnicate",
+    };
+    for (const char* c : cases) {
+        const CommandResult r = run(c, dir);
+        EXPECT_EQ(r.exit_code, 2) << c << "\n" << r.output;
+        EXPECT_FALSE(r.output.empty()) << c;
+        EXPECT_FALSE(std::filesystem::exists(dir / "out.png")) << c;
+        EXPECT_FALSE(std::filesystem::exists(dir / "out.jpg")) << c;
+    }
+}
+
+TEST(Cli, DepthNormalAndIdOutputs) {
+    const auto dir = temp_dir("cli-outputs");
+    const CommandResult r = run("render builtin:sphere --size 64x48 -o c.png --depth-out d.npy "
+                      "--normal-out n.png --id-out i.npy",
+                      dir);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    // float32 (48, 64): header then 64*48*4 bytes.
+    std::ifstream npy(dir / "d.npy", std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(npy)), {});
+    ASSERT_GT(bytes.size(), std::size_t(64 * 48 * 4));
+    EXPECT_EQ(bytes.substr(1, 5), "NUMPY");
+    EXPECT_NE(bytes.find("'descr': '<f4'"), std::string::npos);
+    EXPECT_NE(bytes.find("'shape': (48, 64)"), std::string::npos);
+    const std::size_t header = bytes.size() - 64 * 48 * 4;
+    float corner, center;
+    std::memcpy(&corner, bytes.data() + header, 4);
+    std::memcpy(&center, bytes.data() + header + (24 * 64 + 32) * 4, 4);
+    EXPECT_EQ(corner, 1.0f);  // nothing drawn
+    EXPECT_GT(center, 0.0f);
+    EXPECT_LT(center, 1.0f);
+    EXPECT_TRUE(std::filesystem::exists(dir / "n.png"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "i.npy"));
+}
+
+TEST(Cli, InfoPrintsCounts) {
+    const CommandResult r = run("info sphere:1000");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    // S = lround(sqrt(250)) = 16 stacks: 4 * 16 * 15 = 960 triangles.
+    EXPECT_NE(r.output.find("960"), std::string::npos) << r.output;
+}
+
+TEST(Cli, InfoOnSharedMeshReportsManifestCounts) {
+    ZRASTER_REQUIRE_SHARED_DATA();
+    const CommandResult r = run("info '" + shared_data("meshes/obj/bunny.obj").string() + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("69666"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace zraster::test

@@ -1,0 +1,52 @@
+// Helpers for the io tests: fixture files and checks on InputError.
+#pragma once
+#include <zraster/error.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace zraster::test {
+
+inline void write_bytes(const std::filesystem::path& path, std::string_view bytes) {
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    ASSERT_TRUE(out.good()) << path;
+}
+
+inline std::string read_bytes(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+inline std::vector<std::string> list_directory(const std::filesystem::path& dir) {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+        names.push_back(entry.path().filename().string());
+    return names;
+}
+
+// Runs `action`, which must throw an InputError naming `file` whose cause contains `cause`; the
+// message must be the single line "FILE: cause".
+template <typename Action>
+void expect_input_error(Action&& action, const std::filesystem::path& file,
+                        std::string_view cause) {
+    try {
+        action();
+        ADD_FAILURE() << "no InputError for " << file << " (expected '" << cause << "')";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.file(), file.string());
+        EXPECT_NE(e.cause().find(cause), std::string::npos)
+            << "cause '" << e.cause() << "' lacks '" << cause << "'";
+        EXPECT_EQ(std::string(e.what()), file.string() + ": " + e.cause());
+        EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+    }
+}
+
+}  // namespace zraster::test
