@@ -58,7 +58,8 @@ Material convert_material(const aiMaterial& material) {
 
     if (auto specular = get_color(material, AI_MATKEY_COLOR_SPECULAR)) {
         glm::vec3 s{specular->r, specular->g, specular->b};
-        if (auto strength = get_float(material, AI_MATKEY_SHININESS_STRENGTH); strength && *strength >= 0.0f)
+        if (auto strength = get_float(material, AI_MATKEY_SHININESS_STRENGTH);
+            strength && *strength >= 0.0f)
             s *= *strength;
         if (finite(s)) out.specular = glm::max(s, glm::vec3(0.0f));
     }

@@ -24,7 +24,8 @@ std::vector<NodeMesh> collect_node_meshes(const aiScene& scene) {
         const glm::mat4 transform = parent * to_glm(node->mTransformation);
         for (unsigned i = 0; i < node->mNumMeshes; ++i)
             out.push_back({node->mMeshes[i], transform, node->mName.C_Str()});
-        for (unsigned c = node->mNumChildren; c-- > 0;) stack.emplace_back(node->mChildren[c], transform);
+        for (unsigned c = node->mNumChildren; c-- > 0;)
+            stack.emplace_back(node->mChildren[c], transform);
     }
     return out;
 }

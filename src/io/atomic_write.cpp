@@ -14,7 +14,9 @@ namespace zraster::io {
 
 namespace {
 
-std::string errno_message(int error) { return std::generic_category().message(error); }
+std::string errno_message(int error) {
+    return std::generic_category().message(error);
+}
 
 // Unique per process and per call, so concurrent writers of the same path do not collide.
 std::filesystem::path temporary_path_for(const std::filesystem::path& path) {

@@ -47,12 +47,11 @@ void check_body(const std::filesystem::path& path, const char* format,
         // The last record may lack its trailing separator, hence the one byte of slack.
         const std::uint64_t available = body_bytes + 1 - needed;
         if (e.count > available / e.min_record_bytes) {
-            throw InputError(path.string(), std::string("truncated or malformed file: the ") +
-                                                format + " header declares " +
-                                                std::to_string(e.count) + " " + e.name +
-                                                " records, more than its " +
-                                                std::to_string(body_bytes) +
-                                                " bytes of data can hold");
+            throw InputError(path.string(),
+                             std::string("truncated or malformed file: the ") + format +
+                                 " header declares " + std::to_string(e.count) + " " + e.name +
+                                 " records, more than its " + std::to_string(body_bytes) +
+                                 " bytes of data can hold");
         }
         needed += e.count * e.min_record_bytes;
     }
@@ -61,8 +60,8 @@ void check_body(const std::filesystem::path& path, const char* format,
 std::uint64_t ply_scalar_size(const std::string& type) {
     if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
     if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
-    if (type == "int" || type == "uint" || type == "int32" || type == "uint32" ||
-        type == "float" || type == "float32")
+    if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" ||
+        type == "float32")
         return 4;
     if (type == "double" || type == "float64") return 8;
     return 1;  // unknown: Assimp will complain; stay conservative here

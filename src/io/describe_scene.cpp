@@ -39,7 +39,9 @@ std::string transform_text(const glm::mat4& m) {
     return out + "]";
 }
 
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
+std::string quoted(const std::string& s) {
+    return "'" + s + "'";
+}
 
 // Exact: the box of the transformed vertices (Scene::bounds transforms boxes, which is larger
 // under rotation).
@@ -74,8 +76,8 @@ std::string describe_scene(const Scene& scene) {
             material += " " + quoted(scene.materials[m.material].name);
         return "mesh " + std::to_string(i) + " " + quoted(m.name) + ": " +
                std::to_string(m.triangle_count()) + " triangles, " +
-               std::to_string(m.vertex_count()) + " vertices, material " + material +
-               ", bounds " + box(m.bounds);
+               std::to_string(m.vertex_count()) + " vertices, material " + material + ", bounds " +
+               box(m.bounds);
     });
     list(out, "instances", scene.instances, [&](std::size_t i, const Instance& instance) {
         return "instance " + std::to_string(i) + " " + quoted(instance.name) + ": mesh " +
@@ -93,8 +95,7 @@ std::string describe_scene(const Scene& scene) {
                vec(m.base_color) + ", texture " + texture;
     });
     if (!scene.warnings.empty())
-        list(out, "warnings", scene.warnings,
-             [](std::size_t, const std::string& w) { return w; });
+        list(out, "warnings", scene.warnings, [](std::size_t, const std::string& w) { return w; });
     return out;
 }
 

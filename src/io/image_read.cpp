@@ -27,8 +27,8 @@ ImageRGBA8 read_image_rgba8(const std::filesystem::path& path) {
         &stbi_image_free);
     if (!pixels) {
         const char* reason = stbi_failure_reason();
-        throw InputError(path.string(),
-                         std::string("cannot decode image: ") + (reason ? reason : "unknown error"));
+        throw InputError(path.string(), std::string("cannot decode image: ") +
+                                            (reason ? reason : "unknown error"));
     }
     ImageRGBA8 image;
     image.width = width;

@@ -12,10 +12,10 @@
 #include "io/text_util.hpp"
 #include "io/texture_loader.hpp"
 
-#include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/Importer.hpp>
 
 #include <cctype>
 #include <cmath>
@@ -70,10 +70,13 @@ bool is_obj(const std::filesystem::path& path) {
 }
 
 class MaterialTable {
-public:
+  public:
     MaterialTable(const aiScene& scene, const std::filesystem::path& path, Scene& out,
                   std::vector<std::string>& warnings)
-        : scene_(scene), out_(out), warnings_(warnings), textures_(scene, path, warnings),
+        : scene_(scene),
+          out_(out),
+          warnings_(warnings),
+          textures_(scene, path, warnings),
           map_(scene.mNumMaterials, kNoMesh) {
         if (is_obj(path)) {
             io::ObjMaterialLibraries libraries = io::scan_obj_material_libraries(path);
@@ -99,7 +102,8 @@ public:
             return 0;
         }
         Material material = io::convert_material(source);
-        if (material.name == Material{}.name) material.name = "material " + std::to_string(ai_index);
+        if (material.name == Material{}.name)
+            material.name = "material " + std::to_string(ai_index);
         if (auto reference = io::base_color_texture_reference(source))
             material.base_color_texture = textures_.load(*reference);
         map_[ai_index] = static_cast<std::uint32_t>(out_.materials.size());
@@ -107,7 +111,7 @@ public:
         return map_[ai_index];
     }
 
-private:
+  private:
     const aiScene& scene_;
     Scene& out_;
     std::vector<std::string>& warnings_;

@@ -9,7 +9,7 @@
 namespace zraster::io {
 
 struct ObjMaterialLibraries {
-    std::vector<std::string> warnings;       // missing libraries, substitutes
+    std::vector<std::string> warnings;        // missing libraries, substitutes
     std::set<std::string> defined_materials;  // `newmtl` names of the libraries found
 };
 

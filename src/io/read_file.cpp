@@ -16,7 +16,8 @@ std::vector<std::uint8_t> read_file_bytes(const std::filesystem::path& path) {
         throw InputError(path.string(), "not a regular file");
 
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path.string(), "cannot read: " + std::generic_category().message(errno));
+    if (!in)
+        throw InputError(path.string(), "cannot read: " + std::generic_category().message(errno));
     std::vector<std::uint8_t> bytes;
     char buffer[1 << 16];
     while (in.read(buffer, sizeof buffer) || in.gcount() > 0)

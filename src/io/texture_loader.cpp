@@ -24,7 +24,8 @@ std::optional<std::string> percent_decoded(const std::string& s) {
     if (s.find('%') == std::string::npos) return std::nullopt;
     std::string out;
     for (std::size_t i = 0; i < s.size(); ++i) {
-        if (s[i] == '%' && i + 2 < s.size() && std::isxdigit(static_cast<unsigned char>(s[i + 1])) &&
+        if (s[i] == '%' && i + 2 < s.size() &&
+            std::isxdigit(static_cast<unsigned char>(s[i + 1])) &&
             std::isxdigit(static_cast<unsigned char>(s[i + 2]))) {
             out.push_back(static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16)));
             i += 2;
@@ -123,8 +124,8 @@ std::shared_ptr<const Texture> TextureLoader::load_external(const std::string& r
         }
     }
     std::error_code ec;
-    const std::string key =
-        found.empty() ? "missing:" + reference : std::filesystem::weakly_canonical(found, ec).string();
+    const std::string key = found.empty() ? "missing:" + reference
+                                          : std::filesystem::weakly_canonical(found, ec).string();
     if (auto it = cache_.find(key); it != cache_.end()) return it->second;
 
     std::shared_ptr<const Texture> result;

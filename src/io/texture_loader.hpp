@@ -14,7 +14,7 @@ struct aiScene;
 namespace zraster::io {
 
 class TextureLoader {
-public:
+  public:
     // Problems are appended to `warnings` (as causes, without the model's name).
     TextureLoader(const aiScene& scene, std::filesystem::path model_path,
                   std::vector<std::string>& warnings);
@@ -23,7 +23,7 @@ public:
     // unreadable: the material's color is used then.
     std::shared_ptr<const Texture> load(const std::string& reference);
 
-private:
+  private:
     std::shared_ptr<const Texture> load_embedded(const std::string& reference);
     std::shared_ptr<const Texture> load_external(const std::string& reference);
 

@@ -23,9 +23,13 @@ struct KeyHash {
 };
 
 // +0.0f turns -0 into +0, so the two compare equal as bits, as they do as floats.
-std::uint32_t bits(float f) { return std::bit_cast<std::uint32_t>(f + 0.0f); }
+std::uint32_t bits(float f) {
+    return std::bit_cast<std::uint32_t>(f + 0.0f);
+}
 
-Key position_key(const glm::vec3& p) { return {bits(p.x), bits(p.y), bits(p.z), 0, 0, 0, 0, 0}; }
+Key position_key(const glm::vec3& p) {
+    return {bits(p.x), bits(p.y), bits(p.z), 0, 0, 0, 0, 0};
+}
 
 // For each vertex the index of the first vertex equal to it under key_of, and the count.
 template <typename KeyOf>

@@ -25,7 +25,8 @@ TEST(ReadImage, ExpandsGrayToRgbaTopRowFirst) {
 
 TEST(ReadImage, ReadsSharedPngAndJpeg) {
     ZRASTER_REQUIRE_SHARED_DATA();
-    const ImageRGBA8 png = read_image_rgba8(test::shared_data("meshes/gltf/BoxTextured/CesiumLogoFlat.png"));
+    const ImageRGBA8 png =
+        read_image_rgba8(test::shared_data("meshes/gltf/BoxTextured/CesiumLogoFlat.png"));
     EXPECT_EQ(png.width, 211);
     EXPECT_EQ(png.height, 211);
     EXPECT_EQ(png.rgba.size(), 211u * 211u * 4u);

@@ -34,7 +34,9 @@ TEST(LoadErrors, Directory) {
     expect_load_error(dir, "not a regular file");
 }
 
-TEST(LoadErrors, EmptyFile) { expect_load_error(fixture("empty", "empty.obj", ""), "empty file"); }
+TEST(LoadErrors, EmptyFile) {
+    expect_load_error(fixture("empty", "empty.obj", ""), "empty file");
+}
 
 TEST(LoadErrors, TooLargeForTheLimit) {
     const auto path = fixture("limit-bytes", "tri.obj", kTriangleObj);
@@ -46,7 +48,8 @@ TEST(LoadErrors, TooLargeForTheLimit) {
 TEST(LoadErrors, UnknownExtensionWithGarbage) {
     std::string garbage;
     for (int i = 0; i < 4096; ++i) garbage.push_back(static_cast<char>((i * 7919) % 251));
-    expect_load_error(fixture("garbage", "model.xyzzy", garbage), "unsupported or malformed file: ");
+    expect_load_error(fixture("garbage", "model.xyzzy", garbage),
+                      "unsupported or malformed file: ");
 }
 
 TEST(LoadErrors, TruncatedBinaryStl) {
@@ -104,36 +107,42 @@ TEST(LoadErrors, PlyHeaderCountsBeyondTheFileSize) {
     const std::string body = "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
     const auto start = std::chrono::steady_clock::now();
     expect_load_error(
-        fixture("ply-huge", "huge.ply", header_start + "element face 1099511627776\n" + face_list + body),
+        fixture("ply-huge", "huge.ply",
+                header_start + "element face 1099511627776\n" + face_list + body),
         "truncated or malformed file: the PLY header declares 1099511627776 face records");
     expect_load_error(fixture("ply-huge-vertices", "huge.ply",
                               "ply\nformat binary_little_endian 1.0\nelement vertex 300000000\n"
                               "property float x\nproperty float y\nproperty float z\n"
-                              "element face 1\n" + face_list + std::string(49, '\0')),
+                              "element face 1\n" +
+                                  face_list + std::string(49, '\0')),
                       "the PLY header declares 300000000 vertex records");
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));
 }
 
 TEST(LoadErrors, OffHeaderCountsBeyondTheFileSize) {
-    expect_load_error(fixture("off-huge", "huge.off", "OFF\n3 300000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
-                      "the OFF header declares 300000000 face records");
+    expect_load_error(
+        fixture("off-huge", "huge.off", "OFF\n3 300000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
+        "the OFF header declares 300000000 face records");
 }
 
 // Fewer faces than the header says: Debian's Assimp (assertions enabled) would abort in its
 // triangulation; validating the structure first turns this into an error.
 TEST(LoadErrors, OffBodyShorterThanItsHeader) {
-    expect_load_error(fixture("off-short", "short.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
-                      "unsupported or malformed file: ");
+    expect_load_error(
+        fixture("off-short", "short.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
+        "unsupported or malformed file: ");
 }
 
 TEST(LoadErrors, OnlyPointsAndLines) {
-    expect_load_error(fixture("lines", "lines.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\np 1\n"),
-                      "no triangles");
+    expect_load_error(
+        fixture("lines", "lines.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\np 1\n"),
+        "no triangles");
     expect_load_error(fixture("points-ply", "points.ply",
                               "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\n"
                               "property float y\nproperty float z\nend_header\n0 0 0\n1 0 0\n"),
                       "no triangles");
-    expect_load_error(fixture("vertices-only", "v.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n"), "no triangles");
+    expect_load_error(fixture("vertices-only", "v.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n"),
+                      "no triangles");
 }
 
 TEST(LoadErrors, TooManyTriangles) {

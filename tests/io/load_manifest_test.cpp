@@ -52,8 +52,8 @@ std::map<std::string, ManifestRow> read_manifest() {
 // "[a, b, c] – [d, e, f]"
 std::optional<Bounds3f> parse_bounds(const std::string& text) {
     Bounds3f b;
-    if (std::sscanf(text.c_str(), "[%f, %f, %f] – [%f, %f, %f]", &b.lo.x, &b.lo.y, &b.lo.z,
-                    &b.hi.x, &b.hi.y, &b.hi.z) != 6)
+    if (std::sscanf(text.c_str(), "[%f, %f, %f] – [%f, %f, %f]", &b.lo.x, &b.lo.y, &b.lo.z, &b.hi.x,
+                    &b.hi.y, &b.hi.z) != 6)
         return std::nullopt;
     return b;
 }
@@ -96,7 +96,9 @@ ObjCensus census_obj(const std::filesystem::path& path) {
     std::set<Key> corners;
     std::istringstream text(test::read_bytes(path));
     std::string line;
-    auto resolve = [](long i, std::size_t n) { return i < 0 ? n + i : static_cast<std::size_t>(i - 1); };
+    auto resolve = [](long i, std::size_t n) {
+        return i < 0 ? n + i : static_cast<std::size_t>(i - 1);
+    };
     while (std::getline(text, line)) {
         std::istringstream words(line);
         std::string kind;
@@ -143,9 +145,9 @@ ObjCensus census_obj(const std::filesystem::path& path) {
 }
 
 enum class Vertices {
-    AsInFile,          // indexed formats (glTF, PLY, OFF): Assimp keeps the file's vertices
-    ObjWelded,         // OBJ: welded back, one vertex per distinct referenced corner value
-    OnePerCorner,      // STL, 3DS: a vertex per face corner (flat or smoothing-group normals)
+    AsInFile,      // indexed formats (glTF, PLY, OFF): Assimp keeps the file's vertices
+    ObjWelded,     // OBJ: welded back, one vertex per distinct referenced corner value
+    OnePerCorner,  // STL, 3DS: a vertex per face corner (flat or smoothing-group normals)
 };
 
 struct Case {
@@ -155,7 +157,9 @@ struct Case {
 
 // 3DS bounds are in object-local coordinates in the MANIFEST; Assimp's 3DS importer adds a root
 // node turning 3ds Max's z-up into y-up, so the mesh-space box is compared there.
-bool mesh_space_bounds(const std::string& file) { return file.ends_with(".3ds"); }
+bool mesh_space_bounds(const std::string& file) {
+    return file.ends_with(".3ds");
+}
 
 const Case kCases[] = {
     {"3ds/cat.3ds", Vertices::OnePerCorner},
@@ -262,9 +266,8 @@ TEST(Manifest, EveryMeshIsCovered) {
     EXPECT_EQ(manifest.size(), std::size(kCases) + kMustFail.size());
     for (const auto& [file, row] : manifest) {
         const bool covered =
-            kMustFail.contains(file) ||
-            std::any_of(std::begin(kCases), std::end(kCases),
-                        [&](const Case& c) { return c.file == file; });
+            kMustFail.contains(file) || std::any_of(std::begin(kCases), std::end(kCases),
+                                                    [&](const Case& c) { return c.file == file; });
         EXPECT_TRUE(covered) << file << " has no expectation here";
     }
 }

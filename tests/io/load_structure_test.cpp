@@ -17,7 +17,8 @@ std::filesystem::path write_fixture(const std::filesystem::path& dir, const std:
 }
 
 glm::vec3 world(const Scene& scene, const Instance& instance, std::uint32_t vertex) {
-    const glm::vec4 p = instance.transform * glm::vec4(scene.meshes[instance.mesh].positions[vertex], 1.0f);
+    const glm::vec4 p =
+        instance.transform * glm::vec4(scene.meshes[instance.mesh].positions[vertex], 1.0f);
     return glm::vec3(p) / p.w;
 }
 
@@ -45,7 +46,8 @@ std::filesystem::path write_gltf(const std::filesystem::path& dir, const std::st
                 {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
   "meshes": [{"name": "tri", "primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
   "nodes": )" + nodes + R"(,
-  "scenes": [{"nodes": )" + scene_nodes + R"(}], "scene": 0})";
+  "scenes": [{"nodes": )" + scene_nodes +
+                             R"(}], "scene": 0})";
     return write_fixture(dir, "scene.gltf", json);
 }
 
@@ -67,7 +69,8 @@ TEST(LoadStructure, NodeTransformsAccumulateParentFirst) {
         EXPECT_EQ(i.mesh, 0u);
         by_name[i.name] = &i;
     }
-    ASSERT_TRUE(by_name.contains("child") && by_name.contains("lifted") && by_name.contains("turned"));
+    ASSERT_TRUE(by_name.contains("child") && by_name.contains("lifted") &&
+                by_name.contains("turned"));
     // parent * child: scaled by 2, then moved by 10 (not moved by 10, then scaled by 2).
     expect_vec3_near(world(scene, *by_name["child"], 1), {12, 0, 0});
     expect_vec3_near(world(scene, *by_name["child"], 2), {10, 2, 0});
@@ -93,7 +96,8 @@ TEST(LoadStructure, TransformThatOverflowsIsNonFinite) {
 
 TEST(LoadStructure, BoxTexturedNodeMatrixAndUvConvention) {
     ZRASTER_REQUIRE_SHARED_DATA();
-    for (const char* file : {"meshes/gltf/BoxTextured.glb", "meshes/gltf/BoxTextured/BoxTextured.gltf"}) {
+    for (const char* file :
+         {"meshes/gltf/BoxTextured.glb", "meshes/gltf/BoxTextured/BoxTextured.gltf"}) {
         SCOPED_TRACE(file);
         const Scene scene = load_scene(test::shared_data(file));
         ASSERT_EQ(scene.instances.size(), 1u);
@@ -144,9 +148,10 @@ const char* kCubeVertices =
 
 TEST(LoadStructure, ComputedNormalsOfAQuadCubeAreItsDiagonals) {
     const auto dir = test::temp_dir("io-structure-cube");
-    const auto path = write_fixture(dir, "cube.obj",
-                                    std::string(kCubeVertices) +
-                                        "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n");
+    const auto path =
+        write_fixture(dir, "cube.obj",
+                      std::string(kCubeVertices) +
+                          "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n");
     const Scene scene = load_scene(path);
     ASSERT_EQ(scene.meshes.size(), 1u);
     const Mesh& mesh = scene.meshes[0];
@@ -166,7 +171,8 @@ TEST(LoadStructure, UvSeamsDoNotSplitComputedNormals) {
     const int faces[6][4] = {{1, 4, 3, 2}, {5, 6, 7, 8}, {1, 2, 6, 5},
                              {2, 3, 7, 6}, {3, 4, 8, 7}, {4, 1, 5, 8}};
     for (int f = 0; f < 6; ++f)
-        for (int k = 0; k < 4; ++k) obj += "vt " + std::to_string(f) + " " + std::to_string(k) + "\n";
+        for (int k = 0; k < 4; ++k)
+            obj += "vt " + std::to_string(f) + " " + std::to_string(k) + "\n";
     for (int f = 0; f < 6; ++f) {
         obj += "f";
         for (int k = 0; k < 4; ++k)

@@ -44,8 +44,8 @@ std::uint32_t le32(const std::string& s, std::size_t at) {
 TEST(WriteNpy, Float32HeaderShapeAndData) {
     const auto path = test::temp_dir("io-npy-f4") / "depth.npy";
     const int w = 3, h = 2;
-    const std::vector<float> values = {0.0f, -1.5f, 3.25e-7f, std::numeric_limits<float>::infinity(),
-                                       std::nanf(""), 1e30f};
+    const std::vector<float> values = {
+        0.0f, -1.5f, 3.25e-7f, std::numeric_limits<float>::infinity(), std::nanf(""), 1e30f};
     write_npy(path, w, h, values);
     const Npy npy = parse_npy(test::read_bytes(path));
     EXPECT_EQ(npy.dict, "{'descr': '<f4', 'fortran_order': False, 'shape': (2, 3), }");

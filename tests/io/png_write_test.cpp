@@ -83,7 +83,8 @@ Gray16 decode_gray16(const std::string& png) {
         const auto* line = reinterpret_cast<const std::uint8_t*>(raw.get()) + y * (stride + 1);
         const int filter = line[0];
         for (std::size_t i = 0; i < stride; ++i) {
-            const int a = i >= 2 ? row[i - 2] : 0, b = previous[i], c = i >= 2 ? previous[i - 2] : 0;
+            const int a = i >= 2 ? row[i - 2] : 0, b = previous[i],
+                      c = i >= 2 ? previous[i - 2] : 0;
             const int predictors[5] = {0, a, b, (a + b) / 2, paeth(a, b, c)};
             EXPECT_LT(filter, 5);
             row[i] = static_cast<std::uint8_t>(line[1 + i] + predictors[filter % 5]);
