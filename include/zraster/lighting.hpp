@@ -10,6 +10,7 @@ enum class ShadingMode {
     Flat,     // one face normal per triangle, lit once per triangle
     Gouraud,  // lit per vertex, colors interpolated (Gouraud 1971)
     Phong,    // normals interpolated, lit per pixel (Phong 1975)
+    Unlit,    // the base color (times the texture), no lighting
 };
 
 enum class ReflectionModel {

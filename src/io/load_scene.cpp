@@ -26,7 +26,7 @@ namespace zraster {
 
 namespace {
 
-constexpr unsigned kNoMesh = ~0u;
+constexpr unsigned kUnset = ~0u;  // not converted (yet)
 
 // Faces of three or more corners in the imported (not yet triangulated) scene.
 std::size_t count_polygons(const aiScene& scene) {
@@ -77,7 +77,7 @@ class MaterialTable {
           out_(out),
           warnings_(warnings),
           textures_(scene, path, warnings),
-          map_(scene.mNumMaterials, kNoMesh) {
+          map_(scene.mNumMaterials, kUnset) {
         if (is_obj(path)) {
             io::ObjMaterialLibraries libraries = io::scan_obj_material_libraries(path);
             warnings.insert(warnings.end(), libraries.warnings.begin(), libraries.warnings.end());
@@ -89,7 +89,7 @@ class MaterialTable {
     // Our index for an Assimp material, converting it on first use.
     std::uint32_t index_of(unsigned ai_index) {
         if (ai_index >= scene_.mNumMaterials || scene_.mMaterials[ai_index] == nullptr) return 0;
-        if (map_[ai_index] != kNoMesh) return map_[ai_index];
+        if (map_[ai_index] != kUnset) return map_[ai_index];
         const aiMaterial& source = *scene_.mMaterials[ai_index];
         map_[ai_index] = 0;
         if (io::is_placeholder_material(source)) return 0;
@@ -102,8 +102,7 @@ class MaterialTable {
             return 0;
         }
         Material material = io::convert_material(source);
-        if (material.name == Material{}.name)
-            material.name = "material " + std::to_string(ai_index);
+        if (name.empty()) material.name = "material " + std::to_string(ai_index);
         if (auto reference = io::base_color_texture_reference(source))
             material.base_color_texture = textures_.load(*reference);
         map_[ai_index] = static_cast<std::uint32_t>(out_.materials.size());
@@ -172,7 +171,7 @@ Scene load_scene(const std::filesystem::path& path, const LoadOptions& options) 
     scene.source = file;
     std::vector<std::string> warnings;
     MaterialTable materials(*ai, path, scene, warnings);
-    std::vector<unsigned> our_mesh(ai->mNumMeshes, kNoMesh);
+    std::vector<unsigned> our_mesh(ai->mNumMeshes, kUnset);
     std::vector<std::string> labels(ai->mNumMeshes);
     for (unsigned m = 0; m < ai->mNumMeshes; ++m) {
         if (!referenced[m]) continue;
@@ -185,7 +184,7 @@ Scene load_scene(const std::filesystem::path& path, const LoadOptions& options) 
     }
 
     for (const io::NodeMesh& p : placements) {
-        if (our_mesh[p.mesh] == kNoMesh) continue;
+        if (our_mesh[p.mesh] == kUnset) continue;
         const Mesh& mesh = scene.meshes[our_mesh[p.mesh]];
         check_instance_finite(mesh, p.transform, labels[p.mesh], file);
         Instance instance;

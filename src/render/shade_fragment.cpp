@@ -35,6 +35,7 @@ ShadedFragment shade_fragment(const Frame& frame, const RasterTriangle& t, int p
     ShadedFragment out{};
     const glm::vec3 base = base_color(frame, fi, t, px, py, b);
     switch (fi.shading) {
+        case ShadingMode::Unlit: out.color = base; break;
         case ShadingMode::Flat: out.color = combine(t.flat, base); break;
         case ShadingMode::Gouraud: {
             LightTerms terms;

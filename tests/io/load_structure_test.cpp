@@ -199,6 +199,18 @@ TEST(LoadStructure, FileNormalsAreKeptAndNormalised) {
     expect_vec3_near(mesh.normals[2], {0.6f, 0.8f, 0.0f});
 }
 
+TEST(LoadStructure, ZeroFileNormalsAreReplacedByComputedOnes) {
+    const auto dir = test::temp_dir("io-structure-zero-normals");
+    const auto path = write_fixture(dir, "z.obj",
+                                    "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 0\nvn 0 0 -1\n"
+                                    "f 1//1 2//2 3//2\n");
+    const Scene scene = load_scene(path);
+    const Mesh& mesh = scene.meshes.at(0);
+    ASSERT_EQ(mesh.normals.size(), 3u);
+    EXPECT_EQ(mesh.normals[0], glm::vec3(0, 0, 1));   // computed: the triangle faces +z
+    EXPECT_EQ(mesh.normals[1], glm::vec3(0, 0, -1));  // the file's, even if odd
+}
+
 TEST(LoadStructure, DegenerateTrianglesAreKept) {
     const auto dir = test::temp_dir("io-structure-degenerate");
     const auto path = write_fixture(dir, "d.obj",

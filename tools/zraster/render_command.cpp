@@ -51,8 +51,8 @@ void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
     cmd.add_flag("--ortho", a.ortho, "Orthographic projection (frames the bounding sphere)");
     cmd.add_flag("--reversed-z", a.reversed_z, "Reversed-Z projection (near->1, far->0, GREATER)");
     cmd.add_flag("--infinite-far", a.infinite_far, "Far plane at infinity");
-    cmd.add_option("--shading", a.shading, "flat|gouraud|phong")
-        ->check(CLI::IsMember({"flat", "gouraud", "phong"}))
+    cmd.add_option("--shading", a.shading, "flat|gouraud|phong|unlit")
+        ->check(CLI::IsMember({"flat", "gouraud", "phong", "unlit"}))
         ->capture_default_str();
     cmd.add_option("--reflection", a.reflection, "Specular model: blinn-phong|phong")
         ->check(CLI::IsMember({"blinn-phong", "phong"}))
@@ -143,7 +143,10 @@ RenderOptions make_render_options(const RenderArguments& a, const Scene& scene) 
     o.threads = a.threads;
     o.camera = make_camera(a, scene, double(o.width) / double(o.height));
     const std::map<std::string, ShadingMode> shading{
-        {"flat", ShadingMode::Flat}, {"gouraud", ShadingMode::Gouraud}, {"phong", ShadingMode::Phong}};
+        {"flat", ShadingMode::Flat},
+        {"gouraud", ShadingMode::Gouraud},
+        {"phong", ShadingMode::Phong},
+        {"unlit", ShadingMode::Unlit}};
     o.shading = shading.at(a.shading);
     o.lighting.reflection =
         a.reflection == "phong" ? ReflectionModel::Phong : ReflectionModel::BlinnPhong;
