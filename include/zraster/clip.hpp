@@ -57,6 +57,27 @@ struct ClipSettings {
     int user_plane_count = 0;
 };
 
+// Signed distance-like value of v to frustum plane `bit_index` (0..5 in ClipPlaneBit order):
+// inside when >= 0. One definition shared by the outcodes and the clipper.
+inline float frustum_plane_distance(int bit_index, const glm::vec4& v, const ClipSettings& s) {
+    switch (bit_index) {
+        case 0: return s.depth_range == ClipDepthRange::ZeroToOne ? v.z : v.z + v.w;
+        case 1: return v.w - v.z;
+        case 2: return v.x + s.guard_x * v.w;
+        case 3: return s.guard_x * v.w - v.x;
+        case 4: return v.y + s.guard_y * v.w;
+        default: return s.guard_y * v.w - v.y;
+    }
+}
+
+// Outcode for the six frustum/guard-band planes only (the hot path of the vertex stage).
+inline std::uint32_t frustum_outcode(const glm::vec4& v, const ClipSettings& s) {
+    std::uint32_t code = 0;
+    for (int bit = 0; bit < 6; ++bit)
+        code |= frustum_plane_distance(bit, v, s) >= 0.0f ? 0u : (1u << bit);
+    return code;
+}
+
 // Outcode of one vertex. user_distances holds the vertex's signed distance to each user plane
 // (inside when >= 0).
 std::uint32_t clip_outcode(const glm::vec4& v, const ClipSettings& settings,

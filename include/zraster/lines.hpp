@@ -51,7 +51,7 @@ struct LinePixel {
 // the pixel's major coordinate. Window depth (z/w after the divide) is affine in screen space, so
 // linear interpolation is exact here, not an approximation. The depth is always computed from
 // the lexicographically smaller endpoint, so the line from b to a gives bit-identical depths (a
-// shared wireframe edge does not z-fight with itself).
+// shared wireframe edge does not z-fight with itself). A zero-length line gets the smaller depth.
 void bresenham_line_depth(glm::ivec2 a, float depth_a, glm::ivec2 b, float depth_b,
                           std::vector<LinePixel>& out);
 std::vector<LinePixel> bresenham_line_depth(glm::ivec2 a, float depth_a, glm::ivec2 b,

@@ -38,9 +38,17 @@ struct PlaneEquation {
     }
 };
 
+// A vertex after the divide and viewport transform: snapped window position in
+// 1/kSubpixelScale pixels (y down; |x|, |y| < 2^29 inside the guard band), window depth, 1/w.
+struct ScreenVertex {
+    std::int32_t x = 0, y = 0;
+    float z = 0.0f;
+    float inv_w = 1.0f;
+};
+
 struct TriangleSetup {
     // Snapped window positions in 1/kSubpixelScale pixels (y down), in input order.
-    std::array<std::int64_t, 3> x{}, y{};
+    std::array<std::int32_t, 3> x{}, y{};
     // Edge functions over pixel indices, E_k(px, py) = a[k] * px + b[k] * py + c[k], positive
     // inside; c[k] already includes the fill-rule bias (-1 on edges that are not top or left),
     // so a pixel is covered iff all three are >= 0.
@@ -69,13 +77,25 @@ struct SetupSettings {
     FrontFace front_face = FrontFace::CounterClockwise;
 };
 
-// Snaps a window-space position to the fixed-point grid. Window x = (ndc_x + 1) / 2 * width,
-// y = (1 - ndc_y) / 2 * height (flipped so row 0 is the top).
+// Snaps a window-space position (pixels, y down) to the fixed-point grid: nearest 1/256 pixel,
+// ties to even (what to_screen does after the viewport transform).
 std::array<std::int64_t, 2> snap_to_grid(const glm::dvec2& window);
 
-// Sets up a triangle whose clip-space vertices all lie inside the guard band with w > 0 (what
-// the clipper guarantees). Divides by w, maps to the viewport, snaps, orients the edges, applies
-// the fill rule and the cull mode, and computes the plane equations.
+// Divide by w, viewport transform and snap: window x = (ndc_x + 1) / 2 * width,
+// y = (1 - ndc_y) / 2 * height (flipped so row 0 is the top), rounded to the nearest 1/256 pixel
+// (ties to even). Computed in double from the float clip position, once per vertex: a vertex
+// shared by several triangles snaps to the same point in all of them. Returns false when w <= 0
+// or the point is beyond the guard band (such vertices must be clipped first).
+bool to_screen(const glm::vec4& clip, const SetupSettings& settings, ScreenVertex& out);
+
+// Sets up a triangle from snapped vertices: orients the edges, applies the fill rule and the
+// cull mode, bounds its pixel centers, and computes the plane equations. `planes` = false skips
+// the plane equations (enough for coverage-only work and early rejection).
+SetupResult setup_triangle(const std::array<ScreenVertex, 3>& v, const SetupSettings& settings,
+                           TriangleSetup& out, bool planes = true);
+
+// Convenience: to_screen on each vertex (all must be inside the guard band with w > 0, what
+// the clipper guarantees; otherwise Degenerate), then setup_triangle.
 SetupResult setup_triangle(const std::array<glm::vec4, 3>& clip, const SetupSettings& settings,
                            TriangleSetup& out);
 

@@ -19,6 +19,12 @@
 
 namespace zraster {
 
+enum class ShadingStrategy {
+    Auto,      // deferred whenever there is something to shade
+    Forward,   // shade every fragment that passes the depth test, as it is drawn
+    Deferred,  // resolve visibility per tile first, then shade each visible pixel once
+};
+
 struct RenderOptions {
     int width = 1920;
     int height = 1080;
@@ -34,6 +40,9 @@ struct RenderOptions {
     bool textures = true;
     // Back faces are lit with the negated normal (two-sided lighting), as the benchmark shader does.
     bool two_sided_lighting = true;
+    ShadingStrategy strategy = ShadingStrategy::Auto;
+    // Use the SIMD kernels (off: the scalar reference path everywhere, for comparisons).
+    bool simd = true;
 
     CullMode cull = CullMode::Back;
     FrontFace front_face = FrontFace::CounterClockwise;
@@ -79,7 +88,10 @@ struct RenderStats {
     std::uint64_t triangles_degenerate = 0;
     std::uint64_t triangles_no_coverage = 0;  // no pixel center in their bounding box
     std::uint64_t triangles_rasterized = 0;   // set up and binned (after clipping: pieces)
+    std::uint64_t fragments_passed = 0;  // passed the depth test
     std::uint64_t fragments_shaded = 0;
+    bool deferred = false;               // which shading strategy ran
+    const char* simd_target = "";        // instruction set of the SIMD kernels
     Camera camera;  // the camera actually used
     double setup_ms = 0, raster_ms = 0, total_ms = 0;
 };

@@ -16,21 +16,9 @@ struct WorkVertex {
     std::array<float, kMaxUserClipPlanes> user;
 };
 
-glm::vec4 frustum_plane(int bit_index, const ClipSettings& s) {
-    const bool zero_to_one = s.depth_range == ClipDepthRange::ZeroToOne;
-    switch (bit_index) {
-        case 0: return zero_to_one ? glm::vec4(0, 0, 1, 0) : glm::vec4(0, 0, 1, 1);  // depth min
-        case 1: return {0, 0, -1, 1};                                                // z <= w
-        case 2: return {1, 0, 0, s.guard_x};                                         // left
-        case 3: return {-1, 0, 0, s.guard_x};                                        // right
-        case 4: return {0, 1, 0, s.guard_y};                                         // bottom
-        default: return {0, -1, 0, s.guard_y};                                       // top
-    }
-}
-
 float distance_to(const WorkVertex& v, int bit_index, const ClipSettings& s) {
     if (bit_index >= 6) return v.user[static_cast<std::size_t>(bit_index - 6)];
-    return glm::dot(frustum_plane(bit_index, s), v.position);
+    return frustum_plane_distance(bit_index, v.position, s);
 }
 
 WorkVertex intersect(const WorkVertex& inside, float d_inside, const WorkVertex& outside,
@@ -65,9 +53,7 @@ int clip_work_polygon(const WorkVertex* in, int n, int bit_index, const ClipSett
 
 std::uint32_t clip_outcode(const glm::vec4& v, const ClipSettings& s,
                            std::span<const float> user_distances) {
-    std::uint32_t code = 0;
-    for (int bit = 0; bit < 6; ++bit)
-        if (!(glm::dot(frustum_plane(bit, s), v) >= 0.0f)) code |= 1u << bit;
+    std::uint32_t code = frustum_outcode(v, s);
     for (int k = 0; k < s.user_plane_count && k < static_cast<int>(user_distances.size()); ++k)
         if (!(user_distances[static_cast<std::size_t>(k)] >= 0.0f)) code |= kClipUser0 << k;
     return code;

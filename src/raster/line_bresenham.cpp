@@ -82,7 +82,7 @@ void bresenham_line_depth(glm::ivec2 a, float depth_a, glm::ivec2 b, float depth
     const double major_lo = x_major ? lo.x : lo.y;
     const double span = (x_major ? hi.x : hi.y) - major_lo;
     if (span == 0.0) {
-        // A single pixel: the nearer (smaller) depth, a choice that does not depend on order.
+        // A single pixel: the smaller depth, a choice that does not depend on the order.
         const float z = depth_a < depth_b ? depth_a : depth_b;
         out.push_back({a.x, a.y, z});
         return;

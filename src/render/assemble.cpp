@@ -1,152 +1,201 @@
-// Primitive assembly: triangles from indices, trivial accept/reject by outcodes, homogeneous
-// clipping of the rest, and triangle setup (which also culls back faces in screen space).
-// Runs in parallel over chunks of triangles; chunks are concatenated in submission order.
+// Primitive assembly and binning: triangles from indices, trivial accept/reject by outcodes,
+// homogeneous clipping of the rest, back-face culling and a pixel-coverage test on the snapped
+// vertices (most triangles of a dense mesh cover no pixel center and stop here), then binning
+// into screen tiles. Runs in parallel over chunks of triangles; each chunk keeps its own refs
+// and bins, and the tiles visit the chunks in order.
 #include <tbb/parallel_for.h>
 
-#include <cmath>
+#include <algorithm>
 #include <vector>
+
+#include <zraster/error.hpp>
 
 #include "render/frame.hpp"
 
 namespace zraster::detail {
 namespace {
 
-struct Chunk {
-    std::uint32_t instance;
-    std::size_t first_triangle, end_triangle;
-};
-
-struct ChunkOutput {
-    std::vector<RasterTriangle> triangles;
-    RenderStats stats;
-};
-
-bool finite(const glm::vec4& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
+// Tests a triangle of snapped vertices and, if it covers a pixel center, appends its ref.
+void emit(const Frame& frame, TriangleRef ref, const std::array<ScreenVertex, 3>& v, Chunk& chunk) {
+    TriangleSetup setup;
+    switch (setup_triangle(v, frame.setup_settings, setup, /*planes=*/false)) {
+        case SetupResult::Visible: break;
+        case SetupResult::Degenerate: ++chunk.stats.triangles_degenerate; return;
+        case SetupResult::Culled: ++chunk.stats.triangles_backface_culled; return;
+        case SetupResult::NoCoverage: ++chunk.stats.triangles_no_coverage; return;
+    }
+    ref.front_facing = setup.front_facing;
+    ref.tile_x0 = static_cast<std::uint16_t>(setup.min_x / kTileSize);
+    ref.tile_y0 = static_cast<std::uint16_t>(setup.min_y / kTileSize);
+    ref.tile_x1 = static_cast<std::uint16_t>(setup.max_x / kTileSize);
+    ref.tile_y1 = static_cast<std::uint16_t>(setup.max_y / kTileSize);
+    ++chunk.stats.triangles_rasterized;
+    chunk.refs.push_back(ref);
 }
 
-LightTerms flat_terms(const Frame& frame, const FrameInstance& fi,
-                      const std::array<std::uint32_t, 3>& idx, bool front_facing) {
-    const glm::vec3& a = frame.vertices.world[idx[0]];
-    const glm::vec3& b = frame.vertices.world[idx[1]];
-    const glm::vec3& c = frame.vertices.world[idx[2]];
-    glm::vec3 n = glm::cross(b - a, c - a);
-    const float len = glm::length(n);
-    n = len > 0.0f ? n / len : glm::vec3(0, 1, 0);
-    if (!front_facing && frame.options->two_sided_lighting) n = -n;
-    const glm::vec3 centroid = (a + b + c) / 3.0f;
-    return evaluate_lighting(frame.options->lighting, *fi.material, centroid, n, frame.eye,
-                             frame.view_axis);
-}
-
-void emit(const Frame& frame, const FrameInstance& fi, RasterTriangle& rt,
-          const std::array<glm::vec4, 3>& clip, ChunkOutput& out) {
-    switch (setup_triangle(clip, frame.setup_settings, rt.setup)) {
-        case SetupResult::Visible:
-            if (fi.shading == ShadingMode::Flat)
-                rt.flat = flat_terms(frame, fi, rt.vertex, rt.setup.front_facing);
-            ++out.stats.triangles_rasterized;
-            out.triangles.push_back(rt);
-            break;
-        case SetupResult::Degenerate: ++out.stats.triangles_degenerate; break;
-        case SetupResult::Culled: ++out.stats.triangles_backface_culled; break;
-        case SetupResult::NoCoverage: ++out.stats.triangles_no_coverage; break;
+void clip_and_emit(const Frame& frame, TriangleRef ref, const std::array<glm::vec4, 3>& clip,
+                   std::uint32_t crossing, Chunk& chunk) {
+    const RenderOptions& options = *frame.options;
+    const int user_planes = frame.clip_settings.user_plane_count;
+    std::array<std::array<float, 3>, kMaxUserClipPlanes> user_distances{};
+    for (int p = 0; p < user_planes; ++p) {
+        const glm::vec4& plane = options.clip_planes[static_cast<std::size_t>(p)];
+        for (std::size_t k = 0; k < 3; ++k)
+            user_distances[static_cast<std::size_t>(p)][k] =
+                glm::dot(glm::vec3(plane), frame.vertices.world[ref.vertex[k]]) + plane.w;
+    }
+    ClippedPolygon polygon;
+    clip_triangle(clip, crossing, frame.clip_settings,
+                  std::span(user_distances.data(), static_cast<std::size_t>(user_planes)),
+                  polygon);
+    if (polygon.count < 3) return;
+    // New vertices go to the chunk; the polygon's vertices are snapped once each, so the fan's
+    // pieces share exact vertices and leave no cracks between them.
+    const auto base = static_cast<std::uint32_t>(chunk.extra_vertices.size());
+    for (int k = 0; k < polygon.count; ++k) {
+        ScreenVertex s;
+        if (!to_screen(polygon.vertices[static_cast<std::size_t>(k)].position,
+                       frame.setup_settings, s)) {
+            ++chunk.stats.triangles_degenerate;
+            chunk.extra_vertices.resize(base);
+            return;
+        }
+        chunk.extra_vertices.push_back(s);
+    }
+    for (int k = 1; k + 1 < polygon.count; ++k) {
+        const auto a = base, b = base + std::uint32_t(k), c = base + std::uint32_t(k + 1);
+        ref.screen = {a | kExtraVertex, b | kExtraVertex, c | kExtraVertex};
+        ref.piece = static_cast<std::uint32_t>(chunk.pieces.size());
+        const std::size_t before = chunk.refs.size();
+        emit(frame, ref,
+             {chunk.extra_vertices[a], chunk.extra_vertices[b], chunk.extra_vertices[c]}, chunk);
+        if (chunk.refs.size() != before)
+            chunk.pieces.push_back({{polygon.vertices[0].weights,
+                                     polygon.vertices[static_cast<std::size_t>(k)].weights,
+                                     polygon.vertices[static_cast<std::size_t>(k + 1)].weights}});
     }
 }
 
-void process_chunk(const Frame& frame, const Chunk& chunk, ChunkOutput& out) {
-    const FrameInstance& fi = frame.instances[chunk.instance];
+void process_instance_range(const Frame& frame, std::uint32_t instance, std::size_t first,
+                            std::size_t end, Chunk& chunk) {
+    const FrameInstance& fi = frame.instances[instance];
     const Mesh& mesh = *fi.mesh;
     const RenderOptions& options = *frame.options;
+    const FrameVertices& vertices = frame.vertices;
     const int user_planes = frame.clip_settings.user_plane_count;
     const auto vertex_total = static_cast<std::uint32_t>(mesh.positions.size());
-    ClippedPolygon polygon;
+    const std::uint32_t* indices = mesh.indices.data();
 
-    for (std::size_t t = chunk.first_triangle; t < chunk.end_triangle; ++t) {
-        ++out.stats.triangles_in;
-        RasterTriangle rt;
-        rt.instance = chunk.instance;
-        rt.primitive = static_cast<std::uint32_t>(t);
-        std::array<glm::vec4, 3> clip;
-        bool valid = true;
+    for (std::size_t t = first; t < end; ++t) {
+        TriangleRef ref;
+        ref.instance = instance;
+        ref.primitive = static_cast<std::uint32_t>(t);
+        std::array<std::uint32_t, 3> code{};
+        bool valid = true, finite = true;
         for (std::size_t k = 0; k < 3; ++k) {
-            const std::uint32_t local = mesh.indices[3 * t + k];
-            if (local >= vertex_total) valid = false;  // the loaders reject this; be safe
-            rt.vertex[k] = fi.first_vertex + (local < vertex_total ? local : 0);
-            clip[k] = frame.vertices.clip[rt.vertex[k]];
-            valid = valid && finite(clip[k]);
+            const std::uint32_t local = indices[3 * t + k];
+            valid &= local < vertex_total;  // the loaders reject this; be safe
+            const std::uint32_t global = fi.first_vertex + (local < vertex_total ? local : 0);
+            ref.vertex[k] = ref.screen[k] = global;
+            code[k] = vertices.outcode[global];
+            finite &= code[k] != kNonFinite;
         }
-        if (!valid) {
-            ++out.stats.triangles_non_finite;
+        if (!valid || !finite) {  // a NaN/Inf vertex: nothing sensible to draw
+            ++chunk.stats.triangles_non_finite;
             continue;
         }
-
-        std::array<std::array<float, 3>, kMaxUserClipPlanes> user_distances{};
-        std::uint32_t codes[3];
-        for (std::size_t k = 0; k < 3; ++k) {
-            float d[kMaxUserClipPlanes] = {};
-            for (int p = 0; p < user_planes; ++p) {
-                const glm::vec4& plane = options.clip_planes[static_cast<std::size_t>(p)];
-                d[p] = glm::dot(glm::vec3(plane), frame.vertices.world[rt.vertex[k]]) + plane.w;
-                user_distances[static_cast<std::size_t>(p)][k] = d[p];
-            }
-            codes[k] = clip_outcode(clip[k], frame.clip_settings,
-                                    std::span<const float>(d, static_cast<std::size_t>(user_planes)));
+        for (int p = 0; p < user_planes; ++p) {
+            const glm::vec4& plane = options.clip_planes[static_cast<std::size_t>(p)];
+            for (std::size_t k = 0; k < 3; ++k)
+                if (!(glm::dot(glm::vec3(plane), vertices.world[ref.vertex[k]]) + plane.w >= 0.0f))
+                    code[k] |= kClipUser0 << p;
         }
-        if (codes[0] & codes[1] & codes[2]) {
-            ++out.stats.triangles_trivially_rejected;
+        if (code[0] & code[1] & code[2]) {
+            ++chunk.stats.triangles_trivially_rejected;
             continue;
         }
-        const std::uint32_t crossing = codes[0] | codes[1] | codes[2];
+        const std::uint32_t crossing = code[0] | code[1] | code[2];
         if (crossing == 0) {
-            emit(frame, fi, rt, clip, out);
+            emit(frame, ref,
+                 {vertices.screen[ref.vertex[0]], vertices.screen[ref.vertex[1]],
+                  vertices.screen[ref.vertex[2]]},
+                 chunk);
             continue;
         }
+        ++chunk.stats.triangles_clipped;
+        clip_and_emit(frame, ref,
+                      {vertices.clip[ref.vertex[0]], vertices.clip[ref.vertex[1]],
+                       vertices.clip[ref.vertex[2]]},
+                      crossing, chunk);
+    }
+}
 
-        ++out.stats.triangles_clipped;
-        clip_triangle(clip, crossing, frame.clip_settings,
-                      std::span(user_distances.data(), static_cast<std::size_t>(user_planes)),
-                      polygon);
-        // Fan-triangulate the convex polygon; its pieces share exact vertices, so no cracks.
-        for (int k = 1; k + 1 < polygon.count; ++k) {
-            const ClipVertex& a = polygon.vertices[0];
-            const ClipVertex& b = polygon.vertices[static_cast<std::size_t>(k)];
-            const ClipVertex& c = polygon.vertices[static_cast<std::size_t>(k + 1)];
-            rt.clipped = true;
-            rt.weights = {a.weights, b.weights, c.weights};
-            emit(frame, fi, rt, {a.position, b.position, c.position}, out);
-        }
+void process_chunk(const Frame& frame, Chunk& chunk) {
+    const std::vector<std::size_t>& prefix = frame.instance_first_triangle;
+    chunk.refs.reserve((chunk.end_triangle - chunk.first_triangle) / 2);
+    auto i = static_cast<std::uint32_t>(
+        std::upper_bound(prefix.begin(), prefix.end(), chunk.first_triangle) - prefix.begin() - 1);
+    for (std::size_t g = chunk.first_triangle; g < chunk.end_triangle; ++i) {
+        const std::size_t end = std::min(chunk.end_triangle, prefix[i + 1]);
+        process_instance_range(frame, i, g - prefix[i], end - prefix[i], chunk);
+        g = end;
+    }
+    chunk.stats.triangles_in = chunk.end_triangle - chunk.first_triangle;
+}
+
+// Counting sort of the chunk's refs into tiles, keeping their order inside each tile.
+void bin_chunk(const Frame& frame, Chunk& chunk) {
+    const std::size_t tiles = std::size_t(frame.tiles_x) * std::size_t(frame.tiles_y);
+    chunk.bin_offsets.assign(tiles + 1, 0);
+    for (const TriangleRef& r : chunk.refs)
+        for (int ty = r.tile_y0; ty <= r.tile_y1; ++ty)
+            for (int tx = r.tile_x0; tx <= r.tile_x1; ++tx)
+                ++chunk.bin_offsets[std::size_t(ty * frame.tiles_x + tx) + 1];
+    for (std::size_t t = 0; t < tiles; ++t) chunk.bin_offsets[t + 1] += chunk.bin_offsets[t];
+    chunk.bin_entries.resize(chunk.bin_offsets[tiles]);
+    std::vector<std::uint32_t> cursor(chunk.bin_offsets.begin(), chunk.bin_offsets.end() - 1);
+    for (std::uint32_t i = 0; i < chunk.refs.size(); ++i) {
+        const TriangleRef& r = chunk.refs[i];
+        for (int ty = r.tile_y0; ty <= r.tile_y1; ++ty)
+            for (int tx = r.tile_x0; tx <= r.tile_x1; ++tx)
+                chunk.bin_entries[cursor[std::size_t(ty * frame.tiles_x + tx)]++] = i;
     }
 }
 
 }  // namespace
 
-void assemble_and_setup(Frame& frame, RenderStats& stats) {
-    constexpr std::size_t kChunkTriangles = 8192;
-    std::vector<Chunk> chunks;
-    for (std::uint32_t i = 0; i < frame.instances.size(); ++i) {
-        const std::size_t count = frame.instances[i].mesh->triangle_count();
-        for (std::size_t first = 0; first < count; first += kChunkTriangles)
-            chunks.push_back({i, first, std::min(count, first + kChunkTriangles)});
-    }
-    std::vector<ChunkOutput> outputs(chunks.size());
-    tbb::parallel_for(std::size_t{0}, chunks.size(),
-                      [&](std::size_t c) { process_chunk(frame, chunks[c], outputs[c]); });
-
+void assemble_and_bin(Frame& frame, RenderStats& stats) {
     std::size_t total = 0;
-    for (const ChunkOutput& o : outputs) total += o.triangles.size();
-    frame.triangles.reserve(total);
-    for (ChunkOutput& o : outputs) {
-        frame.triangles.insert(frame.triangles.end(), o.triangles.begin(), o.triangles.end());
-        stats.triangles_in += o.stats.triangles_in;
-        stats.triangles_non_finite += o.stats.triangles_non_finite;
-        stats.triangles_trivially_rejected += o.stats.triangles_trivially_rejected;
-        stats.triangles_clipped += o.stats.triangles_clipped;
-        stats.triangles_backface_culled += o.stats.triangles_backface_culled;
-        stats.triangles_degenerate += o.stats.triangles_degenerate;
-        stats.triangles_no_coverage += o.stats.triangles_no_coverage;
-        stats.triangles_rasterized += o.stats.triangles_rasterized;
-        o = ChunkOutput{};
+    frame.instance_first_triangle.assign(1, 0);
+    for (const FrameInstance& fi : frame.instances) {
+        total += fi.mesh->triangle_count();
+        frame.instance_first_triangle.push_back(total);
+    }
+    // Chunks of at least 16k triangles and at most 4000 of them: the back end packs the chunk
+    // into 12 bits of a pixel's triangle reference and the ref index into 20 (a triangle yields
+    // at most kMaxClippedVertices - 2 pieces, so 2^20 refs hold 16k * 13 pieces and more).
+    if (total > std::size_t{4000} * 65536)
+        throw InputError("", "more than 262,144,000 triangles in one frame");
+    const std::size_t chunk_triangles = std::max<std::size_t>(16384, total / 4000 + 1);
+    for (std::size_t first = 0; first < total; first += chunk_triangles) {
+        Chunk c;
+        c.first_triangle = first;
+        c.end_triangle = std::min(total, first + chunk_triangles);
+        frame.chunks.push_back(std::move(c));
+    }
+    tbb::parallel_for(std::size_t{0}, frame.chunks.size(), [&](std::size_t c) {
+        process_chunk(frame, frame.chunks[c]);
+        bin_chunk(frame, frame.chunks[c]);
+    });
+    for (const Chunk& c : frame.chunks) {
+        stats.triangles_in += c.stats.triangles_in;
+        stats.triangles_non_finite += c.stats.triangles_non_finite;
+        stats.triangles_trivially_rejected += c.stats.triangles_trivially_rejected;
+        stats.triangles_clipped += c.stats.triangles_clipped;
+        stats.triangles_backface_culled += c.stats.triangles_backface_culled;
+        stats.triangles_degenerate += c.stats.triangles_degenerate;
+        stats.triangles_no_coverage += c.stats.triangles_no_coverage;
+        stats.triangles_rasterized += c.stats.triangles_rasterized;
     }
 }
 

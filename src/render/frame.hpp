@@ -1,4 +1,9 @@
 // Internal data of one frame, shared by the renderer's stages (src/render/*.cpp).
+//
+// Front end (parallel over chunks of triangles): every triangle is culled, clipped and tested
+// for pixel coverage; survivors become TriangleRefs, binned per chunk into screen tiles.
+// Back end (parallel over tiles): each tile walks the chunks in order, so every pixel sees its
+// triangles in submission order whatever the thread count.
 #pragma once
 #include <zraster/clip.hpp>
 #include <zraster/render.hpp>
@@ -8,6 +13,11 @@
 #include <vector>
 
 namespace zraster::detail {
+
+// Tiles are kTileSize x kTileSize pixels; inside a tile, blocks of kBlockSize x kBlockSize are
+// accepted or rejected whole by their corners before any per-pixel work.
+inline constexpr int kTileSize = 64;
+inline constexpr int kBlockSize = 8;
 
 // One instance as the later stages see it.
 struct FrameInstance {
@@ -23,23 +33,44 @@ struct FrameInstance {
 // Output of the vertex stage for every vertex of every visible instance.
 struct FrameVertices {
     std::vector<glm::vec4> clip;
-    std::vector<glm::vec3> world;
-    std::vector<glm::vec3> normal;  // world space, unit
-    std::vector<glm::vec2> uv;      // (0, 0) when the mesh has none
-    std::vector<LightTerms> gouraud;  // per-vertex lighting (Gouraud instances only)
+    std::vector<ScreenVertex> screen;  // valid where outcode == 0
+    std::vector<std::uint32_t> outcode;  // ClipPlaneBit mask; kNonFinite for NaN/Inf
+    std::vector<glm::vec3> world;      // when shading or user clip planes need them
+    std::vector<glm::vec3> normal;     // world space, unit
+    std::vector<glm::vec2> uv;         // (0, 0) when the mesh has none
+    std::vector<LightTerms> gouraud;   // per-vertex lighting (Gouraud instances only)
+};
+inline constexpr std::uint32_t kNonFinite = 0xffffffffu;
+
+// A triangle (or a piece of a clipped one) that covers at least one pixel center.
+struct TriangleRef {
+    // Screen vertices: indices into FrameVertices::screen, or, with kExtraVertex set, into the
+    // chunk's extra vertices (made by the clipper).
+    std::array<std::uint32_t, 3> screen{};
+    std::array<std::uint32_t, 3> vertex{};  // the original triangle's vertices (attributes)
+    std::uint32_t instance = 0;             // into Frame::instances
+    std::uint32_t primitive = 0;            // triangle index within its mesh
+    std::uint32_t piece = kNotClipped;      // into Chunk::pieces for a clipped piece
+    std::uint16_t tile_x0 = 0, tile_y0 = 0, tile_x1 = 0, tile_y1 = 0;
+    bool front_facing = true;
+    static constexpr std::uint32_t kNotClipped = 0xffffffffu;
+};
+inline constexpr std::uint32_t kExtraVertex = 0x80000000u;
+
+// Barycentric weights of a clipped piece's corners relative to its original triangle.
+struct ClippedPiece {
+    std::array<glm::vec3, 3> weights;
 };
 
-// A triangle (or a piece of a clipped one) ready for tile rasterization.
-struct RasterTriangle {
-    TriangleSetup setup;
-    std::uint32_t instance = 0;   // into the frame's FrameInstance list
-    std::uint32_t primitive = 0;  // triangle index within its mesh
-    std::array<std::uint32_t, 3> vertex{};  // the original triangle's vertices (FrameVertices)
-    // For a clipped piece: barycentric weights of its three corners relative to the original
-    // triangle; attributes are recovered as sum over corners of beta_k * weights[k].
-    bool clipped = false;
-    std::array<glm::vec3, 3> weights{};
-    LightTerms flat;  // flat shading: lit once per triangle
+// A run of consecutive triangles in draw order (instances one after another).
+struct Chunk {
+    std::size_t first_triangle = 0, end_triangle = 0;  // over all instances' triangles
+    std::vector<TriangleRef> refs;
+    std::vector<ScreenVertex> extra_vertices;
+    std::vector<ClippedPiece> pieces;
+    // Bins: refs touching tile t are bin_entries[bin_offsets[t] .. bin_offsets[t + 1]).
+    std::vector<std::uint32_t> bin_offsets, bin_entries;
+    RenderStats stats;
 };
 
 struct Frame {
@@ -49,17 +80,22 @@ struct Frame {
     glm::vec3 eye{0.0f}, view_axis{0.0f, 0.0f, 1.0f};
     ClipSettings clip_settings;
     SetupSettings setup_settings;
+    bool needs_attributes = true;  // false for depth-only frames
+    int tiles_x = 0, tiles_y = 0;
     std::vector<FrameInstance> instances;
+    std::vector<std::size_t> instance_first_triangle;  // prefix sums, one more than instances
     FrameVertices vertices;
-    std::vector<RasterTriangle> triangles;
+    std::vector<Chunk> chunks;
+
+    const ScreenVertex& screen_vertex(const Chunk& chunk, std::uint32_t index) const {
+        return (index & kExtraVertex) ? chunk.extra_vertices[index & ~kExtraVertex]
+                                      : vertices.screen[index];
+    }
 };
 
 // Stages, in order.
 void run_vertex_stage(Frame& frame, RenderStats& stats);
-void assemble_and_setup(Frame& frame, RenderStats& stats);
+void assemble_and_bin(Frame& frame, RenderStats& stats);
 void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& stats);
-
-// Tiles are kTileSize x kTileSize pixels.
-inline constexpr int kTileSize = 64;
 
 }  // namespace zraster::detail

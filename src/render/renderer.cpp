@@ -78,6 +78,9 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     frame.setup_settings.depth_range = frame.camera.clip_depth_range();
     frame.setup_settings.cull = options.cull;
     frame.setup_settings.front_face = options.front_face;
+    frame.needs_attributes = options.color_target || options.normal_target;
+    frame.tiles_x = (options.width + detail::kTileSize - 1) / detail::kTileSize;
+    frame.tiles_y = (options.height + detail::kTileSize - 1) / detail::kTileSize;
     result.stats.camera = frame.camera;
 
     const int threads = options.threads > 0
@@ -86,7 +89,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     tbb::task_arena arena(threads);
     arena.execute([&] {
         detail::run_vertex_stage(frame, result.stats);
-        detail::assemble_and_setup(frame, result.stats);
+        detail::assemble_and_bin(frame, result.stats);
         const auto setup_done = std::chrono::steady_clock::now();
         result.stats.setup_ms =
             std::chrono::duration<double, std::milli>(setup_done - start).count();

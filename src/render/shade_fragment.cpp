@@ -1,21 +1,42 @@
 #include "render/shade_fragment.hpp"
 
+#include <cmath>
+
 namespace zraster::detail {
 namespace {
 
-glm::vec3 base_color(const Frame& frame, const FrameInstance& fi, const RasterTriangle& t,
+template <class T>
+T interpolate(const std::vector<T>& values, const std::array<std::uint32_t, 3>& v,
+              const glm::vec3& b) {
+    return values[v[0]] * b.x + values[v[1]] * b.y + values[v[2]] * b.z;
+}
+
+// Barycentric weights of the ORIGINAL triangle's vertices from those of a (clipped) piece.
+glm::vec3 original_barycentrics(const ShadingTriangle& t, glm::vec3 b) {
+    if (t.ref->piece == TriangleRef::kNotClipped) return b;
+    const auto& w = t.chunk->pieces[t.ref->piece].weights;
+    return b.x * w[0] + b.y * w[1] + b.z * w[2];
+}
+
+glm::vec3 unit_or_up(glm::vec3 n) {
+    const float len = glm::length(n);
+    return len > 0.0f ? n / len : glm::vec3(0, 1, 0);
+}
+
+glm::vec3 base_color(const Frame& frame, const FrameInstance& fi, const ShadingTriangle& t,
                      int px, int py, const glm::vec3& b) {
     const Material& material = *fi.material;
     if (!fi.textured) return material.base_color;
-    const Interpolation interpolation = frame.options->interpolation;
-    const glm::vec2 uv = interpolate(frame.vertices.uv, t.vertex, b);
+    const std::vector<glm::vec2>& uvs = frame.vertices.uv;
+    const glm::vec2 uv = interpolate(uvs, t.ref->vertex, b);
     glm::vec2 duv_dx(0.0f), duv_dy(0.0f);
-    if (frame.options->texture_filter == TextureFilter::Trilinear) {
+    if (frame.options->texture_filter == TextureFilter::Trilinear && t.has_setup) {
         // Derivatives by evaluating the same interpolation one pixel over (exact, no quads).
-        duv_dx = interpolate(frame.vertices.uv, t.vertex,
-                             original_barycentrics(t, px + 1, py, interpolation)) - uv;
-        duv_dy = interpolate(frame.vertices.uv, t.vertex,
-                             original_barycentrics(t, px, py + 1, interpolation)) - uv;
+        const Interpolation interpolation = frame.options->interpolation;
+        duv_dx = interpolate(uvs, t.ref->vertex,
+                             original_barycentrics(t, barycentrics(t.setup, px + 1, py, interpolation))) - uv;
+        duv_dy = interpolate(uvs, t.ref->vertex,
+                             original_barycentrics(t, barycentrics(t.setup, px, py + 1, interpolation))) - uv;
         if (!std::isfinite(duv_dx.x + duv_dx.y + duv_dy.x + duv_dy.y)) duv_dx = duv_dy = {};
     }
     const glm::vec4 texel =
@@ -25,35 +46,55 @@ glm::vec3 base_color(const Frame& frame, const FrameInstance& fi, const RasterTr
 
 }  // namespace
 
-ShadedFragment shade_fragment(const Frame& frame, const RasterTriangle& t, int px, int py,
-                              bool want_normal) {
-    const FrameInstance& fi = frame.instances[t.instance];
-    const RenderOptions& options = *frame.options;
-    const glm::vec3 b = original_barycentrics(t, px, py, options.interpolation);
-    const bool flip = !t.setup.front_facing && options.two_sided_lighting;
+void prepare_shading_triangle(const Frame& frame, const Chunk& chunk, const TriangleRef& ref,
+                              ShadingTriangle& out) {
+    out.chunk = &chunk;
+    out.ref = &ref;
+    const FrameInstance& fi = frame.instances[ref.instance];
+    out.has_setup = false;
+    if (fi.textured && frame.options->texture_filter == TextureFilter::Trilinear) {
+        const std::array<ScreenVertex, 3> v{frame.screen_vertex(chunk, ref.screen[0]),
+                                            frame.screen_vertex(chunk, ref.screen[1]),
+                                            frame.screen_vertex(chunk, ref.screen[2])};
+        out.has_setup = setup_triangle(v, frame.setup_settings, out.setup) == SetupResult::Visible;
+    }
+    if (fi.shading == ShadingMode::Flat) {
+        const glm::vec3& a = frame.vertices.world[ref.vertex[0]];
+        const glm::vec3& b = frame.vertices.world[ref.vertex[1]];
+        const glm::vec3& c = frame.vertices.world[ref.vertex[2]];
+        glm::vec3 n = unit_or_up(glm::cross(b - a, c - a));
+        if (!ref.front_facing && frame.options->two_sided_lighting) n = -n;
+        out.flat = evaluate_lighting(frame.options->lighting, *fi.material, (a + b + c) / 3.0f, n,
+                                     frame.eye, frame.view_axis);
+    }
+}
 
-    ShadedFragment out{};
+ShadedFragment shade_fragment(const Frame& frame, const ShadingTriangle& t, float b1, float b2,
+                              int px, int py, bool want_normal) {
+    const FrameInstance& fi = frame.instances[t.ref->instance];
+    const RenderOptions& options = *frame.options;
+    const glm::vec3 b = original_barycentrics(t, {1.0f - b1 - b2, b1, b2});
+    const bool flip = !t.ref->front_facing && options.two_sided_lighting;
+    const auto& idx = t.ref->vertex;
+
+    ShadedFragment out;
     const glm::vec3 base = base_color(frame, fi, t, px, py, b);
     switch (fi.shading) {
         case ShadingMode::Unlit: out.color = base; break;
         case ShadingMode::Flat: out.color = combine(t.flat, base); break;
         case ShadingMode::Gouraud: {
+            const auto& g = frame.vertices.gouraud;
             LightTerms terms;
-            terms.diffuse = frame.vertices.gouraud[t.vertex[0]].diffuse * b.x +
-                            frame.vertices.gouraud[t.vertex[1]].diffuse * b.y +
-                            frame.vertices.gouraud[t.vertex[2]].diffuse * b.z;
-            terms.specular = frame.vertices.gouraud[t.vertex[0]].specular * b.x +
-                             frame.vertices.gouraud[t.vertex[1]].specular * b.y +
-                             frame.vertices.gouraud[t.vertex[2]].specular * b.z;
+            terms.diffuse = g[idx[0]].diffuse * b.x + g[idx[1]].diffuse * b.y + g[idx[2]].diffuse * b.z;
+            terms.specular =
+                g[idx[0]].specular * b.x + g[idx[1]].specular * b.y + g[idx[2]].specular * b.z;
             out.color = combine(terms, base);
             break;
         }
         case ShadingMode::Phong: {
-            glm::vec3 n = interpolate(frame.vertices.normal, t.vertex, b);
-            const float len = glm::length(n);
-            n = len > 0.0f ? n / len : glm::vec3(0, 1, 0);
+            glm::vec3 n = unit_or_up(interpolate(frame.vertices.normal, idx, b));
             if (flip) n = -n;
-            const glm::vec3 p = interpolate(frame.vertices.world, t.vertex, b);
+            const glm::vec3 p = interpolate(frame.vertices.world, idx, b);
             out.color = combine(
                 evaluate_lighting(options.lighting, *fi.material, p, n, frame.eye, frame.view_axis),
                 base);
@@ -62,9 +103,7 @@ ShadedFragment shade_fragment(const Frame& frame, const RasterTriangle& t, int p
         }
     }
     if (want_normal) {
-        glm::vec3 n = interpolate(frame.vertices.normal, t.vertex, b);
-        const float len = glm::length(n);
-        n = len > 0.0f ? n / len : glm::vec3(0, 1, 0);
+        const glm::vec3 n = unit_or_up(interpolate(frame.vertices.normal, idx, b));
         out.normal = flip ? -n : n;
     }
     return out;

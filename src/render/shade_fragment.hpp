@@ -1,30 +1,30 @@
-// Fragment shading of the forward path: interpolates the attributes a fragment needs and
-// evaluates the instance's shading mode (flat, Gouraud, Phong).
+// Fragment shading: interpolates the attributes a fragment needs and evaluates the instance's
+// shading mode (unlit, flat, Gouraud, Phong). Used by the deferred pass (once per visible pixel)
+// and by the forward path (once per fragment that passes the depth test).
 #pragma once
 #include "render/frame.hpp"
 
 namespace zraster::detail {
 
 struct ShadedFragment {
-    glm::vec3 color;
-    glm::vec3 normal;  // world space, facing the viewer side when two-sided lighting is on
+    glm::vec3 color{0.0f};
+    glm::vec3 normal{0.0f};  // world space, facing the viewer side when two-sided lighting is on
 };
 
-// Barycentric weights of the ORIGINAL triangle's vertices at pixel (px, py).
-inline glm::vec3 original_barycentrics(const RasterTriangle& t, int px, int py,
-                                       Interpolation interpolation) {
-    const glm::vec3 b = barycentrics(t.setup, px, py, interpolation);
-    if (!t.clipped) return b;
-    return b.x * t.weights[0] + b.y * t.weights[1] + b.z * t.weights[2];
-}
+// What the shader needs about one triangle, computed once and reused for its pixels.
+struct ShadingTriangle {
+    const Chunk* chunk = nullptr;
+    const TriangleRef* ref = nullptr;
+    TriangleSetup setup;        // valid when has_setup (textured instances need derivatives)
+    bool has_setup = false;
+    LightTerms flat;            // flat shading, lit once per triangle
+};
 
-template <class T>
-T interpolate(const std::vector<T>& values, const std::array<std::uint32_t, 3>& v,
-              const glm::vec3& b) {
-    return values[v[0]] * b.x + values[v[1]] * b.y + values[v[2]] * b.z;
-}
+void prepare_shading_triangle(const Frame& frame, const Chunk& chunk, const TriangleRef& ref,
+                              ShadingTriangle& out);
 
-ShadedFragment shade_fragment(const Frame& frame, const RasterTriangle& t, int px, int py,
-                              bool want_normal);
+// b1, b2: barycentric weights of the piece's corners 1 and 2 at pixel (px, py).
+ShadedFragment shade_fragment(const Frame& frame, const ShadingTriangle& triangle, float b1,
+                              float b2, int px, int py, bool want_normal);
 
 }  // namespace zraster::detail

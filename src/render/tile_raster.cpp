@@ -1,18 +1,211 @@
-// Binning and per-tile rasterization. Each tile owns its pixels and walks its bin in submission
-// order, so tiles can run on any thread in any order and the image stays the same.
+// The back end: per tile, in parallel. Each tile owns its pixels and walks the chunks' bins in
+// submission order, so tiles can run on any thread in any order and the image stays the same.
+//
+// Inside a tile each triangle is traversed in 8x8 blocks: a block is rejected or fully accepted
+// from the edge functions at its corners before any per-pixel work, and the pixels of the rest
+// go through the SIMD visibility kernel. Shading is deferred by default: the tile first resolves
+// visibility (depth, triangle reference, barycentrics per pixel), then shades each visible pixel
+// once. Formats and options the kernel does not cover take the scalar reference path.
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <memory>
 
+#include "raster/visibility_kernel.hpp"
 #include "render/frame.hpp"
 #include "render/shade_fragment.hpp"
 
 namespace zraster::detail {
 namespace {
 
+constexpr int kLocalBits = 20;  // a pixel's triangle reference: chunk << 20 | index in chunk
+
 std::uint8_t to_unorm8(float v) {
     return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+}
+
+struct TileContext {
+    const Frame& frame;
+    RenderTargets& targets;
+    const DepthBuffer& codec;  // encodes/decodes the depth format
+    CompareFunc compare;
+    bool kernel;   // the block traversal with the visibility kernel may be used
+    bool simd;     // ... in its SIMD version
+    bool forward;  // shade as fragments pass (scalar path)
+    bool shade;    // color or normal target wanted
+    int x0, y0, x1, y1;  // tile rectangle in the image, [x0, x1) x [y0, y1)
+};
+
+std::size_t tile_index(int x, int y) {
+    return static_cast<std::size_t>(y * TileBuffers::kStride + x);
+}
+
+void write_shaded(const TileContext& c, const ShadedFragment& f, int px, int py) {
+    const std::size_t p = std::size_t(py) * std::size_t(c.targets.width) + std::size_t(px);
+    if (!c.targets.color.empty()) {
+        std::uint8_t* rgba = &c.targets.color[p * 4];
+        rgba[0] = to_unorm8(f.color.x);
+        rgba[1] = to_unorm8(f.color.y);
+        rgba[2] = to_unorm8(f.color.z);
+        rgba[3] = 255;
+    }
+    if (!c.targets.normal.empty()) c.targets.normal[p] = f.normal;
+}
+
+// The scalar reference path for one triangle over [x0, x1) x [y0, y1) of a tile: any depth
+// format, the depth test off, coverage counts, forward shading.
+std::uint64_t rasterize_scalar(const TileContext& c, const Chunk& chunk, const TriangleRef& ref,
+                               const TriangleSetup& setup, std::uint32_t id, TileBuffers& tile,
+                               int x0, int y0, int x1, int y1) {
+    const RenderOptions& options = *c.frame.options;
+    ShadingTriangle shading;
+    if (c.forward && c.shade) prepare_shading_triangle(c.frame, chunk, ref, shading);
+    std::uint64_t passed = 0;
+    for_each_covered_pixel(setup, x0, y0, x1, y1, [&](int px, int py) {
+        const std::size_t at = tile_index(px - c.x0, py - c.y0);
+        if (options.depth_test) {
+            const float z = depth_at(setup, px, py);
+            const float code = c.codec.format() == DepthFormat::D32F
+                                   ? z
+                                   : static_cast<float>(c.codec.encode(z));
+            if (!DepthBuffer::passes(code, tile.depth[at], c.compare)) return;
+            if (options.depth_write) tile.depth[at] = code;
+        }
+        ++passed;
+        if (options.coverage_counts) {
+            const std::size_t p = std::size_t(py) * std::size_t(c.targets.width) + std::size_t(px);
+            ++(ref.front_facing ? c.targets.front_hits[p] : c.targets.back_hits[p]);
+        }
+        const glm::vec3 b = barycentrics(setup, px, py, options.interpolation);
+        tile.ref[at] = id;
+        tile.b1[at] = b.y;
+        tile.b2[at] = b.z;
+        if (c.forward && c.shade)
+            write_shaded(c,
+                         shade_fragment(c.frame, shading, b.y, b.z, px, py,
+                                        !c.targets.normal.empty()),
+                         px, py);
+    });
+    return passed;
+}
+
+std::int64_t edge_at(const TriangleSetup& t, std::size_t k, int px, int py) {
+    return t.edge_a[k] * px + t.edge_b[k] * py + t.edge_c[k];
+}
+
+bool fits_int32(std::int64_t v) {
+    return v >= std::numeric_limits<std::int32_t>::min() &&
+           v <= std::numeric_limits<std::int32_t>::max();
+}
+
+// Hierarchical traversal of one triangle in one tile: 8x8 blocks classified by their corners,
+// then the visibility kernel on the covered or partly covered ones.
+std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const TriangleRef& ref,
+                               const TriangleSetup& setup, std::uint32_t id, TileBuffers& tile) {
+    const RenderOptions& options = *c.frame.options;
+    const int rx0 = std::max(setup.min_x, c.x0), ry0 = std::max(setup.min_y, c.y0);
+    const int rx1 = std::min(setup.max_x, c.x1 - 1), ry1 = std::min(setup.max_y, c.y1 - 1);
+    BlockJob job;
+    job.setup = &setup;
+    job.perspective = options.interpolation == Interpolation::PerspectiveCorrect;
+    job.compare = c.compare;
+    job.write_depth = options.depth_write;
+    job.ref = id;
+    std::uint64_t passed = 0;
+    const int first_by = c.y0 + (ry0 - c.y0) / kBlockSize * kBlockSize;
+    const int first_bx = c.x0 + (rx0 - c.x0) / kBlockSize * kBlockSize;
+    for (int by = first_by; by <= ry1; by += kBlockSize) {
+        const int y0 = std::max(by, ry0), y1 = std::min(by + kBlockSize - 1, ry1);
+        for (int bx = first_bx; bx <= rx1; bx += kBlockSize) {
+            const int x0 = std::max(bx, rx0), x1 = std::min(bx + kBlockSize - 1, rx1);
+            bool outside = false, full = true, fits = true;
+            for (std::size_t k = 0; k < 3 && !outside; ++k) {
+                const std::int64_t e00 = edge_at(setup, k, x0, y0);
+                const std::int64_t e10 = edge_at(setup, k, x1, y0);
+                const std::int64_t e01 = edge_at(setup, k, x0, y1);
+                const std::int64_t e11 = edge_at(setup, k, x1, y1);
+                const std::int64_t lo = std::min({e00, e10, e01, e11});
+                const std::int64_t hi = std::max({e00, e10, e01, e11});
+                outside = hi < 0;  // linear: negative at all corners means negative everywhere
+                full &= lo >= 0;
+                fits &= fits_int32(lo) && fits_int32(hi) && fits_int32(setup.edge_a[k]) &&
+                        fits_int32(setup.edge_b[k]);
+                job.e[k] = static_cast<std::int32_t>(e00);
+                job.step_x[k] = static_cast<std::int32_t>(setup.edge_a[k]);
+                job.step_y[k] = static_cast<std::int32_t>(setup.edge_b[k]);
+            }
+            if (outside) continue;
+            if (!fits && !full) {
+                // Edges too long for 32-bit lanes: the exact 64-bit scalar path for this block.
+                passed += rasterize_scalar(c, chunk, ref, setup, id, tile, x0, y0, x1 + 1, y1 + 1);
+                continue;
+            }
+            job.full = full;
+            job.x0 = x0 - c.x0;
+            job.y0 = y0 - c.y0;
+            job.width = x1 - x0 + 1;
+            job.height = y1 - y0 + 1;
+            job.plane_dx = x0 - setup.min_x;
+            job.plane_dy = y0 - setup.min_y;
+            passed += static_cast<std::uint64_t>(c.simd ? visibility_block(job, tile)
+                                                        : visibility_block_scalar(job, tile));
+        }
+    }
+    return passed;
+}
+
+// Deferred shading of a tile: every pixel with a triangle is shaded once.
+std::uint64_t shade_tile(const TileContext& c, const TileBuffers& tile) {
+    ShadingTriangle cache;
+    std::uint32_t cached_id = kNoTriangle;
+    std::uint64_t shaded = 0;
+    const bool want_normal = !c.targets.normal.empty();
+    for (int py = c.y0; py < c.y1; ++py)
+        for (int px = c.x0; px < c.x1; ++px) {
+            const std::size_t at = tile_index(px - c.x0, py - c.y0);
+            const std::uint32_t id = tile.ref[at];
+            if (id == kNoTriangle) continue;
+            if (id != cached_id) {
+                const Chunk& chunk = c.frame.chunks[id >> kLocalBits];
+                prepare_shading_triangle(c.frame, chunk,
+                                         chunk.refs[id & ((1u << kLocalBits) - 1)], cache);
+                cached_id = id;
+            }
+            ++shaded;
+            write_shaded(c, shade_fragment(c.frame, cache, tile.b1[at], tile.b2[at], px, py, want_normal),
+                         px, py);
+        }
+    return shaded;
+}
+
+// Copies the tile's results to the image targets.
+void resolve_tile(const TileContext& c, const TileBuffers& tile, const glm::u8vec4 background) {
+    RenderTargets& t = c.targets;
+    const bool d32 = c.codec.format() == DepthFormat::D32F;
+    for (int py = c.y0; py < c.y1; ++py)
+        for (int px = c.x0; px < c.x1; ++px) {
+            const std::size_t at = tile_index(px - c.x0, py - c.y0);
+            const std::size_t p = std::size_t(py) * std::size_t(t.width) + std::size_t(px);
+            const float code = tile.depth[at];
+            t.depth[p] = d32 ? code : c.codec.decode(static_cast<std::uint32_t>(code));
+            const std::uint32_t id = tile.ref[at];
+            if (id == kNoTriangle) {
+                if (!t.color.empty())
+                    std::copy(&background[0], &background[0] + 4, &t.color[p * 4]);
+                if (!t.normal.empty()) t.normal[p] = glm::vec3(0.0f);
+                if (!t.instance_id.empty()) t.instance_id[p] = t.primitive_id[p] = -1;
+                continue;
+            }
+            if (!t.instance_id.empty()) {
+                const Chunk& chunk = c.frame.chunks[id >> kLocalBits];
+                const TriangleRef& ref = chunk.refs[id & ((1u << kLocalBits) - 1)];
+                t.instance_id[p] =
+                    static_cast<std::int32_t>(c.frame.instances[ref.instance].scene_instance);
+                t.primitive_id[p] = static_cast<std::int32_t>(ref.primitive);
+            }
+        }
 }
 
 }  // namespace
@@ -20,84 +213,79 @@ std::uint8_t to_unorm8(float v) {
 void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& stats) {
     const RenderOptions& options = *frame.options;
     const int width = options.width, height = options.height;
-    const int tiles_x = (width + kTileSize - 1) / kTileSize;
-    const int tiles_y = (height + kTileSize - 1) / kTileSize;
-
-    // Bins: for each tile, the indices of the triangles whose bounding box touches it, in order.
-    std::vector<std::vector<std::uint32_t>> bins(static_cast<std::size_t>(tiles_x * tiles_y));
-    for (std::uint32_t i = 0; i < frame.triangles.size(); ++i) {
-        const TriangleSetup& s = frame.triangles[i].setup;
-        for (int ty = s.min_y / kTileSize; ty <= s.max_y / kTileSize; ++ty)
-            for (int tx = s.min_x / kTileSize; tx <= s.max_x / kTileSize; ++tx)
-                bins[static_cast<std::size_t>(ty * tiles_x + tx)].push_back(i);
-    }
-
-    DepthBuffer depth(width, height, options.depth_format);
-    depth.clear(depth_clear_value(options));
-    const CompareFunc compare = effective_depth_compare(options);
     const std::size_t pixels = std::size_t(width) * std::size_t(height);
-    const glm::u8vec4 background(to_unorm8(options.background.x), to_unorm8(options.background.y),
-                                 to_unorm8(options.background.z), 255);
-    if (options.color_target) {
-        targets.color.resize(pixels * 4);
-        for (std::size_t i = 0; i < pixels; ++i)
-            std::copy(&background[0], &background[0] + 4, &targets.color[i * 4]);
-    }
-    if (options.normal_target) targets.normal.assign(pixels, glm::vec3(0.0f));
+    targets.width = width;
+    targets.height = height;
+    targets.depth.resize(pixels);
+    if (options.color_target) targets.color.resize(pixels * 4);
+    if (options.normal_target) targets.normal.resize(pixels);
     if (options.id_targets) {
-        targets.instance_id.assign(pixels, -1);
-        targets.primitive_id.assign(pixels, -1);
+        targets.instance_id.resize(pixels);
+        targets.primitive_id.resize(pixels);
     }
     if (options.coverage_counts) {
         targets.front_hits.assign(pixels, 0);
         targets.back_hits.assign(pixels, 0);
     }
 
+    const DepthBuffer codec(1, 1, options.depth_format);
+    const float clear = options.depth_format == DepthFormat::D32F
+                            ? depth_clear_value(options)
+                            : static_cast<float>(codec.encode(depth_clear_value(options)));
+    const CompareFunc compare = effective_depth_compare(options);
     const bool shade = options.color_target || options.normal_target;
-    std::vector<std::uint64_t> shaded_per_tile(bins.size(), 0);
-    tbb::parallel_for(std::size_t{0}, bins.size(), [&](std::size_t tile) {
-        const int x0 = int(tile % std::size_t(tiles_x)) * kTileSize;
-        const int y0 = int(tile / std::size_t(tiles_x)) * kTileSize;
-        const int x1 = std::min(width, x0 + kTileSize), y1 = std::min(height, y0 + kTileSize);
-        std::uint64_t shaded = 0;
-        for (const std::uint32_t index : bins[tile]) {
-            const RasterTriangle& t = frame.triangles[index];
-            for_each_covered_pixel(t.setup, x0, y0, x1, y1, [&](int px, int py) {
-                if (options.depth_test &&
-                    !depth.test_and_write(px, py, depth_at(t.setup, px, py), compare,
-                                          options.depth_write))
-                    return;
-                const std::size_t p = std::size_t(py) * std::size_t(width) + std::size_t(px);
-                if (options.coverage_counts) ++(t.setup.front_facing ? targets.front_hits[p]
-                                                                   : targets.back_hits[p]);
-                if (options.id_targets) {
-                    targets.instance_id[p] =
-                        static_cast<std::int32_t>(frame.instances[t.instance].scene_instance);
-                    targets.primitive_id[p] = static_cast<std::int32_t>(t.primitive);
-                }
-                if (!shade) return;
-                ++shaded;
-                const ShadedFragment f = shade_fragment(frame, t, px, py, options.normal_target);
-                if (options.color_target) {
-                    std::uint8_t* c = &targets.color[p * 4];
-                    c[0] = to_unorm8(f.color.x);
-                    c[1] = to_unorm8(f.color.y);
-                    c[2] = to_unorm8(f.color.z);
-                    c[3] = 255;
-                }
-                if (options.normal_target) targets.normal[p] = f.normal;
-            });
-        }
-        shaded_per_tile[tile] = shaded;
-    });
-    for (const std::uint64_t n : shaded_per_tile) stats.fragments_shaded += n;
+    const bool forward = shade && options.strategy == ShadingStrategy::Forward;
+    // The block kernel covers the common case; the rest takes the scalar reference path.
+    const bool kernel = options.depth_format == DepthFormat::D32F && options.depth_test &&
+                        !options.coverage_counts && !forward;
+    const glm::u8vec4 background(to_unorm8(options.background.x), to_unorm8(options.background.y),
+                                 to_unorm8(options.background.z), 255);
+    stats.deferred = shade && !forward;
+    stats.simd_target = options.simd ? visibility_kernel_target() : "scalar";
 
-    targets.width = width;
-    targets.height = height;
-    targets.depth.resize(pixels);
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x)
-            targets.depth[std::size_t(y) * std::size_t(width) + std::size_t(x)] = depth.read(x, y);
+    const std::size_t tiles = std::size_t(frame.tiles_x) * std::size_t(frame.tiles_y);
+    std::vector<std::uint64_t> passed_per_tile(tiles, 0), shaded_per_tile(tiles, 0);
+    tbb::parallel_for(std::size_t{0}, tiles, [&](std::size_t tile_number) {
+        thread_local std::unique_ptr<TileBuffers> buffers;
+        if (!buffers) buffers = std::make_unique<TileBuffers>();
+        TileBuffers& tile = *buffers;
+        const int tx = int(tile_number % std::size_t(frame.tiles_x));
+        const int ty = int(tile_number / std::size_t(frame.tiles_x));
+        const TileContext c{frame, targets, codec, compare, kernel, options.simd, forward, shade,
+                            tx * kTileSize, ty * kTileSize,
+                            std::min(width, (tx + 1) * kTileSize),
+                            std::min(height, (ty + 1) * kTileSize)};
+        std::fill(std::begin(tile.depth), std::end(tile.depth), clear);
+        std::fill(std::begin(tile.ref), std::end(tile.ref), kNoTriangle);
+
+        std::uint64_t passed = 0;
+        TriangleSetup setup;
+        for (std::size_t ci = 0; ci < frame.chunks.size(); ++ci) {
+            const Chunk& chunk = frame.chunks[ci];
+            for (std::uint32_t e = chunk.bin_offsets[tile_number];
+                 e < chunk.bin_offsets[tile_number + 1]; ++e) {
+                const std::uint32_t local = chunk.bin_entries[e];
+                const TriangleRef& ref = chunk.refs[local];
+                const std::array<ScreenVertex, 3> v{frame.screen_vertex(chunk, ref.screen[0]),
+                                                    frame.screen_vertex(chunk, ref.screen[1]),
+                                                    frame.screen_vertex(chunk, ref.screen[2])};
+                if (setup_triangle(v, frame.setup_settings, setup) != SetupResult::Visible)
+                    continue;  // cannot happen: the front end made the same decision
+                const std::uint32_t id = std::uint32_t(ci) << kLocalBits | local;
+                passed += kernel ? rasterize_blocks(c, chunk, ref, setup, id, tile)
+                                 : rasterize_scalar(c, chunk, ref, setup, id, tile, c.x0, c.y0,
+                                                    c.x1, c.y1);
+            }
+        }
+        passed_per_tile[tile_number] = passed;
+        if (shade && !forward) shaded_per_tile[tile_number] = shade_tile(c, tile);
+        if (forward) shaded_per_tile[tile_number] = passed;
+        resolve_tile(c, tile, background);
+    });
+    for (std::size_t t = 0; t < tiles; ++t) {
+        stats.fragments_passed += passed_per_tile[t];
+        stats.fragments_shaded += shaded_per_tile[t];
+    }
 }
 
 }  // namespace zraster::detail

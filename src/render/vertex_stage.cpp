@@ -1,8 +1,11 @@
-// Vertex stage: view-frustum culling of instance bounds, then object -> clip space, world-space
-// positions and normals (by the inverse-transpose), and per-vertex lighting for Gouraud.
+// Vertex stage: view-frustum culling of instance bounds, then object -> clip space, outcodes and
+// snapped screen positions (once per vertex, so shared vertices snap identically in every
+// triangle), world-space positions and normals (by the inverse-transpose) and per-vertex
+// lighting for Gouraud, only where a later stage needs them.
 #include <tbb/parallel_for.h>
 
 #include <array>
+#include <cmath>
 
 #include "render/frame.hpp"
 
@@ -18,10 +21,14 @@ bool outside_frustum(const Bounds3f& box, const glm::mat4& mvp, ClipDepthRange r
     for (int i = 0; i < 8; ++i) {
         const glm::vec3 p((i & 1) ? box.hi.x : box.lo.x, (i & 2) ? box.hi.y : box.lo.y,
                           (i & 4) ? box.hi.z : box.lo.z);
-        all &= clip_outcode(mvp * glm::vec4(p, 1.0f), frustum, {});
+        all &= frustum_outcode(mvp * glm::vec4(p, 1.0f), frustum);
         if (all == 0) return false;
     }
     return true;
+}
+
+bool finite(const glm::vec4& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
 }
 
 }  // namespace
@@ -45,7 +52,8 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
         FrameInstance fi;
         fi.scene_instance = i;
         fi.mesh = &mesh;
-        fi.material = &scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
+        fi.material =
+            &scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
         fi.shading = instance.shading.value_or(options.shading);
         fi.first_vertex = vertex_count;
         fi.mvp = mvp;
@@ -55,36 +63,55 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
     }
 
     FrameVertices& v = frame.vertices;
+    const bool attributes = frame.needs_attributes;
+    const bool world = attributes || !options.clip_planes.empty();
     v.clip.resize(vertex_count);
-    v.world.resize(vertex_count);
-    v.normal.resize(vertex_count);
-    v.uv.resize(vertex_count);
+    v.screen.resize(vertex_count);
+    v.outcode.resize(vertex_count);
+    if (world) v.world.resize(vertex_count);
+    if (attributes) {
+        v.normal.resize(vertex_count);
+        v.uv.resize(vertex_count);
+    }
     bool any_gouraud = false;
-    for (const FrameInstance& fi : frame.instances) any_gouraud |= fi.shading == ShadingMode::Gouraud;
-    if (any_gouraud) v.gouraud.resize(vertex_count);
+    for (const FrameInstance& fi : frame.instances)
+        any_gouraud |= fi.shading == ShadingMode::Gouraud;
+    if (any_gouraud && attributes) v.gouraud.resize(vertex_count);
 
     for (const FrameInstance& fi : frame.instances) {
         const Mesh& mesh = *fi.mesh;
         const glm::mat4 model = scene.instances[fi.scene_instance].transform;
         const glm::mat3 to_world_normal = normal_matrix(model);
-        const bool lit_per_vertex = fi.shading == ShadingMode::Gouraud;
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.positions.size(), 4096),
-                          [&](const tbb::blocked_range<std::size_t>& r) {
-            for (std::size_t k = r.begin(); k < r.end(); ++k) {
-                const std::size_t out = fi.first_vertex + k;
-                const glm::vec4 p(mesh.positions[k], 1.0f);
-                v.clip[out] = fi.mvp * p;
-                v.world[out] = glm::vec3(model * p);
-                glm::vec3 n = mesh.normals.empty() ? glm::vec3(0, 1, 0) : mesh.normals[k];
-                n = to_world_normal * n;
-                const float len = glm::length(n);
-                v.normal[out] = len > 0.0f ? n / len : glm::vec3(0, 1, 0);
-                v.uv[out] = mesh.uvs.empty() ? glm::vec2(0.0f) : mesh.uvs[k];
-                if (lit_per_vertex)
-                    v.gouraud[out] = evaluate_lighting(options.lighting, *fi.material, v.world[out],
-                                                       v.normal[out], frame.eye, frame.view_axis);
-            }
-        });
+        const bool lit_per_vertex = fi.shading == ShadingMode::Gouraud && attributes;
+        tbb::parallel_for(
+            tbb::blocked_range<std::size_t>(0, mesh.positions.size(), 8192),
+            [&](const tbb::blocked_range<std::size_t>& r) {
+                for (std::size_t k = r.begin(); k < r.end(); ++k) {
+                    const std::size_t out = fi.first_vertex + k;
+                    const glm::vec4 p(mesh.positions[k], 1.0f);
+                    const glm::vec4 clip = fi.mvp * p;
+                    v.clip[out] = clip;
+                    std::uint32_t code = kNonFinite;
+                    if (finite(clip)) {
+                        code = frustum_outcode(clip, frame.clip_settings);
+                        if (code == 0 && !to_screen(clip, frame.setup_settings, v.screen[out]))
+                            code = kClipLeft;  // not representable: let the clipper handle it
+                    }
+                    v.outcode[out] = code;
+                    if (!world) continue;
+                    v.world[out] = glm::vec3(model * p);
+                    if (!attributes) continue;
+                    glm::vec3 n = mesh.normals.empty() ? glm::vec3(0, 1, 0) : mesh.normals[k];
+                    n = to_world_normal * n;
+                    const float len = glm::length(n);
+                    v.normal[out] = len > 0.0f ? n / len : glm::vec3(0, 1, 0);
+                    v.uv[out] = mesh.uvs.empty() ? glm::vec2(0.0f) : mesh.uvs[k];
+                    if (lit_per_vertex)
+                        v.gouraud[out] =
+                            evaluate_lighting(options.lighting, *fi.material, v.world[out],
+                                              v.normal[out], frame.eye, frame.view_axis);
+                }
+            });
     }
 }
 

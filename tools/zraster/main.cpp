@@ -12,6 +12,7 @@
 #include <vector>
 #include <new>
 
+#include "bench_command.hpp"
 #include "command_line.hpp"
 #include "info_command.hpp"
 #include "render_command.hpp"
@@ -24,6 +25,8 @@ int main(int argc, char** argv) {
     add_render_command(app, render_args);
     InfoArguments info_args;
     add_info_command(app, info_args);
+    BenchArguments bench_args;
+    add_bench_command(app, bench_args);
 
     // `zraster -o x.png --size ...` means `zraster render -o x.png --size ...`.
     std::vector<std::string> args(argv + 1, argv + argc);
@@ -43,6 +46,7 @@ int main(int argc, char** argv) {
 
     try {
         if (app.got_subcommand("info")) return run_info(info_args);
+        if (app.got_subcommand("bench")) return run_bench(bench_args);
         // No subcommand at all: render the built-in default scene to zraster.png.
         return run_render(render_args);
     } catch (const zraster::InputError& e) {

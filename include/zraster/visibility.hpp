@@ -1,0 +1,250 @@
+// Visible-surface determination besides the z-buffer: the classic algorithms of the 1970s survey
+// (Sutherland, Sproull & Schumacker 1974, "A characterization of ten hidden-surface algorithms").
+//
+//   - Painter's algorithm with Newell, Newell & Sancha's overlap tests (1972): a depth order of
+//     screen polygons, splitting them where no order exists (cyclic overlap, interpenetration).
+//   - BSP tree (Fuchs, Kedem & Naylor 1980): a world-space partition built once for a static
+//     scene; an in-order walk gives a back-to-front order for any viewpoint.
+//   - Warnock's area subdivision (1969): recursive screen subdivision until each region is simple.
+//
+// All of them start from the same geometry as the z-buffer renderer (same camera, same
+// homogeneous clipping, same back-face culling, same snapping and top-left fill rule), so their
+// primitive-id images agree with render()'s except where visibility is decided differently (ties,
+// and pixels whose centers lie within rounding of an intersection or split line).
+#pragma once
+#include <zraster/render.hpp>
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace zraster {
+
+// ---------------------------------------------------------------------------------------------
+// Common input: polygons after clipping and projection.
+
+struct PolygonVertex {
+    // x, y in pixels (y down, pixel centers at +0.5, as the rasterizer computes them from
+    // `clip`); z = window depth in [0, 1], always 0 at near and 1 at far (for a reversed-Z camera
+    // it is 1 - the stored depth), so every algorithm can treat larger z as farther.
+    glm::dvec3 window{0.0};
+    // x, y snapped to the rasterizer's fixed-point grid (1/kSubpixelScale pixel): the exact
+    // coordinates coverage is decided on.
+    std::array<std::int64_t, 2> snapped{};
+    glm::vec4 clip{0.0f};       // clip-space position: what setup_triangle rasterizes
+    glm::dvec3 world{0.0};      // world-space position
+};
+
+// A convex polygon: a scene triangle after homogeneous clipping (or a piece of one after a split).
+struct ScreenPolygon {
+    std::vector<PolygonVertex> vertices;  // >= 3, convex, in the source triangle's winding
+    // World-space plane of the source triangle: unit normal n and d with dot(n, p) + d = 0,
+    // oriented so that the viewer is on the positive side (dot(n, p) + d > 0 between the polygon
+    // and the eye). "P is behind Q's plane" is then: every vertex of P has distance <= 0.
+    glm::dvec4 plane{0.0};
+    std::int32_t instance = -1;   // index into Scene::instances
+    std::int32_t primitive = -1;  // triangle index within its mesh
+    glm::vec3 color{0.0f};        // flat-shaded color (0..1, before quantization)
+    glm::vec3 normal{0.0f};       // world-space face normal as shaded (flipped for back faces)
+    bool front_facing = true;
+};
+
+// The camera a frame uses: options.camera, else fit_camera() over the scene (as render() does).
+Camera effective_camera(const Scene& scene, const RenderOptions& options);
+
+// Runs the renderer's vertex stage math on every triangle of every instance: object -> clip space
+// by Camera::view_projection, trivial reject by clip_outcode, clip_triangle against the near/far,
+// guard-band and user planes, back-face culling per options.cull / options.front_face (decided on
+// the snapped polygon, like setup_triangle). Triangles of zero snapped area or covering no pixel
+// center are dropped. Each polygon is flat shaded once (evaluate_lighting at the triangle's
+// centroid with its face normal, the material's base color, no texture): exactly the color
+// render() gives with ShadingMode::Flat and textures off. Result in submission order.
+// Throws InputError for an image size out of range or too many user clip planes.
+std::vector<ScreenPolygon> project_scene(const Scene& scene, const RenderOptions& options);
+
+// Draws polygons in the given order with NO depth test (the last one drawn wins), with the
+// renderer's coverage rule: each polygon is fan-triangulated from its first vertex and every
+// triangle goes through setup_triangle (options.cull, options.front_face) and
+// for_each_covered_pixel. Produces the targets options asks for: color, depth (the drawn
+// polygon's depth), id targets, normal (the flat face normal). Coverage counts are not produced.
+RenderTargets paint_polygons(std::span<const ScreenPolygon> back_to_front,
+                             const RenderOptions& options, const Camera& camera);
+
+// ---------------------------------------------------------------------------------------------
+// Painter's algorithm (src/visibility/painter.cpp).
+
+struct PainterOptions {
+    // Plane-side tests count a vertex as on the plane within this fraction of the polygons'
+    // world-space extent (absorbs float rounding of the input; it is not a tuning knob).
+    double plane_epsilon = 1e-6;
+    // Safety net: past this many splits, remaining conflicts are left unresolved (counted) rather
+    // than split further. 0: 16 * polygons + 1024.
+    std::size_t max_splits = 0;
+};
+
+struct PainterStats {
+    std::uint64_t comparisons = 0;  // (P, Q) pairs examined
+    std::uint64_t swaps = 0;        // Q moved ahead of P
+    std::uint64_t splits = 0;       // polygons split by another's plane
+    std::uint64_t cycle_splits = 0;  // of which: forced by a cycle (Q already moved once)
+    std::uint64_t unresolved = 0;   // conflicts left as they were after max_splits
+    // Which test settled each comparison that did not need a swap or split:
+    // [0] depth extents, [1] x extents, [2] y extents, [3] P behind Q's plane,
+    // [4] Q in front of P's plane, [5] projections disjoint.
+    std::array<std::uint64_t, 6> resolved_by{};
+};
+
+struct PainterResult {
+    std::vector<ScreenPolygon> order;  // back to front; may contain split pieces
+    PainterStats stats;
+};
+
+// Newell, Newell & Sancha: sort by farthest depth, then settle every pair whose depth ranges
+// overlap with the tests in order (depth extents, x extents, y extents, P entirely behind Q's
+// plane, Q entirely in front of P's plane, exact projection overlap). A Q that P may hide and that
+// can go first is moved ahead of P and marked; a marked Q that must move again means a cycle, and
+// two polygons that each cross the other's plane interpenetrate: both are resolved by splitting
+// one polygon by the other's plane.
+// `viewport` is the one the polygons were projected for: split vertices are projected into it
+// exactly as the rasterizer will project them.
+PainterResult painter_sort(std::vector<ScreenPolygon> polygons, const Viewport& viewport,
+                           const PainterOptions& options = {});
+
+// The naive order the classic algorithm starts from: farthest depth first, nothing resolved.
+// Wrong for cyclic overlap and interpenetration (kept for comparison).
+std::vector<ScreenPolygon> sort_by_farthest_depth(std::vector<ScreenPolygon> polygons);
+
+// ---------------------------------------------------------------------------------------------
+// BSP tree (src/visibility/bsp_tree.cpp).
+
+struct BspVertex {
+    glm::dvec3 world{0.0};
+    // Object-space position: frames project it with the instance's model-view-projection matrix
+    // exactly as render() does, so unsplit triangles rasterize bit-identically.
+    glm::vec3 object{0.0f};
+};
+
+struct BspPolygon {
+    std::vector<BspVertex> vertices;  // >= 3, convex, planar
+    glm::dvec4 plane{0.0};            // unit normal along the winding, dot(n, p) + d = 0
+    std::int32_t instance = -1;
+    std::int32_t primitive = -1;
+};
+
+struct BspOptions {
+    // Splitter candidates evaluated per node (spread evenly over the node's polygons); the one
+    // minimizing splits + balance_weight * |front - back| is used.
+    int candidates = 12;
+    double balance_weight = 0.25;
+    // Deeper trees are refused with an InputError (the walk and the build use explicit stacks,
+    // so depth is bounded by memory, not by the call stack).
+    std::size_t max_depth = 10'000;
+    double plane_epsilon = 1e-6;  // as PainterOptions::plane_epsilon
+};
+
+struct BspStats {
+    std::size_t input_polygons = 0;
+    std::size_t polygons = 0;  // stored, after splitting
+    std::size_t nodes = 0;
+    std::size_t depth = 0;     // levels: a single node has depth 1
+    std::size_t splits = 0;    // polygons split in two
+    std::uint64_t classifications = 0;  // polygon-vs-plane tests, scoring included
+};
+
+class BspTree {
+public:
+    struct Node {
+        glm::dvec4 plane{0.0};
+        std::vector<std::uint32_t> polygons;  // coplanar with `plane`, in input order
+        std::int32_t front = -1, back = -1;   // child nodes, -1 when empty
+    };
+
+    // Throws InputError when the tree would be deeper than options.max_depth.
+    static BspTree build(std::vector<BspPolygon> polygons, const BspOptions& options = {});
+
+    // Polygon indices, farthest first, for a viewer at `eye`: a point (w = 1) for perspective,
+    // or the direction towards the viewer (w = 0) for an orthographic camera.
+    std::vector<std::uint32_t> back_to_front(const glm::dvec4& eye) const;
+
+    const std::vector<BspPolygon>& polygons() const { return polygons_; }
+    const std::vector<Node>& nodes() const { return nodes_; }
+    const BspStats& stats() const { return stats_; }
+
+private:
+    std::vector<BspPolygon> polygons_;
+    std::vector<Node> nodes_;  // nodes_[0] is the root when not empty
+    BspStats stats_;
+};
+
+// Every triangle of every instance in world space (degenerate ones dropped), in submission order.
+std::vector<BspPolygon> bsp_polygons_from_scene(const Scene& scene);
+
+// The viewer as BspTree::back_to_front wants it.
+glm::dvec4 bsp_eye(const Camera& camera);
+
+// Draws a frame of `scene` through a prebuilt tree (built from bsp_polygons_from_scene(scene)):
+// the walk's order through paint_polygons.
+RenderResult render_bsp(const BspTree& tree, const Scene& scene, const RenderOptions& options);
+
+// ---------------------------------------------------------------------------------------------
+// Warnock's area subdivision (src/visibility/warnock.cpp).
+
+// Pixels [x0, x1) x [y0, y1).
+struct PixelRegion {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
+enum class RegionRelation {
+    Disjoint,      // the polygon covers no pixel center of the region
+    Intersecting,  // partly inside
+    Contained,     // everything it covers is inside the region, and it does not surround it
+    Surrounding,   // it covers every pixel center of the region
+};
+
+// Exact, on the snapped coordinates with the rasterizer's top-left rule; the region stands for its
+// pixel centers (the only points the rasterizer samples). Disjoint: the polygon and the rectangle
+// spanned by the region's pixel centers do not meet. Surrounding: all four corner centers are
+// covered (then, by convexity, every center is).
+RegionRelation classify_polygon(const ScreenPolygon& polygon, const PixelRegion& region);
+
+struct WarnockStats {
+    std::vector<std::uint64_t> regions_per_level;       // regions examined at each level
+    std::vector<std::uint64_t> subdivisions_per_level;  // of which subdivided
+    std::uint64_t empty_leaves = 0;        // no polygon
+    std::uint64_t single_leaves = 0;       // one polygon, drawn clipped to the region
+    std::uint64_t surrounded_leaves = 0;   // a surrounding polygon in front of all others
+    std::uint64_t pixel_leaves = 0;        // one pixel: nearest polygon at its center
+    std::array<std::uint64_t, 4> classifications{};  // by RegionRelation
+};
+
+struct WarnockResult {
+    RenderTargets targets;
+    WarnockStats stats;
+};
+
+// Warnock's algorithm over the whole viewport. Depth comparisons use each polygon's plane in
+// window space evaluated at pixel centers; equal depths go to the earlier polygon (as the
+// z-buffer's LESS test keeps the first one drawn).
+WarnockResult warnock_render(std::span<const ScreenPolygon> polygons,
+                             const RenderOptions& options, const Camera& camera);
+
+// ---------------------------------------------------------------------------------------------
+
+enum class VisibilityAlgorithm { ZBuffer, Painter, Bsp, Warnock };
+
+struct VisibilityStats {
+    PainterStats painter;
+    BspStats bsp;
+    WarnockStats warnock;
+    std::size_t polygons = 0;  // after projection (painter, Warnock) or in the tree (BSP)
+};
+
+// One frame with the chosen algorithm. ZBuffer is render() with flat shading and no textures, so
+// the colors of all four are directly comparable (instances overriding the shading mode keep it
+// in the ZBuffer image). Stats: camera, triangles_in and the timings are filled in.
+RenderResult render_with_visibility(const Scene& scene, const RenderOptions& options,
+                                    VisibilityAlgorithm algorithm,
+                                    VisibilityStats* stats = nullptr);
+
+}  // namespace zraster

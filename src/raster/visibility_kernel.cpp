@@ -1,0 +1,145 @@
+// See visibility_kernel.hpp. Highway's foreach_target re-includes this file once per
+// instruction set; the scalar reference and the dispatcher are compiled once (HWY_ONCE).
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "raster/visibility_kernel.cpp"
+#include <hwy/foreach_target.h>  // must come before highway.h
+#include <hwy/highway.h>
+
+#include <algorithm>
+#include <cstdint>
+
+#include "raster/visibility_kernel.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace zraster::detail::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+template <class D, class V>
+HWY_INLINE auto depth_passes(D d, V z, V stored, CompareFunc compare) {
+    switch (compare) {
+        case CompareFunc::Never: return hn::FirstN(d, 0);
+        case CompareFunc::Less: return hn::Lt(z, stored);
+        case CompareFunc::LessEqual: return hn::Le(z, stored);
+        case CompareFunc::Equal: return hn::Eq(z, stored);
+        case CompareFunc::NotEqual: return hn::Ne(z, stored);
+        case CompareFunc::GreaterEqual: return hn::Ge(z, stored);
+        case CompareFunc::Greater: return hn::Gt(z, stored);
+        case CompareFunc::Always: break;
+    }
+    return hn::Eq(z, z);  // all lanes (z is never NaN)
+}
+
+// (c + a * dx) + (b * dy): the same operations, in the same order, as PlaneEquation::at.
+template <class D, class V>
+HWY_INLINE V plane_at(D d, const PlaneEquation& p, V dx, float dy) {
+    return hn::Add(hn::Add(hn::Set(d, p.c), hn::Mul(hn::Set(d, p.a), dx)),
+                   hn::Set(d, p.b * dy));
+}
+
+int VisibilityBlock(const BlockJob& job, TileBuffers& tile) {
+    const hn::CappedTag<float, 8> df;
+    const hn::RebindToSigned<decltype(df)> di;
+    const hn::RebindToUnsigned<decltype(df)> du;
+    const int lanes = static_cast<int>(hn::Lanes(df));
+    const TriangleSetup& t = *job.setup;
+    const auto zero_i = hn::Zero(di);
+    const auto zero_f = hn::Zero(df);
+    const auto one_f = hn::Set(df, 1.0f);
+    const auto ref = hn::Set(du, job.ref);
+    int passed = 0;
+    for (int x = 0; x < job.width; x += lanes) {
+        const auto valid = hn::FirstN(di, static_cast<std::size_t>(job.width - x));
+        const auto iota = hn::Iota(di, x);
+        const auto off0 = hn::Mul(iota, hn::Set(di, job.step_x[0]));
+        const auto off1 = hn::Mul(iota, hn::Set(di, job.step_x[1]));
+        const auto off2 = hn::Mul(iota, hn::Set(di, job.step_x[2]));
+        const auto dx = hn::ConvertTo(df, hn::Iota(di, job.plane_dx + x));
+        for (int y = 0; y < job.height; ++y) {
+            auto covered = valid;
+            if (!job.full) {
+                const auto e0 = hn::Add(hn::Set(di, job.e[0] + job.step_y[0] * y), off0);
+                const auto e1 = hn::Add(hn::Set(di, job.e[1] + job.step_y[1] * y), off1);
+                const auto e2 = hn::Add(hn::Set(di, job.e[2] + job.step_y[2] * y), off2);
+                covered = hn::AndNot(hn::Lt(hn::Or(e0, hn::Or(e1, e2)), zero_i), valid);
+            }
+            if (hn::AllFalse(di, covered)) continue;
+            const float dy = static_cast<float>(job.plane_dy + y);
+            auto z = plane_at(df, t.depth, dx, dy);
+            z = hn::Add(hn::Min(hn::Max(z, zero_f), one_f), zero_f);
+            const std::size_t at = static_cast<std::size_t>((job.y0 + y) * TileBuffers::kStride +
+                                                            job.x0 + x);
+            const auto stored = hn::LoadU(df, tile.depth + at);
+            const auto pass = hn::And(hn::RebindMask(df, covered),
+                                      depth_passes(df, z, stored, job.compare));
+            if (hn::AllFalse(df, pass)) continue;
+            passed += static_cast<int>(hn::CountTrue(df, pass));
+            if (job.write_depth) hn::StoreU(hn::IfThenElse(pass, z, stored), df, tile.depth + at);
+            const auto pass_u = hn::RebindMask(du, pass);
+            hn::StoreU(hn::IfThenElse(pass_u, ref, hn::LoadU(du, tile.ref + at)), du, tile.ref + at);
+            hn::Vec<decltype(df)> b1, b2;
+            if (job.perspective) {
+                const auto q = plane_at(df, t.q, dx, dy);
+                b1 = hn::Div(plane_at(df, t.p1, dx, dy), q);
+                b2 = hn::Div(plane_at(df, t.p2, dx, dy), q);
+            } else {
+                b1 = plane_at(df, t.l1, dx, dy);
+                b2 = plane_at(df, t.l2, dx, dy);
+            }
+            hn::StoreU(hn::IfThenElse(pass, b1, hn::LoadU(df, tile.b1 + at)), df, tile.b1 + at);
+            hn::StoreU(hn::IfThenElse(pass, b2, hn::LoadU(df, tile.b2 + at)), df, tile.b2 + at);
+        }
+    }
+    return passed;
+}
+
+const char* TargetName() { return hwy::TargetName(HWY_TARGET); }
+
+}  // namespace zraster::detail::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace zraster::detail {
+
+HWY_EXPORT(VisibilityBlock);
+HWY_EXPORT(TargetName);
+
+int visibility_block(const BlockJob& job, TileBuffers& tile) {
+    return HWY_DYNAMIC_DISPATCH(VisibilityBlock)(job, tile);
+}
+
+const char* visibility_kernel_target() { return HWY_DYNAMIC_DISPATCH(TargetName)(); }
+
+int visibility_block_scalar(const BlockJob& job, TileBuffers& tile) {
+    const TriangleSetup& t = *job.setup;
+    int passed = 0;
+    for (int y = 0; y < job.height; ++y)
+        for (int x = 0; x < job.width; ++x) {
+            if (!job.full) {
+                bool inside = true;
+                for (int k = 0; k < 3; ++k)
+                    inside &= std::int64_t{job.e[k]} + std::int64_t{job.step_x[k]} * x +
+                                  std::int64_t{job.step_y[k]} * y >= 0;
+                if (!inside) continue;
+            }
+            const int dx = job.plane_dx + x, dy = job.plane_dy + y;
+            const float z = std::min(std::max(t.depth.at(dx, dy), 0.0f), 1.0f) + 0.0f;
+            const std::size_t at =
+                static_cast<std::size_t>((job.y0 + y) * TileBuffers::kStride + job.x0 + x);
+            if (!DepthBuffer::passes(z, tile.depth[at], job.compare)) continue;
+            ++passed;
+            if (job.write_depth) tile.depth[at] = z;
+            tile.ref[at] = job.ref;
+            if (job.perspective) {
+                const float q = t.q.at(dx, dy);
+                tile.b1[at] = t.p1.at(dx, dy) / q;
+                tile.b2[at] = t.p2.at(dx, dy) / q;
+            } else {
+                tile.b1[at] = t.l1.at(dx, dy);
+                tile.b2[at] = t.l2.at(dx, dy);
+            }
+        }
+    return passed;
+}
+
+}  // namespace zraster::detail
+#endif  // HWY_ONCE

@@ -1,0 +1,99 @@
+// Filling polygons in a given order with no depth test: the output stage of the list-priority
+// algorithms (painter's, BSP) and of Warnock's leaves.
+//
+// Coverage is the renderer's own: each convex polygon is fan-triangulated from its first vertex
+// (as the renderer triangulates a clipped polygon) and each triangle goes through setup_triangle
+// and for_each_covered_pixel, so a polygon that was not split covers exactly the pixels it covers
+// in render(). Split pieces share their new vertices bit for bit, so a split line leaves no crack
+// and no double coverage; only where a new vertex lies on the polygon's outline can its snapping
+// move the outline by up to half a subpixel.
+//
+// Cost: O(covered pixels) per polygon (overdraw included: every polygon is filled, hidden or not).
+#include <algorithm>
+#include <cmath>
+
+#include "visibility/frame_context.hpp"
+
+namespace zraster {
+namespace visibility_detail {
+namespace {
+
+std::uint8_t to_unorm8(float v) {
+    return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+}
+
+}  // namespace
+
+Canvas::Canvas(const RenderOptions& options, const Camera& camera) : options_(options) {
+    setup_.viewport = {options.width, options.height};
+    setup_.depth_range = camera.clip_depth_range();
+    setup_.cull = options.cull;
+    setup_.front_face = options.front_face;
+
+    const std::size_t pixels = std::size_t(options.width) * std::size_t(options.height);
+    targets_.width = options.width;
+    targets_.height = options.height;
+    if (options.color_target) {
+        const std::uint8_t bg[4] = {to_unorm8(options.background.x),
+                                    to_unorm8(options.background.y),
+                                    to_unorm8(options.background.z), 255};
+        targets_.color.resize(pixels * 4);
+        for (std::size_t i = 0; i < pixels; ++i) std::copy(bg, bg + 4, &targets_.color[i * 4]);
+    }
+    targets_.depth.assign(pixels, depth_clear_value(options));
+    if (options.normal_target) targets_.normal.assign(pixels, glm::vec3(0.0f));
+    if (options.id_targets) {
+        targets_.instance_id.assign(pixels, -1);
+        targets_.primitive_id.assign(pixels, -1);
+    }
+}
+
+void Canvas::prepare(const ScreenPolygon& polygon, std::vector<TriangleSetup>& fans) const {
+    fans.clear();
+    const auto& v = polygon.vertices;
+    for (std::size_t k = 1; k + 1 < v.size(); ++k) {
+        TriangleSetup setup;
+        if (setup_triangle({v[0].clip, v[k].clip, v[k + 1].clip}, setup_, setup) ==
+            SetupResult::Visible)
+            fans.push_back(setup);
+    }
+}
+
+void Canvas::draw(const ScreenPolygon& polygon, std::span<const TriangleSetup> fans, int x0,
+                  int y0, int x1, int y1) {
+    const int width = options_.width;
+    std::uint8_t rgba[4] = {0, 0, 0, 255};
+    if (options_.color_target)
+        for (int c = 0; c < 3; ++c) rgba[c] = to_unorm8(polygon.color[c]);
+    for (const TriangleSetup& t : fans) {
+        for_each_covered_pixel(t, x0, y0, x1, y1, [&](int px, int py) {
+            const std::size_t p = std::size_t(py) * std::size_t(width) + std::size_t(px);
+            ++fragments_;
+            targets_.depth[p] = depth_at(t, px, py);
+            if (options_.color_target) std::copy(rgba, rgba + 4, &targets_.color[p * 4]);
+            if (options_.id_targets) {
+                targets_.instance_id[p] = polygon.instance;
+                targets_.primitive_id[p] = polygon.primitive;
+            }
+            if (options_.normal_target) targets_.normal[p] = polygon.normal;
+        });
+    }
+}
+
+void Canvas::draw(const ScreenPolygon& polygon) {
+    prepare(polygon, scratch_);
+    draw(polygon, scratch_, 0, 0, options_.width, options_.height);
+}
+
+RenderTargets Canvas::take() { return std::move(targets_); }
+
+}  // namespace visibility_detail
+
+RenderTargets paint_polygons(std::span<const ScreenPolygon> back_to_front,
+                             const RenderOptions& options, const Camera& camera) {
+    visibility_detail::Canvas canvas(options, camera);
+    for (const ScreenPolygon& polygon : back_to_front) canvas.draw(polygon);
+    return canvas.take();
+}
+
+}  // namespace zraster

@@ -1,0 +1,273 @@
+// Projection of a scene into ScreenPolygons: the common input of the painter's and Warnock's
+// algorithms (and of each BSP frame).
+//
+// It runs the z-buffer renderer's vertex-stage math through the same public functions
+// (Camera::view_projection, clip_outcode, clip_triangle, the documented viewport transform and
+// snap_to_grid), so a triangle that is not split later rasterizes bit-identically to render()'s.
+// The difference is the unit of output: render() fan-triangulates each clipped polygon at once;
+// here the convex polygon is kept whole, with its world-space positions and plane, because the
+// list-priority algorithms reason about whole polygons and their planes.
+//
+// Cost: O(triangles) time and memory (one heap-allocated vertex list per polygon).
+#include <zraster/error.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "visibility/frame_context.hpp"
+
+namespace zraster {
+
+Camera effective_camera(const Scene& scene, const RenderOptions& options) {
+    return options.camera ? *options.camera : fit_camera(scene.world_positions());
+}
+
+namespace visibility_detail {
+namespace {
+
+bool finite(const glm::vec4& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
+}
+
+constexpr std::int64_t kHalfPixel = kSubpixelScale / 2;
+
+std::int64_t floor_div(std::int64_t a, std::int64_t b) {
+    std::int64_t q = a / b;
+    if ((a % b != 0) && ((a < 0) != (b < 0))) --q;
+    return q;
+}
+
+// True when the snapped bounding box of the polygon holds a pixel center of the viewport (the
+// same test setup_triangle uses to report NoCoverage).
+bool may_cover_a_pixel(std::span<const PolygonVertex> vertices, const Viewport& viewport) {
+    std::int64_t lo_x = vertices[0].snapped[0], hi_x = lo_x;
+    std::int64_t lo_y = vertices[0].snapped[1], hi_y = lo_y;
+    for (const PolygonVertex& v : vertices) {
+        lo_x = std::min(lo_x, v.snapped[0]);
+        hi_x = std::max(hi_x, v.snapped[0]);
+        lo_y = std::min(lo_y, v.snapped[1]);
+        hi_y = std::max(hi_y, v.snapped[1]);
+    }
+    const std::int64_t px0 = std::max<std::int64_t>(0, -floor_div(kHalfPixel - lo_x, kSubpixelScale));
+    const std::int64_t py0 = std::max<std::int64_t>(0, -floor_div(kHalfPixel - lo_y, kSubpixelScale));
+    const std::int64_t px1 =
+        std::min<std::int64_t>(viewport.width - 1, floor_div(hi_x - kHalfPixel, kSubpixelScale));
+    const std::int64_t py1 =
+        std::min<std::int64_t>(viewport.height - 1, floor_div(hi_y - kHalfPixel, kSubpixelScale));
+    return px0 <= px1 && py0 <= py1;
+}
+
+}  // namespace
+
+FrameContext make_frame_context(const Scene& scene, const RenderOptions& options) {
+    if (options.width < 1 || options.height < 1 || options.width > kMaxViewport ||
+        options.height > kMaxViewport)
+        throw InputError("", "image size " + std::to_string(options.width) + "x" +
+                                 std::to_string(options.height) + " out of range (1.." +
+                                 std::to_string(kMaxViewport) + " per side)");
+    if (options.clip_planes.size() > std::size_t(kMaxUserClipPlanes))
+        throw InputError("", "at most " + std::to_string(kMaxUserClipPlanes) +
+                                 " user clip planes are supported");
+    FrameContext f;
+    f.scene = &scene;
+    f.options = &options;
+    f.camera = effective_camera(scene, options);
+    f.view_projection = f.camera.view_projection(double(options.width) / double(options.height));
+    f.eye = glm::vec3(f.camera.eye);
+    f.view_axis = glm::vec3(glm::normalize(f.camera.eye - f.camera.target));
+    f.viewer = bsp_eye(f.camera);
+    f.clip_settings.depth_range = f.camera.clip_depth_range();
+    f.clip_settings.guard_x = static_cast<float>(kGuardBand / (0.5 * options.width));
+    f.clip_settings.guard_y = static_cast<float>(kGuardBand / (0.5 * options.height));
+    f.clip_settings.user_plane_count = static_cast<int>(options.clip_planes.size());
+    f.setup_settings.viewport = {options.width, options.height};
+    f.setup_settings.depth_range = f.camera.clip_depth_range();
+    f.setup_settings.cull = options.cull;
+    f.setup_settings.front_face = options.front_face;
+    return f;
+}
+
+glm::dvec2 window_xy(const glm::vec4& clip, const Viewport& viewport) {
+    const glm::dvec4 v(clip);
+    const double rw = 1.0 / v.w;
+    return {(v.x * rw + 1.0) * 0.5 * double(viewport.width),
+            (1.0 - v.y * rw) * 0.5 * double(viewport.height)};
+}
+
+void set_window_xy(PolygonVertex& v, const Viewport& viewport) {
+    const glm::dvec2 w = window_xy(v.clip, viewport);
+    v.window.x = w.x;
+    v.window.y = w.y;
+    v.snapped = snap_to_grid(w);
+}
+
+void set_window(PolygonVertex& v, const FrameContext& frame) {
+    set_window_xy(v, frame.setup_settings.viewport);
+    const double z = double(v.clip.z) / double(v.clip.w);
+    // Normalized so that larger is farther whatever the depth convention.
+    v.window.z = frame.setup_settings.depth_range == ClipDepthRange::NegativeOneToOne
+                     ? 0.5 * z + 0.5
+                     : 1.0 - z;
+}
+
+std::int64_t snapped_area2(std::span<const PolygonVertex> vertices) {
+    std::int64_t area = 0;
+    const std::size_t n = vertices.size();
+    // Relative to vertex 0 so the products stay within the precision.hpp bounds.
+    const std::int64_t ox = vertices[0].snapped[0], oy = vertices[0].snapped[1];
+    for (std::size_t i = 1; i + 1 < n; ++i) {
+        const std::int64_t ax = vertices[i].snapped[0] - ox, ay = vertices[i].snapped[1] - oy;
+        const std::int64_t bx = vertices[i + 1].snapped[0] - ox, by = vertices[i + 1].snapped[1] - oy;
+        area += ax * by - bx * ay;
+    }
+    return area;
+}
+
+glm::dvec4 plane_through(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+    const glm::dvec3 n = glm::cross(b - a, c - a);
+    const double len = glm::length(n);
+    if (!(len > 0.0) || !std::isfinite(len)) return glm::dvec4(0.0);
+    const glm::dvec3 u = n / len;
+    return {u, -glm::dot(u, a)};
+}
+
+glm::dvec4 orient_towards(const glm::dvec4& plane, const glm::dvec4& viewer) {
+    const double side = glm::dot(glm::dvec3(plane), glm::dvec3(viewer)) + plane.w * viewer.w;
+    return side < 0.0 ? -plane : plane;
+}
+
+FlatShade flat_shade(const FrameContext& frame, std::int32_t instance, std::int32_t primitive,
+                     bool front_facing) {
+    const Scene& scene = *frame.scene;
+    const RenderOptions& options = *frame.options;
+    const Instance& inst = scene.instances[static_cast<std::size_t>(instance)];
+    const Mesh& mesh = scene.meshes[inst.mesh];
+    const Material& material =
+        scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
+    std::array<glm::vec3, 3> w;
+    for (std::size_t k = 0; k < 3; ++k) {
+        const std::uint32_t index = mesh.indices[3 * static_cast<std::size_t>(primitive) + k];
+        w[k] = glm::vec3(inst.transform * glm::vec4(mesh.positions[index], 1.0f));
+    }
+    // The renderer's flat_terms, operation for operation, so the colors match bit for bit.
+    glm::vec3 n = glm::cross(w[1] - w[0], w[2] - w[0]);
+    const float len = glm::length(n);
+    n = len > 0.0f ? n / len : glm::vec3(0, 1, 0);
+    if (!front_facing && options.two_sided_lighting) n = -n;
+    FlatShade out;
+    out.normal = n;
+    if (inst.shading.value_or(options.shading) == ShadingMode::Unlit) {
+        out.color = material.base_color;
+        return out;
+    }
+    const glm::vec3 centroid = (w[0] + w[1] + w[2]) / 3.0f;
+    out.color = combine(
+        evaluate_lighting(options.lighting, material, centroid, n, frame.eye, frame.view_axis),
+        material.base_color);
+    return out;
+}
+
+bool project_triangle(const FrameContext& frame, const TriangleSource& source, ScreenPolygon& out) {
+    const RenderOptions& options = *frame.options;
+    for (const glm::vec4& c : source.clip)
+        if (!finite(c)) return false;
+    const int user_planes = frame.clip_settings.user_plane_count;
+    std::array<std::array<float, 3>, kMaxUserClipPlanes> user_distances{};
+    std::uint32_t codes[3];
+    for (std::size_t k = 0; k < 3; ++k) {
+        float d[kMaxUserClipPlanes] = {};
+        for (int p = 0; p < user_planes; ++p) {
+            const glm::vec4& plane = options.clip_planes[static_cast<std::size_t>(p)];
+            d[p] = glm::dot(glm::vec3(plane), source.world_f[k]) + plane.w;
+            user_distances[static_cast<std::size_t>(p)][k] = d[p];
+        }
+        codes[k] = clip_outcode(source.clip[k], frame.clip_settings,
+                                std::span<const float>(d, static_cast<std::size_t>(user_planes)));
+    }
+    if (codes[0] & codes[1] & codes[2]) return false;
+    const std::uint32_t crossing = codes[0] | codes[1] | codes[2];
+
+    out.vertices.clear();
+    if (crossing == 0) {
+        for (std::size_t k = 0; k < 3; ++k) {
+            PolygonVertex v;
+            v.clip = source.clip[k];
+            v.world = source.world[k];
+            out.vertices.push_back(v);
+        }
+    } else {
+        ClippedPolygon polygon;
+        clip_triangle(source.clip, crossing, frame.clip_settings,
+                      std::span(user_distances.data(), static_cast<std::size_t>(user_planes)),
+                      polygon);
+        if (polygon.count < 3) return false;
+        for (int i = 0; i < polygon.count; ++i) {
+            const ClipVertex& c = polygon.vertices[static_cast<std::size_t>(i)];
+            PolygonVertex v;
+            v.clip = c.position;
+            v.world = double(c.weights.x) * source.world[0] + double(c.weights.y) * source.world[1] +
+                      double(c.weights.z) * source.world[2];
+            out.vertices.push_back(v);
+        }
+    }
+    for (PolygonVertex& v : out.vertices) set_window(v, frame);
+
+    // Facing and culling as setup_triangle decides them, on the snapped coordinates.
+    const std::int64_t area = snapped_area2(out.vertices);
+    if (area == 0) return false;
+    const bool ccw = area < 0;
+    out.front_facing = (options.front_face == FrontFace::CounterClockwise) == ccw;
+    if ((options.cull == CullMode::Back && !out.front_facing) ||
+        (options.cull == CullMode::Front && out.front_facing))
+        return false;
+    if (!may_cover_a_pixel(out.vertices, frame.setup_settings.viewport)) return false;
+
+    out.plane = orient_towards(source.plane, frame.viewer);
+    out.instance = source.instance;
+    out.primitive = source.primitive;
+    const FlatShade shade = flat_shade(frame, source.instance, source.primitive, out.front_facing);
+    out.color = shade.color;
+    out.normal = shade.normal;
+    return true;
+}
+
+}  // namespace visibility_detail
+
+std::vector<ScreenPolygon> project_scene(const Scene& scene, const RenderOptions& options) {
+    using namespace visibility_detail;
+    const FrameContext frame = make_frame_context(scene, options);
+    std::vector<ScreenPolygon> out;
+    ScreenPolygon polygon;
+    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+        const Instance& instance = scene.instances[i];
+        const Mesh& mesh = scene.meshes.at(instance.mesh);
+        const glm::mat4 mvp = frame.view_projection * instance.transform;
+        const glm::dmat4 model_d(instance.transform);
+        const std::size_t vertex_total = mesh.positions.size();
+        for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+            TriangleSource source;
+            source.instance = static_cast<std::int32_t>(i);
+            source.primitive = static_cast<std::int32_t>(t);
+            bool valid = true;
+            for (std::size_t k = 0; k < 3; ++k) {
+                const std::uint32_t index = mesh.indices[3 * t + k];
+                if (index >= vertex_total) {
+                    valid = false;
+                    break;
+                }
+                const glm::vec4 p(mesh.positions[index], 1.0f);
+                source.clip[k] = mvp * p;
+                source.world_f[k] = glm::vec3(instance.transform * p);
+                source.world[k] = glm::dvec3(model_d * glm::dvec4(p));
+            }
+            if (!valid) continue;
+            source.plane = plane_through(source.world[0], source.world[1], source.world[2]);
+            if (source.plane == glm::dvec4(0.0)) continue;  // no area: nothing to see
+            if (project_triangle(frame, source, polygon)) out.push_back(polygon);
+        }
+    }
+    return out;
+}
+
+}  // namespace zraster

@@ -1,0 +1,105 @@
+// One frame with a chosen visible-surface algorithm, and BSP frames from a prebuilt tree.
+//
+// This file only wires the algorithms to the renderer's inputs and outputs (see visibility.hpp);
+// the algorithms live one per file: painter.cpp, bsp_tree.cpp, warnock.cpp.
+//
+// Cost: that of the chosen algorithm plus projection (O(triangles)) and filling (O(fragments)).
+#include <chrono>
+
+#include "visibility/frame_context.hpp"
+
+namespace zraster {
+
+RenderResult render_bsp(const BspTree& tree, const Scene& scene, const RenderOptions& options) {
+    using namespace visibility_detail;
+    const auto start = std::chrono::steady_clock::now();
+    const FrameContext frame = make_frame_context(scene, options);
+    std::vector<glm::mat4> mvp(scene.instances.size());
+    for (std::size_t i = 0; i < mvp.size(); ++i)
+        mvp[i] = frame.view_projection * scene.instances[i].transform;
+
+    Canvas canvas(options, frame.camera);
+    ScreenPolygon piece;
+    RenderResult result;
+    const std::vector<BspPolygon>& polygons = tree.polygons();
+    for (const std::uint32_t index : tree.back_to_front(frame.viewer)) {
+        const BspPolygon& polygon = polygons[index];
+        const auto instance = static_cast<std::size_t>(polygon.instance);
+        const glm::mat4& model = scene.instances.at(instance).transform;
+        // Each fan triangle goes through the renderer's clipping and setup. For an unsplit scene
+        // triangle this is exactly what render() does with it; clip_triangle only takes triangles.
+        for (std::size_t k = 1; k + 1 < polygon.vertices.size(); ++k) {
+            TriangleSource source;
+            source.instance = polygon.instance;
+            source.primitive = polygon.primitive;
+            source.plane = polygon.plane;
+            const std::size_t corner[3] = {0, k, k + 1};
+            for (std::size_t c = 0; c < 3; ++c) {
+                const BspVertex& v = polygon.vertices[corner[c]];
+                const glm::vec4 p(v.object, 1.0f);
+                source.clip[c] = mvp[instance] * p;
+                source.world[c] = v.world;
+                source.world_f[c] = glm::vec3(model * p);
+            }
+            if (project_triangle(frame, source, piece)) canvas.draw(piece);
+        }
+    }
+    result.targets = canvas.take();
+    result.stats.camera = frame.camera;
+    result.stats.triangles_in = scene.triangle_count();
+    result.stats.fragments_shaded = canvas.fragments();
+    result.stats.total_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+RenderResult render_with_visibility(const Scene& scene, const RenderOptions& options,
+                                    VisibilityAlgorithm algorithm, VisibilityStats* stats) {
+    const auto start = std::chrono::steady_clock::now();
+    VisibilityStats local;
+    VisibilityStats& out = stats ? *stats : local;
+    out = VisibilityStats{};
+    RenderResult result;
+    switch (algorithm) {
+        case VisibilityAlgorithm::ZBuffer: {
+            RenderOptions flat = options;
+            flat.shading = ShadingMode::Flat;
+            flat.textures = false;
+            return render(scene, flat);
+        }
+        case VisibilityAlgorithm::Painter: {
+            const Camera camera = effective_camera(scene, options);
+            std::vector<ScreenPolygon> polygons = project_scene(scene, options);
+            out.polygons = polygons.size();
+            PainterResult sorted =
+                painter_sort(std::move(polygons), Viewport{options.width, options.height});
+            out.painter = sorted.stats;
+            result.targets = paint_polygons(sorted.order, options, camera);
+            result.stats.camera = camera;
+            break;
+        }
+        case VisibilityAlgorithm::Bsp: {
+            const BspTree tree = BspTree::build(bsp_polygons_from_scene(scene));
+            out.bsp = tree.stats();
+            out.polygons = tree.stats().polygons;
+            result = render_bsp(tree, scene, options);
+            break;
+        }
+        case VisibilityAlgorithm::Warnock: {
+            const Camera camera = effective_camera(scene, options);
+            const std::vector<ScreenPolygon> polygons = project_scene(scene, options);
+            out.polygons = polygons.size();
+            WarnockResult w = warnock_render(polygons, options, camera);
+            out.warnock = std::move(w.stats);
+            result.targets = std::move(w.targets);
+            result.stats.camera = camera;
+            break;
+        }
+    }
+    result.stats.triangles_in = scene.triangle_count();
+    result.stats.total_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace zraster

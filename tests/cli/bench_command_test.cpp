@@ -1,0 +1,106 @@
+// `zraster bench` as scripts use it: the last line is the machine-readable RESULT.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <regex>
+#include <string>
+
+#include "support/test_support.hpp"
+
+namespace zraster::test {
+namespace {
+
+struct BenchRun {
+    int exit_code;
+    std::string output;  // stdout and stderr
+};
+
+BenchRun run_zraster(const std::string& arguments, const std::filesystem::path& cwd = {}) {
+    std::string command;
+    if (!cwd.empty()) command = "cd '" + cwd.string() + "' && ";
+    command += std::string("'") + ZRASTER_CLI + "' " + arguments + " 2>&1 </dev/null";
+    FILE* pipe = popen(command.c_str(), "r");
+    std::string out;
+    std::array<char, 4096> buffer;
+    while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
+        out.append(buffer.data(), n);
+    const int status = pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+std::string last_line(const std::string& text) {
+    std::string s = text;
+    while (!s.empty() && s.back() == '\n') s.pop_back();
+    const std::size_t nl = s.rfind('\n');
+    return nl == std::string::npos ? s : s.substr(nl + 1);
+}
+
+TEST(BenchCommand, PrintsTheResultLineLast) {
+    const BenchRun r = run_zraster("bench sphere:20000 --mode phong --size 320x240 --frames 3");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    // S = lround(sqrt(20000 / 4)) = lround(70.71) = 71 stacks: 4 * 71 * 70 triangles.
+    const long stacks = std::lround(std::sqrt(20000 / 4.0));
+    ASSERT_EQ(stacks, 71);
+    const std::string tris = std::to_string(4 * stacks * (stacks - 1));
+    const std::regex format("RESULT scene=sphere:20000 mode=phong w=320 h=240 threads=[1-9][0-9]* "
+                            "tris=" + tris + " ms_median=[0-9]+\\.[0-9]{3} ms_min=[0-9]+\\.[0-9]{3}");
+    EXPECT_TRUE(std::regex_match(last_line(r.output), format)) << r.output;
+}
+
+TEST(BenchCommand, DepthModeWithThreadsAndDepthPng) {
+    const auto dir = temp_dir("bench-depth");
+    const BenchRun r = run_zraster(
+        "bench sphere:2000 --mode depth --size 64x48 --frames 2 --warmup 0 --threads 2 --out d.png",
+        dir);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(last_line(r.output).find("mode=depth w=64 h=48 threads=2 tris="), std::string::npos)
+        << r.output;
+    EXPECT_TRUE(std::filesystem::exists(dir / "d.png"));
+}
+
+TEST(BenchCommand, PrintsTheReferenceFraming) {
+    // sphere:1000000 would take long; the framing of any unit sphere is the reference's.
+    const BenchRun r = run_zraster("bench sphere:1000 --mode flat --size 32x32 --frames 1");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("camera eye (0.816496611 0.816496611 1.63299322)"), std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("near 0.990000069 far 3.01000023"), std::string::npos) << r.output;
+}
+
+TEST(BenchCommand, BunnyHasTheReferenceGeometryHash) {
+    ZRASTER_REQUIRE_SHARED_DATA();
+    const BenchRun r = run_zraster("bench '" + shared_data("meshes/obj/bunny.obj").string() +
+                                   "' --mode depth --size 64x48 --frames 1 --warmup 0");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("69666 triangles, geometry_hash ffbd53754430e6f7"), std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("eye (1.09894478 1.09894478 2.19788957)"), std::string::npos)
+        << r.output;
+}
+
+TEST(BenchCommand, BadArgumentsAreExitTwo) {
+    const auto dir = temp_dir("bench-bad");
+    for (const char* c : {
+             "bench sphere:1000 --mode toon",
+             "bench sphere:1000 --size 0x10",
+             "bench sphere:1000 --frames 0",
+             "bench sphere:1000 --warmup -1",
+             "bench sphere:1000 --threads -2",
+             "bench sphere:1000 --out out.jpg",
+             "bench sphere:abc",
+             "bench /nonexistent/mesh.obj",
+             "bench",
+         }) {
+        const BenchRun r = run_zraster(c, dir);
+        EXPECT_EQ(r.exit_code, 2) << c << "\n" << r.output;
+        EXPECT_EQ(r.output.find("RESULT"), std::string::npos) << c;
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.jpg"));
+}
+
+}  // namespace
+}  // namespace zraster::test

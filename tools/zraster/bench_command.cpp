@@ -1,0 +1,178 @@
+// `zraster bench`: renders the same frame repeatedly and prints timing statistics, with the
+// scene, camera and shading of ../shared/docs/BENCH-SCENES.md.
+#include "bench_command.hpp"
+
+#include <zraster/camera.hpp>
+#include <zraster/error.hpp>
+#include <zraster/image_io.hpp>
+#include <zraster/scenes.hpp>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <thread>
+#include <vector>
+
+#include "command_line.hpp"
+
+namespace zraster::cli {
+
+BenchMode parse_bench_mode(const std::string& option, const std::string& text) {
+    if (text == "depth") return BenchMode::Depth;
+    if (text == "flat") return BenchMode::Flat;
+    if (text == "phong") return BenchMode::Phong;
+    throw InputError(option, "expected depth, flat or phong, got '" + text + "'");
+}
+
+const char* bench_mode_name(BenchMode mode) {
+    switch (mode) {
+        case BenchMode::Depth: return "depth";
+        case BenchMode::Flat: return "flat";
+        case BenchMode::Phong: return "phong";
+    }
+    return "?";
+}
+
+void apply_bench_shading(Scene& scene, BenchMode mode) {
+    Material material;  // the defaults are the benchmark's phong material
+    if (mode == BenchMode::Flat) material.base_color = {0.9f, 0.6f, 0.3f};
+    for (Material& m : scene.materials) m = material;
+    for (Instance& instance : scene.instances) instance.shading.reset();
+}
+
+RenderOptions bench_render_options(BenchMode mode, int width, int height, int threads, bool cull) {
+    RenderOptions o;
+    o.width = width;
+    o.height = height;
+    o.threads = threads;
+    o.shading = mode == BenchMode::Flat ? ShadingMode::Unlit : ShadingMode::Phong;
+    o.lighting = LightingModel{};  // Blinn-Phong, local viewer, light (-1/3, 2/3, 2/3)
+    o.two_sided_lighting = true;
+    o.textures = false;
+    o.cull = cull ? CullMode::Back : CullMode::None;
+    o.front_face = FrontFace::CounterClockwise;
+    o.depth_format = DepthFormat::D32F;  // glbench's default DEPTH_COMPONENT32F
+    o.depth_compare = CompareFunc::Less;
+    o.depth_test = true;
+    o.depth_write = true;
+    o.background = {0.2f, 0.2f, 0.2f};
+    o.color_target = mode != BenchMode::Depth;
+    return o;
+}
+
+int effective_thread_count(int threads) {
+    return threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+void add_bench_command(CLI::App& app, BenchArguments& a) {
+    CLI::App* cmd = app.add_subcommand(
+        "bench", "Time repeated frames of a scene as the llvmpipe reference harness renders it");
+    cmd->add_option("scene", a.scene, "Mesh file, or sphere:N, city:N[:SEED], soup:N[:SEED]")
+        ->required();
+    cmd->add_option("--mode", a.mode, "depth|flat|phong")
+        ->check(CLI::IsMember({"depth", "flat", "phong"}))
+        ->capture_default_str();
+    cmd->add_option("--size", a.size, "Image size WIDTHxHEIGHT")->capture_default_str();
+    cmd->add_option("--frames", a.frames, "Timed frames")->capture_default_str();
+    cmd->add_option("--warmup", a.warmup, "Untimed frames before them")->capture_default_str();
+    cmd->add_option("--threads", a.threads, "Worker threads (0: all cores)")->capture_default_str();
+    cmd->add_flag("--no-cull", a.no_cull, "Disable back-face culling");
+    cmd->add_flag("--verbose", a.verbose, "Print every frame's time and the pipeline statistics");
+    cmd->add_option("--out", a.out,
+                    "Save the last frame as PNG (color; 16-bit depth, 65535 = far, in depth mode)");
+}
+
+namespace {
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+void validate_png_output(const std::string& path) {
+    if (path.empty()) return;
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (ext != ".png") throw InputError(path, "--out must end in .png");
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    if (!parent.empty() && !std::filesystem::is_directory(parent))
+        throw InputError(path, "cannot write: directory '" + parent.string() + "' does not exist");
+}
+
+void write_frame(const std::string& path, const RenderTargets& t, BenchMode mode) {
+    if (mode == BenchMode::Depth) {
+        std::vector<std::uint16_t> gray(t.depth.size());
+        for (std::size_t i = 0; i < gray.size(); ++i)
+            gray[i] = static_cast<std::uint16_t>(
+                std::lround(std::clamp(t.depth[i], 0.0f, 1.0f) * 65535.0f));
+        write_png16_gray(path, t.width, t.height, gray);
+        return;
+    }
+    std::vector<std::uint8_t> rgb(std::size_t(t.width) * std::size_t(t.height) * 3);
+    for (std::size_t i = 0, n = rgb.size() / 3; i < n; ++i)
+        std::copy_n(&t.color[i * 4], 3, &rgb[i * 3]);
+    write_png8(path, t.width, t.height, 3, rgb);
+}
+
+}  // namespace
+
+int run_bench(const BenchArguments& a) {
+    const BenchMode mode = parse_bench_mode("--mode", a.mode);
+    const glm::ivec2 size = parse_size("--size", a.size, kMaxViewport);
+    if (a.frames < 1) throw InputError("--frames", "must be >= 1");
+    if (a.warmup < 0) throw InputError("--warmup", "must be >= 0");
+    if (a.threads < 0) throw InputError("--threads", "must be >= 0");
+    validate_png_output(a.out);
+
+    // Loading, shading setup and framing stay outside the timed loop, as in glbench.
+    Scene scene = load_scene_or_procedural(a.scene);
+    for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
+    apply_bench_shading(scene, mode);
+    RenderOptions options = bench_render_options(mode, size.x, size.y, a.threads, !a.no_cull);
+    // The same fit_camera framing render() does for an unset camera, computed once: refitting
+    // every frame would time a scan over all vertices that glbench does not do per frame.
+    options.camera = fit_camera(scene.world_positions());
+    const Camera& cam = *options.camera;
+    const std::size_t tris = scene.triangle_count();
+    if (scene.meshes.size() == 1 && scene.instances.size() == 1)
+        fmt::print("scene {}: {} vertices, {} triangles, geometry_hash {:016x}\n", a.scene,
+                   scene.vertex_count(), tris, geometry_hash(scene.meshes[0]));
+    else
+        fmt::print("scene {}: {} instances, {} vertices, {} triangles\n", a.scene,
+                   scene.instances.size(), scene.vertex_count(), tris);
+    fmt::print("camera eye ({:.9g} {:.9g} {:.9g}) target ({:.9g} {:.9g} {:.9g}) near {:.9g} far "
+               "{:.9g}\n",
+               float(cam.eye.x), float(cam.eye.y), float(cam.eye.z), float(cam.target.x),
+               float(cam.target.y), float(cam.target.z), float(cam.near), float(cam.far));
+
+    using Clock = std::chrono::steady_clock;
+    std::vector<double> warm_ms, frame_ms;
+    RenderResult last;
+    for (int f = 0; f < a.warmup + a.frames; ++f) {
+        const auto t0 = Clock::now();
+        RenderResult result = render(scene, options);
+        const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+        (f < a.warmup ? warm_ms : frame_ms).push_back(ms);
+        if (a.verbose)
+            fmt::print("{} {}: {:.3f} ms (setup {:.3f}, raster {:.3f}), {} rasterized, {} "
+                       "fragments shaded\n",
+                       f < a.warmup ? "warmup" : "frame", f < a.warmup ? f : f - a.warmup, ms,
+                       result.stats.setup_ms, result.stats.raster_ms,
+                       result.stats.triangles_rasterized, result.stats.fragments_shaded);
+        // Each frame's targets are freed at the end of its iteration, after the clock stopped.
+        if (f + 1 == a.warmup + a.frames) last = std::move(result);
+    }
+    if (!a.out.empty()) write_frame(a.out, last.targets, mode);
+
+    fmt::print("RESULT scene={} mode={} w={} h={} threads={} tris={} ms_median={:.3f} "
+               "ms_min={:.3f}\n",
+               a.scene, bench_mode_name(mode), size.x, size.y, effective_thread_count(a.threads),
+               tris, median(frame_ms), *std::min_element(frame_ms.begin(), frame_ms.end()));
+    return kExitOk;
+}
+
+}  // namespace zraster::cli
