@@ -112,8 +112,9 @@ GlContext::GlContext(int threads) {
 
     const char* extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
     if (!extensions || !std::strstr(extensions, "EGL_MESA_platform_surfaceless"))
-        throw GlUnavailable("EGL_MESA_platform_surfaceless is not available (is Mesa's EGL, "
-                            "libegl-mesa0, installed?)");
+        throw GlUnavailable(
+            "EGL_MESA_platform_surfaceless is not available (is Mesa's EGL, "
+            "libegl-mesa0, installed?)");
     EGLDisplay display =
         eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     EGLint major = 0, minor = 0;
@@ -229,7 +230,9 @@ GlMesh::GlMesh(const FlatMesh& mesh) : index_count_(mesh.indices.size()) {
     check_gl("mesh upload");
 }
 
-GlMesh::~GlMesh() { glDeleteBuffers(3, buffers_); }
+GlMesh::~GlMesh() {
+    glDeleteBuffers(3, buffers_);
+}
 
 GlRenderer::GlRenderer(const GlMesh& mesh, BenchMode mode, int width, int height, bool cull,
                        const Camera& camera)
@@ -298,8 +301,10 @@ void GlRenderer::bind_state() const {
     glClearColor(0.2f, 0.2f, 0.2f, 1.0f);
     glFrontFace(GL_CCW);
     glCullFace(GL_BACK);
-    if (cull_) glEnable(GL_CULL_FACE);
-    else glDisable(GL_CULL_FACE);
+    if (cull_)
+        glEnable(GL_CULL_FACE);
+    else
+        glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
     const GLboolean color = mode_ == BenchMode::Depth ? GL_FALSE : GL_TRUE;
     glColorMask(color, color, color, color);

@@ -21,7 +21,7 @@ using cli::BenchMode;
 
 // Thrown when no llvmpipe context can be made (no EGL_MESA_platform_surfaceless, no Mesa driver).
 class GlUnavailable : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 
@@ -29,7 +29,7 @@ public:
 // LP_NUM_THREADS when the display is initialized, so they are set here first.
 // threads > 0 sets LP_NUM_THREADS; 0 keeps llvmpipe's default (one thread per CPU).
 class GlContext {
-public:
+  public:
     explicit GlContext(int threads);
     ~GlContext();
     GlContext(const GlContext&) = delete;
@@ -38,7 +38,7 @@ public:
     std::string renderer() const;  // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
     std::string version() const;
 
-private:
+  private:
     void* display_ = nullptr;
     void* context_ = nullptr;
 };
@@ -63,7 +63,7 @@ std::uint64_t geometry_hash(const FlatMesh& mesh);
 
 // Vertex, normal and index buffers of one mesh; shared by the renderers of its modes.
 class GlMesh {
-public:
+  public:
     explicit GlMesh(const FlatMesh& mesh);
     ~GlMesh();
     GlMesh(const GlMesh&) = delete;
@@ -74,7 +74,7 @@ public:
     unsigned index_buffer() const { return buffers_[2]; }
     std::size_t index_count() const { return index_count_; }
 
-private:
+  private:
     unsigned buffers_[3] = {0, 0, 0};
     std::size_t index_count_ = 0;
 };
@@ -82,7 +82,7 @@ private:
 // One (mesh, mode, size, camera) as glbench draws it, into its own FBO: RGBA8 color +
 // DEPTH_COMPONENT32F depth renderbuffers.
 class GlRenderer {
-public:
+  public:
     GlRenderer(const GlMesh& mesh, BenchMode mode, int width, int height, bool cull,
                const Camera& camera);
     ~GlRenderer();
@@ -96,7 +96,7 @@ public:
     // RGBA8, top row first (as RenderTargets::color).
     std::vector<std::uint8_t> read_color() const;
 
-private:
+  private:
     void bind_state() const;
 
     const GlMesh& mesh_;
@@ -111,7 +111,7 @@ private:
 struct DepthComparison {
     std::size_t pixels = 0;
     std::size_t both_empty = 0, both_covered = 0, only_gl = 0, only_zraster = 0;
-    double max_abs_difference = 0.0;  // over pixels both cover
+    double max_abs_difference = 0.0;     // over pixels both cover
     std::size_t differing_over_1e5 = 0;  // covered by both, |difference| >= 1e-5
     double coverage_agreement() const {
         return pixels ? double(both_empty + both_covered) / double(pixels) : 1.0;

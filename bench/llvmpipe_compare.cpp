@@ -11,10 +11,10 @@
 #include <zraster/render.hpp>
 #include <zraster/scenes.hpp>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <sys/resource.h>
 #include <unistd.h>
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -54,14 +54,30 @@ struct Reference {
     float near, far;
 };
 constexpr Reference kReferences[] = {
-    {"bunny.obj", 69666, 0xffbd53754430e6f7ull, {1.09894478f, 1.09894478f, 2.19788957f},
-     1.33246779f, 4.05124044f},
-    {"sphere:1000000", 998000, 0xa006c80ed0f36341ull, {0.816496611f, 0.816496611f, 1.63299322f},
-     0.990000069f, 3.01000023f},
-    {"city:20000", 200002, 0x2ecc612cd13d8f0eull, {122.648422f, 130.645508f, 245.296844f},
-     148.710892f, 452.141205f},
-    {"soup:1000000", 1000000, 0xcdc28ecb2e3c4d81ull, {1.42199349f, 1.42213714f, 2.84399104f},
-     1.72423446f, 5.24236917f},
+    {"bunny.obj",
+     69666,
+     0xffbd53754430e6f7ull,
+     {1.09894478f, 1.09894478f, 2.19788957f},
+     1.33246779f,
+     4.05124044f},
+    {"sphere:1000000",
+     998000,
+     0xa006c80ed0f36341ull,
+     {0.816496611f, 0.816496611f, 1.63299322f},
+     0.990000069f,
+     3.01000023f},
+    {"city:20000",
+     200002,
+     0x2ecc612cd13d8f0eull,
+     {122.648422f, 130.645508f, 245.296844f},
+     148.710892f,
+     452.141205f},
+    {"soup:1000000",
+     1000000,
+     0xcdc28ecb2e3c4d81ull,
+     {1.42199349f, 1.42213714f, 2.84399104f},
+     1.72423446f,
+     5.24236917f},
 };
 
 const Reference* find_reference(const std::string& spec) {
@@ -153,10 +169,11 @@ std::unique_ptr<BenchScene> load_bench_scene(const std::string& spec) {
     const Camera& c = s->camera;
     fmt::print("scene {}: {} vertices, {} triangles, geometry_hash {:016x}\n", spec,
                flat.vertex_count(), flat.triangle_count(), hash);
-    fmt::print("  camera eye ({:.9g} {:.9g} {:.9g}) target ({:.9g} {:.9g} {:.9g}) near {:.9g} far "
-               "{:.9g}\n",
-               float(c.eye.x), float(c.eye.y), float(c.eye.z), float(c.target.x),
-               float(c.target.y), float(c.target.z), float(c.near), float(c.far));
+    fmt::print(
+        "  camera eye ({:.9g} {:.9g} {:.9g}) target ({:.9g} {:.9g} {:.9g}) near {:.9g} far "
+        "{:.9g}\n",
+        float(c.eye.x), float(c.eye.y), float(c.eye.z), float(c.target.x), float(c.target.y),
+        float(c.target.z), float(c.near), float(c.far));
     if (const Reference* r = find_reference(resolve_scene_path(spec))) {
         const bool hash_ok = hash == r->hash && flat.triangle_count() == r->triangles;
         const bool camera_ok = float(c.eye.x) == r->eye[0] && float(c.eye.y) == r->eye[1] &&
@@ -199,8 +216,9 @@ void run_batch(Case& c, bool gl, int frames, SideTimes& times) {
 
 int run_check(std::vector<Case>& cases) {
     bool all_ok = true;
-    fmt::print("\n| scene | mode | coverage agreement | only llvmpipe | only zraster | max depth "
-               "diff | px diff >= 1e-5 | color: max diff, px > 1, px > 8 |\n");
+    fmt::print(
+        "\n| scene | mode | coverage agreement | only llvmpipe | only zraster | max depth "
+        "diff | px diff >= 1e-5 | color: max diff, px > 1, px > 8 |\n");
     fmt::print("|---|---|---:|---:|---:|---:|---:|---|\n");
     for (Case& c : cases) {
         c.gl->draw();
@@ -211,9 +229,9 @@ int run_check(std::vector<Case>& cases) {
         if (c.mode != BenchMode::Depth) {
             const ColorComparison k =
                 compare_color(c.gl->read_color(), zr.targets.color, gl_depth, zr.targets.depth);
-            color = fmt::format("{}, {} ({:.3f}%), {}", k.max_difference, k.over_1,
-                                100.0 * double(k.over_1) / double(std::max<std::size_t>(1, k.compared)),
-                                k.over_8);
+            color = fmt::format(
+                "{}, {} ({:.3f}%), {}", k.max_difference, k.over_1,
+                100.0 * double(k.over_1) / double(std::max<std::size_t>(1, k.compared)), k.over_8);
         }
         const bool ok = d.coverage_agreement() > 0.999;
         all_ok &= ok;
@@ -256,7 +274,8 @@ int run_timing(std::vector<Case>& cases, const Options& o) {
     const RenderOptions& first = cases.front().options;
     fmt::print("\n{}x{}, {} rounds x {} frames, best round's median ms/frame\n\n", first.width,
                first.height, o.rounds, o.frames);
-    fmt::print("| scene | mode | threads | llvmpipe ms | zraster ms | ratio (llvmpipe/zraster) |\n");
+    fmt::print(
+        "| scene | mode | threads | llvmpipe ms | zraster ms | ratio (llvmpipe/zraster) |\n");
     fmt::print("|---|---|---:|---:|---:|---:|\n");
     for (const Case& c : cases) {
         const double gl = c.gl_times.best(), zr = c.zraster_times.best();

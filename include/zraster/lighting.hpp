@@ -49,6 +49,11 @@ LightTerms evaluate_lighting(const LightingModel& model, const Material& materia
                              const glm::vec3& position, const glm::vec3& normal,
                              const glm::vec3& eye, const glm::vec3& view_axis);
 
+// x^shininess for x >= 0. Integer exponents up to kMaxIntegerShininess use exponentiation by
+// squaring (exactly reproducible by SIMD code), others std::pow.
+inline constexpr int kMaxIntegerShininess = 4096;
+float specular_power(float x, float shininess);
+
 inline glm::vec3 combine(const LightTerms& terms, const glm::vec3& base) {
     return base * terms.diffuse + terms.specular;
 }

@@ -75,6 +75,8 @@ struct SetupSettings {
     ClipDepthRange depth_range = ClipDepthRange::NegativeOneToOne;
     CullMode cull = CullMode::Back;
     FrontFace front_face = FrontFace::CounterClockwise;
+    // Compute the screen-linear barycentric planes l1, l2 too (only ScreenLinear needs them).
+    bool screen_linear_planes = true;
 };
 
 // Snaps a window-space position (pixels, y down) to the fixed-point grid: nearest 1/256 pixel,

@@ -14,6 +14,7 @@
 #include <zraster/texture.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -104,6 +105,23 @@ struct RenderResult {
 // Renders one frame. Throws InputError for unusable options (size out of range, more user clip
 // planes than supported, a non-finite camera).
 RenderResult render(const Scene& scene, const RenderOptions& options);
+
+// The same, keeping its working memory (vertex arrays, bins, image targets) from frame to frame:
+// what an application rendering many frames wants. Not thread-safe: one frame at a time.
+class Renderer {
+public:
+    Renderer();
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // The result stays valid until the next call.
+    const RenderResult& render(const Scene& scene, const RenderOptions& options);
+
+private:
+    struct State;
+    std::unique_ptr<State> state_;
+};
 
 // The options' effective depth compare function and clear value.
 CompareFunc effective_depth_compare(const RenderOptions& options);

@@ -31,8 +31,9 @@ std::array<double, 6> boundary_coordinates(const glm::dvec4& p, ClipDepthRange r
 
 std::uint32_t code_of(const std::array<double, 6>& bc) {
     std::uint32_t code = 0;
+    // Written so that NaN is outside, as in clip.hpp's frustum_outcode.
     for (int k = 0; k < 6; ++k)
-        if (bc[static_cast<std::size_t>(k)] < 0.0) code |= 1u << k;
+        if (!(bc[static_cast<std::size_t>(k)] >= 0.0)) code |= 1u << k;
     return code;
 }
 
@@ -78,10 +79,13 @@ ClippedLine4 clip_line_homogeneous(const glm::dvec4& a, const glm::dvec4& b, Cli
     const std::array<double, 6> bc_a = boundary_coordinates(a, range);
     const std::array<double, 6> bc_b = boundary_coordinates(b, range);
     const std::uint32_t code_a = code_of(bc_a), code_b = code_of(bc_b);
+    // A NaN endpoint is outside every plane, but need not share a bit with the other endpoint;
+    // the parameters computed from it would be NaN too, so the segment is dropped here.
+    const bool nan = glm::any(glm::isnan(a)) || glm::any(glm::isnan(b));
     if ((code_a | code_b) == 0) {
         ++s.trivial_accepts;
         result = {true, a, b, 0.0, 1.0};
-    } else if ((code_a & code_b) != 0) {
+    } else if ((code_a & code_b) != 0 || nan) {
         ++s.trivial_rejects;
     } else {
         double t0 = 0.0, t1 = 1.0;

@@ -21,7 +21,7 @@
 namespace zraster {
 namespace {
 
-// Calls fn(x, y, major_coordinate) for each pixel from a to b.
+// Calls fn(x, y) for each pixel from a to b.
 template <class Fn>
 void walk_line(glm::ivec2 a, glm::ivec2 b, Fn&& fn) {
     const std::int64_t dx = std::int64_t{b.x} - a.x;

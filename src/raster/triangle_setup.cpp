@@ -130,8 +130,10 @@ SetupResult setup_triangle(const std::array<ScreenVertex, 3>& v, const SetupSett
     t.q = make_plane(X, Y, inv_det, q, ox, oy);
     t.p1 = make_plane(X, Y, inv_det, {0.0, q[1], 0.0}, ox, oy);
     t.p2 = make_plane(X, Y, inv_det, {0.0, 0.0, q[2]}, ox, oy);
-    t.l1 = make_plane(X, Y, inv_det, {0.0, 1.0, 0.0}, ox, oy);
-    t.l2 = make_plane(X, Y, inv_det, {0.0, 0.0, 1.0}, ox, oy);
+    if (settings.screen_linear_planes) {
+        t.l1 = make_plane(X, Y, inv_det, {0.0, 1.0, 0.0}, ox, oy);
+        t.l2 = make_plane(X, Y, inv_det, {0.0, 0.0, 1.0}, ox, oy);
+    }
     return SetupResult::Visible;
 }
 

@@ -177,11 +177,11 @@ void assemble_and_bin(Frame& frame, RenderStats& stats) {
     if (total > std::size_t{4000} * 65536)
         throw InputError("", "more than 262,144,000 triangles in one frame");
     const std::size_t chunk_triangles = std::max<std::size_t>(16384, total / 4000 + 1);
-    for (std::size_t first = 0; first < total; first += chunk_triangles) {
-        Chunk c;
-        c.first_triangle = first;
-        c.end_triangle = std::min(total, first + chunk_triangles);
-        frame.chunks.push_back(std::move(c));
+    // Chunk objects are reused from frame to frame (their arrays keep their capacity).
+    frame.chunks.resize((total + chunk_triangles - 1) / chunk_triangles);
+    for (std::size_t c = 0; c < frame.chunks.size(); ++c) {
+        frame.chunks[c].first_triangle = c * chunk_triangles;
+        frame.chunks[c].end_triangle = std::min(total, (c + 1) * chunk_triangles);
     }
     tbb::parallel_for(std::size_t{0}, frame.chunks.size(), [&](std::size_t c) {
         process_chunk(frame, frame.chunks[c]);

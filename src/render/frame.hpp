@@ -8,6 +8,8 @@
 #include <zraster/clip.hpp>
 #include <zraster/render.hpp>
 
+#include "render/shade_kernel.hpp"
+
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -28,6 +30,7 @@ struct FrameInstance {
     std::uint32_t first_vertex = 0;  // into FrameVertices
     glm::mat4 mvp{1.0f};
     bool textured = false;
+    int phong_kernel = -1;  // index into Frame::phong_constants when the SIMD shader applies
 };
 
 // Output of the vertex stage for every vertex of every visible instance.
@@ -86,6 +89,7 @@ struct Frame {
     std::vector<std::size_t> instance_first_triangle;  // prefix sums, one more than instances
     FrameVertices vertices;
     std::vector<Chunk> chunks;
+    std::vector<PhongConstants> phong_constants;
 
     const ScreenVertex& screen_vertex(const Chunk& chunk, std::uint32_t index) const {
         return (index & kExtraVertex) ? chunk.extra_vertices[index & ~kExtraVertex]

@@ -59,11 +59,26 @@ void validate(const RenderOptions& options) {
 
 }  // namespace
 
-RenderResult render(const Scene& scene, const RenderOptions& options) {
+namespace {
+
+// Empties a frame for reuse, keeping the capacity of its arrays.
+void reset(detail::Frame& frame) {
+    frame.instances.clear();
+    frame.instance_first_triangle.clear();
+    for (detail::Chunk& c : frame.chunks) {
+        c.refs.clear();
+        c.extra_vertices.clear();
+        c.pieces.clear();
+        c.stats = RenderStats{};
+    }
+}
+
+void render_frame(detail::Frame& frame, const Scene& scene, const RenderOptions& options,
+                  RenderResult& result) {
     validate(options);
     const auto start = std::chrono::steady_clock::now();
-    RenderResult result;
-    detail::Frame frame;
+    result.stats = RenderStats{};
+    reset(frame);
     frame.scene = &scene;
     frame.options = &options;
     frame.camera = options.camera ? *options.camera : fit_camera(scene.world_positions());
@@ -78,6 +93,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     frame.setup_settings.depth_range = frame.camera.clip_depth_range();
     frame.setup_settings.cull = options.cull;
     frame.setup_settings.front_face = options.front_face;
+    frame.setup_settings.screen_linear_planes = options.interpolation == Interpolation::ScreenLinear;
     frame.needs_attributes = options.color_target || options.normal_target;
     frame.tiles_x = (options.width + detail::kTileSize - 1) / detail::kTileSize;
     frame.tiles_y = (options.height + detail::kTileSize - 1) / detail::kTileSize;
@@ -89,6 +105,15 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     tbb::task_arena arena(threads);
     arena.execute([&] {
         detail::run_vertex_stage(frame, result.stats);
+        frame.phong_constants.clear();
+        for (detail::FrameInstance& fi : frame.instances) {
+            if (fi.shading != ShadingMode::Phong || fi.textured || !options.simd ||
+                !detail::phong_kernel_applies(options.lighting, *fi.material))
+                continue;
+            fi.phong_kernel = static_cast<int>(frame.phong_constants.size());
+            frame.phong_constants.push_back(detail::make_phong_constants(
+                options.lighting, *fi.material, frame.eye, frame.view_axis));
+        }
         detail::assemble_and_bin(frame, result.stats);
         const auto setup_done = std::chrono::steady_clock::now();
         result.stats.setup_ms =
@@ -100,6 +125,27 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     });
     result.stats.total_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+struct Renderer::State {
+    detail::Frame frame;
+    RenderResult result;
+};
+
+Renderer::Renderer() : state_(std::make_unique<State>()) {}
+Renderer::~Renderer() = default;
+
+const RenderResult& Renderer::render(const Scene& scene, const RenderOptions& options) {
+    render_frame(state_->frame, scene, options, state_->result);
+    return state_->result;
+}
+
+RenderResult render(const Scene& scene, const RenderOptions& options) {
+    detail::Frame frame;
+    RenderResult result;
+    render_frame(frame, scene, options, result);
     return result;
 }
 

@@ -5,19 +5,6 @@
 namespace zraster::detail {
 namespace {
 
-template <class T>
-T interpolate(const std::vector<T>& values, const std::array<std::uint32_t, 3>& v,
-              const glm::vec3& b) {
-    return values[v[0]] * b.x + values[v[1]] * b.y + values[v[2]] * b.z;
-}
-
-// Barycentric weights of the ORIGINAL triangle's vertices from those of a (clipped) piece.
-glm::vec3 original_barycentrics(const ShadingTriangle& t, glm::vec3 b) {
-    if (t.ref->piece == TriangleRef::kNotClipped) return b;
-    const auto& w = t.chunk->pieces[t.ref->piece].weights;
-    return b.x * w[0] + b.y * w[1] + b.z * w[2];
-}
-
 glm::vec3 unit_or_up(glm::vec3 n) {
     const float len = glm::length(n);
     return len > 0.0f ? n / len : glm::vec3(0, 1, 0);
@@ -92,7 +79,7 @@ ShadedFragment shade_fragment(const Frame& frame, const ShadingTriangle& t, floa
             break;
         }
         case ShadingMode::Phong: {
-            glm::vec3 n = unit_or_up(interpolate(frame.vertices.normal, idx, b));
+            glm::vec3 n = unit_normal(interpolate(frame.vertices.normal, idx, b));  // as the kernel
             if (flip) n = -n;
             const glm::vec3 p = interpolate(frame.vertices.world, idx, b);
             out.color = combine(

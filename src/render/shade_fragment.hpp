@@ -20,6 +20,19 @@ struct ShadingTriangle {
     LightTerms flat;            // flat shading, lit once per triangle
 };
 
+// Barycentric weights of the ORIGINAL triangle's vertices from those of a (clipped) piece.
+inline glm::vec3 original_barycentrics(const ShadingTriangle& t, glm::vec3 b) {
+    if (t.ref->piece == TriangleRef::kNotClipped) return b;
+    const auto& w = t.chunk->pieces[t.ref->piece].weights;
+    return b.x * w[0] + b.y * w[1] + b.z * w[2];
+}
+
+template <class T>
+T interpolate(const std::vector<T>& values, const std::array<std::uint32_t, 3>& v,
+              const glm::vec3& b) {
+    return values[v[0]] * b.x + values[v[1]] * b.y + values[v[2]] * b.z;
+}
+
 void prepare_shading_triangle(const Frame& frame, const Chunk& chunk, const TriangleRef& ref,
                               ShadingTriangle& out);
 

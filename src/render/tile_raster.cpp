@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <memory>
 
@@ -22,9 +23,8 @@ namespace {
 
 constexpr int kLocalBits = 20;  // a pixel's triangle reference: chunk << 20 | index in chunk
 
-std::uint8_t to_unorm8(float v) {
-    return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
-}
+// Round to nearest (+ 0.5 and truncate: much cheaper than lround), as the SIMD shader does.
+std::uint8_t to_unorm8(float v) { return static_cast<std::uint8_t>(to_unorm8_int(v)); }
 
 struct TileContext {
     const Frame& frame;
@@ -156,56 +156,126 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
     return passed;
 }
 
-// Deferred shading of a tile: every pixel with a triangle is shaded once.
-std::uint64_t shade_tile(const TileContext& c, const TileBuffers& tile) {
+// The targets of a tile where nothing was drawn.
+void clear_tile_targets(const TileContext& c, float clear, std::uint32_t background) {
+    RenderTargets& t = c.targets;
+    const float depth = c.codec.format() == DepthFormat::D32F
+                            ? clear
+                            : c.codec.decode(static_cast<std::uint32_t>(clear));
+    const auto n = static_cast<std::size_t>(c.x1 - c.x0);
+    for (int py = c.y0; py < c.y1; ++py) {
+        const std::size_t row = std::size_t(py) * std::size_t(t.width) + std::size_t(c.x0);
+        std::fill_n(t.depth.data() + row, n, depth);
+        if (!t.color.empty())
+            for (std::size_t i = 0; i < n; ++i)
+                std::memcpy(&t.color[(row + i) * 4], &background, 4);
+        if (!t.normal.empty()) std::fill_n(t.normal.data() + row, n, glm::vec3(0.0f));
+        if (!t.instance_id.empty()) {
+            std::fill_n(t.instance_id.data() + row, n, -1);
+            std::fill_n(t.primitive_id.data() + row, n, -1);
+        }
+    }
+}
+
+// Pixels waiting for the SIMD Phong shader, all of one instance.
+struct PendingPhong {
+    PhongBatch batch;
+    int kernel = -1;
+    int x[kShadeBatch];
+    int y = 0;
+
+    void flush(const TileContext& c) {
+        if (batch.count == 0) return;
+        shade_phong_batch(c.frame.phong_constants[std::size_t(kernel)], batch);
+        for (int i = 0; i < batch.count; ++i) {
+            const std::size_t p = std::size_t(y) * std::size_t(c.targets.width) + std::size_t(x[i]);
+            std::uint8_t* rgba = &c.targets.color[p * 4];
+            rgba[0] = static_cast<std::uint8_t>(batch.r[i]);
+            rgba[1] = static_cast<std::uint8_t>(batch.g[i]);
+            rgba[2] = static_cast<std::uint8_t>(batch.b[i]);
+            rgba[3] = 255;
+        }
+        batch.count = 0;
+    }
+};
+
+// Finishes a tile: deferred shading of every pixel with a triangle (once each), background
+// elsewhere, and the depth and id targets. Returns the number of pixels shaded.
+std::uint64_t finish_tile(const TileContext& c, const TileBuffers& tile, std::uint32_t background,
+                          bool shade_now) {
+    RenderTargets& t = c.targets;
+    const bool d32 = c.codec.format() == DepthFormat::D32F;
+    const bool want_normal = !t.normal.empty(), want_ids = !t.instance_id.empty();
+    const bool want_color = !t.color.empty();
+    // The SIMD shader writes colors only; with a normal target everything goes the scalar way.
+    const bool kernel_shading = shade_now && want_color && !want_normal;
+    thread_local PendingPhong pending;
     ShadingTriangle cache;
     std::uint32_t cached_id = kNoTriangle;
     std::uint64_t shaded = 0;
-    const bool want_normal = !c.targets.normal.empty();
-    for (int py = c.y0; py < c.y1; ++py)
-        for (int px = c.x0; px < c.x1; ++px) {
-            const std::size_t at = tile_index(px - c.x0, py - c.y0);
-            const std::uint32_t id = tile.ref[at];
-            if (id == kNoTriangle) continue;
-            if (id != cached_id) {
-                const Chunk& chunk = c.frame.chunks[id >> kLocalBits];
-                prepare_shading_triangle(c.frame, chunk,
-                                         chunk.refs[id & ((1u << kLocalBits) - 1)], cache);
-                cached_id = id;
-            }
-            ++shaded;
-            write_shaded(c, shade_fragment(c.frame, cache, tile.b1[at], tile.b2[at], px, py, want_normal),
-                         px, py);
+    for (int py = c.y0; py < c.y1; ++py) {
+        const std::size_t row = std::size_t(py) * std::size_t(t.width);
+        const std::size_t at_row = tile_index(0, py - c.y0);
+        const int n = c.x1 - c.x0;
+        if (d32) {
+            std::copy_n(tile.depth + at_row, n, t.depth.data() + row + std::size_t(c.x0));
+        } else {
+            for (int i = 0; i < n; ++i)
+                t.depth[row + std::size_t(c.x0 + i)] =
+                    c.codec.decode(static_cast<std::uint32_t>(tile.depth[at_row + std::size_t(i)]));
         }
-    return shaded;
-}
-
-// Copies the tile's results to the image targets.
-void resolve_tile(const TileContext& c, const TileBuffers& tile, const glm::u8vec4 background) {
-    RenderTargets& t = c.targets;
-    const bool d32 = c.codec.format() == DepthFormat::D32F;
-    for (int py = c.y0; py < c.y1; ++py)
+        pending.y = py;
         for (int px = c.x0; px < c.x1; ++px) {
-            const std::size_t at = tile_index(px - c.x0, py - c.y0);
-            const std::size_t p = std::size_t(py) * std::size_t(t.width) + std::size_t(px);
-            const float code = tile.depth[at];
-            t.depth[p] = d32 ? code : c.codec.decode(static_cast<std::uint32_t>(code));
+            const std::size_t at = at_row + std::size_t(px - c.x0);
+            const std::size_t p = row + std::size_t(px);
             const std::uint32_t id = tile.ref[at];
             if (id == kNoTriangle) {
-                if (!t.color.empty())
-                    std::copy(&background[0], &background[0] + 4, &t.color[p * 4]);
-                if (!t.normal.empty()) t.normal[p] = glm::vec3(0.0f);
-                if (!t.instance_id.empty()) t.instance_id[p] = t.primitive_id[p] = -1;
+                if (want_color) std::memcpy(&t.color[p * 4], &background, 4);
+                if (want_normal) t.normal[p] = glm::vec3(0.0f);
+                if (want_ids) t.instance_id[p] = t.primitive_id[p] = -1;
                 continue;
             }
-            if (!t.instance_id.empty()) {
-                const Chunk& chunk = c.frame.chunks[id >> kLocalBits];
-                const TriangleRef& ref = chunk.refs[id & ((1u << kLocalBits) - 1)];
+            const Chunk& chunk = c.frame.chunks[id >> kLocalBits];
+            const TriangleRef& ref = chunk.refs[id & ((1u << kLocalBits) - 1)];
+            if (want_ids) {
                 t.instance_id[p] =
                     static_cast<std::int32_t>(c.frame.instances[ref.instance].scene_instance);
                 t.primitive_id[p] = static_cast<std::int32_t>(ref.primitive);
             }
+            if (!shade_now) continue;
+            if (id != cached_id) {
+                prepare_shading_triangle(c.frame, chunk, ref, cache);
+                cached_id = id;
+            }
+            ++shaded;
+            const int kernel = c.frame.instances[ref.instance].phong_kernel;
+            if (kernel_shading && kernel >= 0) {
+                if (pending.kernel != kernel || pending.batch.count == kShadeBatch) {
+                    pending.flush(c);
+                    pending.kernel = kernel;
+                }
+                const glm::vec3 b = original_barycentrics(
+                    cache, {1.0f - tile.b1[at] - tile.b2[at], tile.b1[at], tile.b2[at]});
+                const glm::vec3 normal = interpolate(c.frame.vertices.normal, ref.vertex, b);
+                const glm::vec3 position = interpolate(c.frame.vertices.world, ref.vertex, b);
+                PhongBatch& batch = pending.batch;
+                const int i = batch.count++;
+                batch.nx[i] = normal.x;
+                batch.ny[i] = normal.y;
+                batch.nz[i] = normal.z;
+                batch.px[i] = position.x;
+                batch.py[i] = position.y;
+                batch.pz[i] = position.z;
+                batch.flip[i] = !ref.front_facing && c.frame.options->two_sided_lighting ? ~0u : 0u;
+                pending.x[i] = px;
+                continue;
+            }
+            write_shaded(c, shade_fragment(c.frame, cache, tile.b1[at], tile.b2[at], px, py, want_normal),
+                         px, py);
         }
+        pending.flush(c);
+    }
+    return shaded;
 }
 
 }  // namespace
@@ -238,8 +308,11 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
     // The block kernel covers the common case; the rest takes the scalar reference path.
     const bool kernel = options.depth_format == DepthFormat::D32F && options.depth_test &&
                         !options.coverage_counts && !forward;
-    const glm::u8vec4 background(to_unorm8(options.background.x), to_unorm8(options.background.y),
-                                 to_unorm8(options.background.z), 255);
+    const std::uint8_t background_rgba[4] = {to_unorm8(options.background.x),
+                                             to_unorm8(options.background.y),
+                                             to_unorm8(options.background.z), 255};
+    std::uint32_t background;
+    std::memcpy(&background, background_rgba, 4);
     stats.deferred = shade && !forward;
     stats.simd_target = options.simd ? visibility_kernel_target() : "scalar";
 
@@ -255,8 +328,18 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
                             tx * kTileSize, ty * kTileSize,
                             std::min(width, (tx + 1) * kTileSize),
                             std::min(height, (ty + 1) * kTileSize)};
-        std::fill(std::begin(tile.depth), std::end(tile.depth), clear);
-        std::fill(std::begin(tile.ref), std::end(tile.ref), kNoTriangle);
+        bool empty = true;
+        for (const Chunk& chunk : frame.chunks)
+            empty &= chunk.bin_offsets[tile_number] == chunk.bin_offsets[tile_number + 1];
+        if (empty) {
+            // Nothing drawn here: write the cleared targets directly.
+            clear_tile_targets(c, clear, background);
+            return;
+        }
+        for (int y = 0; y < c.y1 - c.y0; ++y) {
+            std::fill_n(tile.depth + tile_index(0, y), c.x1 - c.x0, clear);
+            std::fill_n(tile.ref + tile_index(0, y), c.x1 - c.x0, kNoTriangle);
+        }
 
         std::uint64_t passed = 0;
         TriangleSetup setup;
@@ -278,9 +361,8 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
             }
         }
         passed_per_tile[tile_number] = passed;
-        if (shade && !forward) shaded_per_tile[tile_number] = shade_tile(c, tile);
+        shaded_per_tile[tile_number] = finish_tile(c, tile, background, shade && !forward);
         if (forward) shaded_per_tile[tile_number] = passed;
-        resolve_tile(c, tile, background);
     });
     for (std::size_t t = 0; t < tiles; ++t) {
         stats.fragments_passed += passed_per_tile[t];

@@ -131,10 +131,10 @@ BspTree BspTree::build(std::vector<BspPolygon> polygons, const BspOptions& optio
         Task task = std::move(tasks.back());
         tasks.pop_back();
         if (task.depth > options.max_depth)
-            throw InputError("", "BSP tree deeper than max_depth = " +
-                                     std::to_string(options.max_depth) + " (" +
-                                     std::to_string(task.polygons.size()) +
-                                     " polygons left at that depth); raise BspOptions::max_depth");
+            throw InputError(
+                "", "BSP tree deeper than max_depth = " + std::to_string(options.max_depth) + " (" +
+                        std::to_string(task.polygons.size()) +
+                        " polygons left at that depth); raise BspOptions::max_depth");
         tree.stats_.depth = std::max(tree.stats_.depth, task.depth);
         const std::vector<std::uint32_t>& set = task.polygons;
         const std::size_t m = set.size();
@@ -153,10 +153,17 @@ BspTree BspTree::build(std::vector<BspPolygon> polygons, const BspOptions& optio
                 for (const std::uint32_t i : set) {
                     ++tree.stats_.classifications;
                     switch (classify(tree.polygons_[i], plane, eps)) {
-                        case Side::Front: ++front; break;
-                        case Side::Back: ++back; break;
-                        case Side::Spanning: ++spanning; break;
-                        case Side::Coplanar: break;
+                        case Side::Front:
+                            ++front;
+                            break;
+                        case Side::Back:
+                            ++back;
+                            break;
+                        case Side::Spanning:
+                            ++spanning;
+                            break;
+                        case Side::Coplanar:
+                            break;
                     }
                     if (double(spanning) >= best) {
                         abandoned = true;
@@ -178,9 +185,15 @@ BspTree BspTree::build(std::vector<BspPolygon> polygons, const BspOptions& optio
         for (const std::uint32_t i : set) {
             ++tree.stats_.classifications;
             switch (classify(tree.polygons_[i], plane, eps)) {
-                case Side::Coplanar: here.push_back(i); break;
-                case Side::Front: front_set.push_back(i); break;
-                case Side::Back: back_set.push_back(i); break;
+                case Side::Coplanar:
+                    here.push_back(i);
+                    break;
+                case Side::Front:
+                    front_set.push_back(i);
+                    break;
+                case Side::Back:
+                    back_set.push_back(i);
+                    break;
                 case Side::Spanning: {
                     BspPolygon f, b;
                     split(tree.polygons_[i], plane, eps, f, b);
@@ -231,7 +244,8 @@ std::vector<std::uint32_t> BspTree::back_to_front(const glm::dvec4& eye) const {
             order.insert(order.end(), node.polygons.rbegin(), node.polygons.rend());
             continue;
         }
-        const double side = glm::dot(glm::dvec3(node.plane), glm::dvec3(eye)) + node.plane.w * eye.w;
+        const double side =
+            glm::dot(glm::dvec3(node.plane), glm::dvec3(eye)) + node.plane.w * eye.w;
         const std::int32_t near = side >= 0.0 ? node.front : node.back;
         const std::int32_t far = side >= 0.0 ? node.back : node.front;
         if (near >= 0) stack.emplace_back(near, false);

@@ -20,8 +20,10 @@ struct FrameContext {
     const RenderOptions* options = nullptr;
     Camera camera;
     glm::mat4 view_projection{1.0f};
-    glm::vec3 eye{0.0f}, view_axis{0.0f, 0.0f, 1.0f};  // float, as the renderer's lighting sees them
-    glm::dvec4 viewer{0.0};                            // bsp_eye(camera)
+    // Float, as the renderer's lighting sees them.
+    glm::vec3 eye{0.0f};
+    glm::vec3 view_axis{0.0f, 0.0f, 1.0f};
+    glm::dvec4 viewer{0.0};  // bsp_eye(camera)
     ClipSettings clip_settings;
     SetupSettings setup_settings;
 };
@@ -29,14 +31,12 @@ struct FrameContext {
 // Throws InputError for an image size out of range or too many user clip planes.
 FrameContext make_frame_context(const Scene& scene, const RenderOptions& options);
 
-// Window x, y of a clip-space position, computed in exactly the order setup_triangle uses (the
-// documented viewport transform of raster.hpp), so the snapped result is the rasterizer's.
-glm::dvec2 window_xy(const glm::vec4& clip, const Viewport& viewport);
-
-// Fills v.window (x, y and the normalized depth) and v.snapped from v.clip.
-void set_window(PolygonVertex& v, const FrameContext& frame);
-// The same for x, y and snapped only (z is left to the caller).
-void set_window_xy(PolygonVertex& v, const Viewport& viewport);
+// Snaps v.clip with the rasterizer's own per-vertex transform (to_screen) into v.snapped, and
+// sets v.window.x, y to that snapped position in pixels. False when to_screen refuses the vertex
+// (w <= 0 or beyond the guard band: the clipper never lets such a vertex through).
+bool set_window_xy(PolygonVertex& v, const Viewport& viewport);
+// The same, plus v.window.z: the window depth, normalized so that larger is farther.
+bool set_window(PolygonVertex& v, const FrameContext& frame);
 
 // Twice the signed area of the snapped polygon, y down: negative is counter-clockwise as seen with
 // y up, like setup_triangle's area.
@@ -71,7 +71,7 @@ glm::dvec4 orient_towards(const glm::dvec4& plane, const glm::dvec4& viewer);
 
 // Render targets filled polygon by polygon without a depth test.
 class Canvas {
-public:
+  public:
     Canvas(const RenderOptions& options, const Camera& camera);
 
     // The fan triangles (from vertex 0) of a polygon that setup_triangle accepts.
@@ -84,7 +84,7 @@ public:
     RenderTargets take();
     std::uint64_t fragments() const { return fragments_; }
 
-private:
+  private:
     const RenderOptions& options_;
     SetupSettings setup_;
     RenderTargets targets_;

@@ -59,8 +59,8 @@ void Canvas::prepare(const ScreenPolygon& polygon, std::vector<TriangleSetup>& f
     }
 }
 
-void Canvas::draw(const ScreenPolygon& polygon, std::span<const TriangleSetup> fans, int x0,
-                  int y0, int x1, int y1) {
+void Canvas::draw(const ScreenPolygon& polygon, std::span<const TriangleSetup> fans, int x0, int y0,
+                  int x1, int y1) {
     const int width = options_.width;
     std::uint8_t rgba[4] = {0, 0, 0, 255};
     if (options_.color_target)
@@ -85,7 +85,9 @@ void Canvas::draw(const ScreenPolygon& polygon) {
     draw(polygon, scratch_, 0, 0, options_.width, options_.height);
 }
 
-RenderTargets Canvas::take() { return std::move(targets_); }
+RenderTargets Canvas::take() {
+    return std::move(targets_);
+}
 
 }  // namespace visibility_detail
 

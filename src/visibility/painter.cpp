@@ -143,7 +143,8 @@ bool split_polygon(const ScreenPolygon& polygon, const glm::dvec4& plane, double
             c.world = v[f].world + t * (v[b].world - v[f].world);
             const glm::dvec4 cf(v[f].clip), cb(v[b].clip);
             c.clip = glm::vec4(cf + t * (cb - cf));
-            set_window_xy(c, viewport);
+            // A convex combination of two vertices inside the guard band is inside it too.
+            if (!set_window_xy(c, viewport)) return false;
             // Window depth is affine in z/w: the w-weighted mean of the endpoints' depths.
             const double wf = (1.0 - t) * cf.w, wb = t * cb.w;
             c.window.z = (wf * v[f].window.z + wb * v[b].window.z) / (wf + wb);
@@ -159,7 +160,7 @@ bool usable(const ScreenPolygon& p) {
 }
 
 class Painter {
-public:
+  public:
     Painter(std::vector<ScreenPolygon> polygons, const Viewport& viewport,
             const PainterOptions& options)
         : viewport_(viewport) {
@@ -188,7 +189,7 @@ public:
         return result;
     }
 
-private:
+  private:
     enum class Verdict { PFirst, QFirst, Interpenetrate };
 
     std::uint32_t add(ScreenPolygon polygon) {
@@ -240,7 +241,8 @@ private:
     // Applies a verdict; false when the lists changed.
     bool act(std::uint32_t p, std::uint32_t q, Verdict verdict) {
         switch (verdict) {
-            case Verdict::PFirst: return true;
+            case Verdict::PFirst:
+                return true;
             case Verdict::QFirst:
                 if (!items_[q].marked) {
                     sorted_.erase({-items_[q].z_max, q});

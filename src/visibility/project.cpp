@@ -2,11 +2,11 @@
 // algorithms (and of each BSP frame).
 //
 // It runs the z-buffer renderer's vertex-stage math through the same public functions
-// (Camera::view_projection, clip_outcode, clip_triangle, the documented viewport transform and
-// snap_to_grid), so a triangle that is not split later rasterizes bit-identically to render()'s.
-// The difference is the unit of output: render() fan-triangulates each clipped polygon at once;
-// here the convex polygon is kept whole, with its world-space positions and plane, because the
-// list-priority algorithms reason about whole polygons and their planes.
+// (Camera::view_projection, clip_outcode, clip_triangle, to_screen), so a triangle that is not
+// split later rasterizes bit-identically to render()'s. The difference is the unit of output:
+// render() fan-triangulates each clipped polygon at once; here the convex polygon is kept whole,
+// with its world-space positions and plane, because the list-priority algorithms reason about whole
+// polygons and their planes.
 //
 // Cost: O(triangles) time and memory (one heap-allocated vertex list per polygon).
 #include <zraster/error.hpp>
@@ -49,8 +49,10 @@ bool may_cover_a_pixel(std::span<const PolygonVertex> vertices, const Viewport& 
         lo_y = std::min(lo_y, v.snapped[1]);
         hi_y = std::max(hi_y, v.snapped[1]);
     }
-    const std::int64_t px0 = std::max<std::int64_t>(0, -floor_div(kHalfPixel - lo_x, kSubpixelScale));
-    const std::int64_t py0 = std::max<std::int64_t>(0, -floor_div(kHalfPixel - lo_y, kSubpixelScale));
+    const std::int64_t px0 =
+        std::max<std::int64_t>(0, -floor_div(kHalfPixel - lo_x, kSubpixelScale));
+    const std::int64_t py0 =
+        std::max<std::int64_t>(0, -floor_div(kHalfPixel - lo_y, kSubpixelScale));
     const std::int64_t px1 =
         std::min<std::int64_t>(viewport.width - 1, floor_div(hi_x - kHalfPixel, kSubpixelScale));
     const std::int64_t py1 =
@@ -88,27 +90,26 @@ FrameContext make_frame_context(const Scene& scene, const RenderOptions& options
     return f;
 }
 
-glm::dvec2 window_xy(const glm::vec4& clip, const Viewport& viewport) {
-    const glm::dvec4 v(clip);
-    const double rw = 1.0 / v.w;
-    return {(v.x * rw + 1.0) * 0.5 * double(viewport.width),
-            (1.0 - v.y * rw) * 0.5 * double(viewport.height)};
+bool set_window_xy(PolygonVertex& v, const Viewport& viewport) {
+    SetupSettings settings;
+    settings.viewport = viewport;
+    ScreenVertex s;
+    if (!to_screen(v.clip, settings, s)) return false;
+    v.snapped = {s.x, s.y};
+    v.window.x = double(s.x) / double(kSubpixelScale);
+    v.window.y = double(s.y) / double(kSubpixelScale);
+    return true;
 }
 
-void set_window_xy(PolygonVertex& v, const Viewport& viewport) {
-    const glm::dvec2 w = window_xy(v.clip, viewport);
-    v.window.x = w.x;
-    v.window.y = w.y;
-    v.snapped = snap_to_grid(w);
-}
-
-void set_window(PolygonVertex& v, const FrameContext& frame) {
-    set_window_xy(v, frame.setup_settings.viewport);
+bool set_window(PolygonVertex& v, const FrameContext& frame) {
+    if (!set_window_xy(v, frame.setup_settings.viewport)) return false;
+    // In double (to_screen's float depth is enough for the depth test, not for the depth-range
+    // comparisons of the painter's algorithm), and normalized so that larger is farther.
     const double z = double(v.clip.z) / double(v.clip.w);
-    // Normalized so that larger is farther whatever the depth convention.
     v.window.z = frame.setup_settings.depth_range == ClipDepthRange::NegativeOneToOne
                      ? 0.5 * z + 0.5
                      : 1.0 - z;
+    return true;
 }
 
 std::int64_t snapped_area2(std::span<const PolygonVertex> vertices) {
@@ -118,7 +119,8 @@ std::int64_t snapped_area2(std::span<const PolygonVertex> vertices) {
     const std::int64_t ox = vertices[0].snapped[0], oy = vertices[0].snapped[1];
     for (std::size_t i = 1; i + 1 < n; ++i) {
         const std::int64_t ax = vertices[i].snapped[0] - ox, ay = vertices[i].snapped[1] - oy;
-        const std::int64_t bx = vertices[i + 1].snapped[0] - ox, by = vertices[i + 1].snapped[1] - oy;
+        const std::int64_t bx = vertices[i + 1].snapped[0] - ox,
+                           by = vertices[i + 1].snapped[1] - oy;
         area += ax * by - bx * ay;
     }
     return area;
@@ -206,12 +208,13 @@ bool project_triangle(const FrameContext& frame, const TriangleSource& source, S
             const ClipVertex& c = polygon.vertices[static_cast<std::size_t>(i)];
             PolygonVertex v;
             v.clip = c.position;
-            v.world = double(c.weights.x) * source.world[0] + double(c.weights.y) * source.world[1] +
-                      double(c.weights.z) * source.world[2];
+            v.world = double(c.weights.x) * source.world[0] +
+                      double(c.weights.y) * source.world[1] + double(c.weights.z) * source.world[2];
             out.vertices.push_back(v);
         }
     }
-    for (PolygonVertex& v : out.vertices) set_window(v, frame);
+    for (PolygonVertex& v : out.vertices)
+        if (!set_window(v, frame)) return false;  // as the renderer: drop the polygon
 
     // Facing and culling as setup_triangle decides them, on the snapped coordinates.
     const std::int64_t area = snapped_area2(out.vertices);

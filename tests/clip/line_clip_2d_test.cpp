@@ -84,9 +84,12 @@ TEST(LineClip2D, ThreeClippersAgreeOnRandomSegments) {
         r.y_min = scale * (2.0 * unit(rng) - 1.0);
         r.x_max = r.x_min + scale * (0.05 + unit(rng));
         r.y_max = r.y_min + scale * (0.05 + unit(rng));
-        // Endpoints in the window grown by its size on every side: all cases occur.
+        // Endpoints in the window grown by its size on every side, or (a third of them) in the
+        // window itself: all cases occur often.
         const double w = r.x_max - r.x_min, h = r.y_max - r.y_min;
         auto point = [&] {
+            if (unit(rng) < 1.0 / 3.0)
+                return glm::dvec2(r.x_min + w * unit(rng), r.y_min + h * unit(rng));
             return glm::dvec2(r.x_min - w + 3.0 * w * unit(rng), r.y_min - h + 3.0 * h * unit(rng));
         };
         const glm::dvec2 a = point(), b = point();

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -107,6 +108,13 @@ TEST(LineClip3D, OutcodesUseTheClipPlaneBits) {
               std::uint32_t{kClipDepthMin});
     // Behind the eye (w < 0) every plane with a w term is violated at once.
     EXPECT_EQ(outcode(glm::dvec4(0, 0, 0, -1), R), 0x3Fu);
+    // NaN is outside of every plane (the convention of clip.hpp's frustum_outcode).
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_EQ(outcode(glm::dvec4(nan, 0, 0, 1), R), std::uint32_t{kClipLeft | kClipRight});
+    EXPECT_EQ(outcode(glm::dvec4(0, 0, 0, nan), R), 0x3Fu);
+    // A segment with a NaN end is dropped, not returned with NaN in it.
+    EXPECT_FALSE(clip_line_homogeneous({nan, 0, 0, 1}, {0, 0, 0, 1}).visible);
+    EXPECT_FALSE(clip_line_homogeneous({0, 0, 0, 1}, {0, 0, nan, 1}).visible);
     // On the boundary is inside.
     EXPECT_EQ(outcode(glm::dvec4(1, -1, 1, 1), R), 0u);
 }

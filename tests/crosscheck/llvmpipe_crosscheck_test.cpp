@@ -37,11 +37,11 @@ bench::GlContext* gl_context(std::string& why) {
     return context.get();
 }
 
-#define REQUIRE_LLVMPIPE()                                                                   \
-    do {                                                                                     \
-        std::string why;                                                                     \
-        if (!gl_context(why))                                                                \
-            GTEST_SKIP() << "no llvmpipe context (EGL surfaceless, Mesa): " << why;          \
+#define REQUIRE_LLVMPIPE()                                                          \
+    do {                                                                            \
+        std::string why;                                                            \
+        if (!gl_context(why))                                                       \
+            GTEST_SKIP() << "no llvmpipe context (EGL surfaceless, Mesa): " << why; \
     } while (0)
 
 struct Outcome {
@@ -65,21 +65,36 @@ Outcome render_both(const std::string& spec, BenchMode mode) {
     Outcome out;
     out.depth = bench::compare_depth(gl_depth, zr.targets.depth);
     if (mode != BenchMode::Depth)
-        out.color = bench::compare_color(gl.read_color(), zr.targets.color, gl_depth,
-                                         zr.targets.depth);
+        out.color =
+            bench::compare_color(gl.read_color(), zr.targets.color, gl_depth, zr.targets.depth);
     return out;
 }
+
+// Depth: zraster evaluates its depth plane from the vertices snapped to 1/256 pixel (the same
+// positions its coverage uses); llvmpipe from the unsnapped float window positions. On steep
+// triangles (silhouettes) the snap moves depth by up to |dz/dpixel| / 512: measured 3.5e-4
+// (sphere:20000) and 2.3e-4 (bunny) at 320x240, on 4-9% of the pixels; everywhere else, and on
+// every pixel when zraster's planes use unsnapped positions, they differ by less than 1e-5.
+constexpr double kMaxDepthDifference = 1e-3;
+constexpr double kMinFractionWithin1e5 = 0.9;
 
 void expect_agreement(const Outcome& o) {
     const bench::DepthComparison& d = o.depth;
     ASSERT_GT(d.both_covered, std::size_t(kWidth * kHeight / 20)) << "the scene is not in view";
     EXPECT_GE(d.coverage_agreement(), 0.995)
         << "only llvmpipe covers " << d.only_gl << " pixels, only zraster " << d.only_zraster;
-    EXPECT_LT(d.max_abs_difference, 1e-5) << d.differing_over_1e5 << " of " << d.both_covered
-                                          << " common pixels differ by 1e-5 or more";
+    EXPECT_LT(d.max_abs_difference, kMaxDepthDifference);
+    const double within = 1.0 - double(d.differing_over_1e5) / double(d.both_covered);
+    EXPECT_GE(within, kMinFractionWithin1e5) << d.differing_over_1e5 << " of " << d.both_covered
+                                             << " common pixels differ in depth by 1e-5 or more";
+    // The same shading formulas in float on both sides: at most a rounding step apart.
+    if (o.color.compared) {
+        EXPECT_LE(o.color.max_difference, 2);
+    }
     std::cout << "coverage agreement " << 100.0 * d.coverage_agreement() << "% (only llvmpipe "
               << d.only_gl << ", only zraster " << d.only_zraster << "), max depth difference "
-              << d.max_abs_difference << " over " << d.both_covered << " common pixels";
+              << d.max_abs_difference << " over " << d.both_covered << " common pixels ("
+              << d.differing_over_1e5 << " differ by >= 1e-5)";
     if (o.color.compared)
         std::cout << "; color: max channel difference " << o.color.max_difference << ", "
                   << o.color.over_1 << " pixels off by more than 1";

@@ -29,9 +29,12 @@ BenchMode parse_bench_mode(const std::string& option, const std::string& text) {
 
 const char* bench_mode_name(BenchMode mode) {
     switch (mode) {
-        case BenchMode::Depth: return "depth";
-        case BenchMode::Flat: return "flat";
-        case BenchMode::Phong: return "phong";
+        case BenchMode::Depth:
+            return "depth";
+        case BenchMode::Flat:
+            return "flat";
+        case BenchMode::Phong:
+            return "phong";
     }
     return "?";
 }
@@ -64,7 +67,8 @@ RenderOptions bench_render_options(BenchMode mode, int width, int height, int th
 }
 
 int effective_thread_count(int threads) {
-    return threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    return threads > 0 ? threads
+                       : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
 void add_bench_command(CLI::App& app, BenchArguments& a) {
@@ -144,10 +148,11 @@ int run_bench(const BenchArguments& a) {
     else
         fmt::print("scene {}: {} instances, {} vertices, {} triangles\n", a.scene,
                    scene.instances.size(), scene.vertex_count(), tris);
-    fmt::print("camera eye ({:.9g} {:.9g} {:.9g}) target ({:.9g} {:.9g} {:.9g}) near {:.9g} far "
-               "{:.9g}\n",
-               float(cam.eye.x), float(cam.eye.y), float(cam.eye.z), float(cam.target.x),
-               float(cam.target.y), float(cam.target.z), float(cam.near), float(cam.far));
+    fmt::print(
+        "camera eye ({:.9g} {:.9g} {:.9g}) target ({:.9g} {:.9g} {:.9g}) near {:.9g} far "
+        "{:.9g}\n",
+        float(cam.eye.x), float(cam.eye.y), float(cam.eye.z), float(cam.target.x),
+        float(cam.target.y), float(cam.target.z), float(cam.near), float(cam.far));
 
     using Clock = std::chrono::steady_clock;
     std::vector<double> warm_ms, frame_ms;
@@ -158,20 +163,22 @@ int run_bench(const BenchArguments& a) {
         const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
         (f < a.warmup ? warm_ms : frame_ms).push_back(ms);
         if (a.verbose)
-            fmt::print("{} {}: {:.3f} ms (setup {:.3f}, raster {:.3f}), {} rasterized, {} "
-                       "fragments shaded\n",
-                       f < a.warmup ? "warmup" : "frame", f < a.warmup ? f : f - a.warmup, ms,
-                       result.stats.setup_ms, result.stats.raster_ms,
-                       result.stats.triangles_rasterized, result.stats.fragments_shaded);
+            fmt::print(
+                "{} {}: {:.3f} ms (setup {:.3f}, raster {:.3f}), {} rasterized, {} "
+                "fragments shaded\n",
+                f < a.warmup ? "warmup" : "frame", f < a.warmup ? f : f - a.warmup, ms,
+                result.stats.setup_ms, result.stats.raster_ms, result.stats.triangles_rasterized,
+                result.stats.fragments_shaded);
         // Each frame's targets are freed at the end of its iteration, after the clock stopped.
         if (f + 1 == a.warmup + a.frames) last = std::move(result);
     }
     if (!a.out.empty()) write_frame(a.out, last.targets, mode);
 
-    fmt::print("RESULT scene={} mode={} w={} h={} threads={} tris={} ms_median={:.3f} "
-               "ms_min={:.3f}\n",
-               a.scene, bench_mode_name(mode), size.x, size.y, effective_thread_count(a.threads),
-               tris, median(frame_ms), *std::min_element(frame_ms.begin(), frame_ms.end()));
+    fmt::print(
+        "RESULT scene={} mode={} w={} h={} threads={} tris={} ms_median={:.3f} "
+        "ms_min={:.3f}\n",
+        a.scene, bench_mode_name(mode), size.x, size.y, effective_thread_count(a.threads), tris,
+        median(frame_ms), *std::min_element(frame_ms.begin(), frame_ms.end()));
     return kExitOk;
 }
 

@@ -1,0 +1,200 @@
+// See shade_kernel.hpp. Highway's foreach_target re-includes this file once per instruction set.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "render/shade_kernel.cpp"
+#include <hwy/foreach_target.h>  // must come before highway.h
+#include <hwy/highway.h>
+
+#include <cmath>
+
+#include "render/shade_kernel.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace zraster::detail::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+template <class D, class V>
+HWY_INLINE V dot3(D, V ax, V ay, V az, V bx, V by, V bz) {
+    return hn::Add(hn::Add(hn::Mul(ax, bx), hn::Mul(ay, by)), hn::Mul(az, bz));
+}
+
+template <class D, class V>
+HWY_INLINE V positive_part(D d, V x) {
+    return hn::IfThenElse(hn::Gt(x, hn::Zero(d)), x, hn::Zero(d));
+}
+
+template <class D, class V>
+HWY_INLINE V power(D d, V x, int n) {
+    V result = hn::Set(d, 1.0f), base = x;
+    for (int e = n; e > 0; e >>= 1) {
+        if (e & 1) result = hn::Mul(result, base);
+        base = hn::Mul(base, base);
+    }
+    return result;
+}
+
+template <class D, class V>
+HWY_INLINE hn::Vec<hn::RebindToSigned<D>> to_unorm8(D d, V v) {
+    v = hn::IfThenElse(hn::Gt(v, hn::Zero(d)), v, hn::Zero(d));
+    v = hn::IfThenElse(hn::Lt(v, hn::Set(d, 1.0f)), v, hn::Set(d, 1.0f));
+    return hn::ConvertTo(hn::RebindToSigned<D>(),
+                         hn::Add(hn::Mul(v, hn::Set(d, 255.0f)), hn::Set(d, 0.5f)));
+}
+
+void ShadePhongBatch(const PhongConstants& k, PhongBatch& batch) {
+    const hn::ScalableTag<float> d;
+    const hn::RebindToUnsigned<decltype(d)> du;
+    const std::size_t lanes = hn::Lanes(d);
+    const auto zero = hn::Zero(d), one = hn::Set(d, 1.0f);
+    for (std::size_t i = 0; i < static_cast<std::size_t>(batch.count); i += lanes) {
+        // Unit normal, or (0, 1, 0); negated for back faces.
+        auto nx = hn::LoadU(d, batch.nx + i), ny = hn::LoadU(d, batch.ny + i),
+             nz = hn::LoadU(d, batch.nz + i);
+        const auto len = hn::Sqrt(dot3(d, nx, ny, nz, nx, ny, nz));
+        const auto has_length = hn::Gt(len, zero);
+        nx = hn::IfThenElse(has_length, hn::Div(nx, len), zero);
+        ny = hn::IfThenElse(has_length, hn::Div(ny, len), one);
+        nz = hn::IfThenElse(has_length, hn::Div(nz, len), zero);
+        const auto flip = hn::RebindMask(d, hn::Ne(hn::LoadU(du, batch.flip + i), hn::Zero(du)));
+        nx = hn::IfThenElse(flip, hn::Neg(nx), nx);
+        ny = hn::IfThenElse(flip, hn::Neg(ny), ny);
+        nz = hn::IfThenElse(flip, hn::Neg(nz), nz);
+
+        hn::Vec<decltype(d)> vx, vy, vz;
+        if (k.local_viewer) {
+            vx = hn::Sub(hn::Set(d, k.eye.x), hn::LoadU(d, batch.px + i));
+            vy = hn::Sub(hn::Set(d, k.eye.y), hn::LoadU(d, batch.py + i));
+            vz = hn::Sub(hn::Set(d, k.eye.z), hn::LoadU(d, batch.pz + i));
+            const auto inv = hn::Div(one, hn::Sqrt(dot3(d, vx, vy, vz, vx, vy, vz)));
+            vx = hn::Mul(vx, inv);
+            vy = hn::Mul(vy, inv);
+            vz = hn::Mul(vz, inv);
+        } else {
+            vx = hn::Set(d, k.view_axis.x);
+            vy = hn::Set(d, k.view_axis.y);
+            vz = hn::Set(d, k.view_axis.z);
+        }
+
+        auto dr = zero, dg = zero, db = zero, sr = zero, sg = zero, sb = zero;
+        for (int l = 0; l < k.light_count; ++l) {
+            const glm::vec3 L = k.light_direction[l], c = k.light_color[l];
+            const auto lx = hn::Set(d, L.x), ly = hn::Set(d, L.y), lz = hn::Set(d, L.z);
+            const auto n_dot_l = dot3(d, nx, ny, nz, lx, ly, lz);
+            const auto lambert = positive_part(d, n_dot_l);
+            dr = hn::Add(dr, hn::Mul(hn::Set(d, c.x), lambert));
+            dg = hn::Add(dg, hn::Mul(hn::Set(d, c.y), lambert));
+            db = hn::Add(db, hn::Mul(hn::Set(d, c.z), lambert));
+            hn::Vec<decltype(d)> cos_lobe;
+            if (k.reflection == ReflectionModel::BlinnPhong) {
+                const auto hx = hn::Add(lx, vx), hy = hn::Add(ly, vy), hz = hn::Add(lz, vz);
+                const auto len2 = dot3(d, hx, hy, hz, hx, hy, hz);
+                const auto inv = hn::Div(one, hn::Sqrt(len2));
+                cos_lobe = dot3(d, nx, ny, nz, hn::Mul(hx, inv), hn::Mul(hy, inv), hn::Mul(hz, inv));
+                cos_lobe = hn::IfThenElse(hn::Gt(len2, zero), cos_lobe, zero);
+            } else {
+                const auto twice = hn::Mul(n_dot_l, hn::Set(d, 2.0f));
+                const auto rx = hn::Sub(hn::Mul(nx, twice), lx);
+                const auto ry = hn::Sub(hn::Mul(ny, twice), ly);
+                const auto rz = hn::Sub(hn::Mul(nz, twice), lz);
+                cos_lobe = dot3(d, rx, ry, rz, vx, vy, vz);
+            }
+            const auto spec = power(d, positive_part(d, cos_lobe), k.shininess);
+            sr = hn::Add(sr, hn::Mul(hn::Set(d, c.x), spec));
+            sg = hn::Add(sg, hn::Mul(hn::Set(d, c.y), spec));
+            sb = hn::Add(sb, hn::Mul(hn::Set(d, c.z), spec));
+        }
+        // diffuse = ambient + kd * sum; specular = ks * sum; color = base * diffuse + specular.
+        const auto ambient = hn::Set(d, k.ambient), kd = hn::Set(d, k.diffuse);
+        const auto red = hn::Add(hn::Mul(hn::Set(d, k.base_color.x), hn::Add(ambient, hn::Mul(kd, dr))),
+                                 hn::Mul(hn::Set(d, k.specular.x), sr));
+        const auto green = hn::Add(hn::Mul(hn::Set(d, k.base_color.y), hn::Add(ambient, hn::Mul(kd, dg))),
+                                   hn::Mul(hn::Set(d, k.specular.y), sg));
+        const auto blue = hn::Add(hn::Mul(hn::Set(d, k.base_color.z), hn::Add(ambient, hn::Mul(kd, db))),
+                                  hn::Mul(hn::Set(d, k.specular.z), sb));
+        const hn::RebindToSigned<decltype(d)> di;
+        hn::StoreU(to_unorm8(d, red), di, batch.r + i);
+        hn::StoreU(to_unorm8(d, green), di, batch.g + i);
+        hn::StoreU(to_unorm8(d, blue), di, batch.b + i);
+    }
+}
+
+}  // namespace zraster::detail::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace zraster::detail {
+
+HWY_EXPORT(ShadePhongBatch);
+
+void shade_phong_batch(const PhongConstants& constants, PhongBatch& batch) {
+    HWY_DYNAMIC_DISPATCH(ShadePhongBatch)(constants, batch);
+}
+
+glm::vec3 unit_normal(const glm::vec3& n) {
+    const float len = std::sqrt((n.x * n.x + n.y * n.y) + n.z * n.z);
+    return len > 0.0f ? glm::vec3(n.x / len, n.y / len, n.z / len) : glm::vec3(0, 1, 0);
+}
+
+bool phong_kernel_applies(const LightingModel& model, const Material& material) {
+    if (model.lights.size() > std::size_t(kMaxKernelLights)) return false;
+    for (const Light& light : model.lights)
+        if (light.type != Light::Type::Directional) return false;
+    const int n = static_cast<int>(material.shininess);
+    return static_cast<float>(n) == material.shininess && n >= 0 && n <= kMaxIntegerShininess;
+}
+
+PhongConstants make_phong_constants(const LightingModel& model, const Material& material,
+                                    const glm::vec3& eye, const glm::vec3& view_axis) {
+    PhongConstants k;
+    k.eye = eye;
+    k.view_axis = view_axis;
+    k.local_viewer = model.local_viewer;
+    k.reflection = model.reflection;
+    k.light_count = static_cast<int>(model.lights.size());
+    for (int i = 0; i < k.light_count; ++i) {
+        const glm::vec3 dir = model.lights[std::size_t(i)].direction;
+        const float inv = 1.0f / std::sqrt((dir.x * dir.x + dir.y * dir.y) + dir.z * dir.z);
+        k.light_direction[i] = {dir.x * inv, dir.y * inv, dir.z * inv};
+        k.light_source_direction[i] = dir;
+        // evaluate_lighting scales the color by an attenuation of exactly 1 for these lights.
+        k.light_color[i] = model.lights[std::size_t(i)].color * 1.0f;
+    }
+    k.base_color = material.base_color;
+    k.ambient = material.ambient;
+    k.diffuse = material.diffuse;
+    k.specular = material.specular;
+    k.shininess = static_cast<int>(material.shininess);
+    return k;
+}
+
+void shade_phong_batch_scalar(const PhongConstants& k, PhongBatch& batch) {
+    LightingModel model;
+    model.local_viewer = k.local_viewer;
+    model.reflection = k.reflection;
+    model.lights.clear();
+    for (int i = 0; i < k.light_count; ++i) {
+        Light light;
+        light.direction = k.light_source_direction[i];
+        light.color = k.light_color[i];
+        model.lights.push_back(light);
+    }
+    Material material;
+    material.base_color = k.base_color;
+    material.ambient = k.ambient;
+    material.diffuse = k.diffuse;
+    material.specular = k.specular;
+    material.shininess = static_cast<float>(k.shininess);
+    for (int i = 0; i < batch.count; ++i) {
+        glm::vec3 n = unit_normal({batch.nx[i], batch.ny[i], batch.nz[i]});
+        if (batch.flip[i]) n = -n;
+        const glm::vec3 color = combine(
+            evaluate_lighting(model, material, {batch.px[i], batch.py[i], batch.pz[i]}, n, k.eye,
+                              k.view_axis),
+            k.base_color);
+        batch.r[i] = to_unorm8_int(color.x);
+        batch.g[i] = to_unorm8_int(color.y);
+        batch.b[i] = to_unorm8_int(color.z);
+    }
+}
+
+}  // namespace zraster::detail
+#endif  // HWY_ONCE
