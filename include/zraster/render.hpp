@@ -26,6 +26,19 @@ enum class ShadingStrategy {
     Deferred,  // resolve visibility per tile first, then shade each visible pixel once
 };
 
+// Requests past these are refused by render() with an InputError before anything is allocated:
+// they are mistakes or hostile input, not frames (see RELIABILITY.md). Raise them deliberately.
+struct RenderLimits {
+    // width * height. 64 Mpx is 8192 x 8192; with every target (color, depth, normal, ids,
+    // coverage counts) a frame holds about 36 bytes per pixel, so 2.3 GB at the limit.
+    std::uint64_t max_pixels = std::uint64_t{64} << 20;
+    // Triangles and vertices over all instances (before culling): the vertex stage keeps about
+    // 100 bytes per vertex and binning about 50 per triangle. Vertices are counted in 32 bits, so
+    // max_vertices cannot usefully exceed 2^32 - 1.
+    std::uint64_t max_triangles = 100'000'000;
+    std::uint64_t max_vertices = 100'000'000;
+};
+
 struct RenderOptions {
     int width = 1920;
     int height = 1080;
@@ -66,6 +79,8 @@ struct RenderOptions {
     // Per-pixel counts of front- and back-facing fragments that passed the depth test
     // (with depth_test = false: every fragment): the watertightness check.
     bool coverage_counts = false;
+
+    RenderLimits limits;
 };
 
 struct RenderTargets {
@@ -103,7 +118,9 @@ struct RenderResult {
 };
 
 // Renders one frame. Throws InputError for unusable options (size out of range, more user clip
-// planes than supported, a non-finite camera).
+// planes than supported, a non-finite camera), a request past options.limits, or an inconsistent
+// scene (an instance naming a missing mesh, a vertex index past the mesh's positions, normals or
+// uvs not one per position, no materials).
 RenderResult render(const Scene& scene, const RenderOptions& options);
 
 // The same, keeping its working memory (vertex arrays, bins, image targets) from frame to frame:

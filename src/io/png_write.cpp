@@ -1,63 +1,104 @@
-// PNG output. 8-bit images go through stb_image_write; 16-bit grayscale, which stb cannot write,
-// is assembled here (chunks + CRC) around stb's zlib compressor.
+// PNG output: our own chunk writer (signature, IHDR, IDAT, IEND, each with its CRC-32) around
+// libdeflate's zlib compressor.
+//
+// Speed matters here: a 1080p colour image is written at the end of every `zraster render`, and
+// stb_image_write (per-row filter search, a simple zlib at level 8) took about as long as the
+// rendering. Every row uses filter "Up" (the difference from the row above): renders and depth
+// maps are smooth vertically, so it compresses them well (for the 1080p bunny render, 0.29 MB
+// against 0.49 MB unfiltered and 0.30 MB with a per-row heuristic), and it costs one
+// subtraction per byte. libdeflate runs at level 2: levels 1 to 3 take about the same time on
+// rendered images, level 2 is within 1% of level 3's size; level 6 is 5% smaller but 60% slower.
+// The stream is compressed in one piece on one thread (deflate blocks that separate threads
+// compress cannot simply be concatenated; see the report in the commit that added this).
 #include <zraster/error.hpp>
 #include <zraster/image_io.hpp>
 
 #include "io/atomic_write.hpp"
 #include "io/image_size_check.hpp"
 
-#include <stb/stb_image_write.h>
+#include <libdeflate.h>
 
-#include <array>
-#include <climits>
-#include <cstdlib>
+#include <algorithm>
 #include <cstring>
 #include <memory>
 #include <string_view>
-
-// Defined by Debian's libstb (stb_image_write's implementation, extern "C" like the rest of its
-// API) but only declared inside the header's implementation section. Returns a zlib stream
-// (header + deflate + Adler-32) allocated with malloc.
-extern "C" unsigned char* stbi_zlib_compress(unsigned char* data, int data_len, int* out_len,
-                                             int quality);
 
 namespace zraster {
 
 namespace {
 
-void check_encoder_limit(const std::filesystem::path& path, std::size_t bytes) {
-    // stb's encoders index with int.
-    if (bytes > static_cast<std::size_t>(INT_MAX) / 2)
-        throw std::invalid_argument("PNG " + path.string() + ": image too large to encode");
-}
+constexpr int kCompressionLevel = 2;
+// IDAT chunks are split so that no chunk length comes near PNG's 2^31 - 1 limit.
+constexpr std::size_t kMaxIdatBytes = std::size_t{1} << 30;
 
-std::uint32_t crc32(std::span<const std::uint8_t> bytes, std::uint32_t crc = 0) {
-    static const std::array<std::uint32_t, 256> table = [] {
-        std::array<std::uint32_t, 256> t{};
-        for (std::uint32_t n = 0; n < 256; ++n) {
-            std::uint32_t c = n;
-            for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-            t[n] = c;
-        }
-        return t;
-    }();
-    crc = ~crc;
-    for (std::uint8_t b : bytes) crc = table[(crc ^ b) & 0xFF] ^ (crc >> 8);
-    return ~crc;
-}
-
-void put_u32_be(std::vector<std::uint8_t>& out, std::uint32_t v) {
-    for (int shift = 24; shift >= 0; shift -= 8)
-        out.push_back(static_cast<std::uint8_t>(v >> shift));
+void put_u32_be(std::uint8_t* out, std::uint32_t v) {
+    out[0] = static_cast<std::uint8_t>(v >> 24);
+    out[1] = static_cast<std::uint8_t>(v >> 16);
+    out[2] = static_cast<std::uint8_t>(v >> 8);
+    out[3] = static_cast<std::uint8_t>(v);
 }
 
 void put_chunk(std::vector<std::uint8_t>& out, std::string_view type,
                std::span<const std::uint8_t> data) {
-    put_u32_be(out, static_cast<std::uint32_t>(data.size()));
-    const std::size_t start = out.size();
-    out.insert(out.end(), type.begin(), type.end());
+    std::uint8_t header[8];
+    put_u32_be(header, static_cast<std::uint32_t>(data.size()));
+    std::memcpy(header + 4, type.data(), 4);
+    out.insert(out.end(), header, header + 8);
     out.insert(out.end(), data.begin(), data.end());
-    put_u32_be(out, crc32(std::span(out).subspan(start)));
+    // The CRC covers the chunk type and data, not the length.
+    std::uint32_t crc = libdeflate_crc32(0, header + 4, 4);
+    if (!data.empty()) crc = libdeflate_crc32(crc, data.data(), data.size());
+    std::uint8_t trailer[4];
+    put_u32_be(trailer, crc);
+    out.insert(out.end(), trailer, trailer + 4);
+}
+
+struct CompressorDeleter {
+    void operator()(libdeflate_compressor* c) const { libdeflate_free_compressor(c); }
+};
+
+// `filtered` holds the scanlines, each a filter byte and the row's bytes. Compresses them into
+// a complete PNG file and writes it atomically.
+void write_png(const std::filesystem::path& path, int width, int height, std::uint8_t bit_depth,
+               std::uint8_t color_type, std::span<const std::uint8_t> filtered) {
+    std::unique_ptr<libdeflate_compressor, CompressorDeleter> compressor(
+        libdeflate_alloc_compressor(kCompressionLevel));
+    if (!compressor) throw std::bad_alloc();
+    std::vector<std::uint8_t> zlib(
+        libdeflate_zlib_compress_bound(compressor.get(), filtered.size()));
+    const std::size_t zlib_size = libdeflate_zlib_compress(
+        compressor.get(), filtered.data(), filtered.size(), zlib.data(), zlib.size());
+    if (zlib_size == 0) throw InputError(path.string(), "cannot write: PNG compression failed");
+
+    std::vector<std::uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    png.reserve(zlib_size + 64 + 12 * (zlib_size / kMaxIdatBytes));
+    std::uint8_t header[13];
+    put_u32_be(header, static_cast<std::uint32_t>(width));
+    put_u32_be(header + 4, static_cast<std::uint32_t>(height));
+    header[8] = bit_depth;
+    header[9] = color_type;
+    header[10] = 0;  // deflate
+    header[11] = 0;  // adaptive filtering (each row names its filter)
+    header[12] = 0;  // no interlace
+    put_chunk(png, "IHDR", header);
+    for (std::size_t at = 0; at < zlib_size; at += kMaxIdatBytes)
+        put_chunk(png, "IDAT",
+                  std::span<const std::uint8_t>(zlib.data() + at,
+                                                std::min(kMaxIdatBytes, zlib_size - at)));
+    put_chunk(png, "IEND", {});
+    io::write_file_atomically(path, png);
+}
+
+// Filter "Up": each byte minus the byte above it (the row above the first is zero).
+void filter_up(std::uint8_t* out, const std::uint8_t* row, const std::uint8_t* above,
+               std::size_t bytes) {
+    out[0] = 2;
+    if (above == nullptr) {
+        std::memcpy(out + 1, row, bytes);
+        return;
+    }
+    for (std::size_t i = 0; i < bytes; ++i)
+        out[1 + i] = static_cast<std::uint8_t>(row[i] - above[i]);
 }
 
 }  // namespace
@@ -67,58 +108,38 @@ void write_png8(const std::filesystem::path& path, int width, int height, int ch
     if (channels < 1 || channels > 4)
         throw std::invalid_argument("write_png8: channels must be 1, 2, 3 or 4");
     io::check_image_size("write_png8", width, height, channels, pixels.size());
-    check_encoder_limit(path, pixels.size());
+    // Gray, gray + alpha, RGB, RGBA.
+    static constexpr std::uint8_t kColorType[5] = {0, 0, 4, 2, 6};
 
-    std::vector<std::uint8_t> encoded;
-    auto append = [](void* context, void* data, int size) {
-        auto* out = static_cast<std::vector<std::uint8_t>*>(context);
-        const auto* bytes = static_cast<const std::uint8_t*>(data);
-        out->insert(out->end(), bytes, bytes + size);
-    };
-    if (!stbi_write_png_to_func(append, &encoded, width, height, channels, pixels.data(),
-                                width * channels))
-        throw InputError(path.string(), "cannot write: PNG encoding failed");
-    io::write_file_atomically(path, encoded);
+    const std::size_t row_bytes = static_cast<std::size_t>(width) * channels;
+    std::vector<std::uint8_t> filtered((row_bytes + 1) * static_cast<std::size_t>(height));
+    for (std::size_t y = 0; y < static_cast<std::size_t>(height); ++y) {
+        const std::uint8_t* row = pixels.data() + y * row_bytes;
+        filter_up(filtered.data() + y * (row_bytes + 1), row, y > 0 ? row - row_bytes : nullptr,
+                  row_bytes);
+    }
+    write_png(path, width, height, 8, kColorType[channels], filtered);
 }
 
 void write_png16_gray(const std::filesystem::path& path, int width, int height,
                       std::span<const std::uint16_t> pixels) {
     io::check_image_size("write_png16_gray", width, height, 1, pixels.size());
     const std::size_t row_bytes = static_cast<std::size_t>(width) * 2;
-    check_encoder_limit(path, (row_bytes + 1) * static_cast<std::size_t>(height));
 
-    // Scanlines: a filter byte, then big-endian samples. Filter "Up" (2) stores the difference
-    // from the row above, which compresses smooth depth images far better than "None".
-    std::vector<std::uint8_t> raw((row_bytes + 1) * static_cast<std::size_t>(height));
-    std::vector<std::uint8_t> previous(row_bytes, 0), current(row_bytes);
-    for (int y = 0; y < height; ++y) {
-        const std::uint16_t* row = pixels.data() + static_cast<std::size_t>(y) * width;
-        for (int x = 0; x < width; ++x) {
+    // Samples are big-endian in the file; "Up" works on those bytes.
+    std::vector<std::uint8_t> filtered((row_bytes + 1) * static_cast<std::size_t>(height));
+    std::vector<std::uint8_t> previous(row_bytes), current(row_bytes);
+    for (std::size_t y = 0; y < static_cast<std::size_t>(height); ++y) {
+        const std::uint16_t* row = pixels.data() + y * static_cast<std::size_t>(width);
+        for (std::size_t x = 0; x < static_cast<std::size_t>(width); ++x) {
             current[2 * x] = static_cast<std::uint8_t>(row[x] >> 8);
             current[2 * x + 1] = static_cast<std::uint8_t>(row[x] & 0xFF);
         }
-        std::uint8_t* out = raw.data() + static_cast<std::size_t>(y) * (row_bytes + 1);
-        out[0] = 2;
-        for (std::size_t i = 0; i < row_bytes; ++i)
-            out[1 + i] = static_cast<std::uint8_t>(current[i] - previous[i]);
+        filter_up(filtered.data() + y * (row_bytes + 1), current.data(),
+                  y > 0 ? previous.data() : nullptr, row_bytes);
         previous.swap(current);
     }
-
-    int zlib_size = 0;
-    std::unique_ptr<unsigned char, decltype(&std::free)> zlib(
-        stbi_zlib_compress(raw.data(), static_cast<int>(raw.size()), &zlib_size, 8), &std::free);
-    if (!zlib) throw InputError(path.string(), "cannot write: PNG compression failed");
-
-    std::vector<std::uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-    std::vector<std::uint8_t> header;
-    put_u32_be(header, static_cast<std::uint32_t>(width));
-    put_u32_be(header, static_cast<std::uint32_t>(height));
-    // Bit depth 16, colour type 0 (grayscale), deflate, adaptive filtering, no interlace.
-    header.insert(header.end(), {16, 0, 0, 0, 0});
-    put_chunk(png, "IHDR", header);
-    put_chunk(png, "IDAT", std::span<const std::uint8_t>(zlib.get(), zlib_size));
-    put_chunk(png, "IEND", {});
-    io::write_file_atomically(path, png);
+    write_png(path, width, height, 16, 0, filtered);
 }
 
 }  // namespace zraster

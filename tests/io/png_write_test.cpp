@@ -120,6 +120,54 @@ TEST(WritePng8, RoundTripsEveryChannelCount) {
     }
 }
 
+// A full-HD frame like `zraster render` writes: flat background, smooth gradients and noise, so
+// that both long matches and literals are exercised across many deflate blocks.
+TEST(WritePng8, FullHdImageRoundTripsExactly) {
+    const int w = 1920, h = 1080, channels = 3;
+    std::vector<std::uint8_t> pixels(static_cast<std::size_t>(w) * h * channels);
+    std::uint32_t noise = 12345;
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            std::uint8_t* p = &pixels[(static_cast<std::size_t>(y) * w + x) * channels];
+            noise = noise * 1664525u + 1013904223u;
+            const bool inside = (x - 960) * (x - 960) + (y - 540) * (y - 540) < 400 * 400;
+            p[0] = inside ? static_cast<std::uint8_t>(x / 8) : 32;
+            p[1] = inside ? static_cast<std::uint8_t>(y / 5) : 40;
+            p[2] = inside && x % 7 == 0 ? static_cast<std::uint8_t>(noise >> 24) : 48;
+        }
+    }
+    const auto path = test::temp_dir("io-png8-hd") / "frame.png";
+    write_png8(path, w, h, channels, pixels);
+
+    const std::string file = test::read_bytes(path);
+    EXPECT_LT(file.size(), pixels.size() / 4);
+    int rw = 0, rh = 0, rc = 0;
+    std::unique_ptr<stbi_uc, decltype(&stbi_image_free)> decoded(
+        stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(file.data()),
+                              static_cast<int>(file.size()), &rw, &rh, &rc, 0),
+        &stbi_image_free);
+    ASSERT_TRUE(decoded) << stbi_failure_reason();
+    ASSERT_EQ(rw, w);
+    ASSERT_EQ(rh, h);
+    ASSERT_EQ(rc, channels);
+    EXPECT_EQ(std::memcmp(decoded.get(), pixels.data(), pixels.size()), 0);
+}
+
+TEST(WritePng16Gray, FullHdDepthRoundTripsExactly) {
+    const int w = 1920, h = 1080;
+    std::vector<std::uint16_t> pixels(static_cast<std::size_t>(w) * h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            pixels[static_cast<std::size_t>(y) * w + x] =
+                x > 300 && x < 1500 ? static_cast<std::uint16_t>(20000 + x * 13 + y * 7) : 0xFFFF;
+    const auto path = test::temp_dir("io-png16-hd") / "depth.png";
+    write_png16_gray(path, w, h, pixels);
+    const Gray16 decoded = decode_gray16(test::read_bytes(path));
+    EXPECT_EQ(decoded.width, w);
+    EXPECT_EQ(decoded.height, h);
+    EXPECT_TRUE(decoded.pixels == pixels);
+}
+
 TEST(WritePng8, RejectsBadSizes) {
     const auto path = test::temp_dir("io-png8-bad") / "x.png";
     std::vector<std::uint8_t> pixels(12);

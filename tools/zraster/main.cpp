@@ -1,62 +1,11 @@
-// zraster: the command-line renderer. One file per subcommand; this one dispatches and maps
+// zraster: the command-line renderer. One file per subcommand; run.cpp dispatches and maps
 // failures to exit codes: 0 success, 2 bad input or usage (one line on stderr naming the file or
 // option and the cause), 1 internal error.
-#include <zraster/error.hpp>
-
-#include <CLI/CLI.hpp>
-#include <fmt/format.h>
-
-#include <algorithm>
-#include <exception>
 #include <string>
 #include <vector>
-#include <new>
 
-#include "bench_command.hpp"
-#include "command_line.hpp"
-#include "info_command.hpp"
-#include "render_command.hpp"
+#include "run.hpp"
 
 int main(int argc, char** argv) {
-    using namespace zraster::cli;
-    CLI::App app{"zraster: an exact, fast CPU rasterizer", "zraster"};
-    app.require_subcommand(0, 1);
-    RenderArguments render_args;
-    add_render_command(app, render_args);
-    InfoArguments info_args;
-    add_info_command(app, info_args);
-    BenchArguments bench_args;
-    add_bench_command(app, bench_args);
-
-    // `zraster -o x.png --size ...` means `zraster render -o x.png --size ...`.
-    std::vector<std::string> args(argv + 1, argv + argc);
-    if (!args.empty() && args[0].starts_with("-") && args[0] != "-h" && args[0] != "--help")
-        args.insert(args.begin(), "render");
-    std::reverse(args.begin(), args.end());  // CLI11 takes a reversed vector
-    try {
-        app.parse(args);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        fmt::print(stderr, "zraster: {}\n", e.what());
-        return kExitBadInput;
-    }
-
-    try {
-        if (app.got_subcommand("info")) return run_info(info_args);
-        if (app.got_subcommand("bench")) return run_bench(bench_args);
-        // No subcommand at all: render the built-in default scene to zraster.png.
-        return run_render(render_args);
-    } catch (const zraster::InputError& e) {
-        fmt::print(stderr, "zraster: {}\n", e.what());
-        return kExitBadInput;
-    } catch (const std::bad_alloc&) {
-        fmt::print(stderr, "zraster: out of memory\n");
-        return kExitInternal;
-    } catch (const std::exception& e) {
-        fmt::print(stderr, "zraster: internal error: {}\n", e.what());
-        return kExitInternal;
-    }
+    return zraster::cli::run_zraster(std::vector<std::string>(argv + 1, argv + argc));
 }

@@ -1,0 +1,62 @@
+// Dispatches to the subcommands (one file each) and maps failures to exit codes.
+#include "run.hpp"
+
+#include <zraster/error.hpp>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <exception>
+#include <new>
+
+#include "bench_command.hpp"
+#include "command_line.hpp"
+#include "info_command.hpp"
+#include "render_command.hpp"
+
+namespace zraster::cli {
+
+int run_zraster(std::vector<std::string> args) {
+    CLI::App app{"zraster: an exact, fast CPU rasterizer", "zraster"};
+    app.require_subcommand(0, 1);
+    RenderArguments render_args;
+    add_render_command(app, render_args);
+    InfoArguments info_args;
+    add_info_command(app, info_args);
+    BenchArguments bench_args;
+    add_bench_command(app, bench_args);
+
+    // `zraster -o x.png --size ...` means `zraster render -o x.png --size ...`.
+    if (!args.empty() && args[0].starts_with("-") && args[0] != "-h" && args[0] != "--help")
+        args.insert(args.begin(), "render");
+    std::reverse(args.begin(), args.end());  // CLI11 takes a reversed vector
+    try {
+        app.parse(args);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        fmt::print(stderr, "zraster: {}\n", e.what());
+        return kExitBadInput;
+    }
+
+    try {
+        if (app.got_subcommand("info")) return run_info(info_args);
+        if (app.got_subcommand("bench")) return run_bench(bench_args);
+        // No subcommand at all: render the built-in default scene to zraster.png.
+        return run_render(render_args);
+    } catch (const zraster::InputError& e) {
+        fmt::print(stderr, "zraster: {}\n", e.what());
+        return kExitBadInput;
+    } catch (const std::bad_alloc&) {
+        fmt::print(stderr, "zraster: out of memory\n");
+        return kExitInternal;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "zraster: internal error: {}\n", e.what());
+        return kExitInternal;
+    }
+}
+
+}  // namespace zraster::cli
