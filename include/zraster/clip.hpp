@@ -72,10 +72,12 @@ inline float frustum_plane_distance(int bit_index, const glm::vec4& v, const Cli
 
 // Outcode for the six frustum/guard-band planes only (the hot path of the vertex stage).
 inline std::uint32_t frustum_outcode(const glm::vec4& v, const ClipSettings& s) {
-    std::uint32_t code = 0;
-    for (int bit = 0; bit < 6; ++bit)
-        code |= frustum_plane_distance(bit, v, s) >= 0.0f ? 0u : (1u << bit);
-    return code;
+    // Unrolled frustum_plane_distance, the same expressions.
+    const float depth_min = s.depth_range == ClipDepthRange::ZeroToOne ? v.z : v.z + v.w;
+    const float gx = s.guard_x * v.w, gy = s.guard_y * v.w;
+    return (depth_min >= 0.0f ? 0u : kClipDepthMin) | (v.w - v.z >= 0.0f ? 0u : kClipDepthMax) |
+           (v.x + gx >= 0.0f ? 0u : kClipLeft) | (gx - v.x >= 0.0f ? 0u : kClipRight) |
+           (v.y + gy >= 0.0f ? 0u : kClipBottom) | (gy - v.y >= 0.0f ? 0u : kClipTop);
 }
 
 // Outcode of one vertex. user_distances holds the vertex's signed distance to each user plane

@@ -88,13 +88,23 @@ std::array<std::int64_t, 2> snap_to_grid(const glm::dvec2& window);
 // (ties to even). Computed in double from the float clip position, once per vertex: a vertex
 // shared by several triangles snaps to the same point in all of them. Returns false when w <= 0
 // or the point is beyond the guard band (such vertices must be clipped first).
-bool to_screen(const glm::vec4& clip, const SetupSettings& settings, ScreenVertex& out);
+inline bool to_screen(const glm::vec4& clip, const SetupSettings& settings, ScreenVertex& out);
 
 // Sets up a triangle from snapped vertices: orients the edges, applies the fill rule and the
 // cull mode, bounds its pixel centers, and computes the plane equations. `planes` = false skips
 // the plane equations (enough for coverage-only work and early rejection).
 SetupResult setup_triangle(const std::array<ScreenVertex, 3>& v, const SetupSettings& settings,
                            TriangleSetup& out, bool planes = true);
+
+// Front-end test of a triangle of snapped vertices: degenerate, culled, or the inclusive pixel
+// box of the pixel centers it may cover (empty box: NoCoverage). Exactly the decisions
+// setup_triangle makes, without the edge functions and planes.
+struct TriangleBounds {
+    int min_x, min_y, max_x, max_y;
+    bool front_facing;
+};
+SetupResult classify_triangle(const std::array<ScreenVertex, 3>& v, const SetupSettings& settings,
+                              TriangleBounds& out);
 
 // Convenience: to_screen on each vertex (all must be inside the guard band with w > 0, what
 // the clipper guarantees; otherwise Degenerate), then setup_triangle.
@@ -126,6 +136,26 @@ void for_each_covered_pixel(const TriangleSetup& t, int x0, int y0, int x1, int 
             e2 += t.edge_a[2];
         }
     }
+}
+
+inline bool to_screen(const glm::vec4& clip, const SetupSettings& settings, ScreenVertex& out) {
+    const double w = clip.w;
+    if (!(w > 0.0)) return false;
+    const double rw = 1.0 / w;
+    const double wx = (double(clip.x) * rw + 1.0) * 0.5 * double(settings.viewport.width);
+    const double wy = (1.0 - double(clip.y) * rw) * 0.5 * double(settings.viewport.height);
+    // Beyond the guard band the fixed-point math could overflow (precision.hpp).
+    constexpr double limit = kGuardBand + double(kMaxViewport);
+    if (!(wx >= -limit && wx <= limit && wy >= -limit && wy <= limit)) return false;
+    // Nearest 1/256 pixel, ties to even (cvtsd2si), as snap_to_grid.
+    out.x = static_cast<std::int32_t>(__builtin_lrint(wx * double(kSubpixelScale)));
+    out.y = static_cast<std::int32_t>(__builtin_lrint(wy * double(kSubpixelScale)));
+    const double z = double(clip.z) * rw;
+    out.z = static_cast<float>(settings.depth_range == ClipDepthRange::NegativeOneToOne
+                                   ? 0.5 * z + 0.5
+                                   : z);
+    out.inv_w = static_cast<float>(rw);
+    return true;
 }
 
 }  // namespace zraster

@@ -16,41 +16,11 @@ std::int64_t floor_div(std::int64_t a, std::int64_t b) {
     return q;
 }
 
-PlaneEquation make_plane(const std::array<double, 3>& X, const std::array<double, 3>& Y,
-                         double inv_det, const std::array<double, 3>& f, double origin_x,
-                         double origin_y) {
-    const double df1 = f[1] - f[0], df2 = f[2] - f[0];
-    const double a = (df1 * (Y[2] - Y[0]) - df2 * (Y[1] - Y[0])) * inv_det;
-    const double b = (df2 * (X[1] - X[0]) - df1 * (X[2] - X[0])) * inv_det;
-    const double c = f[0] + a * (origin_x - X[0]) + b * (origin_y - Y[0]);
-    return {static_cast<float>(a), static_cast<float>(b), static_cast<float>(c)};
-}
-
 }  // namespace
 
 std::array<std::int64_t, 2> snap_to_grid(const glm::dvec2& window) {
     return {static_cast<std::int64_t>(std::llrint(window.x * double(kSubpixelScale))),
             static_cast<std::int64_t>(std::llrint(window.y * double(kSubpixelScale)))};
-}
-
-bool to_screen(const glm::vec4& clip, const SetupSettings& settings, ScreenVertex& out) {
-    const glm::dvec4 v(clip);
-    if (!(v.w > 0.0)) return false;
-    const double rw = 1.0 / v.w;
-    const double wx = (v.x * rw + 1.0) * 0.5 * double(settings.viewport.width);
-    const double wy = (1.0 - v.y * rw) * 0.5 * double(settings.viewport.height);
-    // Beyond the guard band the fixed-point math could overflow (precision.hpp).
-    const double limit = kGuardBand + double(kMaxViewport);
-    if (!(std::abs(wx) <= limit && std::abs(wy) <= limit)) return false;
-    const auto snapped = snap_to_grid({wx, wy});
-    out.x = static_cast<std::int32_t>(snapped[0]);
-    out.y = static_cast<std::int32_t>(snapped[1]);
-    const double z = v.z * rw;
-    out.z = static_cast<float>(settings.depth_range == ClipDepthRange::NegativeOneToOne
-                                   ? 0.5 * z + 0.5
-                                   : z);
-    out.inv_w = static_cast<float>(rw);
-    return true;
 }
 
 SetupResult setup_triangle(const std::array<glm::vec4, 3>& clip, const SetupSettings& settings,
@@ -61,28 +31,23 @@ SetupResult setup_triangle(const std::array<glm::vec4, 3>& clip, const SetupSett
     return setup_triangle(v, settings, t);
 }
 
-SetupResult setup_triangle(const std::array<ScreenVertex, 3>& v, const SetupSettings& settings,
-                           TriangleSetup& t, bool planes) {
-    for (std::size_t i = 0; i < 3; ++i) {
-        t.x[i] = v[i].x;
-        t.y[i] = v[i].y;
-    }
+SetupResult classify_triangle(const std::array<ScreenVertex, 3>& v, const SetupSettings& settings,
+                              TriangleBounds& out) {
     // Twice the signed area in y-down window space; negative means counter-clockwise as seen with
     // y up, i.e. OpenGL's default front face.
-    const std::int64_t x0 = t.x[0], y0 = t.y[0];
-    const std::int64_t area = (t.x[1] - x0) * (t.y[2] - y0) - (t.x[2] - x0) * (t.y[1] - y0);
+    const std::int64_t x0 = v[0].x, y0 = v[0].y;
+    const std::int64_t area = (std::int64_t{v[1].x} - x0) * (std::int64_t{v[2].y} - y0) -
+                              (std::int64_t{v[2].x} - x0) * (std::int64_t{v[1].y} - y0);
     if (area == 0) return SetupResult::Degenerate;
-    const bool ccw = area < 0;
-    t.front_facing = (settings.front_face == FrontFace::CounterClockwise) == ccw;
-    if ((settings.cull == CullMode::Back && !t.front_facing) ||
-        (settings.cull == CullMode::Front && t.front_facing))
+    out.front_facing = (settings.front_face == FrontFace::CounterClockwise) == (area < 0);
+    if ((settings.cull == CullMode::Back && !out.front_facing) ||
+        (settings.cull == CullMode::Front && out.front_facing))
         return SetupResult::Culled;
-
     // Bounding box of covered pixel centers: px * S + S/2 within [min, max].
-    const std::int64_t lo_x = std::min({t.x[0], t.x[1], t.x[2]});
-    const std::int64_t hi_x = std::max({t.x[0], t.x[1], t.x[2]});
-    const std::int64_t lo_y = std::min({t.y[0], t.y[1], t.y[2]});
-    const std::int64_t hi_y = std::max({t.y[0], t.y[1], t.y[2]});
+    const std::int64_t lo_x = std::min({v[0].x, v[1].x, v[2].x});
+    const std::int64_t hi_x = std::max({v[0].x, v[1].x, v[2].x});
+    const std::int64_t lo_y = std::min({v[0].y, v[1].y, v[2].y});
+    const std::int64_t hi_y = std::max({v[0].y, v[1].y, v[2].y});
     const std::int64_t px0 =
         std::max<std::int64_t>(0, -floor_div(kHalfPixel - lo_x, kSubpixelScale));  // ceil
     const std::int64_t py0 =
@@ -92,10 +57,29 @@ SetupResult setup_triangle(const std::array<ScreenVertex, 3>& v, const SetupSett
     const std::int64_t py1 = std::min<std::int64_t>(settings.viewport.height - 1,
                                                     floor_div(hi_y - kHalfPixel, kSubpixelScale));
     if (px0 > px1 || py0 > py1) return SetupResult::NoCoverage;
-    t.min_x = static_cast<int>(px0);
-    t.min_y = static_cast<int>(py0);
-    t.max_x = static_cast<int>(px1);
-    t.max_y = static_cast<int>(py1);
+    out.min_x = static_cast<int>(px0);
+    out.min_y = static_cast<int>(py0);
+    out.max_x = static_cast<int>(px1);
+    out.max_y = static_cast<int>(py1);
+    return SetupResult::Visible;
+}
+
+SetupResult setup_triangle(const std::array<ScreenVertex, 3>& v, const SetupSettings& settings,
+                           TriangleSetup& t, bool planes) {
+    TriangleBounds bounds;
+    const SetupResult result = classify_triangle(v, settings, bounds);
+    if (result != SetupResult::Visible) return result;
+    t.min_x = bounds.min_x;
+    t.min_y = bounds.min_y;
+    t.max_x = bounds.max_x;
+    t.max_y = bounds.max_y;
+    t.front_facing = bounds.front_facing;
+    for (std::size_t i = 0; i < 3; ++i) {
+        t.x[i] = v[i].x;
+        t.y[i] = v[i].y;
+    }
+    const std::int64_t x0 = t.x[0], y0 = t.y[0];
+    const std::int64_t area = (t.x[1] - x0) * (t.y[2] - y0) - (t.x[2] - x0) * (t.y[1] - y0);
 
     // Edge k is opposite vertex k, oriented so the inside is positive.
     for (int k = 0; k < 3; ++k) {
@@ -114,25 +98,36 @@ SetupResult setup_triangle(const std::array<ScreenVertex, 3>& v, const SetupSett
     }
     if (!planes) return SetupResult::Visible;
 
-    // Plane equations in pixel units relative to the center of pixel (min_x, min_y).
-    std::array<double, 3> X{}, Y{}, depth{}, q{};
-    for (std::size_t i = 0; i < 3; ++i) {
-        X[i] = double(t.x[i]) * (1.0 / double(kSubpixelScale));
-        Y[i] = double(t.y[i]) * (1.0 / double(kSubpixelScale));
-        depth[i] = v[i].z;
-    }
+    // Plane equations in pixel units relative to the center of pixel (min_x, min_y), from the
+    // gradients of the screen-linear barycentrics lambda_1 and lambda_2 (in double).
+    constexpr double kInvScale = 1.0 / double(kSubpixelScale);
+    const double ex1 = double(t.x[1] - x0) * kInvScale, ey1 = double(t.y[1] - y0) * kInvScale;
+    const double ex2 = double(t.x[2] - x0) * kInvScale, ey2 = double(t.y[2] - y0) * kInvScale;
     const double inv_det = double(kSubpixelScale * kSubpixelScale) / double(area);
-    const double ox = t.min_x + 0.5, oy = t.min_y + 0.5;
+    const double l1_dx = ey2 * inv_det, l1_dy = -ex2 * inv_det;
+    const double l2_dx = -ey1 * inv_det, l2_dy = ex1 * inv_det;
+    // Offset of the plane origin from vertex 0.
+    const double ox = (t.min_x + 0.5) - double(x0) * kInvScale;
+    const double oy = (t.min_y + 0.5) - double(y0) * kInvScale;
+    const auto plane = [&](double f0, double df1, double df2) {
+        const double a = df1 * l1_dx + df2 * l2_dx;
+        const double b = df1 * l1_dy + df2 * l2_dy;
+        return PlaneEquation{static_cast<float>(a), static_cast<float>(b),
+                             static_cast<float>(f0 + a * ox + b * oy)};
+    };
+    const double z0 = v[0].z;
+    t.depth = plane(z0, double(v[1].z) - z0, double(v[2].z) - z0);
     // Scale 1/w so the largest is 1: the ratios are what matter, and this keeps them in range.
-    const double scale = 1.0 / std::max({double(v[0].inv_w), double(v[1].inv_w), double(v[2].inv_w)});
-    for (std::size_t i = 0; i < 3; ++i) q[i] = double(v[i].inv_w) * scale;
-    t.depth = make_plane(X, Y, inv_det, depth, ox, oy);
-    t.q = make_plane(X, Y, inv_det, q, ox, oy);
-    t.p1 = make_plane(X, Y, inv_det, {0.0, q[1], 0.0}, ox, oy);
-    t.p2 = make_plane(X, Y, inv_det, {0.0, 0.0, q[2]}, ox, oy);
+    const double scale =
+        1.0 / std::max({double(v[0].inv_w), double(v[1].inv_w), double(v[2].inv_w)});
+    const double q0 = double(v[0].inv_w) * scale, q1 = double(v[1].inv_w) * scale,
+                 q2 = double(v[2].inv_w) * scale;
+    t.q = plane(q0, q1 - q0, q2 - q0);
+    t.p1 = plane(0.0, q1, 0.0);
+    t.p2 = plane(0.0, 0.0, q2);
     if (settings.screen_linear_planes) {
-        t.l1 = make_plane(X, Y, inv_det, {0.0, 1.0, 0.0}, ox, oy);
-        t.l2 = make_plane(X, Y, inv_det, {0.0, 0.0, 1.0}, ox, oy);
+        t.l1 = plane(0.0, 1.0, 0.0);
+        t.l2 = plane(0.0, 0.0, 1.0);
     }
     return SetupResult::Visible;
 }

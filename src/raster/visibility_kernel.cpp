@@ -74,6 +74,7 @@ int VisibilityBlock(const BlockJob& job, TileBuffers& tile) {
             if (hn::AllFalse(df, pass)) continue;
             passed += static_cast<int>(hn::CountTrue(df, pass));
             if (job.write_depth) hn::StoreU(hn::IfThenElse(pass, z, stored), df, tile.depth + at);
+            if (!job.attributes) continue;
             const auto pass_u = hn::RebindMask(du, pass);
             hn::StoreU(hn::IfThenElse(pass_u, ref, hn::LoadU(du, tile.ref + at)), du, tile.ref + at);
             hn::Vec<decltype(df)> b1, b2;
@@ -128,6 +129,7 @@ int visibility_block_scalar(const BlockJob& job, TileBuffers& tile) {
             if (!DepthBuffer::passes(z, tile.depth[at], job.compare)) continue;
             ++passed;
             if (job.write_depth) tile.depth[at] = z;
+            if (!job.attributes) continue;
             tile.ref[at] = job.ref;
             if (job.perspective) {
                 const float q = t.q.at(dx, dy);

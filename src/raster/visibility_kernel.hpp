@@ -42,6 +42,7 @@ struct BlockJob {
     bool perspective = true;
     CompareFunc compare = CompareFunc::Less;
     bool write_depth = true;
+    bool attributes = true;  // store the triangle reference and barycentrics (off: depth only)
     std::uint32_t ref = 0;
 };
 

@@ -17,8 +17,8 @@ namespace {
 
 // Tests a triangle of snapped vertices and, if it covers a pixel center, appends its ref.
 void emit(const Frame& frame, TriangleRef ref, const std::array<ScreenVertex, 3>& v, Chunk& chunk) {
-    TriangleSetup setup;
-    switch (setup_triangle(v, frame.setup_settings, setup, /*planes=*/false)) {
+    TriangleBounds setup;
+    switch (classify_triangle(v, frame.setup_settings, setup)) {
         case SetupResult::Visible: break;
         case SetupResult::Degenerate: ++chunk.stats.triangles_degenerate; return;
         case SetupResult::Culled: ++chunk.stats.triangles_backface_culled; return;
@@ -156,9 +156,13 @@ void bin_chunk(const Frame& frame, Chunk& chunk) {
     std::vector<std::uint32_t> cursor(chunk.bin_offsets.begin(), chunk.bin_offsets.end() - 1);
     for (std::uint32_t i = 0; i < chunk.refs.size(); ++i) {
         const TriangleRef& r = chunk.refs[i];
+        const BinEntry entry{{frame.screen_vertex(chunk, r.screen[0]),
+                              frame.screen_vertex(chunk, r.screen[1]),
+                              frame.screen_vertex(chunk, r.screen[2])},
+                             i};
         for (int ty = r.tile_y0; ty <= r.tile_y1; ++ty)
             for (int tx = r.tile_x0; tx <= r.tile_x1; ++tx)
-                chunk.bin_entries[cursor[std::size_t(ty * frame.tiles_x + tx)]++] = i;
+                chunk.bin_entries[cursor[std::size_t(ty * frame.tiles_x + tx)]++] = entry;
     }
 }
 

@@ -66,13 +66,21 @@ struct ClippedPiece {
 };
 
 // A run of consecutive triangles in draw order (instances one after another).
+// A triangle in a tile's bin: its snapped vertices travel with it, so the back end reads its
+// bins sequentially instead of chasing refs and vertices all over memory.
+struct BinEntry {
+    std::array<ScreenVertex, 3> vertices;
+    std::uint32_t ref;  // index into Chunk::refs
+};
+
 struct Chunk {
     std::size_t first_triangle = 0, end_triangle = 0;  // over all instances' triangles
     std::vector<TriangleRef> refs;
     std::vector<ScreenVertex> extra_vertices;
     std::vector<ClippedPiece> pieces;
     // Bins: refs touching tile t are bin_entries[bin_offsets[t] .. bin_offsets[t + 1]).
-    std::vector<std::uint32_t> bin_offsets, bin_entries;
+    std::vector<std::uint32_t> bin_offsets;
+    std::vector<BinEntry> bin_entries;
     RenderStats stats;
 };
 

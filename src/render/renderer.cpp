@@ -2,10 +2,12 @@
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <zraster/error.hpp>
 
@@ -30,12 +32,64 @@ bool finite(const glm::dvec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-void validate(const RenderOptions& options) {
+// Options and scene are checked before anything is allocated: a frame that would need absurd
+// memory, or a scene whose arrays disagree (read out of bounds later), is an InputError here.
+void validate(const Scene& scene, const RenderOptions& options) {
     if (options.width < 1 || options.height < 1 || options.width > kMaxViewport ||
         options.height > kMaxViewport)
         throw InputError("", "image size " + std::to_string(options.width) + "x" +
                                  std::to_string(options.height) + " out of range (1.." +
                                  std::to_string(kMaxViewport) + " per side)");
+    const RenderLimits& limits = options.limits;
+    const std::uint64_t pixels = std::uint64_t(options.width) * std::uint64_t(options.height);
+    if (pixels > limits.max_pixels)
+        throw InputError("", "image size " + std::to_string(options.width) + "x" +
+                                 std::to_string(options.height) + " is " + std::to_string(pixels) +
+                                 " pixels, more than the limit of " +
+                                 std::to_string(limits.max_pixels));
+    // Frame vertex indices are 32-bit with the top bit marking clipper-made vertices.
+    constexpr std::uint64_t kMaxFrameVertices = (std::uint64_t{1} << 31) - 1;
+    const std::string& source = scene.source;
+    if (scene.materials.empty()) throw InputError(source, "the scene has no materials");
+    std::uint64_t triangles = 0, vertices = 0;
+    std::vector<bool> mesh_used(scene.meshes.size(), false);
+    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+        const std::uint32_t m = scene.instances[i].mesh;
+        if (m >= scene.meshes.size())
+            throw InputError(source, "instance " + std::to_string(i) + " refers to mesh " +
+                                         std::to_string(m) + " of " +
+                                         std::to_string(scene.meshes.size()));
+        triangles += scene.meshes[m].triangle_count();
+        vertices += scene.meshes[m].positions.size();
+        mesh_used[m] = true;
+    }
+    if (triangles > limits.max_triangles)
+        throw InputError(source, std::to_string(triangles) +
+                                     " triangles over all instances, more than the limit of " +
+                                     std::to_string(limits.max_triangles));
+    if (vertices > std::min(limits.max_vertices, kMaxFrameVertices))
+        throw InputError(source, std::to_string(vertices) +
+                                     " vertices over all instances, more than the limit of " +
+                                     std::to_string(std::min(limits.max_vertices,
+                                                             kMaxFrameVertices)));
+    for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+        if (!mesh_used[m]) continue;
+        const Mesh& mesh = scene.meshes[m];
+        const std::size_t n = mesh.positions.size();
+        const std::string label = "mesh " + std::to_string(m) + " '" + mesh.name + "'";
+        if (!mesh.normals.empty() && mesh.normals.size() != n)
+            throw InputError(source, label + ": " + std::to_string(mesh.normals.size()) +
+                                         " normals for " + std::to_string(n) + " positions");
+        if (!mesh.uvs.empty() && mesh.uvs.size() != n)
+            throw InputError(source, label + ": " + std::to_string(mesh.uvs.size()) +
+                                         " uvs for " + std::to_string(n) + " positions");
+        const std::size_t used = mesh.triangle_count() * 3;  // a partial last triple is ignored
+        const auto end = mesh.indices.begin() + static_cast<std::ptrdiff_t>(used);
+        const auto largest = std::max_element(mesh.indices.begin(), end);
+        if (largest != end && *largest >= n)
+            throw InputError(source, label + ": vertex index " + std::to_string(*largest) +
+                                         " out of range (" + std::to_string(n) + " positions)");
+    }
     if (options.clip_planes.size() > std::size_t(kMaxUserClipPlanes))
         throw InputError("", "at most " + std::to_string(kMaxUserClipPlanes) +
                                  " user clip planes are supported");
@@ -75,7 +129,7 @@ void reset(detail::Frame& frame) {
 
 void render_frame(detail::Frame& frame, const Scene& scene, const RenderOptions& options,
                   RenderResult& result) {
-    validate(options);
+    validate(scene, options);
     const auto start = std::chrono::steady_clock::now();
     result.stats = RenderStats{};
     reset(frame);

@@ -112,7 +112,30 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
     job.perspective = options.interpolation == Interpolation::PerspectiveCorrect;
     job.compare = c.compare;
     job.write_depth = options.depth_write;
+    job.attributes = c.shade || !c.targets.instance_id.empty();
     job.ref = id;
+    // Small triangles (vertices within 64 pixels each way, the common case) have edge values
+    // that fit 32 bits anywhere near them (|E| <= 2^22 * 65 * 2 < 2^30), so a triangle whose
+    // pixels lie within one 8x8 block is a single partial block: no corner tests.
+    const auto [lo_x, hi_x] = std::minmax({setup.x[0], setup.x[1], setup.x[2]});
+    const auto [lo_y, hi_y] = std::minmax({setup.y[0], setup.y[1], setup.y[2]});
+    if (hi_x - lo_x < 64 * kSubpixelScale && hi_y - lo_y < 64 * kSubpixelScale &&
+        rx1 - rx0 < kBlockSize && ry1 - ry0 < kBlockSize) {
+        for (std::size_t k = 0; k < 3; ++k) {
+            job.e[k] = static_cast<std::int32_t>(edge_at(setup, k, rx0, ry0));
+            job.step_x[k] = static_cast<std::int32_t>(setup.edge_a[k]);
+            job.step_y[k] = static_cast<std::int32_t>(setup.edge_b[k]);
+        }
+        job.full = false;
+        job.x0 = rx0 - c.x0;
+        job.y0 = ry0 - c.y0;
+        job.width = rx1 - rx0 + 1;
+        job.height = ry1 - ry0 + 1;
+        job.plane_dx = rx0 - setup.min_x;
+        job.plane_dy = ry0 - setup.min_y;
+        return static_cast<std::uint64_t>(c.simd ? visibility_block(job, tile)
+                                                 : visibility_block_scalar(job, tile));
+    }
     std::uint64_t passed = 0;
     const int first_by = c.y0 + (ry0 - c.y0) / kBlockSize * kBlockSize;
     const int first_bx = c.x0 + (rx0 - c.x0) / kBlockSize * kBlockSize;
@@ -347,13 +370,12 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
             const Chunk& chunk = frame.chunks[ci];
             for (std::uint32_t e = chunk.bin_offsets[tile_number];
                  e < chunk.bin_offsets[tile_number + 1]; ++e) {
-                const std::uint32_t local = chunk.bin_entries[e];
-                const TriangleRef& ref = chunk.refs[local];
-                const std::array<ScreenVertex, 3> v{frame.screen_vertex(chunk, ref.screen[0]),
-                                                    frame.screen_vertex(chunk, ref.screen[1]),
-                                                    frame.screen_vertex(chunk, ref.screen[2])};
-                if (setup_triangle(v, frame.setup_settings, setup) != SetupResult::Visible)
+                const BinEntry& entry = chunk.bin_entries[e];
+                const std::uint32_t local = entry.ref;
+                if (setup_triangle(entry.vertices, frame.setup_settings, setup) !=
+                    SetupResult::Visible)
                     continue;  // cannot happen: the front end made the same decision
+                const TriangleRef& ref = chunk.refs[local];
                 const std::uint32_t id = std::uint32_t(ci) << kLocalBits | local;
                 passed += kernel ? rasterize_blocks(c, chunk, ref, setup, id, tile)
                                  : rasterize_scalar(c, chunk, ref, setup, id, tile, c.x0, c.y0,

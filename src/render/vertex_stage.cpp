@@ -27,6 +27,16 @@ bool outside_frustum(const Bounds3f& box, const glm::mat4& mvp, ClipDepthRange r
     return true;
 }
 
+// m * (p, 1), written out: glm's operator* is not always inlined at -O2, and this is the
+// innermost loop of the vertex stage. Same operations in the same order as glm's
+// (m0 x + m1 y) + (m2 z + m3 w) with w = 1, so results equal m * vec4(p, 1) bit for bit.
+inline glm::vec4 transform(const glm::mat4& m, const glm::vec3& p) {
+    return glm::vec4((m[0].x * p.x + m[1].x * p.y) + (m[2].x * p.z + m[3].x),
+                     (m[0].y * p.x + m[1].y * p.y) + (m[2].y * p.z + m[3].y),
+                     (m[0].z * p.x + m[1].z * p.y) + (m[2].z * p.z + m[3].z),
+                     (m[0].w * p.x + m[1].w * p.y) + (m[2].w * p.z + m[3].w));
+}
+
 bool finite(const glm::vec4& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
 }
@@ -89,7 +99,7 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
                 for (std::size_t k = r.begin(); k < r.end(); ++k) {
                     const std::size_t out = fi.first_vertex + k;
                     const glm::vec4 p(mesh.positions[k], 1.0f);
-                    const glm::vec4 clip = fi.mvp * p;
+                    const glm::vec4 clip = transform(fi.mvp, mesh.positions[k]);
                     v.clip[out] = clip;
                     std::uint32_t code = kNonFinite;
                     if (finite(clip)) {

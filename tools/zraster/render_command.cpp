@@ -38,6 +38,9 @@ void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
                    "builtin:sphere, builtin:cube, sphere:N, city:N[:SEED], soup:N[:SEED]")
         ->capture_default_str();
     cmd.add_option("--size", a.size, "Image size WIDTHxHEIGHT")->capture_default_str();
+    cmd.add_option("--max-pixels", a.max_pixels,
+                   "Refuse images of more pixels than this (width * height)")
+        ->capture_default_str();
     cmd.add_option("--threads", a.threads, "Worker threads (0: all cores)")->capture_default_str();
     cmd.add_option("--eye", a.eye, "Camera position X,Y,Z (default: frame the bounding sphere)");
     cmd.add_option("--target", a.target, "Point looked at X,Y,Z");
@@ -137,8 +140,14 @@ Camera make_camera(const RenderArguments& a, const Scene& scene, double aspect) 
 RenderOptions make_render_options(const RenderArguments& a, const Scene& scene) {
     RenderOptions o;
     const glm::ivec2 size = parse_size("--size", a.size, kMaxViewport);
+    const std::uint64_t pixels = std::uint64_t(size.x) * std::uint64_t(size.y);
+    if (pixels > a.max_pixels)
+        throw InputError("--size", a.size + " is " + std::to_string(pixels) +
+                                       " pixels, more than --max-pixels " +
+                                       std::to_string(a.max_pixels));
     o.width = size.x;
     o.height = size.y;
+    o.limits.max_pixels = a.max_pixels;
     if (a.threads < 0) throw InputError("--threads", "must be >= 0");
     o.threads = a.threads;
     o.camera = make_camera(a, scene, double(o.width) / double(o.height));

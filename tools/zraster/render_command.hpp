@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@ struct RenderArguments {
     std::string scene = "builtin:default";
     std::string output = "zraster.png";
     std::string size = "1920x1080";
+    std::uint64_t max_pixels = RenderLimits{}.max_pixels;
     int threads = 0;
     std::string eye, target, up = "0,1,0", orbit;
     std::optional<double> fovy, near, far;

@@ -1,0 +1,11 @@
+// libFuzzer target: load_scene on OFF (the declared-count check runs first),
+// then the loaded scene through the whole pipeline at 24x16.
+#include <cstddef>
+#include <cstdint>
+
+#include "fuzz_support.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    zraster::fuzz::fuzz_load(data, size, ".off");
+    return 0;
+}

@@ -1,0 +1,161 @@
+// Shared by the libFuzzer targets: a private working directory with small companion files, and
+// the checks every loaded scene must pass (the fuzzers' oracles besides the sanitizers).
+#pragma once
+#include <zraster/error.hpp>
+#include <zraster/image_io.hpp>
+#include <zraster/load.hpp>
+#include <zraster/render.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <unistd.h>
+
+namespace zraster::fuzz {
+
+// Prints the broken invariant and aborts: libFuzzer saves the input as a crash.
+[[noreturn]] inline void fail(const std::string& what) {
+    std::fprintf(stderr, "zraster fuzz invariant broken: %s\n", what.c_str());
+    std::fflush(stderr);
+    std::abort();
+}
+
+inline void write_file(const std::filesystem::path& path, std::string_view bytes) {
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    if (!out.good()) fail("cannot write " + path.string());
+}
+
+// A 4x4 RGBA checkerboard, so that references to "t.png" from a fuzzed MTL or glTF resolve.
+inline void write_texture_fixture(const std::filesystem::path& path) {
+    std::vector<std::uint8_t> rgba(4 * 4 * 4);
+    for (std::size_t i = 0; i < 16; ++i) {
+        const std::uint8_t v = ((i % 4) + (i / 4)) % 2 ? 255 : 0;
+        rgba[4 * i] = v;
+        rgba[4 * i + 1] = static_cast<std::uint8_t>(255 - v);
+        rgba[4 * i + 2] = 128;
+        rgba[4 * i + 3] = 255;
+    }
+    write_png8(path, 4, 4, 4, rgba);
+}
+
+// Companion files a fuzzed input may name: a material library, a texture and a glTF buffer
+// (one triangle: 3 float positions then 3 uint16 indices). Then every file, at most 1 MiB, of
+// the directories in $ZRASTER_FUZZ_FIXTURES (colon-separated; fuzz.sh passes the shared glTF
+// folders so that their .bin buffers and textures resolve).
+inline void write_fixtures(const std::filesystem::path& dir) {
+    write_file(dir / "t.mtl",
+               "newmtl m\nKd 0.5 0.6 0.7\nKs 0.2 0.2 0.2\nNs 20\nd 1\nmap_Kd t.png\n"
+               "newmtl n\nKd 1 0 0\n");
+    write_texture_fixture(dir / "t.png");
+    const float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    const std::uint16_t indices[3] = {0, 1, 2};
+    std::string bin(reinterpret_cast<const char*>(positions), sizeof positions);
+    bin.append(reinterpret_cast<const char*>(indices), sizeof indices);
+    write_file(dir / "t.bin", bin);
+    if (const char* list = std::getenv("ZRASTER_FUZZ_FIXTURES")) {
+        std::string_view rest(list);
+        while (!rest.empty()) {
+            const std::size_t colon = rest.find(':');
+            const std::filesystem::path source(std::string(rest.substr(0, colon)));
+            rest = colon == std::string_view::npos ? std::string_view() : rest.substr(colon + 1);
+            std::error_code ec;
+            for (const auto& entry : std::filesystem::directory_iterator(source, ec)) {
+                if (entry.is_regular_file(ec) && entry.file_size(ec) <= (1u << 20))
+                    std::filesystem::copy_file(entry.path(), dir / entry.path().filename(),
+                                               std::filesystem::copy_options::skip_existing, ec);
+            }
+        }
+    }
+}
+
+// A fresh directory per process ($TMPDIR or /tmp), with the fixtures, removed at exit.
+inline const std::filesystem::path& work_dir() {
+    static const std::filesystem::path dir = [] {
+        std::string pattern = (std::filesystem::temp_directory_path() / "zraster-fuzz-XXXXXX");
+        if (::mkdtemp(pattern.data()) == nullptr) fail("mkdtemp failed");
+        const std::filesystem::path d(pattern);
+        write_fixtures(d);
+        static const std::filesystem::path to_remove = d;
+        std::atexit([] {
+            std::error_code ec;
+            std::filesystem::remove_all(to_remove, ec);
+        });
+        return d;
+    }();
+    return dir;
+}
+
+inline bool finite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// What load_scene promises about a scene it returns (include/zraster/load.hpp, mesh.hpp).
+inline void check_loaded_scene(const Scene& scene) {
+    if (scene.materials.empty()) fail("no default material");
+    if (scene.instances.empty()) fail("a loaded scene without instances");
+    for (const Mesh& mesh : scene.meshes) {
+        const std::size_t n = mesh.positions.size();
+        if (mesh.indices.empty() || mesh.indices.size() % 3 != 0) fail("bad index count");
+        for (std::uint32_t i : mesh.indices)
+            if (i >= n) fail("index out of range in mesh " + mesh.name);
+        for (const glm::vec3& p : mesh.positions)
+            if (!finite(p)) fail("non-finite position in mesh " + mesh.name);
+        if (mesh.normals.size() != n) fail("normals not one per position");
+        for (const glm::vec3& normal : mesh.normals) {
+            if (!finite(normal)) fail("non-finite normal in mesh " + mesh.name);
+            if (std::fabs(glm::length(normal) - 1.0f) > 1e-3f) fail("normal not unit length");
+        }
+        if (!mesh.uvs.empty() && mesh.uvs.size() != n) fail("uvs not one per position");
+        if (mesh.material >= scene.materials.size()) fail("material index out of range");
+    }
+    for (const Instance& instance : scene.instances)
+        if (instance.mesh >= scene.meshes.size()) fail("instance names a missing mesh");
+    for (const std::string& w : scene.warnings)
+        if (w.find('\n') != std::string::npos) fail("multi-line warning: " + w);
+}
+
+// An InputError is the expected answer to a bad file: one line, "FILE: cause".
+inline void check_input_error(const InputError& e, const std::string& file) {
+    const std::string what = e.what();
+    if (what.find('\n') != std::string::npos) fail("multi-line error: " + what);
+    if (e.file() != file) fail("error names '" + e.file() + "', not the file: " + what);
+    if (e.cause().empty()) fail("error without a cause");
+}
+
+// Loads `bytes` as a file named input<extension> in the work directory, checks the result and
+// draws it small (the loaded geometry through the whole pipeline).
+inline void fuzz_load(const std::uint8_t* data, std::size_t size, const std::string& extension) {
+    const std::filesystem::path path = work_dir() / ("input" + extension);
+    write_file(path, std::string_view(reinterpret_cast<const char*>(data), size));
+    LoadOptions options;
+    options.max_triangles = 200'000;  // keeps each run short; the limit check itself is tested
+    Scene scene;
+    try {
+        scene = load_scene(path, options);
+    } catch (const InputError& e) {
+        check_input_error(e, path.string());
+        return;
+    }
+    check_loaded_scene(scene);
+    (void)describe_scene(scene);
+    RenderOptions render_options;
+    render_options.width = 24;
+    render_options.height = 16;
+    render_options.threads = 1;
+    try {
+        const RenderResult result = render(scene, render_options);
+        if (result.targets.color.size() != 24u * 16u * 4u) fail("color target size");
+    } catch (const InputError& e) {
+        fail(std::string("render refused a loaded scene: ") + e.what());
+    }
+}
+
+}  // namespace zraster::fuzz

@@ -1,0 +1,109 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (clang, AddressSanitizer + UndefinedBehaviorSanitizer) in
+# build-fuzz/ and runs each for SECONDS_PER_TARGET seconds (default 10), one after the other.
+# Prints per target the executions and any finding; exits non-zero if a target found a crash,
+# a leak, a timeout or an out-of-memory.
+#
+#   bash scripts/fuzz.sh [SECONDS_PER_TARGET]
+#
+# Environment: ZRASTER_FUZZ_BUILD_DIR (default build-fuzz), ZRASTER_FUZZ_TARGETS (space-separated
+# subset), ZRASTER_FUZZ_JOBS (build parallelism, default 2).
+# Corpora grow in $build/corpus/<target> across runs; findings land in $build/findings/<target>.
+# Seeds: fuzz/seeds/<target> (committed) plus the shared meshes of ../shared/data/meshes of the
+# target's formats (copied at run time, not committed).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${ZRASTER_FUZZ_BUILD_DIR:-$root/build-fuzz}
+seconds=${1:-10}
+all_targets="fuzz_load_obj fuzz_load_ply fuzz_load_stl fuzz_load_gltf fuzz_load_off fuzz_load_3ds
+             fuzz_pipeline fuzz_cli"
+targets=${ZRASTER_FUZZ_TARGETS:-$all_targets}
+shared=$root/../shared/data/meshes
+
+bash "$root/scripts/install-deps.sh"
+flags="-O1 -gline-tables-only -fno-omit-frame-pointer"
+flags+=" -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all"
+CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Fuzz \
+    -DZRASTER_BUILD_TESTS=OFF -DZRASTER_BUILD_FUZZERS=ON -DCMAKE_CXX_FLAGS="$flags" \
+    -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
+# shellcheck disable=SC2086
+ninja -C "$build" -j "${ZRASTER_FUZZ_JOBS:-2}" $targets >/dev/null
+
+# Seeds for a target: its committed seeds and the shared meshes of its formats (<= 128 KiB).
+shared_patterns() {
+    case $1 in
+        fuzz_load_obj) echo "*.obj" ;;
+        fuzz_load_ply) echo "*.ply" ;;
+        fuzz_load_stl) echo "*.stl" ;;
+        fuzz_load_gltf) echo "*.gltf *.glb" ;;
+        fuzz_load_off) echo "*.off" ;;
+        fuzz_load_3ds) echo "*.3ds" ;;
+    esac
+}
+dictionary() {
+    case $1 in
+        fuzz_load_obj) echo obj ;;
+        fuzz_load_ply) echo ply ;;
+        fuzz_load_stl) echo stl ;;
+        fuzz_load_gltf) echo gltf ;;
+        fuzz_load_off) echo off ;;
+        fuzz_cli) echo cli ;;
+    esac
+}
+
+# Companion files (glTF buffers and textures) the shared glTF seeds refer to by name.
+fixtures=""
+for d in "$shared"/gltf/*/; do
+    [ -d "$d" ] && fixtures+="${fixtures:+:}$d"
+done
+export ZRASTER_FUZZ_FIXTURES=$fixtures
+# Sanitizer reports must fail the run; leaks are findings too.
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=0}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+mkdir -p "$build/tmp"
+export TMPDIR=$build/tmp
+
+status=0
+total_runs=0
+for t in $targets; do
+    corpus=$build/corpus/$t
+    seeds=$build/seeds/$t
+    findings=$build/findings/$t
+    mkdir -p "$corpus" "$findings"
+    rm -rf "$seeds"
+    mkdir -p "$seeds"
+    cp "$root/fuzz/seeds/$t/"* "$seeds/" 2>/dev/null || true
+    for p in $(shared_patterns "$t"); do
+        if [ -d "$shared" ]; then
+            find "$shared" -name "$p" -size -129k -exec cp {} "$seeds/" \;
+        fi
+    done
+    args=(-max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 -malloc_limit_mb=512
+          -max_len=65536 -close_fd_mask=1 -print_final_stats=1 -artifact_prefix="$findings/")
+    dict=$(dictionary "$t")
+    [ -n "$dict" ] && args+=(-dict="$root/fuzz/dict/$dict.dict")
+    log=$build/$t.log
+    before=$(find "$findings" -type f | wc -l)
+    rc=0
+    "$build/fuzz/$t" "${args[@]}" "$corpus" "$seeds" >"$log" 2>&1 || rc=$?
+    runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+    runs=${runs:-0}
+    total_runs=$((total_runs + runs))
+    files=$(find "$corpus" -type f | wc -l)
+    new=$(find "$findings" -type f | wc -l)
+    if [ "$rc" -ne 0 ] || [ "$new" -gt "$before" ]; then
+        status=1
+        line=$(printf '%-16s %9s runs in %ss, corpus %5s: FINDING (exit %s), see %s' \
+            "$t" "$runs" "$seconds" "$files" "$rc" "$log")
+        echo "$line"
+        grep -E "ERROR: |runtime error: |invariant broken|Test unit written" "$log" | head -5 |
+            sed 's/^/    /'
+    else
+        line=$(printf '%-16s %9s runs in %ss, corpus %5s: no finding' "$t" "$runs" "$seconds" \
+            "$files")
+        echo "$line"
+    fi
+done
+echo "fuzz: $total_runs executions in total, $(echo "$targets" | wc -w) targets x ${seconds}s:" \
+    "$([ $status -eq 0 ] && echo "no finding" || echo "FINDINGS (see above)")"
+exit $status
