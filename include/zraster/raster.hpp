@@ -39,11 +39,15 @@ struct PlaneEquation {
 };
 
 // A vertex after the divide and viewport transform: snapped window position in
-// 1/kSubpixelScale pixels (y down; |x|, |y| < 2^29 inside the guard band), window depth, 1/w.
+// 1/kSubpixelScale pixels (y down; |x|, |y| < 2^29 inside the guard band) for coverage, the
+// unsnapped position in pixels for the plane equations (depth and barycentrics then follow the
+// true geometry instead of the snapped one: on triangles a few pixels wide the difference in
+// depth reaches 1e-3 of the depth range), window depth, 1/w.
 struct ScreenVertex {
     std::int32_t x = 0, y = 0;
     float z = 0.0f;
     float inv_w = 1.0f;
+    float window_x = 0.0f, window_y = 0.0f;
 };
 
 struct TriangleSetup {
@@ -155,6 +159,8 @@ inline bool to_screen(const glm::vec4& clip, const SetupSettings& settings, Scre
                                    ? 0.5 * z + 0.5
                                    : z);
     out.inv_w = static_cast<float>(rw);
+    out.window_x = static_cast<float>(wx);
+    out.window_y = static_cast<float>(wy);
     return true;
 }
 

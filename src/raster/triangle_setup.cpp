@@ -99,16 +99,27 @@ SetupResult setup_triangle(const std::array<ScreenVertex, 3>& v, const SetupSett
     if (!planes) return SetupResult::Visible;
 
     // Plane equations in pixel units relative to the center of pixel (min_x, min_y), from the
-    // gradients of the screen-linear barycentrics lambda_1 and lambda_2 (in double).
-    constexpr double kInvScale = 1.0 / double(kSubpixelScale);
-    const double ex1 = double(t.x[1] - x0) * kInvScale, ey1 = double(t.y[1] - y0) * kInvScale;
-    const double ex2 = double(t.x[2] - x0) * kInvScale, ey2 = double(t.y[2] - y0) * kInvScale;
-    const double inv_det = double(kSubpixelScale * kSubpixelScale) / double(area);
+    // gradients of the screen-linear barycentrics lambda_1 and lambda_2 (in double), over the
+    // unsnapped positions. A sliver whose unsnapped area vanishes falls back to the snapped one.
+    const double fx0 = v[0].window_x, fy0 = v[0].window_y;
+    double ex1 = double(v[1].window_x) - fx0, ey1 = double(v[1].window_y) - fy0;
+    double ex2 = double(v[2].window_x) - fx0, ey2 = double(v[2].window_y) - fy0;
+    double det = ex1 * ey2 - ex2 * ey1;
+    double ox = (t.min_x + 0.5) - fx0, oy = (t.min_y + 0.5) - fy0;
+    // The unsnapped triangle must have the same orientation as the snapped one.
+    if (!(det * double(area) > 0.0)) {
+        constexpr double kInvScale = 1.0 / double(kSubpixelScale);
+        ex1 = double(t.x[1] - x0) * kInvScale;
+        ey1 = double(t.y[1] - y0) * kInvScale;
+        ex2 = double(t.x[2] - x0) * kInvScale;
+        ey2 = double(t.y[2] - y0) * kInvScale;
+        det = double(area) * (kInvScale * kInvScale);
+        ox = (t.min_x + 0.5) - double(x0) * kInvScale;
+        oy = (t.min_y + 0.5) - double(y0) * kInvScale;
+    }
+    const double inv_det = 1.0 / det;
     const double l1_dx = ey2 * inv_det, l1_dy = -ex2 * inv_det;
     const double l2_dx = -ey1 * inv_det, l2_dy = ex1 * inv_det;
-    // Offset of the plane origin from vertex 0.
-    const double ox = (t.min_x + 0.5) - double(x0) * kInvScale;
-    const double oy = (t.min_y + 0.5) - double(y0) * kInvScale;
     const auto plane = [&](double f0, double df1, double df2) {
         const double a = df1 * l1_dx + df2 * l2_dx;
         const double b = df1 * l1_dy + df2 * l2_dy;

@@ -41,8 +41,10 @@ TEST(SimdKernels, VisibilityBlockMatchesScalarOnRandomTriangles) {
     for (std::uint32_t tri = 0; tri < 3000; ++tri) {
         std::array<ScreenVertex, 3> v;
         for (auto& s : v) {
-            s.x = static_cast<std::int32_t>(coord(rng) * 256);
-            s.y = static_cast<std::int32_t>(coord(rng) * 256);
+            s.window_x = static_cast<float>(coord(rng));
+            s.window_y = static_cast<float>(coord(rng));
+            s.x = static_cast<std::int32_t>(std::lrint(s.window_x * 256.0));
+            s.y = static_cast<std::int32_t>(std::lrint(s.window_y * 256.0));
             s.z = depth(rng);
             s.inv_w = w(rng);
         }
