@@ -111,7 +111,9 @@ inline void check_loaded_scene(const Scene& scene) {
         if (mesh.normals.size() != n) fail("normals not one per position");
         for (const glm::vec3& normal : mesh.normals) {
             if (!finite(normal)) fail("non-finite normal in mesh " + mesh.name);
-            if (std::fabs(glm::length(normal) - 1.0f) > 1e-3f) fail("normal not unit length");
+            if (std::fabs(glm::length(normal) - 1.0f) > 1e-3f)
+                fail("normal (" + std::to_string(normal.x) + ", " + std::to_string(normal.y) +
+                     ", " + std::to_string(normal.z) + ") not unit length in mesh " + mesh.name);
         }
         if (!mesh.uvs.empty() && mesh.uvs.size() != n) fail("uvs not one per position");
         if (mesh.material >= scene.materials.size()) fail("material index out of range");

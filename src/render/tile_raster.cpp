@@ -309,17 +309,15 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
     const std::size_t pixels = std::size_t(width) * std::size_t(height);
     targets.width = width;
     targets.height = height;
+    // A reused Renderer's targets may hold an earlier frame of another size: targets this frame
+    // does not produce are emptied (the stages test emptiness), the others sized to it.
     targets.depth.resize(pixels);
-    if (options.color_target) targets.color.resize(pixels * 4);
-    if (options.normal_target) targets.normal.resize(pixels);
-    if (options.id_targets) {
-        targets.instance_id.resize(pixels);
-        targets.primitive_id.resize(pixels);
-    }
-    if (options.coverage_counts) {
-        targets.front_hits.assign(pixels, 0);
-        targets.back_hits.assign(pixels, 0);
-    }
+    targets.color.resize(options.color_target ? pixels * 4 : 0);
+    targets.normal.resize(options.normal_target ? pixels : 0);
+    targets.instance_id.resize(options.id_targets ? pixels : 0);
+    targets.primitive_id.resize(options.id_targets ? pixels : 0);
+    targets.front_hits.assign(options.coverage_counts ? pixels : 0, 0);
+    targets.back_hits.assign(options.coverage_counts ? pixels : 0, 0);
 
     const DepthBuffer codec(1, 1, options.depth_format);
     const float clear = options.depth_format == DepthFormat::D32F

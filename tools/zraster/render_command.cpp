@@ -5,6 +5,7 @@
 #include <zraster/image_io.hpp>
 #include <zraster/render.hpp>
 #include <zraster/scenes.hpp>
+#include <zraster/visibility.hpp>
 
 #include <fmt/format.h>
 
@@ -30,6 +31,12 @@ void add_render_command(CLI::App& app, RenderArguments& a) {
                     "Instance/primitive ids: .npy (int32 primitive id, -1 empty) or .png "
                     "(false color by instance and primitive)");
     cmd->add_flag("--stats", a.print_stats, "Print pipeline statistics");
+    cmd->add_option("--visibility", a.visibility,
+                    "Visible-surface algorithm: zbuffer (the pipeline), painter (Newell's "
+                    "painter's algorithm), bsp (BSP tree), warnock (area subdivision); the "
+                    "last three flat-shade")
+        ->check(CLI::IsMember({"zbuffer", "painter", "bsp", "warnock"}))
+        ->capture_default_str();
 }
 
 void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
@@ -239,7 +246,15 @@ int run_render(const RenderArguments& a) {
     RenderOptions options = make_render_options(a, scene);
     options.normal_target = !a.normal_out.empty();
     options.id_targets = !a.id_out.empty();
-    const RenderResult result = render(scene, options);
+    VisibilityStats visibility_stats;
+    const RenderResult result =
+        a.visibility == "zbuffer"
+            ? render(scene, options)
+            : render_with_visibility(scene, options,
+                                     a.visibility == "painter" ? VisibilityAlgorithm::Painter
+                                     : a.visibility == "bsp"   ? VisibilityAlgorithm::Bsp
+                                                               : VisibilityAlgorithm::Warnock,
+                                     &visibility_stats);
     const RenderTargets& t = result.targets;
 
     // RGBA -> RGB: the alpha channel is always opaque.
@@ -259,6 +274,22 @@ int run_render(const RenderArguments& a) {
         write_id_map(a.id_out, t, first_triangle);
     }
 
+    if (a.print_stats && a.visibility != "zbuffer") {
+        const VisibilityStats& v = visibility_stats;
+        std::uint64_t regions = 0;
+        for (const std::uint64_t n : v.warnock.regions_per_level) regions += n;
+        if (a.visibility == "painter")
+            fmt::print("painter: {} polygons, {} comparisons, {} swaps, {} splits ({} forced by "
+                       "cycles)\n",
+                       v.polygons, v.painter.comparisons, v.painter.swaps, v.painter.splits,
+                       v.painter.cycle_splits);
+        else if (a.visibility == "bsp")
+            fmt::print("bsp: {} input polygons, {} nodes, depth {}, {} splits\n",
+                       v.bsp.input_polygons, v.bsp.nodes, v.bsp.depth, v.bsp.splits);
+        else
+            fmt::print("warnock: {} polygons, {} regions in {} levels\n", v.polygons, regions,
+                       v.warnock.regions_per_level.size());
+    }
     if (a.print_stats) {
         const RenderStats& s = result.stats;
         fmt::print("scene {}: {} instances ({} frustum-culled), {} triangles in\n", a.scene,

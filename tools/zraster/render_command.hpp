@@ -34,6 +34,7 @@ struct RenderArguments {
     std::string background = "51,51,51";
     std::string depth_out, normal_out, id_out;
     bool print_stats = false;
+    std::string visibility = "zbuffer";
 };
 
 // The scene, camera and pipeline options shared by `render` and later subcommands.

@@ -1,0 +1,41 @@
+// A fast, parallel reader for Wavefront OBJ files, used by load_scene for .obj files.
+//
+// It builds the same Scene as load_scene's Assimp path (Assimp 5.2's OBJ importer, its
+// triangulation and FlipUVs, then zraster's conversion and vertex welding): the same meshes,
+// names, materials (the MTL files themselves are still read by Assimp), instances, warnings,
+// triangles, welded vertices in the same order, and the same errors, with line numbers.
+// Coordinates are parsed with correct rounding (std::from_chars), where Assimp's fast_atof is
+// sometimes one unit in the last place off: that is the only intended difference.
+//
+// Lines whose meaning Assimp's importer bends (polygons of more than four corners, which it
+// triangulates by ear clipping; faces mixing corner forms; curves and surfaces; line
+// continuations; numbers it does not count as numbers, ...) are left to the Assimp path: the
+// reader then answers with the first such line instead of a scene.
+#pragma once
+#include <zraster/load.hpp>
+#include <zraster/scene.hpp>
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <variant>
+
+namespace zraster::io {
+
+// Why the fast reader leaves a file to Assimp.
+struct ObjFallback {
+    std::size_t line = 0;  // 1-based; 0 when the reason is not one line
+    std::string reason;
+};
+
+// Reads an OBJ file that check_input_file has accepted. Throws InputError ("FILE: line N:
+// cause" where a line is to blame) for out-of-range or zero face indices, non-finite vertex
+// coordinates, no triangles, too many triangles, or an unreadable file.
+std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
+                                          const LoadOptions& options);
+
+// load_scene through Assimp for any format (defined in load_scene.cpp): what read_obj falls back
+// to, and what the tests compare it with.
+Scene load_scene_with_assimp(const std::filesystem::path& path, const LoadOptions& options);
+
+}  // namespace zraster::io
