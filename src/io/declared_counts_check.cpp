@@ -19,12 +19,15 @@ struct DeclaredElement {
     std::uint64_t min_record_bytes = 1;
 };
 
-// Digits only: a sign or garbage is left for Assimp to report; saturates instead of wrapping.
+// The leading digits, as Assimp's strtoul10 reads a count: it stops at the first non-digit, so
+// "1099511627-776" declares 1099511627 records (found by fuzz_load_off: Assimp then allocated
+// 16 GiB of faces). No leading digit: nullopt, Assimp reads 0 and reports the file itself.
+// Saturates instead of wrapping.
 std::optional<std::uint64_t> parse_count(const std::string& token) {
-    if (token.empty() || token.size() > 40) return std::nullopt;
+    if (token.empty() || token[0] < '0' || token[0] > '9') return std::nullopt;
     std::uint64_t value = 0;
     for (char c : token) {
-        if (c < '0' || c > '9') return std::nullopt;
+        if (c < '0' || c > '9') break;
         const std::uint64_t digit = static_cast<std::uint64_t>(c - '0');
         value = value > (UINT64_MAX - digit) / 10 ? UINT64_MAX : value * 10 + digit;
     }

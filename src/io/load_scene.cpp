@@ -9,6 +9,7 @@
 #include "io/declared_counts_check.hpp"
 #include "io/input_file_check.hpp"
 #include "io/obj_material_libraries.hpp"
+#include "io/obj_parser.hpp"
 #include "io/text_util.hpp"
 #include "io/texture_loader.hpp"
 
@@ -21,6 +22,7 @@
 #include <cmath>
 #include <optional>
 #include <set>
+#include <variant>
 
 namespace zraster {
 
@@ -123,6 +125,25 @@ class MaterialTable {
 }  // namespace
 
 Scene load_scene(const std::filesystem::path& path, const LoadOptions& options) {
+    if (!is_obj(path)) return io::load_scene_with_assimp(path, options);
+    io::check_input_file(path, options.max_file_bytes);
+    std::variant<Scene, io::ObjFallback> fast = io::read_obj(path, options);
+    if (Scene* scene = std::get_if<Scene>(&fast)) return std::move(*scene);
+
+    // A file the fast reader leaves to Assimp. If Assimp cannot read it either, say which line
+    // looked wrong first: Assimp's messages do not tell.
+    const io::ObjFallback& fallback = std::get<io::ObjFallback>(fast);
+    try {
+        return io::load_scene_with_assimp(path, options);
+    } catch (const InputError& e) {
+        const std::string_view malformed = "unsupported or malformed file: ";
+        if (fallback.line == 0 || !e.cause().starts_with(malformed)) throw;
+        throw InputError(e.file(), e.cause() + " (line " + std::to_string(fallback.line) + ": " +
+                                       fallback.reason + ")");
+    }
+}
+
+Scene io::load_scene_with_assimp(const std::filesystem::path& path, const LoadOptions& options) {
     const std::string file = path.string();
     const std::uintmax_t size = io::check_input_file(path, options.max_file_bytes);
     io::check_declared_counts(path, size);

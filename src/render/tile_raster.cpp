@@ -266,13 +266,13 @@ std::uint64_t finish_tile(const TileContext& c, const TileBuffers& tile, std::ui
                 t.primitive_id[p] = static_cast<std::int32_t>(ref.primitive);
             }
             if (!shade_now) continue;
-            if (id != cached_id) {
-                prepare_shading_triangle(c.frame, chunk, ref, cache);
-                cached_id = id;
-            }
             ++shaded;
             const int kernel = c.frame.instances[ref.instance].phong_kernel;
             if (kernel_shading && kernel >= 0) {
+                // The kernel needs no per-triangle preparation beyond the piece weights.
+                cache.chunk = &chunk;
+                cache.ref = &ref;
+                cached_id = kNoTriangle;
                 if (pending.kernel != kernel || pending.batch.count == kShadeBatch) {
                     pending.flush(c);
                     pending.kernel = kernel;
@@ -292,6 +292,10 @@ std::uint64_t finish_tile(const TileContext& c, const TileBuffers& tile, std::ui
                 batch.flip[i] = !ref.front_facing && c.frame.options->two_sided_lighting ? ~0u : 0u;
                 pending.x[i] = px;
                 continue;
+            }
+            if (id != cached_id) {
+                prepare_shading_triangle(c.frame, chunk, ref, cache);
+                cached_id = id;
             }
             write_shaded(c, shade_fragment(c.frame, cache, tile.b1[at], tile.b2[at], px, py, want_normal),
                          px, py);

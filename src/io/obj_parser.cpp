@@ -1,0 +1,1190 @@
+// The fast OBJ reader (see obj_parser.hpp). Stages:
+//  1. The file is mapped and cut into line-aligned chunks, parsed in parallel: each chunk keeps
+//     its own v/vt/vn arrays, faces (corner indices as written, negative ones relative to the
+//     chunk's own counts) and the o/g/usemtl/mtllib statements between them.
+//  2. Prefix sums give every chunk its global offsets; a second parallel pass resolves and
+//     range-checks the corner indices in place.
+//  3. The statements replay Assimp's object/mesh bookkeeping in file order, which cuts the face
+//     sequence into meshes.
+//  4. Meshes are built in parallel: one vertex per distinct (position, normal, uv) value, in
+//     first-corner order, exactly as welding Assimp's per-corner vertices gives; quads are split
+//     as Assimp's triangulation splits them.
+//  5. Materials: the MTL libraries are resolved and read by Assimp (from a small generated OBJ
+//     that repeats the file's mtllib and usemtl statements in order), then converted as the
+//     Assimp path converts them.
+//
+// How Assimp 5.2's OBJ importer reads a line (the behaviour reproduced here, found by feeding it
+// small files): the first character picks the statement; lines starting with a blank are
+// ignored; `o` names an object by the first word of the rest, reusing an existing object of that
+// name without changing the current mesh; `g` creates an object named by the whole rest of the
+// line (trailing blanks included) when it differs from the active group; `usemtl` (trimmed name)
+// starts a mesh named after the material when the current mesh has faces and another material,
+// otherwise it sets the current mesh's material; faces before any object create
+// "defaultobject"; `l` and `p` elements count as faces of the current mesh but are dropped later.
+#include "io/obj_parser.hpp"
+
+#include <zraster/error.hpp>
+
+#include "io/assimp_material.hpp"
+#include "io/text_util.hpp"
+#include "io/texture_loader.hpp"
+#include "io/weld_vertices.hpp"
+
+#include <assimp/Importer.hpp>
+#include <assimp/material.h>
+#include <assimp/scene.h>
+#include <assimp/vector3.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <system_error>
+#include <unordered_map>
+
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace zraster::io {
+
+namespace {
+
+constexpr std::uint32_t kNone = ~0u;
+
+// ------------------------------------------------------------------------------------------
+// The file's bytes: mapped (no copy) or, where mapping fails, read.
+
+class FileBytes {
+  public:
+    explicit FileBytes(const std::filesystem::path& path) {
+        const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+        if (fd < 0) throw InputError(path.string(), "cannot read: " + error_text(errno));
+        struct stat info {};
+        if (::fstat(fd, &info) != 0) {
+            const int error = errno;
+            ::close(fd);
+            throw InputError(path.string(), "cannot read: " + error_text(error));
+        }
+        size_ = static_cast<std::size_t>(info.st_size);
+        if (size_ > 0) {
+            void* map = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+            if (map != MAP_FAILED) {
+                map_ = map;
+            } else {
+                copy_.resize(size_);
+                std::size_t done = 0;
+                while (done < size_) {
+                    const ssize_t n = ::read(fd, copy_.data() + done, size_ - done);
+                    if (n < 0 && errno == EINTR) continue;
+                    if (n <= 0) {
+                        const int error = n < 0 ? errno : EIO;
+                        ::close(fd);
+                        throw InputError(path.string(), "cannot read: " + error_text(error));
+                    }
+                    done += static_cast<std::size_t>(n);
+                }
+            }
+        }
+        ::close(fd);
+    }
+    FileBytes(const FileBytes&) = delete;
+    FileBytes& operator=(const FileBytes&) = delete;
+    ~FileBytes() {
+        if (map_ != nullptr) ::munmap(map_, size_);
+    }
+
+    const char* data() const { return map_ != nullptr ? static_cast<const char*>(map_) : copy_.data(); }
+    std::size_t size() const { return size_; }
+
+  private:
+    static std::string error_text(int error) { return std::generic_category().message(error); }
+
+    void* map_ = nullptr;
+    std::size_t size_ = 0;
+    std::vector<char> copy_;
+};
+
+// ------------------------------------------------------------------------------------------
+// Stage 1: chunks.
+
+enum class EventKind : std::uint8_t { Object, Group, Material, Library };
+
+// An o, g, usemtl or mtllib statement, placed among the faces.
+struct Event {
+    EventKind kind;
+    std::uint32_t faces_before;  // faces of the chunk before it
+    std::uint32_t line;          // chunk-local, 0-based
+    std::string text;
+};
+
+enum FaceKind : std::uint8_t { kPolygon, kLineElement, kPointElement };
+enum : std::uint8_t { kHasUv = 1, kHasNormal = 2 };
+
+struct Face {
+    std::uint32_t line;   // chunk-local, 0-based
+    std::uint32_t first;  // first corner, chunk-local
+    std::uint16_t corners;
+    std::uint8_t kind;
+    std::uint8_t attributes;  // kHasUv | kHasNormal: which indices each corner has
+};
+
+// The first line of a chunk that is an error of the file, or that the fast reader leaves to
+// Assimp. Parsing a chunk stops there.
+struct Problem {
+    bool error = false;
+    std::uint32_t line = 0;  // chunk-local
+    std::string what;
+};
+
+// A negative (relative) index is stored as -1 - (count before the line in this chunk + index +
+// kRelativeBias), below every absolute index (written index - 1, at most 999'999'998).
+constexpr std::int64_t kRelativeBias = 1'000'000'000;
+
+struct Chunk {
+    const char* begin = nullptr;
+    const char* end = nullptr;
+    std::size_t first_line = 0;  // global, 0-based
+    std::uint32_t lines = 0;
+    std::vector<float> positions;  // x y z
+    std::vector<float> uvs;        // u, 1 - v: Assimp's FlipUVs
+    std::vector<float> normals;    // unit length as convert_mesh makes them; NaN if unusable
+    std::vector<Face> faces;
+    // Per corner; corner_t and corner_n only as far as faces with those indices need them.
+    // Raw indices after parsing, resolved global indices after stage 2.
+    std::vector<std::int32_t> corner_v, corner_t, corner_n;
+    std::vector<Event> events;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> non_finite_positions;  // index, line
+    // The first face using the uv slot while no `vt` was read yet (in this chunk): Assimp then
+    // reads that slot as a normal index.
+    std::optional<std::uint32_t> uv_slot_without_uvs;
+    std::optional<Problem> problem;
+};
+
+bool is_blank(char c) {
+    return c == ' ' || c == '\t';
+}
+
+const char* skip_blanks(const char* q, const char* e) {
+    while (q != e && is_blank(*q)) ++q;
+    return q;
+}
+
+const char* skip_word(const char* q, const char* e) {
+    while (q != e && !is_blank(*q)) ++q;
+    return q;
+}
+
+// Control characters other than tab: a lone CR (a line break to Assimp), NUL, form feed, ...
+bool has_control(const char* q, const char* e) {
+    for (; q != e; ++q) {
+        const auto c = static_cast<unsigned char>(*q);
+        if (c < 0x20 && c != '\t') return true;
+    }
+    return false;
+}
+
+// A number too large or too small for a float: strtof rounds it to infinity or to zero (or a
+// denormal) correctly, as from_chars would if it returned a value.
+std::optional<float> out_of_range_value(const char* s, const char* end) {
+    char buffer[128];
+    const std::size_t n = static_cast<std::size_t>(end - s);
+    if (n >= sizeof buffer) return std::nullopt;
+    std::memcpy(buffer, s, n);
+    buffer[n] = '\0';
+    return std::strtof(buffer, nullptr);
+}
+
+// One number: an optional sign, then what std::from_chars reads (decimal, exponent, nan, inf),
+// correctly rounded. The token must end at a blank, a '#' or the end of the line. A token
+// starting with '.' is refused: Assimp does not count it as a component.
+bool parse_float(const char*& q, const char* e, float& out) {
+    const char* s = q;
+    bool negative = false;
+    if (*s == '-' || *s == '+') {
+        negative = *s == '-';
+        if (++s == e) return false;
+    } else if (*s == '.') {
+        return false;
+    }
+    const char c = *s;
+    if (!((c >= '0' && c <= '9') || c == '.' || c == 'n' || c == 'N' || c == 'i' || c == 'I'))
+        return false;
+    float value = 0.0f;
+    const auto [ptr, ec] = std::from_chars(s, e, value);
+    if (ec == std::errc::result_out_of_range) {
+        const std::optional<float> v = out_of_range_value(s, ptr);
+        if (!v) return false;
+        value = *v;
+    } else if (ec != std::errc()) {
+        return false;
+    }
+    if (ptr != e && !is_blank(*ptr) && *ptr != '#') return false;
+    out = negative ? -value : value;
+    q = ptr;
+    return true;
+}
+
+// The numbers of a v, vt or vn statement up to the end of the line or a '#'. Returns how many
+// (at most max), or -1 if a token is not a number or there are more than max.
+int parse_floats(const char* q, const char* e, float* out, int max) {
+    int count = 0;
+    while (true) {
+        q = skip_blanks(q, e);
+        if (q == e || *q == '#') return count;
+        if (count == max || !parse_float(q, e, out[count])) return -1;
+        ++count;
+    }
+}
+
+enum class IndexParse { Ok, Zero, Bad };
+
+// A face index: an optional '-', then 1 to 9 digits without a leading zero. (Assimp reads
+// indices with atoi and skips as many characters as the value has digits: "+1" or "01" would
+// be read twice.)
+IndexParse parse_index(const char*& q, const char* e, std::int32_t& out) {
+    bool negative = false;
+    if (q != e && *q == '-') {
+        negative = true;
+        ++q;
+    }
+    if (q == e || *q < '0' || *q > '9') return IndexParse::Bad;
+    if (*q == '0') {
+        ++q;
+        return q != e && *q >= '0' && *q <= '9' ? IndexParse::Bad : IndexParse::Zero;
+    }
+    std::int32_t value = 0;
+    int digits = 0;
+    while (q != e && *q >= '0' && *q <= '9') {
+        if (++digits > 9) return IndexParse::Bad;
+        value = value * 10 + (*q - '0');
+        ++q;
+    }
+    out = negative ? -value : value;
+    return IndexParse::Ok;
+}
+
+std::int32_t encode_index(std::int32_t written, std::size_t count_before) {
+    if (written > 0) return written - 1;
+    const std::int64_t relative = static_cast<std::int64_t>(count_before) + written;
+    return static_cast<std::int32_t>(-1 - (relative + kRelativeBias));
+}
+
+// The global 0-based index, or -1 when it is outside [0, total).
+std::int64_t resolve_index(std::int32_t raw, std::size_t prefix, std::size_t total) {
+    std::int64_t index = raw;
+    if (raw < 0) index = static_cast<std::int64_t>(prefix) + (-1 - std::int64_t{raw}) - kRelativeBias;
+    return index >= 0 && index < static_cast<std::int64_t>(total) ? index : -1;
+}
+
+class ChunkParser {
+  public:
+    explicit ChunkParser(Chunk& chunk) : c_(chunk) {}
+
+    void run() {
+        const char* p = c_.begin;
+        std::uint32_t line = 0;
+        while (p < c_.end) {
+            const char* newline =
+                static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(c_.end - p)));
+            const char* next = newline != nullptr ? newline + 1 : c_.end;
+            const char* e = newline != nullptr ? newline : c_.end;
+            if (e > p && e[-1] == '\r') --e;
+            ++c_.lines;
+            if (!parse_line(p, e, line)) return;
+            p = next;
+            ++line;
+        }
+    }
+
+  private:
+    bool leave(std::uint32_t line, std::string what) {
+        c_.problem = Problem{false, line, std::move(what)};
+        return false;
+    }
+    bool error(std::uint32_t line, std::string what) {
+        c_.problem = Problem{true, line, std::move(what)};
+        return false;
+    }
+    bool skip(const char* p, const char* e, std::uint32_t line) {
+        return !has_control(p, e) || leave(line, "control character in the line");
+    }
+
+    bool parse_line(const char* p, const char* e, std::uint32_t line) {
+        if (p == e) return true;
+        // Assimp joins a line ending in '\' with the next one.
+        const char* last = e;
+        while (last > p && is_blank(last[-1])) --last;
+        if (last > p && last[-1] == '\\') return leave(line, "line continuation ('\\')");
+
+        const char* second = p + 1;
+        const bool keyword_alone = second == e || is_blank(*second);
+        switch (*p) {
+        case 'v':
+            if (keyword_alone) return vertex(second, e, line);
+            if (*second == 't' || *second == 'n') {
+                if (second + 1 != e && !is_blank(second[1]))
+                    return leave(line, "unknown statement starting with 'v" +
+                                           std::string(1, *second) + "'");
+                return *second == 't' ? uv(second + 1, e, line) : normal(second + 1, e, line);
+            }
+            return skip(p, e, line);  // vp and the like: ignored by Assimp too
+        case 'f':
+        case 'l':
+        case 'p':
+            if (!keyword_alone) return leave(line, "unknown statement read as a face by Assimp");
+            return face(*p, second, e, line);
+        case 'o':
+            if (!keyword_alone) return leave(line, "unknown statement read as 'o' by Assimp");
+            return object(second, e, line);
+        case 'g':
+            if (!keyword_alone) return leave(line, "unknown statement read as 'g' by Assimp");
+            return group(second, e, line);
+        case 'u': {
+            const char* word_end = skip_word(p, e);
+            if (std::string_view(p, word_end - p) != "usemtl") return skip(p, e, line);
+            return use_material(word_end, e, line);
+        }
+        case 'm': {
+            const char* word_end = skip_word(p, e);
+            if (std::string_view(p, word_end - p) != "mtllib") return skip(p, e, line);
+            return library(word_end, e, line);
+        }
+        case 'c': {
+            const char* word_end = skip_word(p, e);
+            if (std::string_view(p, word_end - p) == "cstype")
+                return leave(line, "curves and surfaces (cstype)");
+            return skip(p, e, line);
+        }
+        case ' ':
+        case '\t': {
+            // Ignored by Assimp, but a material library named there would be looked for by
+            // the library check of the Assimp path: leave such a file to that path.
+            const char* word = skip_blanks(p, e);
+            if (std::string_view(word, skip_word(word, e) - word) == "mtllib")
+                return leave(line, "indented mtllib");
+            return skip(p, e, line);
+        }
+        default:
+            return skip(p, e, line);
+        }
+    }
+
+    bool vertex(const char* q, const char* e, std::uint32_t line) {
+        float v[7];
+        const int n = parse_floats(q, e, v, 7);
+        if (n == 0) return true;  // "v" alone: Assimp adds nothing either
+        if (n == 4) {
+            // Homogeneous coordinates, divided as Assimp divides them.
+            if (v[3] == 0.0f) return leave(line, "vertex with w = 0");
+            v[0] = v[0] / v[3];
+            v[1] = v[1] / v[3];
+            v[2] = v[2] / v[3];
+        } else if (n != 3 && n != 6) {  // 6: with a colour, which zraster does not use
+            return leave(line, n < 0 ? "vertex coordinate that is not a plain number"
+                                     : "vertex with " + std::to_string(n) + " numbers");
+        }
+        if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
+            c_.non_finite_positions.emplace_back(
+                static_cast<std::uint32_t>(c_.positions.size() / 3), line);
+        c_.positions.insert(c_.positions.end(), v, v + 3);
+        return true;
+    }
+
+    bool uv(const char* q, const char* e, std::uint32_t line) {
+        float t[3];
+        const int n = parse_floats(q, e, t, 3);
+        if (n != 2 && n != 3) return leave(line, "texture coordinate that is not 2 or 3 numbers");
+        c_.uvs.push_back(t[0]);
+        c_.uvs.push_back(1.0f - t[1]);
+        return true;
+    }
+
+    bool normal(const char* q, const char* e, std::uint32_t line) {
+        float n[3];
+        if (parse_floats(q, e, n, 3) != 3) return leave(line, "normal that is not 3 numbers");
+        // As convert_mesh's copy_normals: usable when finite with a finite, non-zero length.
+        const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        if (std::isfinite(n[0]) && std::isfinite(n[1]) && std::isfinite(n[2]) &&
+            std::isfinite(length) && length > 0.0f) {
+            c_.normals.push_back(n[0] / length);
+            c_.normals.push_back(n[1] / length);
+            c_.normals.push_back(n[2] / length);
+        } else {
+            c_.normals.insert(c_.normals.end(), 3, std::nanf(""));
+        }
+        return true;
+    }
+
+    bool face(char keyword, const char* q, const char* e, std::uint32_t line) {
+        const std::size_t first = c_.corner_v.size();
+        int form = -1;  // kHasUv | kHasNormal, the same for every corner
+        std::size_t corners = 0;
+        while (true) {
+            q = skip_blanks(q, e);
+            if (q == e) break;
+            std::int32_t index[3] = {0, 0, 0};
+            int this_form = 0;
+            IndexParse parsed = parse_index(q, e, index[0]);
+            if (parsed == IndexParse::Ok && q != e && *q == '/') {
+                ++q;
+                if (q != e && *q == '/') {
+                    ++q;
+                    parsed = parse_index(q, e, index[2]);
+                    this_form = kHasNormal;
+                } else {
+                    parsed = parse_index(q, e, index[1]);
+                    this_form = kHasUv;
+                    if (parsed == IndexParse::Ok && q != e && *q == '/') {
+                        ++q;
+                        parsed = parse_index(q, e, index[2]);
+                        this_form = kHasUv | kHasNormal;
+                    }
+                }
+            }
+            if (parsed == IndexParse::Zero)
+                return error(line, "invalid face index 0 (OBJ indices start at 1)");
+            if (parsed == IndexParse::Bad || (q != e && !is_blank(*q)))
+                return leave(line, "face element that is not v, v/vt, v//vn or v/vt/vn");
+            if (form < 0) form = this_form;
+            if (this_form != form) return leave(line, "face whose corners have different forms");
+            if (++corners > 0xFFFF) return leave(line, "face with more than 65535 corners");
+            c_.corner_v.push_back(encode_index(index[0], c_.positions.size() / 3));
+            if (form & kHasUv) {
+                c_.corner_t.resize(c_.corner_v.size() - 1);
+                c_.corner_t.push_back(encode_index(index[1], c_.uvs.size() / 2));
+            }
+            if (form & kHasNormal) {
+                c_.corner_n.resize(c_.corner_v.size() - 1);
+                c_.corner_n.push_back(encode_index(index[2], c_.normals.size() / 3));
+            }
+        }
+        if (corners == 0) return true;  // an empty face: Assimp ignores it
+        const auto kind = keyword == 'f' ? kPolygon : keyword == 'l' ? kLineElement : kPointElement;
+        if (kind == kPolygon && corners < 3)
+            return leave(line, "face with " + std::to_string(corners) + " corners");
+        if (kind == kPolygon && corners > 4)
+            return leave(line, "polygon with " + std::to_string(corners) +
+                                   " corners (Assimp triangulates those by ear clipping)");
+        if (kind != kPolygon && form != 0)
+            return leave(line, "line or point element with texture or normal indices");
+        if (kind == kLineElement && corners < 2) return leave(line, "line element with one vertex");
+        if ((form & kHasUv) && c_.uvs.empty() && !c_.uv_slot_without_uvs)
+            c_.uv_slot_without_uvs = line;
+        c_.faces.push_back(Face{line, static_cast<std::uint32_t>(first),
+                                static_cast<std::uint16_t>(corners), static_cast<std::uint8_t>(kind),
+                                static_cast<std::uint8_t>(form)});
+        return true;
+    }
+
+    void add_event(EventKind kind, std::uint32_t line, std::string text) {
+        c_.events.push_back(
+            Event{kind, static_cast<std::uint32_t>(c_.faces.size()), line, std::move(text)});
+    }
+
+    bool object(const char* q, const char* e, std::uint32_t line) {
+        if (has_control(q, e)) return leave(line, "control character in the line");
+        const char* name = skip_blanks(q, e);
+        const char* name_end = skip_word(name, e);
+        if (name_end != name) add_event(EventKind::Object, line, std::string(name, name_end));
+        return true;
+    }
+
+    bool group(const char* q, const char* e, std::uint32_t line) {
+        if (has_control(q, e)) return leave(line, "control character in the line");
+        const char* name = skip_blanks(q, e);
+        add_event(EventKind::Group, line, std::string(name, e));  // trailing blanks included
+        return true;
+    }
+
+    bool use_material(const char* q, const char* e, std::uint32_t line) {
+        if (has_control(q, e)) return leave(line, "control character in the line");
+        const char* name = skip_blanks(q, e);
+        const char* name_end = e;
+        while (name_end > name && is_blank(name_end[-1])) --name_end;
+        if (name_end != name) add_event(EventKind::Material, line, std::string(name, name_end));
+        return true;
+    }
+
+    bool library(const char* q, const char* e, std::uint32_t line) {
+        if (has_control(q, e)) return leave(line, "control character in the line");
+        const char* name = skip_blanks(q, e);
+        if (name == e) return true;
+        // Assimp keeps trailing blanks in the name and joins the OBJ's directory and an absolute
+        // name; the library check of the Assimp path does neither.
+        if (is_blank(e[-1])) return leave(line, "blanks after the material library name");
+        if (*name == '/') return leave(line, "absolute material library path");
+        add_event(EventKind::Library, line, std::string(name, e));
+        return true;
+    }
+
+    Chunk& c_;
+};
+
+// Line-aligned chunks of about `target` bytes.
+std::vector<Chunk> make_chunks(const char* data, std::size_t size) {
+    const std::size_t target = std::clamp<std::size_t>(size / 256, std::size_t{256} << 10,
+                                                       std::size_t{16} << 20);
+    std::vector<Chunk> chunks;
+    std::size_t at = 0;
+    while (at < size) {
+        std::size_t end = std::min(size, at + target);
+        if (end < size) {
+            const void* newline = std::memchr(data + end, '\n', size - end);
+            end = newline != nullptr
+                      ? static_cast<std::size_t>(static_cast<const char*>(newline) - data) + 1
+                      : size;
+        }
+        Chunk chunk;
+        chunk.begin = data + at;
+        chunk.end = data + end;
+        chunks.push_back(std::move(chunk));
+        at = end;
+    }
+    return chunks;
+}
+
+// ------------------------------------------------------------------------------------------
+// Stage 3: Assimp's object and mesh bookkeeping.
+
+struct ObjectPlan {
+    std::string name;
+    std::vector<std::uint32_t> meshes;
+};
+
+struct MeshPlan {
+    std::string name;
+    std::optional<std::string> material;
+    std::uint32_t object = kNone;  // kNone: created with no current object, never output
+    bool has_faces = false;
+    std::size_t face_begin = 0, face_end = 0;  // global face numbers, l and p included
+};
+
+class Structure {
+  public:
+    // Faces before global face number `face` go to the current mesh.
+    void faces_until(std::size_t face) {
+        if (face <= faces_) return;
+        if (object_ == kNone) create_object("defaultobject");
+        MeshPlan& mesh = meshes[mesh_];
+        if (!mesh.has_faces) {
+            mesh.has_faces = true;
+            mesh.face_begin = faces_;
+        }
+        mesh.face_end = face;
+        faces_ = face;
+    }
+
+    void object(const std::string& name) {
+        for (std::uint32_t i = 0; i < objects.size(); ++i) {
+            if (objects[i].name == name) {
+                object_ = i;  // the current mesh stays
+                return;
+            }
+        }
+        create_object(name);
+    }
+
+    void group(const std::string& name) {
+        if (name == group_) return;
+        create_object(name);
+        group_ = name;
+    }
+
+    void use_material(const std::string& name) {
+        if (material_ == name) return;
+        material_ = name;
+        if (mesh_ == kNone ||
+            (meshes[mesh_].material && *meshes[mesh_].material != name && meshes[mesh_].has_faces))
+            create_mesh(name);
+        meshes[mesh_].material = name;
+    }
+
+    std::vector<ObjectPlan> objects;
+    std::vector<MeshPlan> meshes;
+
+  private:
+    void create_object(const std::string& name) {
+        objects.push_back(ObjectPlan{name, {}});
+        object_ = static_cast<std::uint32_t>(objects.size() - 1);
+        create_mesh(name);
+        if (material_) meshes[mesh_].material = material_;
+    }
+
+    void create_mesh(const std::string& name) {
+        meshes.push_back(MeshPlan{name, std::nullopt, object_});
+        mesh_ = static_cast<std::uint32_t>(meshes.size() - 1);
+        if (object_ != kNone) objects[object_].meshes.push_back(mesh_);
+    }
+
+    std::size_t faces_ = 0;
+    std::uint32_t object_ = kNone, mesh_ = kNone;
+    std::optional<std::string> material_;
+    std::string group_;
+};
+
+// ------------------------------------------------------------------------------------------
+// Stage 4: meshes.
+
+// For each value (N floats), the index of the first value with the same bits (-0 == +0, as
+// weld_identical_vertices compares them). Empty when every value is the first of its kind.
+template <int N>
+std::vector<std::uint32_t> first_equal_values(const float* values, std::size_t count) {
+    const std::size_t capacity = std::bit_ceil(std::max<std::size_t>(16, count * 2));
+    std::vector<std::uint32_t> table(capacity, kNone);
+    std::vector<std::uint32_t> first(count);
+    bool all_first = true;
+    auto key = [&](std::size_t i, int k) {
+        return std::bit_cast<std::uint32_t>(values[i * N + k] + 0.0f);
+    };
+    for (std::size_t i = 0; i < count; ++i) {
+        std::uint64_t h = 0x9E3779B97F4A7C15ull;
+        for (int k = 0; k < N; ++k) {
+            h ^= key(i, k);
+            h *= 0xBF58476D1CE4E5B9ull;
+            h ^= h >> 29;
+        }
+        std::size_t slot = static_cast<std::size_t>(h) & (capacity - 1);
+        while (true) {
+            const std::uint32_t t = table[slot];
+            if (t == kNone) {
+                table[slot] = static_cast<std::uint32_t>(i);
+                first[i] = static_cast<std::uint32_t>(i);
+                break;
+            }
+            bool equal = true;
+            for (int k = 0; k < N; ++k) equal &= key(t, k) == key(i, k);
+            if (equal) {
+                first[i] = t;
+                all_first = false;
+                break;
+            }
+            slot = (slot + 1) & (capacity - 1);
+        }
+    }
+    if (all_first) first.clear();
+    return first;
+}
+
+// Assimp's triangulation of a quad: a fan from its concave corner, if it has one (the first
+// corner whose two angles against the diagonal add up to more than pi), else from corner 0.
+// Computed with Assimp's own vector operations, so that it decides exactly as Assimp does.
+unsigned quad_fan_corner(const glm::vec3* corner[4]) {
+    for (unsigned i = 0; i < 4; ++i) {
+        auto ai = [&](unsigned k) {
+            const glm::vec3& p = *corner[k % 4];
+            return aiVector3D(p.x, p.y, p.z);
+        };
+        const aiVector3D v = ai(i);
+        aiVector3D left = ai(i + 3) - v;
+        aiVector3D diagonal = ai(i + 2) - v;
+        aiVector3D right = ai(i + 1) - v;
+        left.Normalize();
+        diagonal.Normalize();
+        right.Normalize();
+        const float angle = std::acos(left * diagonal) + std::acos(right * diagonal);
+        if (angle > AI_MATH_PI_F) return i;
+    }
+    return 0;
+}
+
+struct Attributes {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec2> uvs;
+    std::vector<glm::vec3> normals;
+    std::vector<std::uint32_t> first_position, first_uv, first_normal;  // empty: identity
+};
+
+struct MeshOutcome {
+    enum class Status { Ok, Error, Fallback } status = Status::Ok;
+    std::string what;
+    std::size_t line = 0;              // 1-based, 0 if none
+    std::uint32_t bad_position = 0;    // Error: the global position index
+    std::uint32_t bad_vertex = 0;      // Error: the mesh's vertex
+    Mesh mesh;
+};
+
+struct Slot {
+    std::uint32_t stamp = 0;  // which mesh wrote it
+    std::uint32_t uv = 0, normal = 0;
+    std::uint32_t vertex = 0;
+};
+
+struct KeyHash {
+    std::size_t operator()(const std::array<std::uint32_t, 3>& k) const {
+        std::uint64_t h = 0x9E3779B97F4A7C15ull;
+        for (std::uint32_t v : k) {
+            h ^= v;
+            h *= 0xBF58476D1CE4E5B9ull;
+            h ^= h >> 31;
+        }
+        return static_cast<std::size_t>(h);
+    }
+};
+
+class MeshBuilder {
+  public:
+    MeshBuilder(const std::vector<Chunk>& chunks, const std::vector<std::size_t>& face_prefix,
+                const Attributes& attributes)
+        : chunks_(chunks),
+          face_prefix_(face_prefix),
+          a_(attributes),
+          slots_([&] { return std::vector<Slot>(attributes.positions.size()); }) {}
+
+    MeshOutcome build(const MeshPlan& plan, std::uint32_t stamp) const {
+        MeshOutcome out;
+        Mesh& mesh = out.mesh;
+        mesh.name = plan.name;
+        std::vector<Slot>& slots = slots_.local();
+        std::unordered_map<std::array<std::uint32_t, 3>, std::uint32_t, KeyHash> others;
+
+        int attributes = -1;
+        std::size_t chunk = static_cast<std::size_t>(
+            std::upper_bound(face_prefix_.begin(), face_prefix_.end(), plan.face_begin) -
+            face_prefix_.begin() - 1);
+        for (std::size_t f = plan.face_begin; f < plan.face_end; ++f) {
+            while (f >= face_prefix_[chunk + 1]) ++chunk;
+            const Chunk& c = chunks_[chunk];
+            const Face& face = c.faces[f - face_prefix_[chunk]];
+            if (face.kind != kPolygon) continue;
+            if (attributes < 0) {
+                attributes = face.attributes;
+            } else if (face.attributes != attributes) {
+                // Assimp gives the other corners zero uvs or normals.
+                out.status = MeshOutcome::Status::Fallback;
+                out.what = "mesh with and without texture or normal indices";
+                out.line = c.first_line + face.line + 1;
+                return out;
+            }
+            const bool has_uv = attributes & kHasUv, has_normal = attributes & kHasNormal;
+            std::uint32_t ids[4];
+            const glm::vec3* corner_positions[4];
+            for (unsigned k = 0; k < face.corners; ++k) {
+                const std::size_t corner = face.first + k;
+                const auto v = static_cast<std::uint32_t>(c.corner_v[corner]);
+                const auto t = has_uv ? static_cast<std::uint32_t>(c.corner_t[corner]) : 0u;
+                const auto n = has_normal ? static_cast<std::uint32_t>(c.corner_n[corner]) : 0u;
+                corner_positions[k] = &a_.positions[v];
+                const std::uint32_t kv = a_.first_position.empty() ? v : a_.first_position[v];
+                const std::uint32_t kt = !has_uv || a_.first_uv.empty() ? t : a_.first_uv[t];
+                const std::uint32_t kn =
+                    !has_normal || a_.first_normal.empty() ? n : a_.first_normal[n];
+                Slot& slot = slots[kv];
+                std::uint32_t id = 0;
+                bool created = false;
+                if (slot.stamp != stamp) {
+                    id = static_cast<std::uint32_t>(mesh.positions.size());
+                    slot = Slot{stamp, kt, kn, id};
+                    created = true;
+                } else if (slot.uv == kt && slot.normal == kn) {
+                    id = slot.vertex;
+                } else {
+                    const auto [it, inserted] = others.try_emplace(
+                        {kv, kt, kn}, static_cast<std::uint32_t>(mesh.positions.size()));
+                    id = it->second;
+                    created = inserted;
+                }
+                if (created) {
+                    const glm::vec3& p = a_.positions[v];
+                    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+                        out.status = MeshOutcome::Status::Error;
+                        out.what = "non-finite vertex coordinates";
+                        out.bad_position = v;
+                        out.bad_vertex = id;
+                        return out;
+                    }
+                    mesh.positions.push_back(p);
+                    if (has_uv) mesh.uvs.push_back(a_.uvs[t]);
+                    if (has_normal) mesh.normals.push_back(a_.normals[n]);
+                }
+                ids[k] = id;
+            }
+            if (face.corners == 3) {
+                mesh.indices.insert(mesh.indices.end(), {ids[0], ids[1], ids[2]});
+            } else {
+                const unsigned s = quad_fan_corner(corner_positions);
+                mesh.indices.insert(mesh.indices.end(), {ids[s], ids[(s + 1) % 4],
+                                                         ids[(s + 2) % 4], ids[s],
+                                                         ids[(s + 2) % 4], ids[(s + 3) % 4]});
+            }
+        }
+        for (const glm::vec2& t : mesh.uvs) {
+            if (!std::isfinite(t.x) || !std::isfinite(t.y)) {
+                out.status = MeshOutcome::Status::Fallback;  // Assimp's path warns and zeroes
+                out.what = "non-finite texture coordinates";
+                return out;
+            }
+        }
+        for (const glm::vec3& n : mesh.normals) {
+            if (std::isnan(n.x)) {
+                out.status = MeshOutcome::Status::Fallback;  // Assimp's path computes those
+                out.what = "zero or non-finite normals";
+                return out;
+            }
+        }
+        if (mesh.normals.empty()) mesh.normals = normals_over_shared_positions(mesh);
+        update_bounds(mesh);
+        return out;
+    }
+
+  private:
+    const std::vector<Chunk>& chunks_;
+    const std::vector<std::size_t>& face_prefix_;
+    const Attributes& a_;
+    mutable tbb::enumerable_thread_specific<std::vector<Slot>> slots_;
+};
+
+// ------------------------------------------------------------------------------------------
+// Stage 5: materials, as load_scene's MaterialTable and scan_obj_material_libraries do them.
+
+// `line` is the rest of a line after `keyword` and blanks, when the trimmed line starts with it.
+bool directive(const std::string& line, std::string_view keyword, std::string& argument) {
+    const std::string_view text = trim(line);
+    if (!text.starts_with(keyword) || text.size() <= keyword.size()) return false;
+    if (text[keyword.size()] != ' ' && text[keyword.size()] != '\t') return false;
+    argument = std::string(trim(text.substr(keyword.size())));
+    return !argument.empty();
+}
+
+bool is_file(const std::filesystem::path& p) {
+    std::error_code ec;
+    return std::filesystem::is_regular_file(p, ec);
+}
+
+struct LibraryStatement {
+    std::string name;
+    std::optional<std::filesystem::path> file;  // what Assimp reads for it, if anything
+};
+
+class Materials {
+  public:
+    Materials(const std::filesystem::path& obj_path, const std::vector<const Event*>& events,
+              Scene& scene, std::vector<std::string>& warnings)
+        : path_(obj_path), events_(events), scene_(scene), warnings_(warnings) {
+        const std::filesystem::path dir = obj_path.parent_path();
+        std::filesystem::path fallback = obj_path;
+        fallback.replace_extension(".mtl");
+        std::set<std::string> seen;
+        for (const Event* e : events_) {
+            if (e->kind != EventKind::Library) continue;
+            const std::filesystem::path candidate = dir / e->text;
+            std::optional<std::filesystem::path> file;
+            if (is_file(candidate)) file = candidate;
+            else if (is_file(fallback)) file = fallback;
+            libraries_.push_back(LibraryStatement{e->text, file});
+            if (!seen.insert(e->text).second) continue;
+            if (file == candidate) {
+                read_material_names(candidate);
+            } else if (file) {
+                warnings_.push_back("material library '" + e->text + "' not found, using '" +
+                                    fallback.filename().string() + "'");
+                missing_library_ = true;
+                read_material_names(fallback);
+            } else {
+                warnings_.push_back("material library '" + e->text +
+                                    "' not found, using the default material");
+                missing_library_ = true;
+            }
+        }
+    }
+
+    // Our index for a usemtl name (nullopt: none), converting it on first use. Returns
+    // nullopt when Assimp cannot read the material libraries (its error is then the file's).
+    std::optional<std::uint32_t> index_of(const std::optional<std::string>& name) {
+        if (!name) return 0;
+        if (auto it = map_.find(*name); it != map_.end()) return it->second;
+        std::uint32_t index = 0;
+        if (*name == AI_DEFAULT_MATERIAL_NAME || *name == "%%%DEFAULT") {
+            index = 0;  // Assimp's placeholders
+        } else if (!defined_.contains(*name)) {
+            if (!missing_library_)
+                warnings_.push_back("material '" + *name +
+                                    "' is not defined, using the default material");
+        } else {
+            const aiMaterial* source = assimp_material(*name);
+            if (source == nullptr) return std::nullopt;
+            if (!is_placeholder_material(*source)) {
+                Material material = convert_material(*source);
+                if (auto reference = base_color_texture_reference(*source))
+                    material.base_color_texture = textures_->load(*reference);
+                index = static_cast<std::uint32_t>(scene_.materials.size());
+                scene_.materials.push_back(std::move(material));
+            }
+        }
+        map_[*name] = index;
+        return index;
+    }
+
+  private:
+    void read_material_names(const std::filesystem::path& mtl) {
+        std::ifstream in(mtl);
+        std::string line, name;
+        while (std::getline(in, line))
+            if (directive(line, "newmtl", name)) defined_.insert(name);
+    }
+
+    // The material as Assimp's OBJ importer makes it: it reads the libraries from a generated
+    // OBJ that repeats the file's mtllib (resolved) and usemtl statements in order.
+    const aiMaterial* assimp_material(const std::string& name) {
+        if (!importer_) {
+            std::size_t library = 0;
+            std::string text;
+            for (const Event* e : events_) {
+                if (e->kind == EventKind::Library) {
+                    const LibraryStatement& l = libraries_[library++];
+                    if (l.file) text += "mtllib " + std::filesystem::absolute(*l.file).string() + "\n";
+                } else if (e->kind == EventKind::Material) {
+                    text += "usemtl " + e->text + "\n";
+                }
+            }
+            text += "v 0 0 0\nf 1 1 1\n";
+            importer_ = std::make_unique<Assimp::Importer>();
+            try {
+                ai_ = importer_->ReadFileFromMemory(text.data(), text.size(), 0, "obj");
+            } catch (const std::exception&) {
+                ai_ = nullptr;
+            }
+            if (ai_ != nullptr) textures_.emplace(*ai_, path_, warnings_);
+        }
+        if (ai_ == nullptr) return nullptr;
+        for (unsigned i = 0; i < ai_->mNumMaterials; ++i)
+            if (ai_->mMaterials[i] != nullptr && material_name(*ai_->mMaterials[i]) == name)
+                return ai_->mMaterials[i];
+        return nullptr;
+    }
+
+    std::filesystem::path path_;
+    const std::vector<const Event*>& events_;
+    Scene& scene_;
+    std::vector<std::string>& warnings_;
+    std::vector<LibraryStatement> libraries_;
+    std::set<std::string> defined_;
+    bool missing_library_ = false;
+    std::map<std::string, std::uint32_t> map_;
+    std::unique_ptr<Assimp::Importer> importer_;
+    const aiScene* ai_ = nullptr;
+    std::optional<TextureLoader> textures_;
+};
+
+}  // namespace
+
+// ------------------------------------------------------------------------------------------
+
+std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
+                                          const LoadOptions& options) {
+    const std::string file = path.string();
+    const FileBytes bytes(path);
+    if (bytes.size() == 0) throw InputError(file, "empty file");
+
+    // Stage 1.
+    std::vector<Chunk> chunks = make_chunks(bytes.data(), bytes.size());
+    tbb::parallel_for(std::size_t{0}, chunks.size(),
+                      [&](std::size_t k) { ChunkParser(chunks[k]).run(); });
+
+    const std::size_t n = chunks.size();
+    std::vector<std::size_t> v_prefix(n + 1), t_prefix(n + 1), n_prefix(n + 1), face_prefix(n + 1);
+    for (std::size_t k = 0; k < n; ++k) {
+        Chunk& c = chunks[k];
+        if (k > 0) c.first_line = chunks[k - 1].first_line + chunks[k - 1].lines;
+        if (c.problem) {
+            const std::size_t line = c.first_line + c.problem->line + 1;
+            if (c.problem->error)
+                throw InputError(file, "line " + std::to_string(line) + ": " + c.problem->what);
+            return ObjFallback{line, c.problem->what};
+        }
+        v_prefix[k + 1] = v_prefix[k] + c.positions.size() / 3;
+        t_prefix[k + 1] = t_prefix[k] + c.uvs.size() / 2;
+        n_prefix[k + 1] = n_prefix[k] + c.normals.size() / 3;
+        face_prefix[k + 1] = face_prefix[k] + c.faces.size();
+    }
+    const std::size_t total_v = v_prefix[n], total_t = t_prefix[n], total_n = n_prefix[n];
+    if (total_v >= kNone || total_t >= kNone || total_n >= kNone)
+        return ObjFallback{0, "more than 2^32 - 1 vertices"};
+
+    // Stage 2: resolve indices in place, gather the attributes.
+    Attributes attributes;
+    attributes.positions.resize(total_v);
+    attributes.uvs.resize(total_t);
+    attributes.normals.resize(total_n);
+    struct Resolution {
+        std::optional<std::pair<std::uint32_t, std::string>> error, fallback;  // line, what
+    };
+    std::vector<Resolution> resolutions(n);
+    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t k) {
+        Chunk& c = chunks[k];
+        std::memcpy(attributes.positions.data() + v_prefix[k], c.positions.data(),
+                    c.positions.size() * sizeof(float));
+        std::memcpy(attributes.uvs.data() + t_prefix[k], c.uvs.data(), c.uvs.size() * sizeof(float));
+        std::memcpy(attributes.normals.data() + n_prefix[k], c.normals.data(),
+                    c.normals.size() * sizeof(float));
+        Resolution& r = resolutions[k];
+        if (c.uv_slot_without_uvs && t_prefix[k] == 0)
+            r.fallback = {*c.uv_slot_without_uvs,
+                          "texture index before any texture coordinate (Assimp reads it as a "
+                          "normal index)"};
+        for (const Face& face : c.faces) {
+            for (std::size_t corner = face.first; corner < face.first + face.corners; ++corner) {
+                const std::int64_t v = resolve_index(c.corner_v[corner], v_prefix[k], total_v);
+                if (v < 0) {
+                    const std::int32_t raw = c.corner_v[corner];
+                    r.error = {face.line,
+                               raw >= 0 ? "vertex index out of range (" + std::to_string(raw + 1) +
+                                              "; the file has " + std::to_string(total_v) +
+                                              " vertices)"
+                                        : "vertex index out of range (a negative index before "
+                                          "the first vertex)"};
+                    return;
+                }
+                c.corner_v[corner] = static_cast<std::int32_t>(v);
+                if (face.attributes & kHasUv) {
+                    const std::int64_t t = resolve_index(c.corner_t[corner], t_prefix[k], total_t);
+                    if (t < 0 && !r.fallback)
+                        r.fallback = {face.line, "texture coordinate index out of range"};
+                    c.corner_t[corner] = static_cast<std::int32_t>(t);
+                }
+                if (face.attributes & kHasNormal) {
+                    const std::int64_t m = resolve_index(c.corner_n[corner], n_prefix[k], total_n);
+                    if (m < 0 && !r.fallback) r.fallback = {face.line, "normal index out of range"};
+                    c.corner_n[corner] = static_cast<std::int32_t>(m);
+                }
+            }
+        }
+    });
+    for (std::size_t k = 0; k < n; ++k) {
+        if (resolutions[k].error)
+            throw InputError(file, "line " +
+                                       std::to_string(chunks[k].first_line +
+                                                      resolutions[k].error->first + 1) +
+                                       ": " + resolutions[k].error->second);
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+        if (resolutions[k].fallback)
+            return ObjFallback{chunks[k].first_line + resolutions[k].fallback->first + 1,
+                               resolutions[k].fallback->second};
+    }
+
+    // Stage 3.
+    Structure structure;
+    std::vector<const Event*> events;
+    for (std::size_t k = 0; k < n; ++k) {
+        for (const Event& e : chunks[k].events) {
+            events.push_back(&e);
+            structure.faces_until(face_prefix[k] + e.faces_before);
+            switch (e.kind) {
+            case EventKind::Object: structure.object(e.text); break;
+            case EventKind::Group: structure.group(e.text); break;
+            case EventKind::Material: structure.use_material(e.text); break;
+            case EventKind::Library: break;
+            }
+        }
+    }
+    structure.faces_until(face_prefix[n]);
+
+    // The meshes Assimp outputs, in order: objects in order, each object's meshes in order,
+    // those with polygons (a mesh of only lines or points is dropped).
+    std::vector<std::uint32_t> output;
+    std::size_t triangles = 0;
+    for (const ObjectPlan& object : structure.objects) {
+        for (std::uint32_t m : object.meshes) {
+            const MeshPlan& plan = structure.meshes[m];
+            if (!plan.has_faces) continue;
+            std::size_t mesh_triangles = 0;
+            std::size_t k = static_cast<std::size_t>(
+                std::upper_bound(face_prefix.begin(), face_prefix.end(), plan.face_begin) -
+                face_prefix.begin() - 1);
+            for (std::size_t f = plan.face_begin; f < plan.face_end; ++f) {
+                while (f >= face_prefix[k + 1]) ++k;
+                const Face& face = chunks[k].faces[f - face_prefix[k]];
+                if (face.kind == kPolygon) mesh_triangles += face.corners - 2u;
+            }
+            if (mesh_triangles == 0) continue;
+            triangles += mesh_triangles;
+            output.push_back(m);
+        }
+    }
+    if (triangles == 0) throw InputError(file, "no triangles");
+    if (triangles > options.max_triangles)
+        throw InputError(file, "too many triangles (" + std::to_string(triangles) + ", limit " +
+                                   std::to_string(options.max_triangles) + ")");
+
+    // Stage 4.
+    bool uses_uvs = false, uses_normals = false;
+    for (const Chunk& c : chunks) {
+        for (const Face& face : c.faces) {
+            uses_uvs |= (face.attributes & kHasUv) != 0;
+            uses_normals |= (face.attributes & kHasNormal) != 0;
+        }
+    }
+    tbb::parallel_invoke(
+        [&] {
+            attributes.first_position =
+                first_equal_values<3>(&attributes.positions.data()->x, total_v);
+        },
+        [&] {
+            if (uses_uvs) attributes.first_uv = first_equal_values<2>(&attributes.uvs.data()->x, total_t);
+        },
+        [&] {
+            if (uses_normals)
+                attributes.first_normal =
+                    first_equal_values<3>(&attributes.normals.data()->x, total_n);
+        });
+
+    const MeshBuilder builder(chunks, face_prefix, attributes);
+    std::vector<MeshOutcome> built(output.size());
+    tbb::parallel_for(std::size_t{0}, output.size(), [&](std::size_t i) {
+        built[i] = builder.build(structure.meshes[output[i]], static_cast<std::uint32_t>(i + 1));
+    });
+    for (std::size_t i = 0; i < built.size(); ++i) {
+        const MeshOutcome& b = built[i];
+        if (b.status == MeshOutcome::Status::Fallback) return ObjFallback{b.line, b.what};
+        if (b.status == MeshOutcome::Status::Error) {
+            // The line of the `v` statement.
+            const std::size_t k = static_cast<std::size_t>(
+                std::upper_bound(v_prefix.begin(), v_prefix.end(), b.bad_position) -
+                v_prefix.begin() - 1);
+            std::size_t line = 0;
+            for (const auto& [index, local_line] : chunks[k].non_finite_positions)
+                if (v_prefix[k] + index == b.bad_position) line = chunks[k].first_line + local_line + 1;
+            const std::string& name = structure.meshes[output[i]].name;
+            throw InputError(file, "line " + std::to_string(line) + ": " + b.what + " (mesh " +
+                                       (name.empty() ? "#" + std::to_string(i) : name) +
+                                       ", vertex " + std::to_string(b.bad_vertex) + ")");
+        }
+    }
+
+    // Stage 5.
+    Scene scene;
+    scene.source = file;
+    std::vector<std::string> warnings;
+    Materials materials(path, events, scene, warnings);
+    for (std::size_t i = 0; i < built.size(); ++i) {
+        const MeshPlan& plan = structure.meshes[output[i]];
+        const std::optional<std::uint32_t> material = materials.index_of(plan.material);
+        if (!material) return ObjFallback{0, "Assimp cannot read the material libraries"};
+        Mesh& mesh = built[i].mesh;
+        mesh.material = *material;
+        Instance instance;
+        instance.mesh = static_cast<std::uint32_t>(scene.meshes.size());
+        const std::string& object = structure.objects[plan.object].name;
+        instance.name = object.empty() ? mesh.name : object;
+        scene.meshes.push_back(std::move(mesh));
+        scene.instances.push_back(std::move(instance));
+    }
+    for (const std::string& w : warnings) scene.warnings.push_back(file + ": " + w);
+    return scene;
+}
+
+}  // namespace zraster::io
