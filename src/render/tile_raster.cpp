@@ -114,28 +114,32 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
     job.write_depth = options.depth_write;
     job.attributes = c.shade || !c.targets.instance_id.empty();
     job.ref = id;
+    // Runs the kernel on pixels [x0, x1] x [y0, y1] of the triangle (edge values there fit 32 bits).
+    const auto run_block = [&](int x0, int y0, int x1, int y1, bool full) {
+        for (std::size_t k = 0; k < 3; ++k) {
+            job.e[k] = static_cast<std::int32_t>(edge_at(setup, k, x0, y0));
+            job.step_x[k] = static_cast<std::int32_t>(setup.edge_a[k]);
+            job.step_y[k] = static_cast<std::int32_t>(setup.edge_b[k]);
+        }
+        job.full = full;
+        job.x0 = x0 - c.x0;
+        job.y0 = y0 - c.y0;
+        job.width = x1 - x0 + 1;
+        job.height = y1 - y0 + 1;
+        job.plane_dx = x0 - setup.min_x;
+        job.plane_dy = y0 - setup.min_y;
+        return static_cast<std::uint64_t>(c.simd ? visibility_block(job, tile)
+                                                 : visibility_block_scalar(job, tile));
+    };
     // Small triangles (vertices within 64 pixels each way, the common case) have edge values
     // that fit 32 bits anywhere near them (|E| <= 2^22 * 65 * 2 < 2^30), so a triangle whose
     // pixels lie within one 8x8 block is a single partial block: no corner tests.
     const auto [lo_x, hi_x] = std::minmax({setup.x[0], setup.x[1], setup.x[2]});
     const auto [lo_y, hi_y] = std::minmax({setup.y[0], setup.y[1], setup.y[2]});
     if (hi_x - lo_x < 64 * kSubpixelScale && hi_y - lo_y < 64 * kSubpixelScale &&
-        rx1 - rx0 < kBlockSize && ry1 - ry0 < kBlockSize) {
-        for (std::size_t k = 0; k < 3; ++k) {
-            job.e[k] = static_cast<std::int32_t>(edge_at(setup, k, rx0, ry0));
-            job.step_x[k] = static_cast<std::int32_t>(setup.edge_a[k]);
-            job.step_y[k] = static_cast<std::int32_t>(setup.edge_b[k]);
-        }
-        job.full = false;
-        job.x0 = rx0 - c.x0;
-        job.y0 = ry0 - c.y0;
-        job.width = rx1 - rx0 + 1;
-        job.height = ry1 - ry0 + 1;
-        job.plane_dx = rx0 - setup.min_x;
-        job.plane_dy = ry0 - setup.min_y;
-        return static_cast<std::uint64_t>(c.simd ? visibility_block(job, tile)
-                                                 : visibility_block_scalar(job, tile));
-    }
+        rx1 - rx0 < kBlockSize && ry1 - ry0 < kBlockSize)
+        return run_block(rx0, ry0, rx1, ry1, false);
+
     std::uint64_t passed = 0;
     const int first_by = c.y0 + (ry0 - c.y0) / kBlockSize * kBlockSize;
     const int first_bx = c.x0 + (rx0 - c.x0) / kBlockSize * kBlockSize;
@@ -155,25 +159,12 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
                 full &= lo >= 0;
                 fits &= fits_int32(lo) && fits_int32(hi) && fits_int32(setup.edge_a[k]) &&
                         fits_int32(setup.edge_b[k]);
-                job.e[k] = static_cast<std::int32_t>(e00);
-                job.step_x[k] = static_cast<std::int32_t>(setup.edge_a[k]);
-                job.step_y[k] = static_cast<std::int32_t>(setup.edge_b[k]);
             }
             if (outside) continue;
-            if (!fits && !full) {
-                // Edges too long for 32-bit lanes: the exact 64-bit scalar path for this block.
+            if (!fits && !full)  // edges too long for 32-bit lanes: the exact 64-bit scalar path
                 passed += rasterize_scalar(c, chunk, ref, setup, id, tile, x0, y0, x1 + 1, y1 + 1);
-                continue;
-            }
-            job.full = full;
-            job.x0 = x0 - c.x0;
-            job.y0 = y0 - c.y0;
-            job.width = x1 - x0 + 1;
-            job.height = y1 - y0 + 1;
-            job.plane_dx = x0 - setup.min_x;
-            job.plane_dy = y0 - setup.min_y;
-            passed += static_cast<std::uint64_t>(c.simd ? visibility_block(job, tile)
-                                                        : visibility_block_scalar(job, tile));
+            else
+                passed += run_block(x0, y0, x1, y1, full);
         }
     }
     return passed;
