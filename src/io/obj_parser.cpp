@@ -43,6 +43,7 @@
 #include <bit>
 #include <cerrno>
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -986,13 +987,17 @@ class Materials {
 std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
                                           const LoadOptions& options) {
     const std::string file = path.string();
+    auto T0 = std::chrono::steady_clock::now();
+    auto TT = [&](const char* what) { if (getenv("OBJT")) { timespec ts; clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts); fprintf(stderr, "%s %.1f ms (cpu %.1f)\n", what, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - T0).count(), ts.tv_sec * 1e3 + ts.tv_nsec / 1e6); } };
     const FileBytes bytes(path);
+    TT("map");
     if (bytes.size() == 0) throw InputError(file, "empty file");
 
     // Stage 1.
     std::vector<Chunk> chunks = make_chunks(bytes.data(), bytes.size());
     tbb::parallel_for(std::size_t{0}, chunks.size(),
                       [&](std::size_t k) { ChunkParser(chunks[k]).run(); });
+    TT("parse");
 
     const std::size_t n = chunks.size();
     std::vector<std::size_t> v_prefix(n + 1), t_prefix(n + 1), n_prefix(n + 1), face_prefix(n + 1);
@@ -1076,6 +1081,7 @@ std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
                                resolutions[k].fallback->second};
     }
 
+    TT("resolve");
     // Stage 3.
     Structure structure;
     std::vector<const Event*> events;
@@ -1120,6 +1126,7 @@ std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
         throw InputError(file, "too many triangles (" + std::to_string(triangles) + ", limit " +
                                    std::to_string(options.max_triangles) + ")");
 
+    TT("structure");
     // Stage 4.
     bool uses_uvs = false, uses_normals = false;
     for (const Chunk& c : chunks) {
@@ -1142,6 +1149,7 @@ std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
                     first_equal_values<3>(&attributes.normals.data()->x, total_n);
         });
 
+    TT("canonical");
     const MeshBuilder builder(chunks, face_prefix, attributes);
     std::vector<MeshOutcome> built(output.size());
     tbb::parallel_for(std::size_t{0}, output.size(), [&](std::size_t i) {
@@ -1165,6 +1173,7 @@ std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
         }
     }
 
+    TT("meshes");
     // Stage 5.
     Scene scene;
     scene.source = file;
@@ -1184,6 +1193,7 @@ std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
         scene.instances.push_back(std::move(instance));
     }
     for (const std::string& w : warnings) scene.warnings.push_back(file + ": " + w);
+    TT("materials");
     return scene;
 }
 

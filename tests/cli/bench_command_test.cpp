@@ -14,23 +14,7 @@
 namespace zraster::test {
 namespace {
 
-struct BenchRun {
-    int exit_code;
-    std::string output;  // stdout and stderr
-};
-
-BenchRun run_zraster(const std::string& arguments, const std::filesystem::path& cwd = {}) {
-    std::string command;
-    if (!cwd.empty()) command = "cd '" + cwd.string() + "' && ";
-    command += std::string("'") + ZRASTER_CLI + "' " + arguments + " 2>&1 </dev/null";
-    FILE* pipe = popen(command.c_str(), "r");
-    std::string out;
-    std::array<char, 4096> buffer;
-    while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
-        out.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
+using BenchRun = CommandResult;
 
 std::string last_line(const std::string& text) {
     std::string s = text;

@@ -15,21 +15,8 @@
 namespace zraster::test {
 namespace {
 
-struct CommandResult {
-    int exit_code;
-    std::string output;  // stdout and stderr
-};
-
 CommandResult run(const std::string& arguments, const std::filesystem::path& cwd = {}) {
-    std::string command;
-    if (!cwd.empty()) command = "cd '" + cwd.string() + "' && ";
-    command += std::string("'") + ZRASTER_CLI + "' " + arguments + " 2>&1 </dev/null";
-    FILE* pipe = popen(command.c_str(), "r");
-    std::string out;
-    std::array<char, 4096> buffer;
-    while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) out.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+    return run_zraster(arguments, cwd);
 }
 
 bool single_line(const std::string& s) {

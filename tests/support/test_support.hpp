@@ -16,6 +16,13 @@ bool have_shared_data();
 // A fresh, empty directory for one test's output files.
 std::filesystem::path temp_dir(const std::string& name);
 
+// Runs the built zraster command with `arguments` (shell syntax) in `cwd`, no standard input.
+struct CommandResult {
+    int exit_code;
+    std::string output;  // stdout and stderr
+};
+CommandResult run_zraster(const std::string& arguments, const std::filesystem::path& cwd = {});
+
 }  // namespace zraster::test
 
 // Skips the current test with a clear message when ../shared/data is absent.

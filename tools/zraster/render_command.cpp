@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -241,8 +242,16 @@ int run_render(const RenderArguments& a) {
     validate_output(a.depth_out, {".npy", ".png"}, "the depth output");
     validate_output(a.normal_out, {".png"}, "the normal output");
     validate_output(a.id_out, {".npy", ".png"}, "the id output");
+    // Wall-clock times of the stages, for --stats.
+    using Clock = std::chrono::steady_clock;
+    const auto since = [](Clock::time_point start) {
+        return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    };
+    const Clock::time_point load_start = Clock::now();
     const Scene scene = load_scene_or_procedural(a.scene);
+    const double load_ms = since(load_start);
     for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
+    const Clock::time_point render_start = Clock::now();
     RenderOptions options = make_render_options(a, scene);
     options.normal_target = !a.normal_out.empty();
     options.id_targets = !a.id_out.empty();
@@ -256,7 +265,9 @@ int run_render(const RenderArguments& a) {
                                                                : VisibilityAlgorithm::Warnock,
                                      &visibility_stats);
     const RenderTargets& t = result.targets;
+    const double render_ms = since(render_start);
 
+    const Clock::time_point write_start = Clock::now();
     // RGBA -> RGB: the alpha channel is always opaque.
     std::vector<std::uint8_t> rgb(std::size_t(t.width) * std::size_t(t.height) * 3);
     for (std::size_t i = 0, n = rgb.size() / 3; i < n; ++i)
@@ -273,6 +284,7 @@ int run_render(const RenderArguments& a) {
         }
         write_id_map(a.id_out, t, first_triangle);
     }
+    const double write_ms = since(write_start);
 
     if (a.print_stats && a.visibility != "zbuffer") {
         const VisibilityStats& v = visibility_stats;
@@ -305,6 +317,9 @@ int run_render(const RenderArguments& a) {
                    "{:.6g} far {:.6g}\n",
                    s.camera.eye.x, s.camera.eye.y, s.camera.eye.z, s.camera.target.x,
                    s.camera.target.y, s.camera.target.z, s.camera.near, s.camera.far);
+        fmt::print("  wall time: load {:.1f} ms, camera and render {:.1f} ms, write outputs "
+                   "{:.1f} ms\n",
+                   load_ms, render_ms, write_ms);
     }
     return kExitOk;
 }
