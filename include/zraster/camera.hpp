@@ -47,8 +47,8 @@ struct Camera {
     glm::dvec3 target{0.0};
     glm::dvec3 up{0.0, 1.0, 0.0};
     Projection projection = Projection::Perspective;
-    double fovy_degrees = 60.0;   // perspective
-    double ortho_height = 2.0;    // orthographic: height of the view volume in world units
+    double fovy_degrees = 60.0;  // perspective
+    double ortho_height = 2.0;   // orthographic: height of the view volume in world units
     double near = 0.1;
     double far = 100.0;
     bool reversed_z = false;

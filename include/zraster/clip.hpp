@@ -23,7 +23,7 @@ namespace zraster {
 enum ClipPlaneBit : std::uint32_t {
     kClipDepthMin = 1u << 0,  // z >= -w (OpenGL) or z >= 0 (zero-to-one)
     kClipDepthMax = 1u << 1,  // z <= w
-    kClipLeft = 1u << 2,  // guard band planes
+    kClipLeft = 1u << 2,      // guard band planes
     kClipRight = 1u << 3,
     kClipBottom = 1u << 4,
     kClipTop = 1u << 5,
@@ -61,12 +61,18 @@ struct ClipSettings {
 // inside when >= 0. One definition shared by the outcodes and the clipper.
 inline float frustum_plane_distance(int bit_index, const glm::vec4& v, const ClipSettings& s) {
     switch (bit_index) {
-        case 0: return s.depth_range == ClipDepthRange::ZeroToOne ? v.z : v.z + v.w;
-        case 1: return v.w - v.z;
-        case 2: return v.x + s.guard_x * v.w;
-        case 3: return s.guard_x * v.w - v.x;
-        case 4: return v.y + s.guard_y * v.w;
-        default: return s.guard_y * v.w - v.y;
+        case 0:
+            return s.depth_range == ClipDepthRange::ZeroToOne ? v.z : v.z + v.w;
+        case 1:
+            return v.w - v.z;
+        case 2:
+            return v.x + s.guard_x * v.w;
+        case 3:
+            return s.guard_x * v.w - v.x;
+        case 4:
+            return v.y + s.guard_y * v.w;
+        default:
+            return s.guard_y * v.w - v.y;
     }
 }
 

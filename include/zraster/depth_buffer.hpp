@@ -15,7 +15,7 @@ enum class DepthFormat { D32F, D24, D16 };
 enum class CompareFunc { Never, Less, LessEqual, Equal, NotEqual, GreaterEqual, Greater, Always };
 
 class DepthBuffer {
-public:
+  public:
     DepthBuffer() = default;
     DepthBuffer(int width, int height, DepthFormat format);
 
@@ -43,19 +43,27 @@ public:
     template <class T>
     static bool passes(T incoming, T stored, CompareFunc compare) {
         switch (compare) {
-            case CompareFunc::Never: return false;
-            case CompareFunc::Less: return incoming < stored;
-            case CompareFunc::LessEqual: return incoming <= stored;
-            case CompareFunc::Equal: return incoming == stored;
-            case CompareFunc::NotEqual: return incoming != stored;
-            case CompareFunc::GreaterEqual: return incoming >= stored;
-            case CompareFunc::Greater: return incoming > stored;
-            case CompareFunc::Always: return true;
+            case CompareFunc::Never:
+                return false;
+            case CompareFunc::Less:
+                return incoming < stored;
+            case CompareFunc::LessEqual:
+                return incoming <= stored;
+            case CompareFunc::Equal:
+                return incoming == stored;
+            case CompareFunc::NotEqual:
+                return incoming != stored;
+            case CompareFunc::GreaterEqual:
+                return incoming >= stored;
+            case CompareFunc::Greater:
+                return incoming > stored;
+            case CompareFunc::Always:
+                return true;
         }
         return false;
     }
 
-private:
+  private:
     static float bits_to_float(std::uint32_t bits);
     std::size_t index(int x, int y) const {
         return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +

@@ -10,7 +10,7 @@
 namespace zraster {
 
 class InputError : public std::runtime_error {
-public:
+  public:
     InputError(std::string file, std::string cause)
         : std::runtime_error(file.empty() ? cause : file + ": " + cause),
           file_(std::move(file)),
@@ -19,7 +19,7 @@ public:
     const std::string& file() const { return file_; }
     const std::string& cause() const { return cause_; }
 
-private:
+  private:
     std::string file_;
     std::string cause_;
 };

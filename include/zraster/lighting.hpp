@@ -22,7 +22,7 @@ struct Light {
     enum class Type { Directional, Point };
     Type type = Type::Directional;
     glm::vec3 direction{-1.0f / 3.0f, 2.0f / 3.0f, 2.0f / 3.0f};  // towards the light, world space
-    glm::vec3 position{0.0f};                                      // point lights, world space
+    glm::vec3 position{0.0f};                                     // point lights, world space
     glm::vec3 color{1.0f};
     // Point lights: intensity / (1 + quadratic * d^2); zero means no falloff.
     float quadratic_attenuation = 0.0f;

@@ -12,8 +12,8 @@ namespace zraster {
 struct Mesh {
     std::string name;
     std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;  // empty or one per position, unit length
-    std::vector<glm::vec2> uvs;      // empty or one per position; v = 0 at the image's top row
+    std::vector<glm::vec3> normals;      // empty or one per position, unit length
+    std::vector<glm::vec2> uvs;          // empty or one per position; v = 0 at the image's top row
     std::vector<std::uint32_t> indices;  // three per triangle; counter-clockwise = front
     std::uint32_t material = 0;          // index into Scene::materials
     Bounds3f bounds;                     // of positions, in the mesh's own space

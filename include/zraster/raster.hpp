@@ -68,10 +68,10 @@ struct TriangleSetup {
 };
 
 enum class SetupResult {
-    Visible,      // covers at least the bounding box of one pixel center
-    Degenerate,   // zero area after snapping
-    Culled,       // back- (or front-) facing per the cull mode
-    NoCoverage,   // its bounding box contains no pixel center inside the viewport
+    Visible,     // covers at least the bounding box of one pixel center
+    Degenerate,  // zero area after snapping
+    Culled,      // back- (or front-) facing per the cull mode
+    NoCoverage,  // its bounding box contains no pixel center inside the viewport
 };
 
 struct SetupSettings {
@@ -155,9 +155,8 @@ inline bool to_screen(const glm::vec4& clip, const SetupSettings& settings, Scre
     out.x = static_cast<std::int32_t>(__builtin_lrint(wx * double(kSubpixelScale)));
     out.y = static_cast<std::int32_t>(__builtin_lrint(wy * double(kSubpixelScale)));
     const double z = double(clip.z) * rw;
-    out.z = static_cast<float>(settings.depth_range == ClipDepthRange::NegativeOneToOne
-                                   ? 0.5 * z + 0.5
-                                   : z);
+    out.z = static_cast<float>(
+        settings.depth_range == ClipDepthRange::NegativeOneToOne ? 0.5 * z + 0.5 : z);
     out.inv_w = static_cast<float>(rw);
     out.window_x = static_cast<float>(wx);
     out.window_y = static_cast<float>(wy);

@@ -52,7 +52,8 @@ struct RenderOptions {
     TextureFilter texture_filter = TextureFilter::Trilinear;
     Interpolation interpolation = Interpolation::PerspectiveCorrect;
     bool textures = true;
-    // Back faces are lit with the negated normal (two-sided lighting), as the benchmark shader does.
+    // Back faces are lit with the negated normal (two-sided lighting), as the benchmark shader
+    // does.
     bool two_sided_lighting = true;
     ShadingStrategy strategy = ShadingStrategy::Auto;
     // Use the SIMD kernels (off: the scalar reference path everywhere, for comparisons).
@@ -86,11 +87,11 @@ struct RenderOptions {
 struct RenderTargets {
     int width = 0, height = 0;
     // All rows top to bottom.
-    std::vector<std::uint8_t> color;        // RGBA8
-    std::vector<float> depth;               // window-space depth as stored (decoded)
-    std::vector<glm::vec3> normal;          // world-space shading normal, (0,0,0) where empty
-    std::vector<std::int32_t> instance_id;  // -1 where empty
-    std::vector<std::int32_t> primitive_id; // triangle index within its mesh, -1 where empty
+    std::vector<std::uint8_t> color;         // RGBA8
+    std::vector<float> depth;                // window-space depth as stored (decoded)
+    std::vector<glm::vec3> normal;           // world-space shading normal, (0,0,0) where empty
+    std::vector<std::int32_t> instance_id;   // -1 where empty
+    std::vector<std::int32_t> primitive_id;  // triangle index within its mesh, -1 where empty
     std::vector<std::uint32_t> front_hits, back_hits;
 };
 
@@ -104,11 +105,11 @@ struct RenderStats {
     std::uint64_t triangles_degenerate = 0;
     std::uint64_t triangles_no_coverage = 0;  // no pixel center in their bounding box
     std::uint64_t triangles_rasterized = 0;   // set up and binned (after clipping: pieces)
-    std::uint64_t fragments_passed = 0;  // passed the depth test
+    std::uint64_t fragments_passed = 0;       // passed the depth test
     std::uint64_t fragments_shaded = 0;
-    bool deferred = false;               // which shading strategy ran
-    const char* simd_target = "";        // instruction set of the SIMD kernels
-    Camera camera;  // the camera actually used
+    bool deferred = false;         // which shading strategy ran
+    const char* simd_target = "";  // instruction set of the SIMD kernels
+    Camera camera;                 // the camera actually used
     double setup_ms = 0, raster_ms = 0, total_ms = 0;
 };
 
@@ -126,7 +127,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options);
 // The same, keeping its working memory (vertex arrays, bins, image targets) from frame to frame:
 // what an application rendering many frames wants. Not thread-safe: one frame at a time.
 class Renderer {
-public:
+  public:
     Renderer();
     ~Renderer();
     Renderer(const Renderer&) = delete;
@@ -135,7 +136,7 @@ public:
     // The result stays valid until the next call.
     const RenderResult& render(const Scene& scene, const RenderOptions& options);
 
-private:
+  private:
     struct State;
     std::unique_ptr<State> state_;
 };

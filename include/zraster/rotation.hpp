@@ -17,7 +17,7 @@ glm::vec3 matrix_to_euler(const glm::mat3& m, EulerOrder order);
 
 struct AxisAngle {
     glm::vec3 axis{0.0f, 0.0f, 1.0f};  // unit length
-    float angle = 0.0f;                 // radians, in [0, pi]
+    float angle = 0.0f;                // radians, in [0, pi]
 };
 
 // Rodrigues' rotation formula: R = I + sin(a) K + (1 - cos(a)) K^2 with K the cross matrix of axis.

@@ -11,7 +11,7 @@ namespace zraster {
 
 struct Instance {
     std::uint32_t mesh = 0;
-    glm::mat4 transform{1.0f};  // object to world
+    glm::mat4 transform{1.0f};           // object to world
     std::optional<ShadingMode> shading;  // overrides the render option for this instance
     std::string name;
 };

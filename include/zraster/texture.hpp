@@ -15,7 +15,7 @@ namespace zraster {
 enum class TextureFilter { Nearest, Bilinear, Trilinear };
 
 class Texture {
-public:
+  public:
     // rgba holds width*height*4 bytes, rows top to bottom. Builds the mip chain.
     // Throws std::invalid_argument for non-positive sizes or a short buffer.
     Texture(int width, int height, std::span<const std::uint8_t> rgba);
@@ -41,7 +41,7 @@ public:
     // Sample with the given filter; Nearest and Bilinear use level 0 (no mipmapping).
     glm::vec4 sample(glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy, TextureFilter filter) const;
 
-private:
+  private:
     struct Level {
         int width, height;
         std::vector<std::uint8_t> rgba;

@@ -17,14 +17,22 @@ namespace hn = hwy::HWY_NAMESPACE;
 template <class D, class V>
 HWY_INLINE auto depth_passes(D d, V z, V stored, CompareFunc compare) {
     switch (compare) {
-        case CompareFunc::Never: return hn::FirstN(d, 0);
-        case CompareFunc::Less: return hn::Lt(z, stored);
-        case CompareFunc::LessEqual: return hn::Le(z, stored);
-        case CompareFunc::Equal: return hn::Eq(z, stored);
-        case CompareFunc::NotEqual: return hn::Ne(z, stored);
-        case CompareFunc::GreaterEqual: return hn::Ge(z, stored);
-        case CompareFunc::Greater: return hn::Gt(z, stored);
-        case CompareFunc::Always: break;
+        case CompareFunc::Never:
+            return hn::FirstN(d, 0);
+        case CompareFunc::Less:
+            return hn::Lt(z, stored);
+        case CompareFunc::LessEqual:
+            return hn::Le(z, stored);
+        case CompareFunc::Equal:
+            return hn::Eq(z, stored);
+        case CompareFunc::NotEqual:
+            return hn::Ne(z, stored);
+        case CompareFunc::GreaterEqual:
+            return hn::Ge(z, stored);
+        case CompareFunc::Greater:
+            return hn::Gt(z, stored);
+        case CompareFunc::Always:
+            break;
     }
     return hn::Eq(z, z);  // all lanes (z is never NaN)
 }
@@ -32,8 +40,7 @@ HWY_INLINE auto depth_passes(D d, V z, V stored, CompareFunc compare) {
 // (c + a * dx) + (b * dy): the same operations, in the same order, as PlaneEquation::at.
 template <class D, class V>
 HWY_INLINE V plane_at(D d, const PlaneEquation& p, V dx, float dy) {
-    return hn::Add(hn::Add(hn::Set(d, p.c), hn::Mul(hn::Set(d, p.a), dx)),
-                   hn::Set(d, p.b * dy));
+    return hn::Add(hn::Add(hn::Set(d, p.c), hn::Mul(hn::Set(d, p.a), dx)), hn::Set(d, p.b * dy));
 }
 
 int VisibilityBlock(const BlockJob& job, TileBuffers& tile) {
@@ -66,17 +73,18 @@ int VisibilityBlock(const BlockJob& job, TileBuffers& tile) {
             const float dy = static_cast<float>(job.plane_dy + y);
             auto z = plane_at(df, t.depth, dx, dy);
             z = hn::Add(hn::Min(hn::Max(z, zero_f), one_f), zero_f);
-            const std::size_t at = static_cast<std::size_t>((job.y0 + y) * TileBuffers::kStride +
-                                                            job.x0 + x);
+            const std::size_t at =
+                static_cast<std::size_t>((job.y0 + y) * TileBuffers::kStride + job.x0 + x);
             const auto stored = hn::LoadU(df, tile.depth + at);
-            const auto pass = hn::And(hn::RebindMask(df, covered),
-                                      depth_passes(df, z, stored, job.compare));
+            const auto pass =
+                hn::And(hn::RebindMask(df, covered), depth_passes(df, z, stored, job.compare));
             if (hn::AllFalse(df, pass)) continue;
             passed += static_cast<int>(hn::CountTrue(df, pass));
             if (job.write_depth) hn::StoreU(hn::IfThenElse(pass, z, stored), df, tile.depth + at);
             if (!job.attributes) continue;
             const auto pass_u = hn::RebindMask(du, pass);
-            hn::StoreU(hn::IfThenElse(pass_u, ref, hn::LoadU(du, tile.ref + at)), du, tile.ref + at);
+            hn::StoreU(hn::IfThenElse(pass_u, ref, hn::LoadU(du, tile.ref + at)), du,
+                       tile.ref + at);
             hn::Vec<decltype(df)> b1, b2;
             if (job.perspective) {
                 const auto q = plane_at(df, t.q, dx, dy);
@@ -93,7 +101,9 @@ int VisibilityBlock(const BlockJob& job, TileBuffers& tile) {
     return passed;
 }
 
-const char* TargetName() { return hwy::TargetName(HWY_TARGET); }
+const char* TargetName() {
+    return hwy::TargetName(HWY_TARGET);
+}
 
 }  // namespace zraster::detail::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
@@ -108,7 +118,9 @@ int visibility_block(const BlockJob& job, TileBuffers& tile) {
     return HWY_DYNAMIC_DISPATCH(VisibilityBlock)(job, tile);
 }
 
-const char* visibility_kernel_target() { return HWY_DYNAMIC_DISPATCH(TargetName)(); }
+const char* visibility_kernel_target() {
+    return HWY_DYNAMIC_DISPATCH(TargetName)();
+}
 
 int visibility_block_scalar(const BlockJob& job, TileBuffers& tile) {
     const TriangleSetup& t = *job.setup;
@@ -119,7 +131,8 @@ int visibility_block_scalar(const BlockJob& job, TileBuffers& tile) {
                 bool inside = true;
                 for (int k = 0; k < 3; ++k)
                     inside &= std::int64_t{job.e[k]} + std::int64_t{job.step_x[k]} * x +
-                                  std::int64_t{job.step_y[k]} * y >= 0;
+                                  std::int64_t{job.step_y[k]} * y >=
+                              0;
                 if (!inside) continue;
             }
             const int dx = job.plane_dx + x, dy = job.plane_dy + y;

@@ -34,9 +34,9 @@ struct BlockJob {
     std::int32_t e[3];
     std::int32_t step_x[3];
     std::int32_t step_y[3];
-    bool full = false;          // all pixels covered: skip the edge tests
-    int x0 = 0, y0 = 0;         // tile-local position of the block's first pixel
-    int width = 0, height = 0;  // width <= 8
+    bool full = false;               // all pixels covered: skip the edge tests
+    int x0 = 0, y0 = 0;              // tile-local position of the block's first pixel
+    int width = 0, height = 0;       // width <= 8
     int plane_dx = 0, plane_dy = 0;  // (x0, y0) relative to the triangle's plane origin
     const TriangleSetup* setup = nullptr;
     bool perspective = true;

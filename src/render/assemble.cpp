@@ -19,10 +19,17 @@ namespace {
 void emit(const Frame& frame, TriangleRef ref, const std::array<ScreenVertex, 3>& v, Chunk& chunk) {
     TriangleBounds setup;
     switch (classify_triangle(v, frame.setup_settings, setup)) {
-        case SetupResult::Visible: break;
-        case SetupResult::Degenerate: ++chunk.stats.triangles_degenerate; return;
-        case SetupResult::Culled: ++chunk.stats.triangles_backface_culled; return;
-        case SetupResult::NoCoverage: ++chunk.stats.triangles_no_coverage; return;
+        case SetupResult::Visible:
+            break;
+        case SetupResult::Degenerate:
+            ++chunk.stats.triangles_degenerate;
+            return;
+        case SetupResult::Culled:
+            ++chunk.stats.triangles_backface_culled;
+            return;
+        case SetupResult::NoCoverage:
+            ++chunk.stats.triangles_no_coverage;
+            return;
     }
     ref.front_facing = setup.front_facing;
     ref.tile_x0 = static_cast<std::uint16_t>(setup.min_x / kTileSize);
@@ -46,16 +53,15 @@ void clip_and_emit(const Frame& frame, TriangleRef ref, const std::array<glm::ve
     }
     ClippedPolygon polygon;
     clip_triangle(clip, crossing, frame.clip_settings,
-                  std::span(user_distances.data(), static_cast<std::size_t>(user_planes)),
-                  polygon);
+                  std::span(user_distances.data(), static_cast<std::size_t>(user_planes)), polygon);
     if (polygon.count < 3) return;
     // New vertices go to the chunk; the polygon's vertices are snapped once each, so the fan's
     // pieces share exact vertices and leave no cracks between them.
     const auto base = static_cast<std::uint32_t>(chunk.extra_vertices.size());
     for (int k = 0; k < polygon.count; ++k) {
         ScreenVertex s;
-        if (!to_screen(polygon.vertices[static_cast<std::size_t>(k)].position,
-                       frame.setup_settings, s)) {
+        if (!to_screen(polygon.vertices[static_cast<std::size_t>(k)].position, frame.setup_settings,
+                       s)) {
             ++chunk.stats.triangles_degenerate;
             chunk.extra_vertices.resize(base);
             return;
@@ -156,10 +162,10 @@ void bin_chunk(const Frame& frame, Chunk& chunk) {
     std::vector<std::uint32_t> cursor(chunk.bin_offsets.begin(), chunk.bin_offsets.end() - 1);
     for (std::uint32_t i = 0; i < chunk.refs.size(); ++i) {
         const TriangleRef& r = chunk.refs[i];
-        const BinEntry entry{{frame.screen_vertex(chunk, r.screen[0]),
-                              frame.screen_vertex(chunk, r.screen[1]),
-                              frame.screen_vertex(chunk, r.screen[2])},
-                             i};
+        const BinEntry entry{
+            {frame.screen_vertex(chunk, r.screen[0]), frame.screen_vertex(chunk, r.screen[1]),
+             frame.screen_vertex(chunk, r.screen[2])},
+            i};
         for (int ty = r.tile_y0; ty <= r.tile_y1; ++ty)
             for (int tx = r.tile_x0; tx <= r.tile_x1; ++tx)
                 chunk.bin_entries[cursor[std::size_t(ty * frame.tiles_x + tx)]++] = entry;

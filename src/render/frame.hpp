@@ -36,12 +36,12 @@ struct FrameInstance {
 // Output of the vertex stage for every vertex of every visible instance.
 struct FrameVertices {
     std::vector<glm::vec4> clip;
-    std::vector<ScreenVertex> screen;  // valid where outcode == 0
+    std::vector<ScreenVertex> screen;    // valid where outcode == 0
     std::vector<std::uint32_t> outcode;  // ClipPlaneBit mask; kNonFinite for NaN/Inf
-    std::vector<glm::vec3> world;      // when shading or user clip planes need them
-    std::vector<glm::vec3> normal;     // world space, unit
-    std::vector<glm::vec2> uv;         // (0, 0) when the mesh has none
-    std::vector<LightTerms> gouraud;   // per-vertex lighting (Gouraud instances only)
+    std::vector<glm::vec3> world;        // when shading or user clip planes need them
+    std::vector<glm::vec3> normal;       // world space, unit
+    std::vector<glm::vec2> uv;           // (0, 0) when the mesh has none
+    std::vector<LightTerms> gouraud;     // per-vertex lighting (Gouraud instances only)
 };
 inline constexpr std::uint32_t kNonFinite = 0xffffffffu;
 

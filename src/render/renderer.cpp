@@ -68,10 +68,10 @@ void validate(const Scene& scene, const RenderOptions& options) {
                                      " triangles over all instances, more than the limit of " +
                                      std::to_string(limits.max_triangles));
     if (vertices > std::min(limits.max_vertices, kMaxFrameVertices))
-        throw InputError(source, std::to_string(vertices) +
-                                     " vertices over all instances, more than the limit of " +
-                                     std::to_string(std::min(limits.max_vertices,
-                                                             kMaxFrameVertices)));
+        throw InputError(source,
+                         std::to_string(vertices) +
+                             " vertices over all instances, more than the limit of " +
+                             std::to_string(std::min(limits.max_vertices, kMaxFrameVertices)));
     for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
         if (!mesh_used[m]) continue;
         const Mesh& mesh = scene.meshes[m];
@@ -81,8 +81,8 @@ void validate(const Scene& scene, const RenderOptions& options) {
             throw InputError(source, label + ": " + std::to_string(mesh.normals.size()) +
                                          " normals for " + std::to_string(n) + " positions");
         if (!mesh.uvs.empty() && mesh.uvs.size() != n)
-            throw InputError(source, label + ": " + std::to_string(mesh.uvs.size()) +
-                                         " uvs for " + std::to_string(n) + " positions");
+            throw InputError(source, label + ": " + std::to_string(mesh.uvs.size()) + " uvs for " +
+                                         std::to_string(n) + " positions");
         const std::size_t used = mesh.triangle_count() * 3;  // a partial last triple is ignored
         const auto end = mesh.indices.begin() + static_cast<std::ptrdiff_t>(used);
         const auto largest = std::max_element(mesh.indices.begin(), end);
@@ -147,7 +147,8 @@ void render_frame(detail::Frame& frame, const Scene& scene, const RenderOptions&
     frame.setup_settings.depth_range = frame.camera.clip_depth_range();
     frame.setup_settings.cull = options.cull;
     frame.setup_settings.front_face = options.front_face;
-    frame.setup_settings.screen_linear_planes = options.interpolation == Interpolation::ScreenLinear;
+    frame.setup_settings.screen_linear_planes =
+        options.interpolation == Interpolation::ScreenLinear;
     frame.needs_attributes = options.color_target || options.normal_target;
     frame.tiles_x = (options.width + detail::kTileSize - 1) / detail::kTileSize;
     frame.tiles_y = (options.height + detail::kTileSize - 1) / detail::kTileSize;

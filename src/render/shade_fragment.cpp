@@ -10,8 +10,8 @@ glm::vec3 unit_or_up(glm::vec3 n) {
     return len > 0.0f ? n / len : glm::vec3(0, 1, 0);
 }
 
-glm::vec3 base_color(const Frame& frame, const FrameInstance& fi, const ShadingTriangle& t,
-                     int px, int py, const glm::vec3& b) {
+glm::vec3 base_color(const Frame& frame, const FrameInstance& fi, const ShadingTriangle& t, int px,
+                     int py, const glm::vec3& b) {
     const Material& material = *fi.material;
     if (!fi.textured) return material.base_color;
     const std::vector<glm::vec2>& uvs = frame.vertices.uv;
@@ -20,10 +20,14 @@ glm::vec3 base_color(const Frame& frame, const FrameInstance& fi, const ShadingT
     if (frame.options->texture_filter == TextureFilter::Trilinear && t.has_setup) {
         // Derivatives by evaluating the same interpolation one pixel over (exact, no quads).
         const Interpolation interpolation = frame.options->interpolation;
-        duv_dx = interpolate(uvs, t.ref->vertex,
-                             original_barycentrics(t, barycentrics(t.setup, px + 1, py, interpolation))) - uv;
-        duv_dy = interpolate(uvs, t.ref->vertex,
-                             original_barycentrics(t, barycentrics(t.setup, px, py + 1, interpolation))) - uv;
+        duv_dx = interpolate(
+                     uvs, t.ref->vertex,
+                     original_barycentrics(t, barycentrics(t.setup, px + 1, py, interpolation))) -
+                 uv;
+        duv_dy = interpolate(
+                     uvs, t.ref->vertex,
+                     original_barycentrics(t, barycentrics(t.setup, px, py + 1, interpolation))) -
+                 uv;
         if (!std::isfinite(duv_dx.x + duv_dx.y + duv_dy.x + duv_dy.y)) duv_dx = duv_dy = {};
     }
     const glm::vec4 texel =
@@ -67,12 +71,17 @@ ShadedFragment shade_fragment(const Frame& frame, const ShadingTriangle& t, floa
     ShadedFragment out;
     const glm::vec3 base = base_color(frame, fi, t, px, py, b);
     switch (fi.shading) {
-        case ShadingMode::Unlit: out.color = base; break;
-        case ShadingMode::Flat: out.color = combine(t.flat, base); break;
+        case ShadingMode::Unlit:
+            out.color = base;
+            break;
+        case ShadingMode::Flat:
+            out.color = combine(t.flat, base);
+            break;
         case ShadingMode::Gouraud: {
             const auto& g = frame.vertices.gouraud;
             LightTerms terms;
-            terms.diffuse = g[idx[0]].diffuse * b.x + g[idx[1]].diffuse * b.y + g[idx[2]].diffuse * b.z;
+            terms.diffuse =
+                g[idx[0]].diffuse * b.x + g[idx[1]].diffuse * b.y + g[idx[2]].diffuse * b.z;
             terms.specular =
                 g[idx[0]].specular * b.x + g[idx[1]].specular * b.y + g[idx[2]].specular * b.z;
             out.color = combine(terms, base);

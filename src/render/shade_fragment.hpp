@@ -15,9 +15,9 @@ struct ShadedFragment {
 struct ShadingTriangle {
     const Chunk* chunk = nullptr;
     const TriangleRef* ref = nullptr;
-    TriangleSetup setup;        // valid when has_setup (textured instances need derivatives)
+    TriangleSetup setup;  // valid when has_setup (textured instances need derivatives)
     bool has_setup = false;
-    LightTerms flat;            // flat shading, lit once per triangle
+    LightTerms flat;  // flat shading, lit once per triangle
 };
 
 // Barycentric weights of the ORIGINAL triangle's vertices from those of a (clipped) piece.

@@ -88,7 +88,8 @@ void ShadePhongBatch(const PhongConstants& k, PhongBatch& batch) {
                 const auto hx = hn::Add(lx, vx), hy = hn::Add(ly, vy), hz = hn::Add(lz, vz);
                 const auto len2 = dot3(d, hx, hy, hz, hx, hy, hz);
                 const auto inv = hn::Div(one, hn::Sqrt(len2));
-                cos_lobe = dot3(d, nx, ny, nz, hn::Mul(hx, inv), hn::Mul(hy, inv), hn::Mul(hz, inv));
+                cos_lobe =
+                    dot3(d, nx, ny, nz, hn::Mul(hx, inv), hn::Mul(hy, inv), hn::Mul(hz, inv));
                 cos_lobe = hn::IfThenElse(hn::Gt(len2, zero), cos_lobe, zero);
             } else {
                 const auto twice = hn::Mul(n_dot_l, hn::Set(d, 2.0f));
@@ -104,12 +105,15 @@ void ShadePhongBatch(const PhongConstants& k, PhongBatch& batch) {
         }
         // diffuse = ambient + kd * sum; specular = ks * sum; color = base * diffuse + specular.
         const auto ambient = hn::Set(d, k.ambient), kd = hn::Set(d, k.diffuse);
-        const auto red = hn::Add(hn::Mul(hn::Set(d, k.base_color.x), hn::Add(ambient, hn::Mul(kd, dr))),
-                                 hn::Mul(hn::Set(d, k.specular.x), sr));
-        const auto green = hn::Add(hn::Mul(hn::Set(d, k.base_color.y), hn::Add(ambient, hn::Mul(kd, dg))),
-                                   hn::Mul(hn::Set(d, k.specular.y), sg));
-        const auto blue = hn::Add(hn::Mul(hn::Set(d, k.base_color.z), hn::Add(ambient, hn::Mul(kd, db))),
-                                  hn::Mul(hn::Set(d, k.specular.z), sb));
+        const auto red =
+            hn::Add(hn::Mul(hn::Set(d, k.base_color.x), hn::Add(ambient, hn::Mul(kd, dr))),
+                    hn::Mul(hn::Set(d, k.specular.x), sr));
+        const auto green =
+            hn::Add(hn::Mul(hn::Set(d, k.base_color.y), hn::Add(ambient, hn::Mul(kd, dg))),
+                    hn::Mul(hn::Set(d, k.specular.y), sg));
+        const auto blue =
+            hn::Add(hn::Mul(hn::Set(d, k.base_color.z), hn::Add(ambient, hn::Mul(kd, db))),
+                    hn::Mul(hn::Set(d, k.specular.z), sb));
         const hn::RebindToSigned<decltype(d)> di;
         hn::StoreU(to_unorm8(d, red), di, batch.r + i);
         hn::StoreU(to_unorm8(d, green), di, batch.g + i);
@@ -186,10 +190,10 @@ void shade_phong_batch_scalar(const PhongConstants& k, PhongBatch& batch) {
     for (int i = 0; i < batch.count; ++i) {
         glm::vec3 n = unit_normal({batch.nx[i], batch.ny[i], batch.nz[i]});
         if (batch.flip[i]) n = -n;
-        const glm::vec3 color = combine(
-            evaluate_lighting(model, material, {batch.px[i], batch.py[i], batch.pz[i]}, n, k.eye,
-                              k.view_axis),
-            k.base_color);
+        const glm::vec3 color =
+            combine(evaluate_lighting(model, material, {batch.px[i], batch.py[i], batch.pz[i]}, n,
+                                      k.eye, k.view_axis),
+                    k.base_color);
         batch.r[i] = to_unorm8_int(color.x);
         batch.g[i] = to_unorm8_int(color.y);
         batch.b[i] = to_unorm8_int(color.z);

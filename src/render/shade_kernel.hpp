@@ -17,7 +17,7 @@ struct PhongConstants {
     bool local_viewer = true;
     ReflectionModel reflection = ReflectionModel::BlinnPhong;
     int light_count = 0;
-    glm::vec3 light_direction[kMaxKernelLights];  // normalized as evaluate_lighting does
+    glm::vec3 light_direction[kMaxKernelLights];         // normalized as evaluate_lighting does
     glm::vec3 light_source_direction[kMaxKernelLights];  // as given (for the scalar reference)
     glm::vec3 light_color[kMaxKernelLights];
     glm::vec3 base_color{0.0f};

@@ -24,17 +24,19 @@ namespace {
 constexpr int kLocalBits = 20;  // a pixel's triangle reference: chunk << 20 | index in chunk
 
 // Round to nearest (+ 0.5 and truncate: much cheaper than lround), as the SIMD shader does.
-std::uint8_t to_unorm8(float v) { return static_cast<std::uint8_t>(to_unorm8_int(v)); }
+std::uint8_t to_unorm8(float v) {
+    return static_cast<std::uint8_t>(to_unorm8_int(v));
+}
 
 struct TileContext {
     const Frame& frame;
     RenderTargets& targets;
     const DepthBuffer& codec;  // encodes/decodes the depth format
     CompareFunc compare;
-    bool kernel;   // the block traversal with the visibility kernel may be used
-    bool simd;     // ... in its SIMD version
-    bool forward;  // shade as fragments pass (scalar path)
-    bool shade;    // color or normal target wanted
+    bool kernel;         // the block traversal with the visibility kernel may be used
+    bool simd;           // ... in its SIMD version
+    bool forward;        // shade as fragments pass (scalar path)
+    bool shade;          // color or normal target wanted
     int x0, y0, x1, y1;  // tile rectangle in the image, [x0, x1) x [y0, y1)
 };
 
@@ -67,9 +69,8 @@ std::uint64_t rasterize_scalar(const TileContext& c, const Chunk& chunk, const T
         const std::size_t at = tile_index(px - c.x0, py - c.y0);
         if (options.depth_test) {
             const float z = depth_at(setup, px, py);
-            const float code = c.codec.format() == DepthFormat::D32F
-                                   ? z
-                                   : static_cast<float>(c.codec.encode(z));
+            const float code =
+                c.codec.format() == DepthFormat::D32F ? z : static_cast<float>(c.codec.encode(z));
             if (!DepthBuffer::passes(code, tile.depth[at], c.compare)) return;
             if (options.depth_write) tile.depth[at] = code;
         }
@@ -83,10 +84,9 @@ std::uint64_t rasterize_scalar(const TileContext& c, const Chunk& chunk, const T
         tile.b1[at] = b.y;
         tile.b2[at] = b.z;
         if (c.forward && c.shade)
-            write_shaded(c,
-                         shade_fragment(c.frame, shading, b.y, b.z, px, py,
-                                        !c.targets.normal.empty()),
-                         px, py);
+            write_shaded(
+                c, shade_fragment(c.frame, shading, b.y, b.z, px, py, !c.targets.normal.empty()),
+                px, py);
     });
     return passed;
 }
@@ -114,7 +114,8 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
     job.write_depth = options.depth_write;
     job.attributes = c.shade || !c.targets.instance_id.empty();
     job.ref = id;
-    // Runs the kernel on pixels [x0, x1] x [y0, y1] of the triangle (edge values there fit 32 bits).
+    // Runs the kernel on pixels [x0, x1] x [y0, y1] of the triangle (edge values there fit 32
+    // bits).
     const auto run_block = [&](int x0, int y0, int x1, int y1, bool full) {
         for (std::size_t k = 0; k < 3; ++k) {
             job.e[k] = static_cast<std::int32_t>(edge_at(setup, k, x0, y0));
@@ -288,8 +289,9 @@ std::uint64_t finish_tile(const TileContext& c, const TileBuffers& tile, std::ui
                 prepare_shading_triangle(c.frame, chunk, ref, cache);
                 cached_id = id;
             }
-            write_shaded(c, shade_fragment(c.frame, cache, tile.b1[at], tile.b2[at], px, py, want_normal),
-                         px, py);
+            write_shaded(
+                c, shade_fragment(c.frame, cache, tile.b1[at], tile.b2[at], px, py, want_normal),
+                px, py);
         }
         pending.flush(c);
     }
@@ -340,8 +342,16 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
         TileBuffers& tile = *buffers;
         const int tx = int(tile_number % std::size_t(frame.tiles_x));
         const int ty = int(tile_number / std::size_t(frame.tiles_x));
-        const TileContext c{frame, targets, codec, compare, kernel, options.simd, forward, shade,
-                            tx * kTileSize, ty * kTileSize,
+        const TileContext c{frame,
+                            targets,
+                            codec,
+                            compare,
+                            kernel,
+                            options.simd,
+                            forward,
+                            shade,
+                            tx * kTileSize,
+                            ty * kTileSize,
                             std::min(width, (tx + 1) * kTileSize),
                             std::min(height, (ty + 1) * kTileSize)};
         bool empty = true;

@@ -15,7 +15,9 @@
 namespace zraster {
 namespace {
 
-float dot3(const glm::vec3& a, const glm::vec3& b) { return (a.x * b.x + a.y * b.y) + a.z * b.z; }
+float dot3(const glm::vec3& a, const glm::vec3& b) {
+    return (a.x * b.x + a.y * b.y) + a.z * b.z;
+}
 
 // x * (1 / sqrt(x.x)): as the kernel computes it.
 glm::vec3 normalized(const glm::vec3& v) {
@@ -23,7 +25,9 @@ glm::vec3 normalized(const glm::vec3& v) {
     return {v.x * inv, v.y * inv, v.z * inv};
 }
 
-float positive_part(float x) { return x > 0.0f ? x : 0.0f; }
+float positive_part(float x) {
+    return x > 0.0f ? x : 0.0f;
+}
 
 }  // namespace
 

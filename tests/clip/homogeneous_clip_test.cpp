@@ -9,8 +9,8 @@
 namespace zraster {
 namespace {
 
-constexpr std::uint32_t kFrustum = kClipDepthMin | kClipDepthMax | kClipLeft | kClipRight |
-                                   kClipBottom | kClipTop;
+constexpr std::uint32_t kFrustum =
+    kClipDepthMin | kClipDepthMax | kClipLeft | kClipRight | kClipBottom | kClipTop;
 
 glm::vec4 combine(const std::array<glm::vec4, 3>& v, const glm::vec3& w) {
     return v[0] * w.x + v[1] * w.y + v[2] * w.z;
@@ -18,7 +18,7 @@ glm::vec4 combine(const std::array<glm::vec4, 3>& v, const glm::vec3& w) {
 
 TEST(HomogeneousClip, TriangleInsideIsUnchanged) {
     const std::array<glm::vec4, 3> v{glm::vec4(-0.5f, -0.5f, 0, 1), glm::vec4(0.5f, -0.5f, 0, 1),
-                                      glm::vec4(0, 0.5f, 0, 1)};
+                                     glm::vec4(0, 0.5f, 0, 1)};
     ClippedPolygon out;
     clip_triangle(v, kFrustum, ClipSettings{}, {}, out);
     ASSERT_EQ(out.count, 3);
@@ -87,7 +87,8 @@ TEST(HomogeneousClip, UserPlaneDistancesTravelWithVertices) {
     clip_triangle(v, kClipUser0, s, d, out);
     ASSERT_EQ(out.count, 4);
     // Vertex 1 is cut away at the midpoints of its two edges.
-    for (int i = 0; i < out.count; ++i) EXPECT_LE(out.vertices[std::size_t(i)].weights.y, 0.5f + 1e-6f);
+    for (int i = 0; i < out.count; ++i)
+        EXPECT_LE(out.vertices[std::size_t(i)].weights.y, 0.5f + 1e-6f);
 }
 
 TEST(HomogeneousClip, OutcodesNameTheViolatedPlanes) {
@@ -101,7 +102,8 @@ TEST(HomogeneousClip, OutcodesNameTheViolatedPlanes) {
     EXPECT_EQ(clip_outcode({0, 0, -0.5f, 1}, s, {}), std::uint32_t(kClipDepthMin));
     // NaN is outside of everything (and the renderer drops it before clipping).
     const float nan = std::numeric_limits<float>::quiet_NaN();
-    EXPECT_EQ(clip_outcode({nan, 0, 0, 1}, s, {}) & (kClipLeft | kClipRight), kClipLeft | kClipRight);
+    EXPECT_EQ(clip_outcode({nan, 0, 0, 1}, s, {}) & (kClipLeft | kClipRight),
+              kClipLeft | kClipRight);
 }
 
 }  // namespace

@@ -95,9 +95,9 @@ TEST(FillRule, DegenerateTriangleIsRejected) {
     settings.viewport = {8, 8};
     settings.cull = CullMode::None;
     TriangleSetup t;
-    const auto r = setup_triangle({window_to_clip(1, 1, 8, 8), window_to_clip(3, 3, 8, 8),
-                                   window_to_clip(5, 5, 8, 8)},
-                                  settings, t);
+    const auto r = setup_triangle(
+        {window_to_clip(1, 1, 8, 8), window_to_clip(3, 3, 8, 8), window_to_clip(5, 5, 8, 8)},
+        settings, t);
     EXPECT_EQ(r, SetupResult::Degenerate);
 }
 

@@ -15,13 +15,17 @@ inline glm::vec4 window_to_clip(double x, double y, int width, int height, doubl
 struct CoverageGrid {
     int width, height;
     std::vector<int> hits;
-    explicit CoverageGrid(int w, int h) : width(w), height(h), hits(std::size_t(w) * std::size_t(h), 0) {}
-    int at(int x, int y) const { return hits[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
+    explicit CoverageGrid(int w, int h)
+        : width(w), height(h), hits(std::size_t(w) * std::size_t(h), 0) {}
+    int at(int x, int y) const {
+        return hits[std::size_t(y) * std::size_t(width) + std::size_t(x)];
+    }
 };
 
 // Rasterizes a window-space triangle (no culling) and adds its coverage to grid. Returns false
 // when setup rejected it (degenerate or no coverage).
-inline bool rasterize_window_triangle(CoverageGrid& grid, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+inline bool rasterize_window_triangle(CoverageGrid& grid, glm::dvec2 a, glm::dvec2 b,
+                                      glm::dvec2 c) {
     SetupSettings settings;
     settings.viewport = {grid.width, grid.height};
     settings.cull = CullMode::None;

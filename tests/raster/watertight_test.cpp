@@ -29,7 +29,8 @@ bool strictly_inside(const std::vector<glm::dvec2>& poly, glm::dvec2 p, double m
 bool strictly_convex(const std::vector<glm::dvec2>& poly) {
     int positive = 0, negative = 0;
     for (std::size_t i = 0; i < poly.size(); ++i) {
-        const glm::dvec2 a = poly[i], b = poly[(i + 1) % poly.size()], c = poly[(i + 2) % poly.size()];
+        const glm::dvec2 a = poly[i], b = poly[(i + 1) % poly.size()],
+                         c = poly[(i + 2) % poly.size()];
         const double cross = (b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x);
         positive += cross > 0;
         negative += cross < 0;
@@ -53,7 +54,8 @@ TEST(Watertight, RandomQuadsSplitAlongADiagonal) {
         for (double a : angles) {
             glm::dvec2 p(rx * std::cos(a), ry * std::sin(a));
             p = glm::dvec2(p.x * std::cos(rot) - p.y * std::sin(rot),
-                           p.x * std::sin(rot) + p.y * std::cos(rot)) + center;
+                           p.x * std::sin(rot) + p.y * std::cos(rot)) +
+                center;
             if (on_grid) p = glm::round(p * 2.0) / 2.0;
             quad.push_back(p);
         }
@@ -72,7 +74,8 @@ TEST(Watertight, RandomQuadsSplitAlongADiagonal) {
                 if (h == 0 && quad.size() == 4 && strictly_inside(quad, c, 0.01)) ++gaps;
                 // Pixels whose center is on the shared diagonal: the interesting ones.
                 const glm::dvec2 d = quad[2] - quad[0];
-                if (std::abs(d.x * (c.y - quad[0].y) - d.y * (c.x - quad[0].x)) < 1e-9 && h) ++shared_edge_pixels;
+                if (std::abs(d.x * (c.y - quad[0].y) - d.y * (c.x - quad[0].x)) < 1e-9 && h)
+                    ++shared_edge_pixels;
             }
     }
     EXPECT_GT(quads, 3500);
@@ -99,7 +102,9 @@ TEST(Watertight, JitteredGridMeshCoversEveryPixelOnce) {
     CoverageGrid g(kSize, kSize);
     for (int j = 0; j < kCells; ++j)
         for (int i = 0; i < kCells; ++i) {
-            const auto at = [&](int di, int dj) { return v[std::size_t((j + dj) * (kCells + 1) + i + di)]; };
+            const auto at = [&](int di, int dj) {
+                return v[std::size_t((j + dj) * (kCells + 1) + i + di)];
+            };
             if (rng() & 1) {
                 rasterize_window_triangle(g, at(0, 0), at(1, 0), at(1, 1));
                 rasterize_window_triangle(g, at(0, 0), at(1, 1), at(0, 1));

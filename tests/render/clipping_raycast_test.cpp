@@ -94,8 +94,8 @@ TEST(ClippingRayCast, CrossingNearAndFarPlanes) {
 }
 
 TEST(ClippingRayCast, EntirelyBehindTheEyeDrawsNothing) {
-    const auto m = compare_with_raycast({{-1, -1, 2}, {1, -1, 2}, {0, 1, 3}},
-                                        looking_down_minus_z(), 64, 48);
+    const auto m =
+        compare_with_raycast({{-1, -1, 2}, {1, -1, 2}, {0, 1, 3}}, looking_down_minus_z(), 64, 48);
     EXPECT_EQ(m.covered, 0);
 }
 

@@ -49,8 +49,8 @@ TEST(Determinism, RandomSoupWithInterpenetrationAnyThreadCount) {
 
 TEST(Determinism, SharedMeshesAnyThreadCount) {
     ZRASTER_REQUIRE_SHARED_DATA();
-    for (const char* file : {"meshes/obj/bunny.obj", "meshes/gltf/Duck.glb",
-                             "meshes/obj/spider/spider.obj"}) {
+    for (const char* file :
+         {"meshes/obj/bunny.obj", "meshes/gltf/Duck.glb", "meshes/obj/spider/spider.obj"}) {
         SCOPED_TRACE(file);
         RenderOptions o;
         o.width = 320;

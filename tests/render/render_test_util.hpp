@@ -37,9 +37,8 @@ struct PixelRay {
 };
 
 class RayCaster {
-public:
-    RayCaster(const Camera& camera, int width, int height)
-        : width_(width), height_(height) {
+  public:
+    RayCaster(const Camera& camera, int width, int height) : width_(width), height_(height) {
         const double aspect = double(width) / double(height);
         view_projection_ = glm::dmat4(camera.projection_matrix(aspect)) * camera.view();
         inverse_ = glm::inverse(view_projection_);
@@ -74,7 +73,7 @@ public:
         return RayHit{t, {1.0 - u - v, u, v}, clip.z / clip.w};
     }
 
-private:
+  private:
     int width_, height_;
     glm::dmat4 view_projection_, inverse_;
 };

@@ -41,7 +41,8 @@ TEST(Shading, FlatIsConstantPerTriangle) {
         const int id = r.targets.primitive_id[i];
         if (id < 0) continue;
         ++pixels;
-        const glm::u8vec3 c(r.targets.color[i * 4], r.targets.color[i * 4 + 1], r.targets.color[i * 4 + 2]);
+        const glm::u8vec3 c(r.targets.color[i * 4], r.targets.color[i * 4 + 1],
+                            r.targets.color[i * 4 + 2]);
         auto [it, inserted] = color_of.emplace(id, c);
         violations += !inserted && it->second != c;
     }
@@ -80,7 +81,8 @@ TEST(Shading, PhongOnAPlaneMatchesTheLightingModelAtTheRayCastPoint) {
             if (std::abs(p.x) > 2.9f || std::abs(p.y) > 2.9f) continue;
             const LightTerms terms = evaluate_lighting(o.lighting, scene.materials[0], p, {0, 0, 1},
                                                        glm::vec3(o.camera->eye), {0, 0, 1});
-            const glm::vec3 expected = glm::clamp(combine(terms, scene.materials[0].base_color), 0.0f, 1.0f);
+            const glm::vec3 expected =
+                glm::clamp(combine(terms, scene.materials[0].base_color), 0.0f, 1.0f);
             const glm::vec3 got = pixel_color(r.targets, x, y);
             worst = std::max(worst, glm::length(got - expected) / std::sqrt(3.0f));
             ++compared;
@@ -106,7 +108,8 @@ TEST(Shading, GouraudMissesTheHighlightThatPhongCatches) {
         const auto r = render(scene, o);
         float best = 0;
         for (std::size_t i = 0; i < r.targets.color.size(); i += 4)
-            best = std::max(best, float(r.targets.color[i] + r.targets.color[i + 1] + r.targets.color[i + 2]));
+            best = std::max(
+                best, float(r.targets.color[i] + r.targets.color[i + 1] + r.targets.color[i + 2]));
         return best / (3 * 255.0f);
     };
     const float phong = brightest(ShadingMode::Phong);

@@ -35,8 +35,8 @@ TEST(SimdKernels, VisibilityBlockMatchesScalarOnRandomTriangles) {
     SetupSettings settings;
     settings.viewport = {64, 64};
     settings.cull = CullMode::None;
-    const CompareFunc compares[] = {CompareFunc::Less, CompareFunc::LessEqual,
-                                    CompareFunc::Greater, CompareFunc::Always};
+    const CompareFunc compares[] = {CompareFunc::Less, CompareFunc::LessEqual, CompareFunc::Greater,
+                                    CompareFunc::Always};
     int blocks = 0, passed = 0;
     for (std::uint32_t tri = 0; tri < 3000; ++tri) {
         std::array<ScreenVertex, 3> v;
@@ -62,7 +62,8 @@ TEST(SimdKernels, VisibilityBlockMatchesScalarOnRandomTriangles) {
                 const int x0 = std::max(bx, setup.min_x), y0 = std::max(by, setup.min_y);
                 const int x1 = std::min(bx + 7, setup.max_x), y1 = std::min(by + 7, setup.max_y);
                 for (std::size_t k = 0; k < 3; ++k) {
-                    job.e[k] = static_cast<std::int32_t>(setup.edge_a[k] * x0 + setup.edge_b[k] * y0 + setup.edge_c[k]);
+                    job.e[k] = static_cast<std::int32_t>(setup.edge_a[k] * x0 +
+                                                         setup.edge_b[k] * y0 + setup.edge_c[k]);
                     job.step_x[k] = static_cast<std::int32_t>(setup.edge_a[k]);
                     job.step_y[k] = static_cast<std::int32_t>(setup.edge_b[k]);
                 }
@@ -137,7 +138,8 @@ void expect_simd_equals_scalar(const Scene& scene, RenderOptions o) {
     o.simd = true;
     const RenderResult simd = render(scene, o);
     EXPECT_EQ(simd.targets.color, scalar.targets.color);
-    EXPECT_TRUE(same_bits(simd.targets.depth.data(), scalar.targets.depth.data(), simd.targets.depth.size()));
+    EXPECT_TRUE(same_bits(simd.targets.depth.data(), scalar.targets.depth.data(),
+                          simd.targets.depth.size()));
     EXPECT_EQ(simd.targets.primitive_id, scalar.targets.primitive_id);
 }
 

@@ -26,8 +26,8 @@ CommandResult run_zraster(const std::string& arguments, const std::filesystem::p
 }  // namespace zraster::test
 
 // Skips the current test with a clear message when ../shared/data is absent.
-#define ZRASTER_REQUIRE_SHARED_DATA()                                                        \
-    do {                                                                                     \
-        if (!::zraster::test::have_shared_data())                                            \
-            GTEST_SKIP() << "../shared/data is absent (a bare clone): skipping this test";   \
+#define ZRASTER_REQUIRE_SHARED_DATA()                                                      \
+    do {                                                                                   \
+        if (!::zraster::test::have_shared_data())                                          \
+            GTEST_SKIP() << "../shared/data is absent (a bare clone): skipping this test"; \
     } while (0)
