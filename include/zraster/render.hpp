@@ -73,6 +73,14 @@ struct RenderOptions {
 
     glm::vec3 background{0.2f, 0.2f, 0.2f};  // 0..1
 
+    // Triangle edges drawn over the image with Bresenham lines (src/render/edges.cpp):
+    // Wireframe: every edge of every drawn triangle, surfaces not shown (background instead).
+    // HiddenLine: surfaces shaded as usual, edges depth-tested against them with a
+    // slope-scaled offset, so only visible edges show.
+    enum class Edges { None, Wireframe, HiddenLine };
+    Edges edges = Edges::None;
+    glm::vec3 edge_color{0.0f};
+
     // Which targets to produce; depth is always kept.
     bool color_target = true;
     bool normal_target = false;

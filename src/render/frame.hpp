@@ -109,5 +109,6 @@ struct Frame {
 void run_vertex_stage(Frame& frame, RenderStats& stats);
 void assemble_and_bin(Frame& frame, RenderStats& stats);
 void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& stats);
+void draw_edges(const Frame& frame, RenderTargets& targets);
 
 }  // namespace zraster::detail

@@ -174,6 +174,7 @@ void render_frame(detail::Frame& frame, const Scene& scene, const RenderOptions&
         result.stats.setup_ms =
             std::chrono::duration<double, std::milli>(setup_done - start).count();
         detail::rasterize_tiles(frame, result.targets, result.stats);
+        if (options.edges != RenderOptions::Edges::None) detail::draw_edges(frame, result.targets);
         result.stats.raster_ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - setup_done)
                 .count();

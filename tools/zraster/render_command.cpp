@@ -103,6 +103,11 @@ void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
                    "User clip plane A,B,C,D in world space, keeps Ax+By+Cz+D >= 0 (repeatable)");
     cmd.add_option("--background", a.background, "Background color R,G,B (0-255)")
         ->capture_default_str();
+    cmd.add_flag("--wireframe", a.wireframe,
+                 "Draw every triangle edge (Bresenham lines) instead of the surfaces");
+    cmd.add_flag("--hidden-line", a.hidden_line,
+                 "Draw the visible triangle edges over the shaded surfaces");
+    cmd.add_option("--edge-color", a.edge_color, "Edge color R,G,B (0-255)")->capture_default_str();
 }
 
 namespace {
@@ -206,6 +211,16 @@ RenderOptions make_render_options(const RenderArguments& a, const Scene& scene) 
     if (glm::any(glm::lessThan(bg, glm::dvec3(0.0))) || glm::any(glm::greaterThan(bg, glm::dvec3(255.0))))
         throw InputError("--background", "components must be in 0..255");
     o.background = glm::vec3(bg / 255.0);
+    if (a.wireframe && a.hidden_line)
+        throw InputError("--wireframe", "choose --wireframe or --hidden-line, not both");
+    o.edges = a.wireframe     ? RenderOptions::Edges::Wireframe
+              : a.hidden_line ? RenderOptions::Edges::HiddenLine
+                              : RenderOptions::Edges::None;
+    const glm::dvec3 ec = parse_vec3("--edge-color", a.edge_color);
+    if (glm::any(glm::lessThan(ec, glm::dvec3(0.0))) ||
+        glm::any(glm::greaterThan(ec, glm::dvec3(255.0))))
+        throw InputError("--edge-color", "components must be in 0..255");
+    o.edge_color = glm::vec3(ec / 255.0);
     return o;
 }
 
