@@ -1,6 +1,7 @@
 // `zraster render`: a scene to a PNG, with optional depth, normal and id outputs.
 #include "render_command.hpp"
 
+#include <zraster/abuffer.hpp>
 #include <zraster/depth_buffer.hpp>
 #include <zraster/image_io.hpp>
 #include <zraster/render.hpp>
@@ -34,9 +35,14 @@ void add_render_command(CLI::App& app, RenderArguments& a) {
     cmd->add_flag("--stats", a.print_stats, "Print pipeline statistics");
     cmd->add_option("--visibility", a.visibility,
                     "Visible-surface algorithm: zbuffer (the pipeline), painter (Newell's "
-                    "painter's algorithm), bsp (BSP tree), warnock (area subdivision); the "
-                    "last three flat-shade")
-        ->check(CLI::IsMember({"zbuffer", "painter", "bsp", "warnock"}))
+                    "painter's algorithm), bsp (BSP tree), warnock (area subdivision), abuffer "
+                    "(Carpenter's A-buffer: antialiased, order-independent transparency); all "
+                    "but zbuffer flat-shade")
+        ->check(CLI::IsMember({"zbuffer", "painter", "bsp", "warnock", "abuffer"}))
+        ->capture_default_str();
+    cmd->add_option("--aa", a.aa,
+                    "Antialiasing: N x N supersampling of the z-buffer path (flat shading), or "
+                    "with --visibility abuffer the A-buffer's samples per side (1, 2, 4, 8)")
         ->capture_default_str();
 }
 
@@ -271,14 +277,23 @@ int run_render(const RenderArguments& a) {
     options.normal_target = !a.normal_out.empty();
     options.id_targets = !a.id_out.empty();
     VisibilityStats visibility_stats;
-    const RenderResult result =
-        a.visibility == "zbuffer"
-            ? render(scene, options)
-            : render_with_visibility(scene, options,
-                                     a.visibility == "painter" ? VisibilityAlgorithm::Painter
-                                     : a.visibility == "bsp"   ? VisibilityAlgorithm::Bsp
-                                                               : VisibilityAlgorithm::Warnock,
-                                     &visibility_stats);
+    ABufferStats abuffer_stats;
+    RenderResult result;
+    if (a.aa < 1 || a.aa > 16) throw InputError("--aa", "must be in 1..16");
+    if (a.visibility == "abuffer") {
+        ABufferOptions abuffer;
+        abuffer.samples_per_side = a.aa == 1 ? 4 : a.aa;
+        result = render_abuffer(scene, options, abuffer, &abuffer_stats);
+    } else if (a.visibility == "zbuffer") {
+        result = a.aa > 1 ? render_supersampled(scene, options, a.aa) : render(scene, options);
+    } else {
+        if (a.aa > 1) throw InputError("--aa", "works with --visibility zbuffer or abuffer");
+        result = render_with_visibility(scene, options,
+                                        a.visibility == "painter" ? VisibilityAlgorithm::Painter
+                                        : a.visibility == "bsp"   ? VisibilityAlgorithm::Bsp
+                                                                  : VisibilityAlgorithm::Warnock,
+                                        &visibility_stats);
+    }
     const RenderTargets& t = result.targets;
     const double render_ms = since(render_start);
 
@@ -301,7 +316,11 @@ int run_render(const RenderArguments& a) {
     }
     const double write_ms = since(write_start);
 
-    if (a.print_stats && a.visibility != "zbuffer") {
+    if (a.print_stats && a.visibility == "abuffer")
+        fmt::print("abuffer: {} fragments over {} pixels, longest list {}\n",
+                   abuffer_stats.fragments, abuffer_stats.pixels_with_fragments,
+                   abuffer_stats.max_list_length);
+    if (a.print_stats && a.visibility != "zbuffer" && a.visibility != "abuffer") {
         const VisibilityStats& v = visibility_stats;
         std::uint64_t regions = 0;
         for (const std::uint64_t n : v.warnock.regions_per_level) regions += n;

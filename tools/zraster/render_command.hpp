@@ -35,6 +35,8 @@ struct RenderArguments {
     std::string depth_out, normal_out, id_out;
     bool print_stats = false;
     std::string visibility = "zbuffer";
+    int aa = 1;
+    int abuffer_samples = 4;
     bool wireframe = false, hidden_line = false;
     std::string edge_color = "0,0,0";
 };

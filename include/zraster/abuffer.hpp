@@ -1,0 +1,86 @@
+// The A-buffer and supersampling: antialiased visible-surface determination with
+// order-independent transparency (L. Carpenter 1984, "The A-buffer, an antialiased hidden surface
+// method", SIGGRAPH '84), and the brute-force comparison, supersampling of the z-buffer path.
+//
+// A-buffer (src/visibility/abuffer.cpp): every polygon leaves, in every pixel it touches, a
+// fragment holding its depth, a subpixel coverage mask, its color and its opacity. Each pixel's
+// fragment list is sorted by depth and composited front to back per subsample, then the samples
+// are averaged: antialiased edges and correct transparency for any submission order.
+//   Cost: O(touched pixels x samples x polygon edges) to build masks, O(f log f) per pixel to sort
+//   its f fragments, O(f x samples) to resolve; memory 24 bytes per fragment (+ 8 per pixel),
+//   bounded by ABufferOptions::max_fragments. When to use: transparent geometry in arbitrary order,
+//   and antialiasing without shading every subsample (one color per fragment, as Carpenter's).
+//
+// Supersampling (src/visibility/supersample.cpp): render() at factor x the resolution with flat
+// shading, box-filtered down. Cost: factor^2 times a frame's memory and work. Opaque only (the
+// z-buffer keeps the nearest surface; opacity is ignored).
+#pragma once
+#include <zraster/render.hpp>
+#include <zraster/visibility.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace zraster {
+
+struct ABufferOptions {
+    // Subsamples per pixel side: 1, 2, 4 or 8 (1, 4, 16 or 64 samples; the mask is 64 bits).
+    // Sample (i, j) of pixel (px, py) sits at (px + (i + 0.5) / n, py + (j + 0.5) / n), exactly on
+    // the rasterizer's 1/256-pixel grid. Other values throw InputError.
+    int samples_per_side = 4;
+    // Fragments over the whole frame (the memory bound: 24 bytes each, so 1.5 GiB at the
+    // default). Exceeding it throws InputError("A-buffer fragment limit of N exceeded: ...")
+    // while the lists are built, before anything past the limit is allocated (the pool grows
+    // by doubling, so its capacity may transiently reach twice the fragments stored).
+    std::size_t max_fragments = std::size_t{64} << 20;
+};
+
+struct ABufferStats {
+    std::uint64_t fragments = 0;              // (polygon, pixel) pairs with a nonzero mask
+    std::uint64_t max_list_length = 0;        // longest per-pixel fragment list
+    std::uint64_t pixels_with_fragments = 0;  // pixels whose list is not empty
+};
+
+// Pixel (x, y) and the samples of it a polygon covers: bit j * n + i is sample (i, j).
+struct PixelCoverage {
+    int x = 0, y = 0;
+    std::uint64_t mask = 0;
+};
+
+// The subsample coverage of one polygon inside the viewport, pixels with a nonzero mask only, row
+// by row. Exact: integer edge functions on polygon.vertices[].snapped with the rasterizer's
+// top-left rule, so polygons sharing an edge partition the samples on it (none covered twice,
+// none missed). With samples_per_side = 1 the covered pixels are exactly those render() fills.
+// Throws InputError for an unsupported samples_per_side.
+std::vector<PixelCoverage> polygon_coverage(const ScreenPolygon& polygon, const Viewport& viewport,
+                                            int samples_per_side);
+
+// One frame through the A-buffer. Geometry is project_scene's (the renderer's camera, clipping,
+// back-face culling per options.cull, flat shading per polygon with options' lighting; no
+// textures). Fragment alpha = the mesh material's opacity (clamped to [0, 1]), fragment depth =
+// the polygon's window-space depth plane at the pixel center. A pixel's fragments are ordered by
+// (depth, color, opacity, mask, instance, primitive) — nothing that depends on submission order
+// decides, and fragments that tie on everything but ids composite identically in either order —
+// then each sample composites the fragments covering it front to back (an opaque one ends it),
+// over options.background; samples are averaged. The result is bit-identical for any submission
+// order and thread count.
+// Targets: color (alpha 255); depth, ids and normal of the nearest fragment of each pixel (depth
+// stored as render() stores it; cleared where no fragment); no coverage counts.
+// Limitation: project_scene drops polygons whose bounding box holds no pixel center, so a
+// sliver lying between pixel centers leaves no fragments even where it covers subsamples.
+// Stats (optional): fragment counts. Throws InputError as project_scene does, for a bad
+// samples_per_side, or when the fragment limit is exceeded.
+RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
+                            const ABufferOptions& abuffer = {}, ABufferStats* stats = nullptr);
+
+// render() at (factor * width) x (factor * height) with flat shading and no textures (colors
+// comparable with the A-buffer's and render_with_visibility's), the same camera as the
+// unsupersampled frame (effective_camera), box-filtered down: each color channel is the exact
+// integer mean of the factor^2 samples, rounded half up. Depth, id and normal targets take the
+// sample (factor / 2, factor / 2) of each block; no coverage counts. Stats are the big frame's.
+// factor = 1 is render() with flat shading. Throws InputError for factor < 1 or a supersampled
+// size render() refuses.
+RenderResult render_supersampled(const Scene& scene, RenderOptions options, int factor);
+
+}  // namespace zraster
