@@ -3,8 +3,8 @@
 
 #include <zraster/error.hpp>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <exception>
@@ -14,6 +14,7 @@
 #include "command_line.hpp"
 #include "info_command.hpp"
 #include "render_command.hpp"
+#include "svg_command.hpp"
 
 namespace zraster::cli {
 
@@ -26,6 +27,8 @@ int run_zraster(std::vector<std::string> args) {
     add_info_command(app, info_args);
     BenchArguments bench_args;
     add_bench_command(app, bench_args);
+    SvgArguments svg_args;
+    add_svg_command(app, svg_args);
 
     // `zraster -o x.png --size ...` means `zraster render -o x.png --size ...`.
     if (!args.empty() && args[0].starts_with("-") && args[0] != "-h" && args[0] != "--help")
@@ -45,6 +48,7 @@ int run_zraster(std::vector<std::string> args) {
     try {
         if (app.got_subcommand("info")) return run_info(info_args);
         if (app.got_subcommand("bench")) return run_bench(bench_args);
+        if (app.got_subcommand("svg")) return run_svg(svg_args);
         // No subcommand at all: render the built-in default scene to zraster.png.
         return run_render(render_args);
     } catch (const zraster::InputError& e) {

@@ -1,0 +1,64 @@
+// Hidden-surface-removed vector drawings: a frame as an SVG 1.1 document of filled polygons,
+// painted back to front in the order of the BSP tree or the painter's algorithm
+// (src/visibility/svg_writer.cpp).
+//
+// The polygons are exactly those the BSP / painter's frames fill (render_with_visibility with
+// VisibilityAlgorithm::Bsp or Painter): same camera, clipping, culling and snapping, flat shaded
+// per face (options.shading Unlit: the material's base color). Coordinates are window pixels,
+// y down, as SVG's user space; width, height and viewBox are the image size.
+//
+// Cracks: anti-aliased SVG renderers leave hairline seams between adjacent filled polygons. Each
+// polygon is therefore also stroked with its own fill color (SvgOptions::seam_width, round
+// joins); since everything is painted back to front, nearer polygons cover the strokes of
+// farther ones. With edges on, the edge stroke takes that role.
+//
+// Merging (SvgOptions::merge_coplanar): a polygon that directly follows another in the paint
+// order, has the same 8-bit fill, lies in its plane (with edges on; without edges outlines are
+// not drawn and the plane test is skipped) and shares exactly one edge with it (same snapped end
+// points, no other common vertex) is joined to it into one outline (the union of the two vertex
+// loops). Only neighbours in the order are merged, so the painted result is unchanged.
+// Without edges, runs of consecutive paths of one color are further written as one <path> with
+// several subpaths (all loops have the same orientation, so the nonzero rule unions them).
+#pragma once
+#include <zraster/render.hpp>
+#include <zraster/visibility.hpp>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace zraster {
+
+struct SvgOptions {
+    enum class Order { Bsp, Painter };
+    Order order = Order::Bsp;
+    // Stroke every (merged) polygon outline with edge_color: hidden edges are covered by nearer
+    // polygons because of the paint order.
+    bool edges = false;
+    float edge_width = 0.5f;     // pixels
+    glm::vec3 edge_color{0.0f};  // 0..1
+    bool merge_coplanar = true;
+    int precision = 2;        // decimal places of coordinates, 0..6
+    float seam_width = 0.5f;  // pixels; 0: no seam strokes (hairline cracks show)
+};
+
+struct SvgStats {
+    std::size_t polygons_in = 0;   // polygons in the paint order (clipped and split pieces)
+    std::size_t polygons_out = 0;  // after merging
+    std::size_t paths = 0;         // <path> elements
+    std::size_t bytes = 0;         // size of the document
+};
+
+// The polygons in paint order (back to front), before merging: for the BSP order, the tree's
+// walk for the frame's eye with each stored polygon projected fan triangle by fan triangle as
+// render_bsp draws it; for the painter's order, painter_sort over project_scene. Filled with
+// paint_polygons they give render_with_visibility's image for that algorithm.
+std::vector<ScreenPolygon> svg_polygons(const Scene& scene, const RenderOptions& options,
+                                        SvgOptions::Order order);
+
+// The document. Throws InputError for unusable options (as render_with_visibility, and a
+// precision outside 0..6 or a negative or non-finite width).
+std::string render_svg(const Scene& scene, const RenderOptions& options,
+                       const SvgOptions& svg_options = {}, SvgStats* stats = nullptr);
+
+}  // namespace zraster

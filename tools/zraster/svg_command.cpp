@@ -1,0 +1,80 @@
+// `zraster svg`: a scene to an SVG of flat-shaded polygons painted back to front.
+#include "svg_command.hpp"
+
+#include <zraster/error.hpp>
+#include <zraster/svg.hpp>
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <span>
+
+#include "command_line.hpp"
+#include "io/atomic_write.hpp"
+
+namespace zraster::cli {
+
+void add_svg_command(CLI::App& app, SvgArguments& a) {
+    CLI::App* cmd = app.add_subcommand(
+        "svg",
+        "Render a scene to an SVG: hidden-surface-removed, flat-shaded polygons in BSP or "
+        "painter's order");
+    add_render_arguments(*cmd, a.render);
+    cmd->add_option("-o,--output", a.output, "Output SVG")->capture_default_str();
+    cmd->add_option("--order", a.order,
+                    "Back-to-front order: bsp (BSP tree walk) or painter (Newell's painter's "
+                    "algorithm)")
+        ->check(CLI::IsMember({"bsp", "painter"}))
+        ->capture_default_str();
+    cmd->add_flag("--edges", a.edges, "Stroke the visible polygon outlines with --edge-color");
+    cmd->add_option("--edge-width", a.edge_width, "Edge width in pixels")->capture_default_str();
+    cmd->add_option("--precision", a.precision, "Decimal places of coordinates (0..6)")
+        ->capture_default_str();
+    cmd->add_flag("--no-merge", a.no_merge,
+                  "Do not merge adjacent coplanar polygons of the same color");
+}
+
+int run_svg(const SvgArguments& a) {
+    // Every option is checked before any work, so a bad one leaves no file.
+    std::string ext = std::filesystem::path(a.output).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (ext != ".svg") throw InputError(a.output, "the output must end in .svg");
+    const std::filesystem::path parent = std::filesystem::path(a.output).parent_path();
+    if (!parent.empty() && !std::filesystem::is_directory(parent))
+        throw InputError(a.output,
+                         "cannot write: directory '" + parent.string() + "' does not exist");
+    if (std::filesystem::is_directory(a.output))
+        throw InputError(a.output, "cannot write: is a directory");
+    if (a.precision < 0 || a.precision > 6)
+        throw InputError("--precision", "must be 0..6, not " + std::to_string(a.precision));
+    if (!std::isfinite(a.edge_width) || a.edge_width < 0.0f)
+        throw InputError("--edge-width", "must be finite and >= 0");
+    if (a.render.wireframe || a.render.hidden_line)
+        throw InputError(a.render.wireframe ? "--wireframe" : "--hidden-line",
+                         "not available for svg (use --edges)");
+
+    const Scene scene = load_scene_or_procedural(a.render.scene);
+    for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
+    const RenderOptions options = make_render_options(a.render, scene);
+
+    SvgOptions svg;
+    svg.order = a.order == "painter" ? SvgOptions::Order::Painter : SvgOptions::Order::Bsp;
+    svg.edges = a.edges;
+    svg.edge_width = a.edge_width;
+    svg.edge_color = options.edge_color;  // --edge-color, checked there
+    svg.precision = a.precision;
+    svg.merge_coplanar = !a.no_merge;
+    SvgStats stats;
+    const std::string document = render_svg(scene, options, svg, &stats);
+    io::write_file_atomically(
+        a.output,
+        std::span(reinterpret_cast<const std::uint8_t*>(document.data()), document.size()));
+    fmt::print("wrote {}: {} polygons ({} after merging, {} paths), {} bytes\n", a.output,
+               stats.polygons_in, stats.polygons_out, stats.paths, stats.bytes);
+    return kExitOk;
+}
+
+}  // namespace zraster::cli
