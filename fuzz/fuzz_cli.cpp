@@ -41,13 +41,16 @@ constexpr std::uint64_t kMaxProceduralN = 2000;
 
 const std::map<std::string, std::string>& scene_fixtures() {
     static const std::map<std::string, std::string> files{
-        {"t.obj", "mtllib t.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n"
-                  "usemtl m\nf 1/1 2/2 3/3\nf 2 4 3\n"},
-        {"t.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                  "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
-                  "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"},
-        {"t.stl", "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
-                  "vertex 0 1 0\nendloop\nendfacet\nendsolid t\n"},
+        {"t.obj",
+         "mtllib t.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n"
+         "usemtl m\nf 1/1 2/2 3/3\nf 2 4 3\n"},
+        {"t.ply",
+         "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+         "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+         "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"},
+        {"t.stl",
+         "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+         "vertex 0 1 0\nendloop\nendfacet\nendsolid t\n"},
         {"t.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 1\n3 0 1 2\n3 1 3 2\n"},
         {"t.gltf",
          R"({"asset":{"version":"2.0"},"buffers":[{"uri":"t.bin","byteLength":42}],)"
@@ -146,8 +149,7 @@ bool light_enough(std::vector<std::string> args) {
     if (app.got_subcommand("info")) return small_scene(info_args.scene);
     if (app.got_subcommand("bench"))
         return small_scene(bench_args.scene) && small_size(bench_args.size) &&
-               std::int64_t{bench_args.frames} + bench_args.warmup <= 2 &&
-               bench_args.threads <= 4;
+               std::int64_t{bench_args.frames} + bench_args.warmup <= 2 && bench_args.threads <= 4;
     return small_scene(render_args.scene) && small_size(render_args.size) &&
            render_args.threads <= 4;
 }

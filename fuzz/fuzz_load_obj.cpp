@@ -1,5 +1,5 @@
-// libFuzzer target: load_scene on OBJ with its MTL material libraries (the work directory holds t.mtl and t.png),
-// then the loaded scene through the whole pipeline at 24x16.
+// libFuzzer target: load_scene on OBJ with its MTL material libraries (the work directory holds
+// t.mtl and t.png), then the loaded scene through the whole pipeline at 24x16.
 #include <cstddef>
 #include <cstdint>
 

@@ -93,11 +93,14 @@ Mesh make_mesh(FuzzedDataProvider& in) {
         const auto n = mesh.positions.size();
         switch (n > 1 ? in.ConsumeIntegralInRange(0, 5) : 0) {
             case 4:  // a duplicate
-                mesh.positions.push_back(mesh.positions[in.ConsumeIntegralInRange<std::size_t>(0, n - 1)]);
+                mesh.positions.push_back(
+                    mesh.positions[in.ConsumeIntegralInRange<std::size_t>(0, n - 1)]);
                 break;
             case 5: {  // collinear with two earlier vertices
-                const glm::vec3 a = mesh.positions[in.ConsumeIntegralInRange<std::size_t>(0, n - 1)];
-                const glm::vec3 b = mesh.positions[in.ConsumeIntegralInRange<std::size_t>(0, n - 1)];
+                const glm::vec3 a =
+                    mesh.positions[in.ConsumeIntegralInRange<std::size_t>(0, n - 1)];
+                const glm::vec3 b =
+                    mesh.positions[in.ConsumeIntegralInRange<std::size_t>(0, n - 1)];
                 mesh.positions.push_back(a + (b - a) * hostile_float(in));
                 break;
             }
@@ -168,8 +171,8 @@ Camera make_camera(FuzzedDataProvider& in) {
     c.eye = in.ConsumeBool() ? glm::dvec3(3.0, 2.0, 5.0) : hostile_dvec3(in);
     c.target = in.ConsumeBool() ? glm::dvec3(0.0) : hostile_dvec3(in);
     c.up = in.ConsumeBool() ? glm::dvec3(0.0, 1.0, 0.0) : hostile_dvec3(in);
-    c.projection = in.ConsumeBool() ? Camera::Projection::Perspective
-                                    : Camera::Projection::Orthographic;
+    c.projection =
+        in.ConsumeBool() ? Camera::Projection::Perspective : Camera::Projection::Orthographic;
     c.fovy_degrees = in.ConsumeBool() ? 60.0 : hostile_double(in);
     c.ortho_height = in.ConsumeBool() ? 4.0 : hostile_double(in);
     c.near = in.ConsumeBool() ? 0.1 : hostile_double(in);
@@ -187,8 +190,10 @@ RenderOptions make_options(FuzzedDataProvider& in) {
         static constexpr int kBad[] = {0, -1, -100000, 16385, 1 << 30, INT32_MIN, INT32_MAX};
         (in.ConsumeBool() ? o.width : o.height) = in.PickValueInArray(kBad);
     }
-    if (in.ConsumeIntegralInRange(0, 31) == 0) o.limits.max_pixels = in.ConsumeIntegral<std::uint8_t>();
-    if (in.ConsumeIntegralInRange(0, 31) == 0) o.limits.max_triangles = in.ConsumeIntegral<std::uint8_t>();
+    if (in.ConsumeIntegralInRange(0, 31) == 0)
+        o.limits.max_pixels = in.ConsumeIntegral<std::uint8_t>();
+    if (in.ConsumeIntegralInRange(0, 31) == 0)
+        o.limits.max_triangles = in.ConsumeIntegral<std::uint8_t>();
     if (in.ConsumeBool()) o.camera = make_camera(in);
     o.shading = in.PickValueInArray(
         {ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong, ShadingMode::Unlit});
@@ -206,8 +211,8 @@ RenderOptions make_options(FuzzedDataProvider& in) {
     }
     o.texture_filter = in.PickValueInArray(
         {TextureFilter::Nearest, TextureFilter::Bilinear, TextureFilter::Trilinear});
-    o.interpolation = in.ConsumeBool() ? Interpolation::PerspectiveCorrect
-                                       : Interpolation::ScreenLinear;
+    o.interpolation =
+        in.ConsumeBool() ? Interpolation::PerspectiveCorrect : Interpolation::ScreenLinear;
     o.textures = in.ConsumeBool();
     o.two_sided_lighting = in.ConsumeBool();
     o.strategy = in.PickValueInArray(
@@ -217,14 +222,15 @@ RenderOptions make_options(FuzzedDataProvider& in) {
     o.front_face = in.ConsumeBool() ? FrontFace::CounterClockwise : FrontFace::Clockwise;
     o.depth_format = in.PickValueInArray({DepthFormat::D32F, DepthFormat::D24, DepthFormat::D16});
     if (in.ConsumeBool())
-        o.depth_compare = in.PickValueInArray(
-            {CompareFunc::Never, CompareFunc::Less, CompareFunc::LessEqual, CompareFunc::Equal,
-             CompareFunc::NotEqual, CompareFunc::GreaterEqual, CompareFunc::Greater,
-             CompareFunc::Always});
+        o.depth_compare = in.PickValueInArray({CompareFunc::Never, CompareFunc::Less,
+                                               CompareFunc::LessEqual, CompareFunc::Equal,
+                                               CompareFunc::NotEqual, CompareFunc::GreaterEqual,
+                                               CompareFunc::Greater, CompareFunc::Always});
     o.depth_test = in.ConsumeBool();
     o.depth_write = in.ConsumeBool();
     const int planes = in.ConsumeIntegralInRange(0, 7);  // 7: one more than supported
-    for (int p = 0; p < planes; ++p) o.clip_planes.emplace_back(hostile_vec3(in), hostile_float(in));
+    for (int p = 0; p < planes; ++p)
+        o.clip_planes.emplace_back(hostile_vec3(in), hostile_float(in));
     if (in.ConsumeBool()) o.background = hostile_vec3(in);
     o.color_target = in.ConsumeBool();
     o.normal_target = in.ConsumeBool();
@@ -305,8 +311,10 @@ void check_identical(const RenderTargets& a, const RenderTargets& b, const char*
     if (!same_bytes(a.color, b.color)) fail(std::string("color differs: ") + what);
     if (!same_bytes(a.depth, b.depth)) fail(std::string("depth differs: ") + what);
     if (!same_bytes(a.normal, b.normal)) fail(std::string("normals differ: ") + what);
-    if (!same_bytes(a.instance_id, b.instance_id)) fail(std::string("instance ids differ: ") + what);
-    if (!same_bytes(a.primitive_id, b.primitive_id)) fail(std::string("primitive ids differ: ") + what);
+    if (!same_bytes(a.instance_id, b.instance_id))
+        fail(std::string("instance ids differ: ") + what);
+    if (!same_bytes(a.primitive_id, b.primitive_id))
+        fail(std::string("primitive ids differ: ") + what);
     if (!same_bytes(a.front_hits, b.front_hits) || !same_bytes(a.back_hits, b.back_hits))
         fail(std::string("coverage counts differ: ") + what);
 }

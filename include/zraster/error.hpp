@@ -6,20 +6,34 @@
 #pragma once
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace zraster {
 
 class InputError : public std::runtime_error {
   public:
     InputError(std::string file, std::string cause)
-        : std::runtime_error(file.empty() ? cause : file + ": " + cause),
-          file_(std::move(file)),
-          cause_(std::move(cause)) {}
+        : InputError(std::move(file), one_line(std::move(cause)), 0) {}
 
     const std::string& file() const { return file_; }
     const std::string& cause() const { return cause_; }
 
   private:
+    InputError(std::string file, std::string cause, int)
+        : std::runtime_error(file.empty() ? cause : file + ": " + cause),
+          file_(std::move(file)),
+          cause_(std::move(cause)) {}
+
+    // Causes quote the input (names, texture paths, a library's message): line breaks and other
+    // control characters there would break the one-line contract; they become spaces and '?'.
+    static std::string one_line(std::string text) {
+        for (char& c : text) {
+            if (c == '\n' || c == '\r') c = ' ';
+            else if ((c >= 0 && c < ' ' && c != '\t') || c == 0x7f) c = '?';
+        }
+        return text;
+    }
+
     std::string file_;
     std::string cause_;
 };

@@ -2,11 +2,13 @@
 
 #include <zraster/error.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <fstream>
 #include <optional>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace zraster::io {
@@ -88,6 +90,16 @@ void check_ply(const std::filesystem::path& path, const std::string& head,
         std::istringstream words(line);
         std::string keyword;
         words >> keyword;
+        // Assimp matches "end_header" after spaces and tabs only, followed by white space.
+        if (keyword == "end_header") {
+            const std::size_t at = line.find_first_not_of(" \t");
+            const std::size_t after = at + 10;
+            const bool exact = line.compare(at, 10, "end_header") == 0 &&
+                               (after >= line.size() ||
+                                std::string_view(" \t\r\f\0", 5).find(line[after]) !=
+                                    std::string_view::npos);
+            if (!exact) keyword.clear();
+        }
         if (keyword == "format") {
             std::string kind;
             words >> kind;
@@ -95,9 +107,8 @@ void check_ply(const std::filesystem::path& path, const std::string& head,
         } else if (keyword == "element") {
             std::string name, count;
             words >> name >> count;
-            const auto n = parse_count(count);
-            if (!n) return;
-            elements.push_back({name, *n, 1});
+            // No digits: Assimp reads 0 (and the header must still end, below).
+            elements.push_back({name, parse_count(count).value_or(0), 1});
             property_bytes.push_back(0);
             property_count.push_back(0);
         } else if (keyword == "property" && !elements.empty()) {
@@ -111,7 +122,12 @@ void check_ply(const std::filesystem::path& path, const std::string& head,
             break;
         }
     }
-    if (!ended || header_bytes > file_size) return;  // Assimp reports a broken header itself
+    // Assimp 5.2.5 reads a header without end_header forever (found by fuzz_load_ply).
+    if (!ended)
+        throw InputError(path.string(),
+                         "truncated or malformed file: no end_header line in the PLY header "
+                         "(first 64 KiB)");
+    if (header_bytes > file_size) return;
     for (std::size_t i = 0; i < elements.size(); ++i) {
         const std::uint64_t bytes = ascii ? 2 * property_count[i] : property_bytes[i];
         elements[i].min_record_bytes = bytes > 0 ? bytes : 1;
@@ -119,29 +135,135 @@ void check_ply(const std::filesystem::path& path, const std::string& head,
     check_body(path, "PLY", elements, file_size - header_bytes);
 }
 
-// "[ST][C][N][4][n]OFF [dim] nv nf ne", comments starting with '#'; the keyword is optional.
+// The OFF header read exactly as Assimp's OFF importer reads it (OFFLoader.cpp), since it
+// allocates the declared vertices and faces before reading any: optional prefixes "ST", "C",
+// "N", "4", "n" then "OFF" with no separator required ("OFF4294967295" declares 4294967295
+// vertices: found by fuzz_load_off), or no keyword at all; comment lines start with '#'; then
+// [dimension] vertices faces, each count being the leading digits of its token.
+class OffHeaderReader {
+  public:
+    explicit OffHeaderReader(const std::string& text) : p_(text.c_str()), end_(p_ + text.size()) {}
+
+    // nullopt where Assimp itself refuses the header before allocating.
+    std::optional<std::vector<DeclaredElement>> read() {
+        next_token();
+        if (starts_with("ST")) p_ += 2;
+        if (starts_with("C")) ++p_;
+        if (starts_with("N")) ++p_;
+        if (starts_with("4")) ++p_;
+        const bool dimension = starts_with("n");
+        if (dimension) ++p_;
+        std::uint64_t bytes_per_vertex = 6;  // "x y z" and a line end
+        if (starts_with("OFF")) {
+            p_ += 3;
+            next_token();
+        } else {
+            next_token();
+            if (p_ >= end_ || *p_ < '0' || *p_ > '9') return std::nullopt;  // "Header is invalid"
+        }
+        if (dimension) {
+            const std::uint64_t d = count();
+            if (d > 3) return std::nullopt;
+            bytes_per_vertex = d > 0 ? 2 * d : 1;
+            next_token();
+        }
+        next_token();
+        const std::uint64_t vertices = count();
+        next_token();
+        const std::uint64_t faces = count();
+        if (vertices == 0 || faces == 0) return std::nullopt;  // refused by Assimp
+        vertices_ = vertices;
+        faces_ = faces;
+        next_token();
+        count();  // edges
+        next_token();
+        // At least one digit and a separator per vertex coordinate, "n" and a line end per face.
+        return std::vector<DeclaredElement>{{"vertex", vertices, bytes_per_vertex},
+                                            {"face", faces, 2}};
+    }
+
+    // After read(): the face records as Assimp 5.2.5 reads them (GetNextLine: lines of at most
+    // 4095 characters, empty lines skipped). A face of 0 or more than 9 indices is skipped by
+    // decrementing the face count without counting the line; two more such lines than faces
+    // wrap the count to 2^32 - 1 and the importer crashes freeing them (found by
+    // fuzz_load_off). So any such face is refused here.
+    void check_faces(const std::filesystem::path& path) {
+        for (std::uint64_t v = 0; v < vertices_ && next_line(); ++v) {
+        }
+        for (std::uint64_t f = 0; f < faces_; ++f) {
+            const char* line = p_;
+            if (!next_line()) return;  // a short body: Assimp reports it
+            const char* line_end = p_;
+            while (line_end > line && (line_end[-1] == '\r' || line_end[-1] == '\n' ||
+                                       line_end[-1] == '\f'))
+                --line_end;
+            const char* q = line;
+            while (q < line_end && (*q == ' ' || *q == '\t')) ++q;
+            std::uint64_t n = 0;
+            for (; q < line_end && *q >= '0' && *q <= '9'; ++q) n = std::min<std::uint64_t>(n * 10 + std::uint64_t(*q - '0'), 1000);
+            if (n == 0 || n > 9)
+                throw InputError(path.string(),
+                                 "unsupported or malformed file: OFF face record " +
+                                     std::to_string(f) + " has " + std::to_string(n) +
+                                     " vertex indices (1 to 9 are supported)");
+        }
+    }
+
+  private:
+    bool starts_with(std::string_view s) const {
+        return static_cast<std::size_t>(end_ - p_) >= s.size() && std::string_view(p_, s.size()) == s;
+    }
+    static bool line_end(char c) { return c == '\r' || c == '\n' || c == '\0'; }
+    void skip_spaces_and_line_ends() {
+        while (p_ < end_ && (*p_ == ' ' || *p_ == '\t' || *p_ == '\r' || *p_ == '\n')) ++p_;
+    }
+    void next_token() {
+        skip_spaces_and_line_ends();
+        while (p_ < end_ && (*p_ == '#' || *p_ == '\n' || *p_ == '\r')) {
+            while (p_ < end_ && !line_end(*p_)) ++p_;
+            while (p_ < end_ && (*p_ == '\r' || *p_ == '\n')) ++p_;
+            skip_spaces_and_line_ends();
+        }
+    }
+    // strtoul10: the leading digits (saturating here, where Assimp wraps at 2^32).
+    std::uint64_t count() {
+        std::uint64_t value = 0;
+        for (; p_ < end_ && *p_ >= '0' && *p_ <= '9'; ++p_) {
+            const auto digit = static_cast<std::uint64_t>(*p_ - '0');
+            value = value > (UINT64_MAX - digit) / 10 ? UINT64_MAX : value * 10 + digit;
+        }
+        return value;
+    }
+
+    // GetNextLine: up to 4095 characters or a line end, then every line end character.
+    bool next_line() {
+        if (p_ >= end_ || *p_ == '\0') return false;
+        const char* limit = p_ + std::min<std::ptrdiff_t>(end_ - p_, 4095);
+        while (p_ < limit && !line_end(*p_) && *p_ != '\f') ++p_;
+        while (p_ < end_ && (*p_ == '\r' || *p_ == '\n' || *p_ == '\f')) ++p_;
+        return true;
+    }
+
+    const char* p_;
+    const char* end_;
+    std::uint64_t vertices_ = 0, faces_ = 0;
+};
+
 void check_off(const std::filesystem::path& path, const std::string& head,
                std::uintmax_t file_size) {
-    std::istringstream text(head);
-    std::vector<std::string> tokens;
-    std::string line;
-    while (tokens.size() < 5 && std::getline(text, line)) {
-        const auto hash = line.find('#');
-        if (hash != std::string::npos) line.resize(hash);
-        std::istringstream words(line);
-        std::string word;
-        while (tokens.size() < 5 && words >> word) tokens.push_back(word);
+    if (auto elements = OffHeaderReader(head).read()) {
+        check_body(path, "OFF", *elements, file_size);
+        const std::string text = read_prefix(path, static_cast<std::size_t>(file_size));
+        OffHeaderReader reader(text);
+        reader.read();
+        reader.check_faces(path);
     }
-    std::size_t next = 0;
-    if (!tokens.empty() && tokens[0].ends_with("OFF")) {
-        next = tokens[0].find('n') != std::string::npos ? 2 : 1;
-    }
-    if (tokens.size() < next + 2) return;
-    const auto vertices = parse_count(tokens[next]);
-    const auto faces = parse_count(tokens[next + 1]);
-    if (!vertices || !faces) return;
-    // At least "x y z" plus a separator per vertex and "n" plus a separator per face.
-    check_body(path, "OFF", {{"vertex", *vertices, 6}, {"face", *faces, 2}}, file_size);
+}
+
+// Assimp's PLY magic: "ply" followed by white space.
+bool is_ply(const std::string& head) {
+    return head.size() > 3 && head.starts_with("ply") &&
+           (head[3] == '\n' || head[3] == '\r' || head[3] == ' ' || head[3] == '\t');
 }
 
 }  // namespace
@@ -149,17 +271,18 @@ void check_off(const std::filesystem::path& path, const std::string& head,
 void check_declared_counts(const std::filesystem::path& path, std::uintmax_t file_size) {
     // Headers are short; 64 KiB leaves room for long comment blocks.
     const std::string head = read_prefix(path, 64 * 1024);
-    if (head.starts_with("ply\n") || head.starts_with("ply\r\n")) {
+    if (is_ply(head)) {
         check_ply(path, head, file_size);
         return;
     }
-    std::istringstream first(head);
-    std::string token;
-    first >> token;
+    // Assimp picks the importer by extension for the formats below; for an unknown one it asks
+    // every importer, and the OFF importer claims anything with "off" in its first bytes: read
+    // the header as OFF then too (it only refuses what Assimp would take as an OFF header).
     std::string extension = path.extension().string();
     for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if ((token.ends_with("OFF") && token.size() <= 8) || extension == ".off")
-        check_off(path, head, file_size);
+    for (const char* other : {".obj", ".ply", ".stl", ".gltf", ".glb", ".3ds"})
+        if (extension == other) return;
+    check_off(path, head, file_size);
 }
 
 }  // namespace zraster::io

@@ -3,6 +3,7 @@
 #include <zraster/image_io.hpp>
 
 #include "io/read_file.hpp"
+#include "io/text_util.hpp"
 
 #include <stb/stb_image.h>
 
@@ -28,7 +29,7 @@ ImageRGBA8 read_image_rgba8(const std::filesystem::path& path) {
     if (!pixels) {
         const char* reason = stbi_failure_reason();
         throw InputError(path.string(), std::string("cannot decode image: ") +
-                                            (reason ? reason : "unknown error"));
+                                            (reason ? io::one_line(reason) : "unknown error"));
     }
     ImageRGBA8 image;
     image.width = width;

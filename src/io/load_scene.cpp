@@ -214,7 +214,8 @@ Scene io::load_scene_with_assimp(const std::filesystem::path& path, const LoadOp
         instance.name = p.node_name.empty() ? mesh.name : p.node_name;
         scene.instances.push_back(std::move(instance));
     }
-    for (const std::string& w : warnings) scene.warnings.push_back(file + ": " + w);
+    // One line each: they quote names and paths from the file.
+    for (const std::string& w : warnings) scene.warnings.push_back(file + ": " + io::one_line(w));
     return scene;
 }
 

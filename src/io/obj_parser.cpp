@@ -19,8 +19,14 @@
 // name without changing the current mesh; `g` creates an object named by the whole rest of the
 // line (trailing blanks included) when it differs from the active group; `usemtl` (trimmed name)
 // starts a mesh named after the material when the current mesh has faces and another material,
-// otherwise it sets the current mesh's material; faces before any object create
-// "defaultobject"; `l` and `p` elements count as faces of the current mesh but are dropped later.
+// otherwise it sets the current mesh's material; reading an MTL library makes its last material
+// the current one (so later objects get it) and gives each new material to the current mesh;
+// faces before any object create "defaultobject"; `l` and `p` elements count as faces of the
+// current mesh but are dropped later; a non-finite texture coordinate reads as 0.
+//
+// Welding: each v, vt and vn value gets the index of the first equal value (after
+// normalisation, the v flip, -0 == +0), and a mesh vertex is one distinct triple of those, so
+// that equal values written twice weld as they do in the Assimp path.
 #include "io/obj_parser.hpp"
 
 #include <zraster/error.hpp>
@@ -30,20 +36,19 @@
 #include "io/texture_loader.hpp"
 #include "io/weld_vertices.hpp"
 
-#include <assimp/Importer.hpp>
 #include <assimp/material.h>
 #include <assimp/scene.h>
 #include <assimp/vector3.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
+#include <assimp/Importer.hpp>
 
 #include <algorithm>
 #include <array>
 #include <bit>
 #include <cerrno>
 #include <charconv>
-#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -53,7 +58,6 @@
 #include <optional>
 #include <set>
 #include <system_error>
-#include <unordered_map>
 
 #include <fcntl.h>
 #include <sys/mman.h>
@@ -67,7 +71,10 @@ namespace {
 constexpr std::uint32_t kNone = ~0u;
 
 // ------------------------------------------------------------------------------------------
-// The file's bytes: mapped (no copy) or, where mapping fails, read.
+// The file's bytes, mapped (no copy) or, where mapping fails, read, and followed by at least
+// kPadding zero bytes: the parsers read up to 8 bytes at a time without checking for the end.
+
+constexpr std::size_t kPadding = 64;
 
 class FileBytes {
   public:
@@ -81,40 +88,56 @@ class FileBytes {
             throw InputError(path.string(), "cannot read: " + error_text(error));
         }
         size_ = static_cast<std::size_t>(info.st_size);
-        if (size_ > 0) {
-            void* map = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
-            if (map != MAP_FAILED) {
-                map_ = map;
-            } else {
-                copy_.resize(size_);
-                std::size_t done = 0;
-                while (done < size_) {
-                    const ssize_t n = ::read(fd, copy_.data() + done, size_ - done);
-                    if (n < 0 && errno == EINTR) continue;
-                    if (n <= 0) {
-                        const int error = n < 0 ? errno : EIO;
-                        ::close(fd);
-                        throw InputError(path.string(), "cannot read: " + error_text(error));
-                    }
-                    done += static_cast<std::size_t>(n);
-                }
-            }
-        }
+        if (!map(fd)) read_all(fd, path);
         ::close(fd);
     }
     FileBytes(const FileBytes&) = delete;
     FileBytes& operator=(const FileBytes&) = delete;
     ~FileBytes() {
-        if (map_ != nullptr) ::munmap(map_, size_);
+        if (map_ != nullptr) ::munmap(map_, map_size_);
     }
 
-    const char* data() const { return map_ != nullptr ? static_cast<const char*>(map_) : copy_.data(); }
+    const char* data() const {
+        return map_ != nullptr ? static_cast<const char*>(map_) : copy_.data();
+    }
     std::size_t size() const { return size_; }
 
   private:
     static std::string error_text(int error) { return std::generic_category().message(error); }
 
+    // The file over the start of a zeroed anonymous mapping one page longer: the bytes after
+    // the file read as zeros, also when its size is a multiple of the page size.
+    bool map(int fd) {
+        const auto page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+        map_size_ = (size_ + page - 1) / page * page + page;
+        void* area = ::mmap(nullptr, map_size_, PROT_READ, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        if (area == MAP_FAILED) return false;
+        if (size_ > 0 && ::mmap(area, size_, PROT_READ, MAP_PRIVATE | MAP_FIXED | MAP_POPULATE, fd,
+                                0) == MAP_FAILED) {
+            ::munmap(area, map_size_);
+            return false;
+        }
+        map_ = area;
+        return true;
+    }
+
+    void read_all(int fd, const std::filesystem::path& path) {
+        copy_.assign(size_ + kPadding, '\0');
+        std::size_t done = 0;
+        while (done < size_) {
+            const ssize_t n = ::read(fd, copy_.data() + done, size_ - done);
+            if (n < 0 && errno == EINTR) continue;
+            if (n <= 0) {
+                const int error = n < 0 ? errno : EIO;
+                ::close(fd);
+                throw InputError(path.string(), "cannot read: " + error_text(error));
+            }
+            done += static_cast<std::size_t>(n);
+        }
+    }
+
     void* map_ = nullptr;
+    std::size_t map_size_ = 0;
     std::size_t size_ = 0;
     std::vector<char> copy_;
 };
@@ -213,8 +236,54 @@ bool is_digit(char c) {
     return static_cast<unsigned>(static_cast<unsigned char>(c) - '0') <= 9;
 }
 
+// Digits eight at a time (SWAR: the eight bytes as one little-endian integer).
+[[gnu::always_inline]] inline std::uint64_t load8(const char* p) {
+    std::uint64_t v;
+    std::memcpy(&v, p, 8);
+    return v;
+}
+
+// How many of the eight bytes are digits, counting from the first. (A byte's additions and
+// subtractions only carry into the bytes after it, which are not looked at once it is a
+// non-digit.)
+[[gnu::always_inline]] inline unsigned leading_digits(std::uint64_t v) {
+    const std::uint64_t outside =
+        ((v + 0x4646464646464646ull) | (v - 0x3030303030303030ull)) & 0x8080808080808080ull;
+    return outside == 0 ? 8 : static_cast<unsigned>(std::countr_zero(outside)) / 8;
+}
+
+// The value of the first n (1 to 8) digits: the others are shifted out and zeros (leading
+// digits of the number) shifted in, then the usual three multiply-and-shift steps.
+[[gnu::always_inline]] inline std::uint32_t digits_value(std::uint64_t v, unsigned n) {
+    std::uint64_t d = (v - 0x3030303030303030ull) << (8 * (8 - n));
+    d = d * 10 + (d >> 8);
+    d = ((d & 0x000000FF000000FFull) * 0x000F424000000064ull +
+         ((d >> 16) & 0x000000FF000000FFull) * 0x0000271000000001ull) >>
+        32;
+    return static_cast<std::uint32_t>(d);
+}
+
+constexpr std::uint64_t kPowersOf10[] = {1,      10,      100,      1000,     10000,
+                                         100000, 1000000, 10000000, 100000000};
+
+// Appends the digits at s to `value`, moving s past them; returns how many there were. The
+// value is only meaningful for at most 19 digits.
+[[gnu::always_inline]] inline int read_digits(const char*& s, std::uint64_t& value) {
+    int count = 0;
+    while (true) {
+        const std::uint64_t v = load8(s);
+        const unsigned n = leading_digits(v);
+        if (n == 0) return count;
+        value = value * kPowersOf10[n] + digits_value(v, n);
+        s += n;
+        count += static_cast<int>(n);
+        if (n < 8) return count;
+    }
+}
+
 // Powers of ten that float and double represent exactly.
-constexpr float kFloatPowers[] = {1e0f, 1e1f, 1e2f, 1e3f, 1e4f, 1e5f, 1e6f, 1e7f, 1e8f, 1e9f, 1e10f};
+constexpr float kFloatPowers[] = {1e0f, 1e1f, 1e2f, 1e3f, 1e4f, 1e5f,
+                                  1e6f, 1e7f, 1e8f, 1e9f, 1e10f};
 constexpr double kDoublePowers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
                                     1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
                                     1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
@@ -233,20 +302,20 @@ constexpr double kDoublePowers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e
         ++s;
     }
     std::uint64_t digits = 0;
-    int count = 0, exponent = 0;
-    for (; s != e && is_digit(*s); ++s, ++count) digits = digits * 10 + (*s - '0');
-    if (s != e && *s == '.') {
-        for (++s; s != e && is_digit(*s); ++s, ++count, --exponent)
-            digits = digits * 10 + (*s - '0');
+    int count = read_digits(s, digits), exponent = 0;
+    if (*s == '.') {
+        ++s;
+        exponent = -read_digits(s, digits);
+        count -= exponent;
     }
     if (count == 0 || count > 19) return false;
-    if (s != e && (*s == 'e' || *s == 'E')) {
+    if (*s == 'e' || *s == 'E') {
         ++s;
         bool negative_exponent = false;
-        if (s != e && (*s == '+' || *s == '-')) negative_exponent = *s++ == '-';
-        if (s == e || !is_digit(*s)) return false;
+        if (*s == '+' || *s == '-') negative_exponent = *s++ == '-';
+        if (!is_digit(*s)) return false;
         int written = 0;
-        for (; s != e && is_digit(*s); ++s) written = std::min(written * 10 + (*s - '0'), 100000);
+        for (; is_digit(*s); ++s) written = std::min(written * 10 + (*s - '0'), 100000);
         exponent += negative_exponent ? -written : written;
     }
     if (s != e && !is_blank(*s) && *s != '#') return false;
@@ -270,12 +339,8 @@ constexpr double kDoublePowers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e
     return true;
 }
 
-// One number: an optional sign, then what std::from_chars reads (decimal, exponent, nan, inf),
-// correctly rounded. The token must end at a blank, a '#' or the end of the line. A token
-// starting with '.' is refused: Assimp does not count it as a component.
-bool parse_float(const char*& q, const char* e, float& out) {
-    if (*q == '.') return false;
-    if (parse_plain_float(q, e, out)) return true;
+// parse_float when parse_plain_float cannot decide.
+[[gnu::noinline]] bool parse_float_slowly(const char*& q, const char* e, float& out) {
     const char* s = q;
     bool negative = false;
     if (*s == '-' || *s == '+') {
@@ -302,12 +367,20 @@ bool parse_float(const char*& q, const char* e, float& out) {
     return true;
 }
 
+// One number: an optional sign, then what std::from_chars reads (decimal, exponent, nan, inf),
+// correctly rounded. The token must end at a blank, a '#' or the end of the line. A token
+// starting with '.' is refused: Assimp does not count it as a component.
+[[gnu::always_inline]] inline bool parse_float(const char*& q, const char* e, float& out) {
+    if (*q == '.') return false;
+    return parse_plain_float(q, e, out) || parse_float_slowly(q, e, out);
+}
+
 // The numbers of a v, vt or vn statement up to the end of the line or a '#'. Returns how many
 // (at most max), or -1 if a token is not a number or there are more than max.
 int parse_floats(const char* q, const char* e, float* out, int max) {
     int count = 0;
     while (true) {
-        q = skip_blanks(q, e);
+        while (is_blank(*q)) ++q;
         if (q == e || *q == '#') return count;
         if (count == max || !parse_float(q, e, out[count])) return -1;
         ++count;
@@ -319,25 +392,23 @@ enum class IndexParse { Ok, Zero, Bad };
 // A face index: an optional '-', then 1 to 9 digits without a leading zero. (Assimp reads
 // indices with atoi and skips as many characters as the value has digits: "+1" or "01" would
 // be read twice.)
-[[gnu::always_inline]] inline IndexParse parse_index(const char*& q, const char* e,
-                                                     std::int32_t& out) {
-    bool negative = false;
-    if (q != e && *q == '-') {
-        negative = true;
-        ++q;
-    }
-    if (q == e || !is_digit(*q)) return IndexParse::Bad;
+[[gnu::always_inline]] inline IndexParse parse_index(const char*& q, std::int32_t& out) {
+    const bool negative = *q == '-';
+    q += negative;
+    if (!is_digit(*q)) return IndexParse::Bad;
     if (*q == '0') {
         ++q;
-        return q != e && is_digit(*q) ? IndexParse::Bad : IndexParse::Zero;
+        return is_digit(*q) ? IndexParse::Bad : IndexParse::Zero;
     }
-    std::int32_t value = *q++ - '0';
-    const char* const limit = q + 8;  // nine digits at most
-    for (; q != e && is_digit(*q); ++q) {
-        if (q == limit) return IndexParse::Bad;
-        value = value * 10 + (*q - '0');
+    const std::uint64_t v = load8(q);
+    const unsigned n = leading_digits(v);
+    std::uint32_t value = digits_value(v, n);
+    q += n;
+    if (n == 8 && is_digit(*q)) {
+        value = value * 10 + static_cast<unsigned>(*q++ - '0');
+        if (is_digit(*q)) return IndexParse::Bad;
     }
-    out = negative ? -value : value;
+    out = negative ? -static_cast<std::int32_t>(value) : static_cast<std::int32_t>(value);
     return IndexParse::Ok;
 }
 
@@ -350,7 +421,8 @@ std::int32_t encode_index(std::int32_t written, std::size_t count_before) {
 // The global 0-based index, or -1 when it is outside [0, total).
 std::int64_t resolve_index(std::int32_t raw, std::size_t prefix, std::size_t total) {
     std::int64_t index = raw;
-    if (raw < 0) index = static_cast<std::int64_t>(prefix) + (-1 - std::int64_t{raw}) - kRelativeBias;
+    if (raw < 0)
+        index = static_cast<std::int64_t>(prefix) + (-1 - std::int64_t{raw}) - kRelativeBias;
     return index >= 0 && index < static_cast<std::int64_t>(total) ? index : -1;
 }
 
@@ -358,16 +430,18 @@ class ChunkParser {
   public:
     explicit ChunkParser(Chunk& chunk) : c_(chunk) {}
 
+    // The parsers rely on the byte at a line's end `e` being readable and not part of any
+    // token: it is the line's '\n', the '\r' before it, or the zero padding after the file.
     void run() {
         const char* p = c_.begin;
         std::uint32_t line = 0;
         while (p < c_.end) {
-            const char* newline =
-                static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(c_.end - p)));
-            const char* next = newline != nullptr ? newline + 1 : c_.end;
-            const char* e = newline != nullptr ? newline : c_.end;
-            if (e > p && e[-1] == '\r') --e;
+            const char* newline = static_cast<const char*>(
+                std::memchr(p, '\n', static_cast<std::size_t>(c_.end - p)));
             ++c_.lines;
+            const char* e = newline != nullptr ? newline : c_.end;
+            const char* next = newline != nullptr ? newline + 1 : c_.end;
+            if (e > p && e[-1] == '\r') --e;
             if (!parse_line(p, e, line)) return;
             p = next;
             ++line;
@@ -397,53 +471,54 @@ class ChunkParser {
         const char* second = p + 1;
         const bool keyword_alone = second == e || is_blank(*second);
         switch (*p) {
-        case 'v':
-            if (keyword_alone) return vertex(second, e, line);
-            if (*second == 't' || *second == 'n') {
-                if (second + 1 != e && !is_blank(second[1]))
-                    return leave(line, "unknown statement starting with 'v" +
-                                           std::string(1, *second) + "'");
-                return *second == 't' ? uv(second + 1, e, line) : normal(second + 1, e, line);
+            case 'v':
+                if (keyword_alone) return vertex(second, e, line);
+                if (*second == 't' || *second == 'n') {
+                    if (second + 1 != e && !is_blank(second[1]))
+                        return leave(line, "unknown statement starting with 'v" +
+                                               std::string(1, *second) + "'");
+                    return *second == 't' ? uv(second + 1, e, line) : normal(second + 1, e, line);
+                }
+                return skip(p, e, line);  // vp and the like: ignored by Assimp too
+            case 'f':
+            case 'l':
+            case 'p':
+                if (!keyword_alone)
+                    return leave(line, "unknown statement read as a face by Assimp");
+                return face(*p, second, e, line);
+            case 'o':
+                if (!keyword_alone) return leave(line, "unknown statement read as 'o' by Assimp");
+                return object(second, e, line);
+            case 'g':
+                if (!keyword_alone) return leave(line, "unknown statement read as 'g' by Assimp");
+                return group(second, e, line);
+            case 'u': {
+                const char* word_end = skip_word(p, e);
+                if (std::string_view(p, word_end - p) != "usemtl") return skip(p, e, line);
+                return use_material(word_end, e, line);
             }
-            return skip(p, e, line);  // vp and the like: ignored by Assimp too
-        case 'f':
-        case 'l':
-        case 'p':
-            if (!keyword_alone) return leave(line, "unknown statement read as a face by Assimp");
-            return face(*p, second, e, line);
-        case 'o':
-            if (!keyword_alone) return leave(line, "unknown statement read as 'o' by Assimp");
-            return object(second, e, line);
-        case 'g':
-            if (!keyword_alone) return leave(line, "unknown statement read as 'g' by Assimp");
-            return group(second, e, line);
-        case 'u': {
-            const char* word_end = skip_word(p, e);
-            if (std::string_view(p, word_end - p) != "usemtl") return skip(p, e, line);
-            return use_material(word_end, e, line);
-        }
-        case 'm': {
-            const char* word_end = skip_word(p, e);
-            if (std::string_view(p, word_end - p) != "mtllib") return skip(p, e, line);
-            return library(word_end, e, line);
-        }
-        case 'c': {
-            const char* word_end = skip_word(p, e);
-            if (std::string_view(p, word_end - p) == "cstype")
-                return leave(line, "curves and surfaces (cstype)");
-            return skip(p, e, line);
-        }
-        case ' ':
-        case '\t': {
-            // Ignored by Assimp, but a material library named there would be looked for by
-            // the library check of the Assimp path: leave such a file to that path.
-            const char* word = skip_blanks(p, e);
-            if (std::string_view(word, skip_word(word, e) - word) == "mtllib")
-                return leave(line, "indented mtllib");
-            return skip(p, e, line);
-        }
-        default:
-            return skip(p, e, line);
+            case 'm': {
+                const char* word_end = skip_word(p, e);
+                if (std::string_view(p, word_end - p) != "mtllib") return skip(p, e, line);
+                return library(word_end, e, line);
+            }
+            case 'c': {
+                const char* word_end = skip_word(p, e);
+                if (std::string_view(p, word_end - p) == "cstype")
+                    return leave(line, "curves and surfaces (cstype)");
+                return skip(p, e, line);
+            }
+            case ' ':
+            case '\t': {
+                // Ignored by Assimp, but a material library named there would be looked for by
+                // the library check of the Assimp path: leave such a file to that path.
+                const char* word = skip_blanks(p, e);
+                if (std::string_view(word, skip_word(word, e) - word) == "mtllib")
+                    return leave(line, "indented mtllib");
+                return skip(p, e, line);
+            }
+            default:
+                return skip(p, e, line);
         }
     }
 
@@ -462,9 +537,9 @@ class ChunkParser {
                                      : "vertex with " + std::to_string(n) + " numbers");
         }
         if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
-            c_.non_finite_positions.emplace_back(
-                static_cast<std::uint32_t>(c_.positions.size() / 3), line);
+            c_.non_finite_positions.emplace_back(static_cast<std::uint32_t>(positions_), line);
         c_.positions.insert(c_.positions.end(), v, v + 3);
+        ++positions_;
         return true;
     }
 
@@ -472,24 +547,28 @@ class ChunkParser {
         float t[3];
         const int n = parse_floats(q, e, t, 3);
         if (n != 2 && n != 3) return leave(line, "texture coordinate that is not 2 or 3 numbers");
-        c_.uvs.push_back(t[0]);
-        c_.uvs.push_back(1.0f - t[1]);
+        // Assimp reads a non-finite texture coordinate as 0.
+        c_.uvs.push_back(std::isfinite(t[0]) ? t[0] : 0.0f);
+        c_.uvs.push_back(1.0f - (std::isfinite(t[1]) ? t[1] : 0.0f));
+        ++uvs_;
         return true;
     }
 
     bool normal(const char* q, const char* e, std::uint32_t line) {
         float n[3];
         if (parse_floats(q, e, n, 3) != 3) return leave(line, "normal that is not 3 numbers");
-        // As convert_mesh's copy_normals: usable when finite with a finite, non-zero length.
-        const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        // Exactly as convert_mesh's copy_normals: normalised in double, usable when finite
+        // with a finite, non-zero length.
+        const glm::dvec3 d(n[0], n[1], n[2]);
+        const double length = glm::length(d);
         if (std::isfinite(n[0]) && std::isfinite(n[1]) && std::isfinite(n[2]) &&
-            std::isfinite(length) && length > 0.0f) {
-            c_.normals.push_back(n[0] / length);
-            c_.normals.push_back(n[1] / length);
-            c_.normals.push_back(n[2] / length);
+            std::isfinite(length) && length > 0.0) {
+            const glm::vec3 unit(d / length);
+            c_.normals.insert(c_.normals.end(), {unit.x, unit.y, unit.z});
         } else {
             c_.normals.insert(c_.normals.end(), 3, std::nanf(""));
         }
+        ++normals_;
         return true;
     }
 
@@ -498,23 +577,23 @@ class ChunkParser {
         int form = -1;  // kHasUv | kHasNormal, the same for every corner
         std::size_t corners = 0;
         while (true) {
-            q = skip_blanks(q, e);
+            while (is_blank(*q)) ++q;
             if (q == e) break;
             std::int32_t index[3] = {0, 0, 0};
             int this_form = 0;
-            IndexParse parsed = parse_index(q, e, index[0]);
-            if (parsed == IndexParse::Ok && q != e && *q == '/') {
+            IndexParse parsed = parse_index(q, index[0]);
+            if (parsed == IndexParse::Ok && *q == '/') {
                 ++q;
-                if (q != e && *q == '/') {
+                if (*q == '/') {
                     ++q;
-                    parsed = parse_index(q, e, index[2]);
+                    parsed = parse_index(q, index[2]);
                     this_form = kHasNormal;
                 } else {
-                    parsed = parse_index(q, e, index[1]);
+                    parsed = parse_index(q, index[1]);
                     this_form = kHasUv;
-                    if (parsed == IndexParse::Ok && q != e && *q == '/') {
+                    if (parsed == IndexParse::Ok && *q == '/') {
                         ++q;
-                        parsed = parse_index(q, e, index[2]);
+                        parsed = parse_index(q, index[2]);
                         this_form = kHasUv | kHasNormal;
                     }
                 }
@@ -526,16 +605,16 @@ class ChunkParser {
             if (form < 0) form = this_form;
             if (this_form != form) return leave(line, "face whose corners have different forms");
             if (++corners > 0xFFFF) return leave(line, "face with more than 65535 corners");
-            c_.corner_v.push_back(encode_index(index[0], c_.positions.size() / 3));
+            c_.corner_v.push_back(encode_index(index[0], positions_));
             if (form & kHasUv) {
                 if (c_.corner_t.size() + 1 < c_.corner_v.size())
                     c_.corner_t.resize(c_.corner_v.size() - 1);
-                c_.corner_t.push_back(encode_index(index[1], c_.uvs.size() / 2));
+                c_.corner_t.push_back(encode_index(index[1], uvs_));
             }
             if (form & kHasNormal) {
                 if (c_.corner_n.size() + 1 < c_.corner_v.size())
                     c_.corner_n.resize(c_.corner_v.size() - 1);
-                c_.corner_n.push_back(encode_index(index[2], c_.normals.size() / 3));
+                c_.corner_n.push_back(encode_index(index[2], normals_));
             }
         }
         if (corners == 0) return true;  // an empty face: Assimp ignores it
@@ -548,11 +627,10 @@ class ChunkParser {
         if (kind != kPolygon && form != 0)
             return leave(line, "line or point element with texture or normal indices");
         if (kind == kLineElement && corners < 2) return leave(line, "line element with one vertex");
-        if ((form & kHasUv) && c_.uvs.empty() && !c_.uv_slot_without_uvs)
-            c_.uv_slot_without_uvs = line;
+        if ((form & kHasUv) && uvs_ == 0 && !c_.uv_slot_without_uvs) c_.uv_slot_without_uvs = line;
         c_.faces.push_back(Face{line, static_cast<std::uint32_t>(first),
-                                static_cast<std::uint16_t>(corners), static_cast<std::uint8_t>(kind),
-                                static_cast<std::uint8_t>(form)});
+                                static_cast<std::uint16_t>(corners),
+                                static_cast<std::uint8_t>(kind), static_cast<std::uint8_t>(form)});
         return true;
     }
 
@@ -598,12 +676,13 @@ class ChunkParser {
     }
 
     Chunk& c_;
+    std::size_t positions_ = 0, uvs_ = 0, normals_ = 0;  // read so far
 };
 
 // Line-aligned chunks of about `target` bytes.
 std::vector<Chunk> make_chunks(const char* data, std::size_t size) {
-    const std::size_t target = std::clamp<std::size_t>(size / 256, std::size_t{256} << 10,
-                                                       std::size_t{16} << 20);
+    const std::size_t target =
+        std::clamp<std::size_t>(size / 256, std::size_t{256} << 10, std::size_t{16} << 20);
     std::vector<Chunk> chunks;
     std::size_t at = 0;
     while (at < size) {
@@ -637,6 +716,12 @@ struct MeshPlan {
     std::uint32_t object = kNone;  // kNone: created with no current object, never output
     bool has_faces = false;
     std::size_t face_begin = 0, face_end = 0;  // global face numbers, l and p included
+    std::size_t triangles = 0;                 // once counted
+    bool uvs = false, normals = false;         // some polygon has uv or normal indices
+    // Also line or point elements: Assimp's SortByPType then copies the triangles' vertices
+    // into a mesh of their own, triangle by triangle, which orders a quad's corners from the
+    // one its triangles fan from.
+    bool mixed = false;
 };
 
 class Structure {
@@ -673,6 +758,7 @@ class Structure {
     void use_material(const std::string& name) {
         if (material_ == name) return;
         material_ = name;
+        known_.insert(name);  // Assimp invents a material for a name no library defined
         if (mesh_ == kNone ||
             (meshes[mesh_].material && *meshes[mesh_].material != name && meshes[mesh_].has_faces))
             create_mesh(name);
@@ -681,6 +767,15 @@ class Structure {
 
     std::vector<ObjectPlan> objects;
     std::vector<MeshPlan> meshes;
+
+    // Assimp's MTL reader makes each `newmtl` the current material, and gives each material it
+    // creates (a name not seen before) to the current mesh.
+    void load_library(const std::vector<std::string>& materials) {
+        for (const std::string& name : materials) {
+            if (known_.insert(name).second && mesh_ != kNone) meshes[mesh_].material = name;
+            material_ = name;
+        }
+    }
 
   private:
     void create_object(const std::string& name) {
@@ -700,6 +795,7 @@ class Structure {
     std::uint32_t object_ = kNone, mesh_ = kNone;
     std::optional<std::string> material_;
     std::string group_;
+    std::set<std::string> known_{AI_DEFAULT_MATERIAL_NAME};
 };
 
 // ------------------------------------------------------------------------------------------
@@ -775,30 +871,22 @@ struct Attributes {
 };
 
 struct MeshOutcome {
-    enum class Status { Ok, Error, Fallback } status = Status::Ok;
-    std::string what;
-    std::size_t line = 0;              // 1-based, 0 if none
-    std::uint32_t bad_position = 0;    // Error: the global position index
-    std::uint32_t bad_vertex = 0;      // Error: the mesh's vertex
     Mesh mesh;
+    // A non-finite position (convert_mesh's error): the global position and the mesh vertex.
+    std::optional<std::pair<std::uint32_t, std::uint32_t>> non_finite;
 };
 
+// Welding: for each position, its first vertex in the mesh inline, and the others (seams,
+// flat shading: the same position with other uvs or normals) in a list through `Link`s.
 struct Slot {
     std::uint32_t stamp = 0;  // which mesh wrote it
     std::uint32_t uv = 0, normal = 0;
     std::uint32_t vertex = 0;
+    std::uint32_t next = kNone;  // more vertices at this position
 };
 
-struct KeyHash {
-    std::size_t operator()(const std::array<std::uint32_t, 3>& k) const {
-        std::uint64_t h = 0x9E3779B97F4A7C15ull;
-        for (std::uint32_t v : k) {
-            h ^= v;
-            h *= 0xBF58476D1CE4E5B9ull;
-            h ^= h >> 31;
-        }
-        return static_cast<std::size_t>(h);
-    }
+struct Link {
+    std::uint32_t uv, normal, vertex, next;
 };
 
 class MeshBuilder {
@@ -815,9 +903,17 @@ class MeshBuilder {
         Mesh& mesh = out.mesh;
         mesh.name = plan.name;
         std::vector<Slot>& slots = slots_.local();
-        std::unordered_map<std::array<std::uint32_t, 3>, std::uint32_t, KeyHash> others;
+        std::vector<Link> links;
+        mesh.indices.reserve(plan.triangles * 3);
+        const std::size_t vertices = std::min(plan.triangles * 3, a_.positions.size());
+        mesh.positions.reserve(vertices);
+        if (plan.uvs) mesh.uvs.reserve(vertices);
+        if (plan.normals) mesh.normals.reserve(vertices);
+        // Corners without uv or normal indices in a mesh that has them: Assimp leaves those
+        // zero, which FlipUVs makes (0, 1), and a zero normal is replaced by a computed one.
+        constexpr std::uint32_t kAbsent = kNone - 1;
+        bool absent = false;
 
-        int attributes = -1;
         std::size_t chunk = static_cast<std::size_t>(
             std::upper_bound(face_prefix_.begin(), face_prefix_.end(), plan.face_begin) -
             face_prefix_.begin() - 1);
@@ -826,81 +922,93 @@ class MeshBuilder {
             const Chunk& c = chunks_[chunk];
             const Face& face = c.faces[f - face_prefix_[chunk]];
             if (face.kind != kPolygon) continue;
-            if (attributes < 0) {
-                attributes = face.attributes;
-            } else if (face.attributes != attributes) {
-                // Assimp gives the other corners zero uvs or normals.
-                out.status = MeshOutcome::Status::Fallback;
-                out.what = "mesh with and without texture or normal indices";
-                out.line = c.first_line + face.line + 1;
-                return out;
+            const bool has_uv = face.attributes & kHasUv, has_normal = face.attributes & kHasNormal;
+            absent |= (plan.uvs && !has_uv) || (plan.normals && !has_normal);
+            // Assimp's split of a quad: a fan from this corner.
+            unsigned fan = 0;
+            if (face.corners == 4) {
+                const glm::vec3* corner_positions[4];
+                for (unsigned k = 0; k < 4; ++k)
+                    corner_positions[k] =
+                        &a_.positions[static_cast<std::uint32_t>(c.corner_v[face.first + k])];
+                fan = quad_fan_corner(corner_positions);
             }
-            const bool has_uv = attributes & kHasUv, has_normal = attributes & kHasNormal;
+            const unsigned first_corner = plan.mixed ? fan : 0;  // see MeshPlan::mixed
             std::uint32_t ids[4];
-            const glm::vec3* corner_positions[4];
-            for (unsigned k = 0; k < face.corners; ++k) {
+            for (unsigned j = 0; j < face.corners; ++j) {
+                const unsigned k = (first_corner + j) % face.corners;
                 const std::size_t corner = face.first + k;
                 const auto v = static_cast<std::uint32_t>(c.corner_v[corner]);
                 const auto t = has_uv ? static_cast<std::uint32_t>(c.corner_t[corner]) : 0u;
                 const auto n = has_normal ? static_cast<std::uint32_t>(c.corner_n[corner]) : 0u;
-                corner_positions[k] = &a_.positions[v];
                 const std::uint32_t kv = a_.first_position.empty() ? v : a_.first_position[v];
-                const std::uint32_t kt = !has_uv || a_.first_uv.empty() ? t : a_.first_uv[t];
-                const std::uint32_t kn =
-                    !has_normal || a_.first_normal.empty() ? n : a_.first_normal[n];
+                const std::uint32_t kt = !plan.uvs             ? 0u
+                                         : !has_uv             ? kAbsent
+                                         : a_.first_uv.empty() ? t
+                                                               : a_.first_uv[t];
+                const std::uint32_t kn = !plan.normals             ? 0u
+                                         : !has_normal             ? kAbsent
+                                         : a_.first_normal.empty() ? n
+                                                                   : a_.first_normal[n];
                 Slot& slot = slots[kv];
                 std::uint32_t id = 0;
                 bool created = false;
                 if (slot.stamp != stamp) {
                     id = static_cast<std::uint32_t>(mesh.positions.size());
-                    slot = Slot{stamp, kt, kn, id};
+                    slot = Slot{stamp, kt, kn, id, kNone};
                     created = true;
                 } else if (slot.uv == kt && slot.normal == kn) {
                     id = slot.vertex;
                 } else {
-                    const auto [it, inserted] = others.try_emplace(
-                        {kv, kt, kn}, static_cast<std::uint32_t>(mesh.positions.size()));
-                    id = it->second;
-                    created = inserted;
+                    std::uint32_t l = slot.next;
+                    while (l != kNone && (links[l].uv != kt || links[l].normal != kn))
+                        l = links[l].next;
+                    if (l != kNone) {
+                        id = links[l].vertex;
+                    } else {
+                        id = static_cast<std::uint32_t>(mesh.positions.size());
+                        links.push_back(Link{kt, kn, id, slot.next});
+                        slot.next = static_cast<std::uint32_t>(links.size() - 1);
+                        created = true;
+                    }
                 }
                 if (created) {
                     const glm::vec3& p = a_.positions[v];
                     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-                        out.status = MeshOutcome::Status::Error;
-                        out.what = "non-finite vertex coordinates";
-                        out.bad_position = v;
-                        out.bad_vertex = id;
+                        out.non_finite = {v, id};
                         return out;
                     }
                     mesh.positions.push_back(p);
-                    if (has_uv) mesh.uvs.push_back(a_.uvs[t]);
-                    if (has_normal) mesh.normals.push_back(a_.normals[n]);
+                    if (plan.uvs) mesh.uvs.push_back(has_uv ? a_.uvs[t] : glm::vec2(0.0f, 1.0f));
+                    if (plan.normals)
+                        mesh.normals.push_back(has_normal ? a_.normals[n]
+                                                          : glm::vec3(std::nanf("")));
                 }
                 ids[k] = id;
             }
             if (face.corners == 3) {
-                mesh.indices.insert(mesh.indices.end(), {ids[0], ids[1], ids[2]});
+                mesh.indices.push_back(ids[0]);
+                mesh.indices.push_back(ids[1]);
+                mesh.indices.push_back(ids[2]);
             } else {
-                const unsigned s = quad_fan_corner(corner_positions);
-                mesh.indices.insert(mesh.indices.end(), {ids[s], ids[(s + 1) % 4],
-                                                         ids[(s + 2) % 4], ids[s],
-                                                         ids[(s + 2) % 4], ids[(s + 3) % 4]});
+                for (unsigned k : {fan, fan + 1, fan + 2, fan, fan + 2, fan + 3})
+                    mesh.indices.push_back(ids[k % 4]);
             }
         }
-        for (const glm::vec2& t : mesh.uvs) {
-            if (!std::isfinite(t.x) || !std::isfinite(t.y)) {
-                out.status = MeshOutcome::Status::Fallback;  // Assimp's path warns and zeroes
-                out.what = "non-finite texture coordinates";
-                return out;
-            }
+
+        // As convert_mesh: unusable normals are replaced by normals computed over shared
+        // positions (the same whether computed on Assimp's per-corner vertices or these).
+        // Vertices that become equal are then welded, as welding after that replacement does.
+        // (Texture coordinates are always finite here: see uv().)
+        bool reweld = absent;
+        if (std::any_of(mesh.normals.begin(), mesh.normals.end(),
+                        [](const glm::vec3& n) { return std::isnan(n.x); })) {
+            const std::vector<glm::vec3> computed = normals_over_shared_positions(mesh);
+            for (std::size_t i = 0; i < mesh.normals.size(); ++i)
+                if (std::isnan(mesh.normals[i].x)) mesh.normals[i] = computed[i];
+            reweld = true;
         }
-        for (const glm::vec3& n : mesh.normals) {
-            if (std::isnan(n.x)) {
-                out.status = MeshOutcome::Status::Fallback;  // Assimp's path computes those
-                out.what = "zero or non-finite normals";
-                return out;
-            }
-        }
+        if (reweld) weld_identical_vertices(mesh);
         if (mesh.normals.empty()) mesh.normals = normals_over_shared_positions(mesh);
         update_bounds(mesh);
         return out;
@@ -930,37 +1038,62 @@ bool is_file(const std::filesystem::path& p) {
     return std::filesystem::is_regular_file(p, ec);
 }
 
-struct LibraryStatement {
+// What Assimp reads for one mtllib statement: the library as named (relative to the OBJ's
+// directory), else "<obj name>.mtl", else nothing; and the materials it defines, in order.
+struct LibraryLoad {
     std::string name;
-    std::optional<std::filesystem::path> file;  // what Assimp reads for it, if anything
+    std::optional<std::filesystem::path> file;
+    bool substitute = false;  // file is "<obj name>.mtl"
+    std::vector<std::string> materials;
 };
+
+// The `newmtl` names of an MTL file as both Assimp's MTL reader and the Assimp path's library
+// check take them. nullopt where they could differ ("Newmtl", an indented newmtl, a lone CR),
+// or where Assimp would apply a statement before the first newmtl to the current material.
+std::optional<std::vector<std::string>> library_materials(const std::filesystem::path& mtl) {
+    std::ifstream in(mtl, std::ios::binary);
+    std::string line, name;
+    std::vector<std::string> names;
+    while (std::getline(in, line)) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (has_control(line.data(), line.data() + line.size())) return std::nullopt;
+        if (line.empty() || line[0] == '#') continue;
+        const bool checked = directive(line, "newmtl", name);
+        const bool read = line.size() >= 2 && (line[0] == 'n' || line[0] == 'N') && line[1] == 'e';
+        if (checked != read) return std::nullopt;
+        if (read)
+            names.push_back(name);
+        else if (names.empty() && !is_blank(line[0]))
+            return std::nullopt;
+    }
+    return names;
+}
 
 class Materials {
   public:
     Materials(const std::filesystem::path& obj_path, const std::vector<const Event*>& events,
-              Scene& scene, std::vector<std::string>& warnings)
-        : path_(obj_path), events_(events), scene_(scene), warnings_(warnings) {
-        const std::filesystem::path dir = obj_path.parent_path();
-        std::filesystem::path fallback = obj_path;
-        fallback.replace_extension(".mtl");
+              const std::vector<LibraryLoad>& libraries, Scene& scene,
+              std::vector<std::string>& warnings)
+        : path_(obj_path),
+          events_(events),
+          libraries_(libraries),
+          scene_(scene),
+          warnings_(warnings) {
+        // As scan_obj_material_libraries: each library name once.
+        std::filesystem::path substitute = obj_path;
+        substitute.replace_extension(".mtl");
         std::set<std::string> seen;
-        for (const Event* e : events_) {
-            if (e->kind != EventKind::Library) continue;
-            const std::filesystem::path candidate = dir / e->text;
-            std::optional<std::filesystem::path> file;
-            if (is_file(candidate)) file = candidate;
-            else if (is_file(fallback)) file = fallback;
-            libraries_.push_back(LibraryStatement{e->text, file});
-            if (!seen.insert(e->text).second) continue;
-            if (file == candidate) {
-                read_material_names(candidate);
-            } else if (file) {
-                warnings_.push_back("material library '" + e->text + "' not found, using '" +
-                                    fallback.filename().string() + "'");
+        for (const LibraryLoad& l : libraries_) {
+            if (!seen.insert(l.name).second) continue;
+            if (l.file && !l.substitute) {
+                defined_.insert(l.materials.begin(), l.materials.end());
+            } else if (l.file) {
+                warnings_.push_back("material library '" + l.name + "' not found, using '" +
+                                    substitute.filename().string() + "'");
                 missing_library_ = true;
-                read_material_names(fallback);
+                defined_.insert(l.materials.begin(), l.materials.end());
             } else {
-                warnings_.push_back("material library '" + e->text +
+                warnings_.push_back("material library '" + l.name +
                                     "' not found, using the default material");
                 missing_library_ = true;
             }
@@ -995,13 +1128,6 @@ class Materials {
     }
 
   private:
-    void read_material_names(const std::filesystem::path& mtl) {
-        std::ifstream in(mtl);
-        std::string line, name;
-        while (std::getline(in, line))
-            if (directive(line, "newmtl", name)) defined_.insert(name);
-    }
-
     // The material as Assimp's OBJ importer makes it: it reads the libraries from a generated
     // OBJ that repeats the file's mtllib (resolved) and usemtl statements in order.
     const aiMaterial* assimp_material(const std::string& name) {
@@ -1010,8 +1136,9 @@ class Materials {
             std::string text;
             for (const Event* e : events_) {
                 if (e->kind == EventKind::Library) {
-                    const LibraryStatement& l = libraries_[library++];
-                    if (l.file) text += "mtllib " + std::filesystem::absolute(*l.file).string() + "\n";
+                    const LibraryLoad& l = libraries_[library++];
+                    if (l.file)
+                        text += "mtllib " + std::filesystem::absolute(*l.file).string() + "\n";
                 } else if (e->kind == EventKind::Material) {
                     text += "usemtl " + e->text + "\n";
                 }
@@ -1034,9 +1161,9 @@ class Materials {
 
     std::filesystem::path path_;
     const std::vector<const Event*>& events_;
+    const std::vector<LibraryLoad>& libraries_;
     Scene& scene_;
     std::vector<std::string>& warnings_;
-    std::vector<LibraryStatement> libraries_;
     std::set<std::string> defined_;
     bool missing_library_ = false;
     std::map<std::string, std::uint32_t> map_;
@@ -1052,17 +1179,14 @@ class Materials {
 std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
                                           const LoadOptions& options) {
     const std::string file = path.string();
-    auto T0 = std::chrono::steady_clock::now();
-    auto TT = [&](const char* what) { if (getenv("OBJT")) { timespec ts; clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts); fprintf(stderr, "%s %.1f ms (cpu %.1f)\n", what, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - T0).count(), ts.tv_sec * 1e3 + ts.tv_nsec / 1e6); } };
     const FileBytes bytes(path);
-    TT("map");
     if (bytes.size() == 0) throw InputError(file, "empty file");
+    if (bytes.size() < 16) return ObjFallback{0, "Assimp refuses OBJ files under 16 bytes"};
 
     // Stage 1.
     std::vector<Chunk> chunks = make_chunks(bytes.data(), bytes.size());
     tbb::parallel_for(std::size_t{0}, chunks.size(),
                       [&](std::size_t k) { ChunkParser(chunks[k]).run(); });
-    TT("parse");
 
     const std::size_t n = chunks.size();
     std::vector<std::size_t> v_prefix(n + 1), t_prefix(n + 1), n_prefix(n + 1), face_prefix(n + 1);
@@ -1095,11 +1219,17 @@ std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
     std::vector<Resolution> resolutions(n);
     tbb::parallel_for(std::size_t{0}, n, [&](std::size_t k) {
         Chunk& c = chunks[k];
-        std::memcpy(attributes.positions.data() + v_prefix[k], c.positions.data(),
-                    c.positions.size() * sizeof(float));
-        std::memcpy(attributes.uvs.data() + t_prefix[k], c.uvs.data(), c.uvs.size() * sizeof(float));
-        std::memcpy(attributes.normals.data() + n_prefix[k], c.normals.data(),
-                    c.normals.size() * sizeof(float));
+        // The arrays may be empty: memcpy from a null data() is undefined even for 0 bytes
+        // (UBSan, found by fuzz_load_obj).
+        if (!c.positions.empty())
+            std::memcpy(attributes.positions.data() + v_prefix[k], c.positions.data(),
+                        c.positions.size() * sizeof(float));
+        if (!c.uvs.empty())
+            std::memcpy(attributes.uvs.data() + t_prefix[k], c.uvs.data(),
+                        c.uvs.size() * sizeof(float));
+        if (!c.normals.empty())
+            std::memcpy(attributes.normals.data() + n_prefix[k], c.normals.data(),
+                        c.normals.size() * sizeof(float));
         Resolution& r = resolutions[k];
         if (c.uv_slot_without_uvs && t_prefix[k] == 0)
             r.fallback = {*c.uv_slot_without_uvs,
@@ -1111,11 +1241,11 @@ std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
                 if (v < 0) {
                     const std::int32_t raw = c.corner_v[corner];
                     r.error = {face.line,
-                               raw >= 0 ? "vertex index out of range (" + std::to_string(raw + 1) +
-                                              "; the file has " + std::to_string(total_v) +
-                                              " vertices)"
-                                        : "vertex index out of range (a negative index before "
-                                          "the first vertex)"};
+                               raw >= 0
+                                   ? "vertex index out of range (" + std::to_string(raw + 1) +
+                                         "; the file has " + std::to_string(total_v) + " vertices)"
+                                   : "vertex index out of range (a negative index before "
+                                     "the first vertex)"};
                     return;
                 }
                 c.corner_v[corner] = static_cast<std::int32_t>(v);
@@ -1135,10 +1265,10 @@ std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
     });
     for (std::size_t k = 0; k < n; ++k) {
         if (resolutions[k].error)
-            throw InputError(file, "line " +
-                                       std::to_string(chunks[k].first_line +
-                                                      resolutions[k].error->first + 1) +
-                                       ": " + resolutions[k].error->second);
+            throw InputError(
+                file, "line " +
+                          std::to_string(chunks[k].first_line + resolutions[k].error->first + 1) +
+                          ": " + resolutions[k].error->second);
     }
     for (std::size_t k = 0; k < n; ++k) {
         if (resolutions[k].fallback)
@@ -1146,19 +1276,61 @@ std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
                                resolutions[k].fallback->second};
     }
 
-    TT("resolve");
-    // Stage 3.
-    Structure structure;
+    // Stage 3. The material libraries first: reading them changes Assimp's current material.
     std::vector<const Event*> events;
-    for (std::size_t k = 0; k < n; ++k) {
-        for (const Event& e : chunks[k].events) {
-            events.push_back(&e);
-            structure.faces_until(face_prefix[k] + e.faces_before);
-            switch (e.kind) {
-            case EventKind::Object: structure.object(e.text); break;
-            case EventKind::Group: structure.group(e.text); break;
-            case EventKind::Material: structure.use_material(e.text); break;
-            case EventKind::Library: break;
+    std::vector<LibraryLoad> libraries;
+    {
+        const std::filesystem::path dir = path.parent_path();
+        std::filesystem::path substitute = path;
+        substitute.replace_extension(".mtl");
+        std::map<std::filesystem::path, std::vector<std::string>> read;
+        for (std::size_t k = 0; k < n; ++k) {
+            for (const Event& e : chunks[k].events) {
+                events.push_back(&e);
+                if (e.kind != EventKind::Library) continue;
+                LibraryLoad l{e.text, std::nullopt, false, {}};
+                if (is_file(dir / e.text)) {
+                    l.file = dir / e.text;
+                } else if (is_file(substitute)) {
+                    l.file = substitute;
+                    l.substitute = true;
+                }
+                if (l.file) {
+                    auto it = read.find(*l.file);
+                    if (it == read.end()) {
+                        std::optional<std::vector<std::string>> names = library_materials(*l.file);
+                        if (!names)
+                            return ObjFallback{chunks[k].first_line + e.line + 1,
+                                               "material library " + l.file->string() +
+                                                   " that Assimp may read differently"};
+                        it = read.emplace(*l.file, std::move(*names)).first;
+                    }
+                    l.materials = it->second;
+                }
+                libraries.push_back(std::move(l));
+            }
+        }
+    }
+    Structure structure;
+    {
+        std::size_t library = 0;
+        for (std::size_t k = 0; k < n; ++k) {
+            for (const Event& e : chunks[k].events) {
+                structure.faces_until(face_prefix[k] + e.faces_before);
+                switch (e.kind) {
+                    case EventKind::Object:
+                        structure.object(e.text);
+                        break;
+                    case EventKind::Group:
+                        structure.group(e.text);
+                        break;
+                    case EventKind::Material:
+                        structure.use_material(e.text);
+                        break;
+                    case EventKind::Library:
+                        structure.load_library(libraries[library++].materials);
+                        break;
+                }
             }
         }
     }
@@ -1179,10 +1351,17 @@ std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
             for (std::size_t f = plan.face_begin; f < plan.face_end; ++f) {
                 while (f >= face_prefix[k + 1]) ++k;
                 const Face& face = chunks[k].faces[f - face_prefix[k]];
-                if (face.kind == kPolygon) mesh_triangles += face.corners - 2u;
+                if (face.kind != kPolygon) {
+                    structure.meshes[m].mixed = true;
+                    continue;
+                }
+                mesh_triangles += face.corners - 2u;
+                structure.meshes[m].uvs |= (face.attributes & kHasUv) != 0;
+                structure.meshes[m].normals |= (face.attributes & kHasNormal) != 0;
             }
             if (mesh_triangles == 0) continue;
             triangles += mesh_triangles;
+            structure.meshes[m].triangles = mesh_triangles;
             output.push_back(m);
         }
     }
@@ -1191,7 +1370,6 @@ std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
         throw InputError(file, "too many triangles (" + std::to_string(triangles) + ", limit " +
                                    std::to_string(options.max_triangles) + ")");
 
-    TT("structure");
     // Stage 4.
     bool uses_uvs = false, uses_normals = false;
     for (const Chunk& c : chunks) {
@@ -1206,7 +1384,8 @@ std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
                 first_equal_values<3>(&attributes.positions.data()->x, total_v);
         },
         [&] {
-            if (uses_uvs) attributes.first_uv = first_equal_values<2>(&attributes.uvs.data()->x, total_t);
+            if (uses_uvs)
+                attributes.first_uv = first_equal_values<2>(&attributes.uvs.data()->x, total_t);
         },
         [&] {
             if (uses_normals)
@@ -1214,36 +1393,32 @@ std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
                     first_equal_values<3>(&attributes.normals.data()->x, total_n);
         });
 
-    TT("canonical");
     const MeshBuilder builder(chunks, face_prefix, attributes);
     std::vector<MeshOutcome> built(output.size());
     tbb::parallel_for(std::size_t{0}, output.size(), [&](std::size_t i) {
         built[i] = builder.build(structure.meshes[output[i]], static_cast<std::uint32_t>(i + 1));
     });
     for (std::size_t i = 0; i < built.size(); ++i) {
-        const MeshOutcome& b = built[i];
-        if (b.status == MeshOutcome::Status::Fallback) return ObjFallback{b.line, b.what};
-        if (b.status == MeshOutcome::Status::Error) {
-            // The line of the `v` statement.
-            const std::size_t k = static_cast<std::size_t>(
-                std::upper_bound(v_prefix.begin(), v_prefix.end(), b.bad_position) -
-                v_prefix.begin() - 1);
-            std::size_t line = 0;
-            for (const auto& [index, local_line] : chunks[k].non_finite_positions)
-                if (v_prefix[k] + index == b.bad_position) line = chunks[k].first_line + local_line + 1;
-            const std::string& name = structure.meshes[output[i]].name;
-            throw InputError(file, "line " + std::to_string(line) + ": " + b.what + " (mesh " +
-                                       (name.empty() ? "#" + std::to_string(i) : name) +
-                                       ", vertex " + std::to_string(b.bad_vertex) + ")");
-        }
+        if (!built[i].non_finite) continue;
+        // The first mesh with one, as convert_mesh reports it, and the line of its `v`.
+        const auto [position, vertex] = *built[i].non_finite;
+        const std::size_t k = static_cast<std::size_t>(
+            std::upper_bound(v_prefix.begin(), v_prefix.end(), position) - v_prefix.begin() - 1);
+        std::size_t line = 0;
+        for (const auto& [index, local_line] : chunks[k].non_finite_positions)
+            if (v_prefix[k] + index == position) line = chunks[k].first_line + local_line + 1;
+        const std::string& name = structure.meshes[output[i]].name;
+        throw InputError(file, "line " + std::to_string(line) +
+                                   ": non-finite vertex coordinates (mesh " +
+                                   (name.empty() ? "#" + std::to_string(i) : name) + ", vertex " +
+                                   std::to_string(vertex) + ")");
     }
 
-    TT("meshes");
     // Stage 5.
     Scene scene;
     scene.source = file;
     std::vector<std::string> warnings;
-    Materials materials(path, events, scene, warnings);
+    Materials materials(path, events, libraries, scene, warnings);
     for (std::size_t i = 0; i < built.size(); ++i) {
         const MeshPlan& plan = structure.meshes[output[i]];
         const std::optional<std::uint32_t> material = materials.index_of(plan.material);
@@ -1257,8 +1432,8 @@ std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
         scene.meshes.push_back(std::move(mesh));
         scene.instances.push_back(std::move(instance));
     }
-    for (const std::string& w : warnings) scene.warnings.push_back(file + ": " + w);
-    TT("materials");
+    // One line each, as load_scene_with_assimp makes them.
+    for (const std::string& w : warnings) scene.warnings.push_back(file + ": " + one_line(w));
     return scene;
 }
 

@@ -14,12 +14,14 @@ inline std::string_view trim(std::string_view s) {
     return s;
 }
 
-// Messages are one line ("FILE: cause"): Assimp's may span several.
+// Messages are one line ("FILE: cause"): Assimp's may span several, and stb_image's can quote
+// bytes of the file ("\x89\n\x1a\n PNG chunk not known"): other control characters become '?'.
 inline std::string one_line(std::string_view s) {
     std::string out;
     bool space = false;
     for (char c : trim(s)) {
         if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+        if ((c >= 0 && c < ' ') || c == 0x7f) c = '?';
         if (c == ' ' && space) continue;
         space = c == ' ';
         out.push_back(c);

@@ -1,5 +1,7 @@
 #include "io/texture_loader.hpp"
 
+#include "io/text_util.hpp"
+
 #include <zraster/error.hpp>
 #include <zraster/image_io.hpp>
 
@@ -71,7 +73,7 @@ std::shared_ptr<const Texture> TextureLoader::load_embedded(const std::string& r
                 &stbi_image_free);
             if (!pixels) {
                 const char* reason = stbi_failure_reason();
-                throw std::invalid_argument(reason ? reason : "unknown error");
+                throw std::invalid_argument(reason ? one_line(reason) : "unknown error");
             }
             result = make_texture(w, h, {pixels.get(), static_cast<std::size_t>(w) * h * 4});
         } else {

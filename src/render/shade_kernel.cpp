@@ -142,8 +142,10 @@ bool phong_kernel_applies(const LightingModel& model, const Material& material) 
     if (model.lights.size() > std::size_t(kMaxKernelLights)) return false;
     for (const Light& light : model.lights)
         if (light.type != Light::Type::Directional) return false;
-    const int n = static_cast<int>(material.shininess);
-    return static_cast<float>(n) == material.shininess && n >= 0 && n <= kMaxIntegerShininess;
+    // Range first: converting an out-of-range float (1e30, inf, NaN) to int is undefined.
+    const float s = material.shininess;
+    if (!(s >= 0.0f && s <= static_cast<float>(kMaxIntegerShininess))) return false;
+    return static_cast<float>(static_cast<int>(s)) == s;
 }
 
 PhongConstants make_phong_constants(const LightingModel& model, const Material& material,

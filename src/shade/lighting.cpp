@@ -32,9 +32,12 @@ float positive_part(float x) {
 }  // namespace
 
 float specular_power(float x, float shininess) {
-    const int n = static_cast<int>(shininess);
-    if (static_cast<float>(n) != shininess || n < 0 || n > kMaxIntegerShininess)
+    // Range first: converting a float outside int's range (1e30, inf, NaN) to int is undefined
+    // (found by fuzz_pipeline).
+    if (!(shininess >= 0.0f && shininess <= static_cast<float>(kMaxIntegerShininess)))
         return std::pow(x, shininess);
+    const int n = static_cast<int>(shininess);
+    if (static_cast<float>(n) != shininess) return std::pow(x, shininess);
     // Exponentiation by squaring: the same multiplications in the scalar and SIMD paths.
     float result = 1.0f, base = x;
     for (int e = n; e > 0; e >>= 1) {

@@ -265,9 +265,9 @@ TEST(Manifest, EveryMeshIsCovered) {
     const auto manifest = read_manifest();
     EXPECT_EQ(manifest.size(), std::size(kCases) + kMustFail.size());
     for (const auto& [file, row] : manifest) {
-        const bool covered =
-            kMustFail.contains(file) || std::any_of(std::begin(kCases), std::end(kCases),
-                                                    [&](const Case& c) { return c.file == file; });
+        const bool covered = kMustFail.contains(file) ||
+                             std::any_of(std::begin(kCases), std::end(kCases),
+                                         [&file = file](const Case& c) { return c.file == file; });
         EXPECT_TRUE(covered) << file << " has no expectation here";
     }
 }

@@ -54,6 +54,15 @@ void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
     cmd.add_option("--size", a.size, "Image size WIDTHxHEIGHT")->capture_default_str();
     cmd.add_option("--max-pixels", a.max_pixels,
                    "Refuse images of more pixels than this (width * height)")
+        // Digits only: CLI11 reads "-5" into an unsigned as 2^64 - 5, no limit at all.
+        ->check(
+            [](const std::string& text) {
+                const bool ok = !text.empty() && text.size() <= 19 &&
+                                text.find_first_not_of("0123456789") == std::string::npos &&
+                                text.find_first_not_of('0') != std::string::npos;
+                return ok ? std::string() : "expected a positive whole number, got '" + text + "'";
+            },
+            "POSITIVE")
         ->capture_default_str();
     cmd.add_option("--threads", a.threads, "Worker threads (0: all cores)")->capture_default_str();
     cmd.add_option("--eye", a.eye, "Camera position X,Y,Z (default: frame the bounding sphere)");
@@ -351,8 +360,7 @@ int run_render(const RenderArguments& a) {
                    "{:.6g} far {:.6g}\n",
                    s.camera.eye.x, s.camera.eye.y, s.camera.eye.z, s.camera.target.x,
                    s.camera.target.y, s.camera.target.z, s.camera.near, s.camera.far);
-        fmt::print("  wall time: load {:.1f} ms, camera and render {:.1f} ms, write outputs "
-                   "{:.1f} ms\n",
+        fmt::print("  wall time: load {:.1f} ms, camera and render {:.1f} ms, write {:.1f} ms\n",
                    load_ms, render_ms, write_ms);
     }
     return kExitOk;

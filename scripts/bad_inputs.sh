@@ -1,0 +1,145 @@
+#!/usr/bin/env bash
+# Feeds the built zraster one bad input of each kind and prints a Markdown table: the input, the
+# command, the exit status, the message on stderr (the actual text) and whether anything was left
+# at the output path (it must be nothing). RELIABILITY.md holds its output.
+#
+#   bash scripts/bad_inputs.sh            (uses $ZRASTER_BIN, default build/zraster; builds it if
+#                                          missing)
+# Exits non-zero if a failing run exited other than 2, printed other than one line, or left a
+# file behind.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+zraster=${ZRASTER_BIN:-$root/build/zraster}
+[ -x "$zraster" ] || bash "$root/scripts/build.sh" >/dev/null
+shared=$root/../shared/data/meshes
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+
+# Fixture files, each a few bytes.
+tri='v 0 0 0\nv 1 0 0\nv 0 1 0\n'
+printf "${tri}f 1 2 7\n" >index.obj
+printf 'v 0 0 0\nv 1 0 0\nv nan 0 0\nf 1 2 3\n' >nan.obj
+printf 'v 0 0 0\nv 1e999 0 0\nv 0 1 0\nf 1 2 3\n' >inf.obj
+printf "${tri}l 1 2\np 3\n" >lines.obj
+printf "$tri" >vertices.obj
+printf "mtllib nowhere.mtl\n${tri}usemtl m\nf 1 2 3\n" >nomtl.obj
+: >empty.obj
+mkdir folder.obj outdir.png
+head -c 4096 /dev/urandom >garbage.xyzzy
+ply_head='ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n'
+printf "${ply_head}element face 1099511627776\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n" >faces2e40.ply
+printf 'ply\nformat binary_little_endian 1.0\nelement vertex 300000000\nproperty float x\nproperty float y\nproperty float z\nend_header\n0123456789ab' >vertices3e8.ply
+printf "${ply_head}element face 1\nproperty list uchar int vertex_indices\n" >noend.ply
+printf "${ply_head}element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n" >index.ply
+printf 'ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x80\x3f\0\0\0\0\0\0' >truncated.ply
+printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 1 2\n' >truncated-ascii.stl
+{ head -c 80 /dev/zero; printf '\x02\0\0\0'; head -c 60 /dev/zero; } >truncated-binary.stl
+{ head -c 80 /dev/zero; printf '\xff\xff\xff\xff'; head -c 50 /dev/zero; } >facets2e32.stl
+printf 'OFF\n3 1099511627776 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' >faces2e40.off
+printf 'OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' >short.off
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n0\nx\n' >zeroface.off
+printf 'OFF4294967295\n3 2 0\n0 0 0\n' >glued.off
+printf '{"asset":{"version":"2.0"},"meshes":[{"primitives":[' >broken.gltf
+b64='data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA'
+printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"%s"}],"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":1099511627776,"type":"VEC3"}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0}' "$b64" >count2e40.gltf
+printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"missing.bin"}],"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0}' >nobuffer.gltf
+printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"%s"}],"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],"images":[{"uri":"missing.png"}],"textures":[{"source":0}],"materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}}],"meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0}' "$b64" >notexture.gltf
+printf 'glTF\x02\0\0\0\xff' >truncated.glb
+printf 'MM\x10\0\0\0\x02\0\x0a\0' >truncated.3ds
+if [ -f "$shared/gltf/BoxWithInfinites.glb" ]; then
+    cp "$shared/gltf/BoxWithInfinites.glb" infinites.glb
+fi
+
+failures=0
+echo "| # | Input | Command | Exit | Message (stderr) | Output left |"
+echo "|---|---|---|---|---|---|"
+n=0
+# row DESCRIPTION ARGUMENTS...: runs `zraster ARGUMENTS` in the work directory; outputs go to
+# out.png (or the path given).
+row() {
+    local what=$1
+    shift
+    n=$((n + 1))
+    rm -rf out.png out.jpg depth.txt ./*.tmp-* 2>/dev/null || true
+    local rc=0
+    "$zraster" "$@" >stdout.txt 2>stderr.txt </dev/null || rc=$?
+    local left
+    left=$(find . -maxdepth 2 \( -name 'out.*' -o -name '*.tmp-*' -o -name 'depth.txt' -o \
+        -path './outdir.png/*' \) 2>/dev/null | sort | tr '\n' ' ')
+    [ -z "$left" ] && left="none"
+    [ "$rc" -eq 0 ] && left="$left(success)"
+    local message
+    message=$(sed 's/|/\\|/g' stderr.txt | tr '\n' ' ' | sed 's/ *$//')
+    [ -z "$message" ] && message="(nothing)"
+    local lines
+    lines=$(wc -l <stderr.txt)
+    local command="zraster $*"
+    echo "| $n | $what | \`${command//|/\\|}\` | $rc | $message | $left |"
+    if [ "$rc" -ne 0 ]; then
+        if [ "$rc" -ne 2 ] || [ "$lines" -ne 1 ] || [ "$left" != "none" ]; then
+            failures=$((failures + 1))
+        fi
+    fi
+}
+
+row "missing file" render missing.obj -o out.png
+row "a directory" render folder.obj -o out.png
+row "not a regular file" render /dev/zero -o out.png
+row "empty file" render empty.obj -o out.png
+row "unknown extension, random bytes" render garbage.xyzzy -o out.png
+row "OBJ face index past the vertices" render index.obj -o out.png
+row "OBJ NaN coordinate" render nan.obj -o out.png
+row "OBJ coordinate overflowing to infinity (1e999)" render inf.obj -o out.png
+row "OBJ with only lines and points" render lines.obj -o out.png
+row "OBJ with vertices only" render vertices.obj -o out.png
+row "OBJ naming a missing material library (a warning)" render nomtl.obj -o out.png --size 8x8
+rm -f out.png
+row "PLY header claiming 2^40 faces" render faces2e40.ply -o out.png
+row "binary PLY claiming 3e8 vertices in 12 bytes" render vertices3e8.ply -o out.png
+row "PLY header without end_header" render noend.ply -o out.png
+row "PLY face index past the vertices" render index.ply -o out.png
+row "binary PLY body cut short" render truncated.ply -o out.png
+row "ASCII STL cut inside a facet" render truncated-ascii.stl -o out.png
+row "binary STL shorter than its facet count" render truncated-binary.stl -o out.png
+row "binary STL claiming 2^32-1 facets" render facets2e32.stl -o out.png
+row "OFF header claiming 2^40 faces" render faces2e40.off -o out.png
+row "OFF body shorter than its header" render short.off -o out.png
+row "OFF face records of 0 indices" render zeroface.off -o out.png
+row "OFF count glued to the keyword (OFF4294967295)" render glued.off -o out.png
+row "glTF with broken JSON" render broken.gltf -o out.png
+row "glTF accessor claiming 2^40 elements" render count2e40.gltf -o out.png
+row "glTF naming a missing buffer file" render nobuffer.gltf -o out.png
+row "glTF naming a missing texture (a warning)" render notexture.gltf -o out.png --size 8x8
+rm -f out.png
+row "GLB cut after 9 bytes" render truncated.glb -o out.png
+[ -f infinites.glb ] && row "glTF with infinite positions (BoxWithInfinites.glb)" render infinites.glb -o out.png
+row "3DS cut inside its first chunk" render truncated.3ds -o out.png
+row "image 10^6 x 10^6" render builtin:cube --size 1000000x1000000 -o out.png
+row "image 16384 x 16384 (over 64 Mpx)" render builtin:cube --size 16384x16384 -o out.png
+row "image over --max-pixels" render builtin:cube --size 100x100 --max-pixels 9999 -o out.png
+row "image size 0x10" render builtin:cube --size 0x10 -o out.png
+row "image size not WxH" render builtin:cube --size abc -o out.png
+row "NaN camera position" render builtin:cube --eye nan,0,0 -o out.png
+row "eye equal to target" render builtin:cube --eye 1,1,1 --target 1,1,1 -o out.png
+row "up parallel to the view direction" render builtin:cube --eye 0,5,0 --target 0,0,0 --up 0,1,0 -o out.png
+row "near beyond far" render builtin:cube --near 5 --far 1 -o out.png
+row "field of view 180 degrees" render builtin:cube --fovy 180 -o out.png
+row "negative thread count" render builtin:cube --threads -3 -o out.png
+row "seven clip planes (six supported)" render builtin:cube --clip-plane 1,0,0,0 --clip-plane 1,0,0,0 --clip-plane 1,0,0,0 --clip-plane 1,0,0,0 --clip-plane 1,0,0,0 --clip-plane 1,0,0,0 --clip-plane 1,0,0,0 -o out.png
+row "background component over 255" render builtin:cube --background 300,0,0 -o out.png
+row "unknown shading mode" render builtin:cube --shading toon -o out.png
+row "output not .png" render builtin:cube -o out.jpg
+row "output in a missing directory" render builtin:cube -o missing-dir/out.png
+row "output path is a directory" render builtin:cube --size 8x8 -o outdir.png
+row "output where writing fails (/proc)" render builtin:cube --size 8x8 -o /proc/out.png
+row "depth output not .npy/.png" render builtin:cube --depth-out depth.txt -o out.png
+row "procedural scene of 0 triangles" render sphere:0 -o out.png
+row "procedural scene of 10^11 triangles" render sphere:99999999999 -o out.png
+row "unknown builtin scene" render builtin:nothing -o out.png
+row "unknown option" render builtin:cube --no-such-option -o out.png
+row "unknown subcommand" frobnicate
+row "bench with 0 frames" bench builtin:cube --frames 0
+echo
+echo "$n inputs; $failures broke the contract (exit 2, one line, nothing left)."
+[ "$failures" -eq 0 ]

@@ -1,0 +1,168 @@
+// Inputs the fuzzers (fuzz/, RELIABILITY.md) found to crash, hang, exhaust memory or break a
+// promise of the loader, each minimized and kept inline: they must now load or be refused with a
+// one-line InputError, quickly.
+#include <zraster/error.hpp>
+#include <zraster/load.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string>
+
+#include "io/io_test_util.hpp"
+#include "support/test_support.hpp"
+
+namespace zraster {
+namespace {
+
+std::filesystem::path fixture(const std::string& test, const std::string& name,
+                              std::string_view content) {
+    const auto path = test::temp_dir("io-fuzz-" + test) / name;
+    test::write_bytes(path, content);
+    return path;
+}
+
+// Loads `content` as `name`: it must be refused, with `cause` in the message, within a second.
+void expect_refused(const std::string& test, const std::string& name, std::string_view content,
+                    std::string_view cause) {
+    const auto path = fixture(test, name, content);
+    const auto start = std::chrono::steady_clock::now();
+    test::expect_input_error([&] { load_scene(path); }, path, cause);
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));
+}
+
+std::string base64(std::string_view bytes) {
+    static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (std::size_t i = 0; i < bytes.size(); i += 3) {
+        std::uint32_t v = std::uint32_t(std::uint8_t(bytes[i])) << 16;
+        if (i + 1 < bytes.size()) v |= std::uint32_t(std::uint8_t(bytes[i + 1])) << 8;
+        if (i + 2 < bytes.size()) v |= std::uint32_t(std::uint8_t(bytes[i + 2]));
+        out += digits[(v >> 18) & 63];
+        out += digits[(v >> 12) & 63];
+        out += i + 1 < bytes.size() ? digits[(v >> 6) & 63] : '=';
+        out += i + 2 < bytes.size() ? digits[v & 63] : '=';
+    }
+    return out;
+}
+
+template <typename T>
+void append(std::string& out, const T& value) {
+    out.append(reinterpret_cast<const char*>(&value), sizeof value);
+}
+
+// fuzz_load_off: "OFF4294967295" declares 4294967295 vertices to Assimp (no separator needed
+// after the keyword); it allocated 48 GiB.
+TEST(FuzzRegressions, OffCountGluedToTheKeyword) {
+    expect_refused("off-glued", "glued.off", "OFF4294967295\n3 2 0\n0 0 0\n1 0 0\n",
+                   "the OFF header declares 4294967295 vertex records");
+}
+
+// fuzz_load_off: Assimp reads the leading digits of "1099511627-776" (16 GiB of faces); the
+// check used to give up on the token instead.
+TEST(FuzzRegressions, OffCountWithTrailingGarbage) {
+    expect_refused("off-garbage", "garbage.off", "OFF\n3 1099511627-776 0\n0 0 0\n1 0 0\n",
+                   "the OFF header declares 1099511627 face records");
+}
+
+// fuzz_load_off: a face line of 0 indices makes Assimp 5.2.5 decrement its face count without
+// advancing; a second one wrapped it to 2^32 - 1 and the importer crashed (SEGV) freeing faces.
+TEST(FuzzRegressions, OffFaceWithoutIndices) {
+    expect_refused("off-zero-face", "zero.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n0\nx",
+                   "OFF face record 0 has 0 vertex indices (1 to 9 are supported)");
+    expect_refused("off-zero-face-minimal", "minimal.off", "1 1 0 0 0 2\n0\nN",
+                   "OFF face record 0 has 0 vertex indices");
+    expect_refused("off-big-face", "big.off",
+                   "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n12 0 1 2 0 1 2 0 1 2 0 1 2\n",
+                   "OFF face record 0 has 12 vertex indices");
+}
+
+// fuzz_load_ply: Assimp 5.2.5 reads a PLY header without end_header forever (a hang, at any
+// element count).
+TEST(FuzzRegressions, PlyHeaderWithoutEnd) {
+    const char* cause = "no end_header line in the PLY header";
+    expect_refused("ply-no-end", "open.ply",
+                   "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n", cause);
+    expect_refused("ply-end-typo", "typo.ply",
+                   "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_headerx\n0\n",
+                   cause);
+    // A count without digits used to end the check early, before the end_header test.
+    expect_refused("ply-count-letters", "letters.ply",
+                   "ply\nformat binary_little_endian 1.0\nelement face t x\nproperty float z\n"
+                   "element face 1\npr\n",
+                   cause);
+}
+
+// fuzz_load_gltf: file normals with tiny components were normalized in float, where their
+// squares are denormal: (1e-22, 0, 1e-20) came out 6% too long. load.hpp promises unit normals.
+TEST(FuzzRegressions, TinyFileNormalsComeOutUnitLength) {
+    std::string buffer;
+    for (float f : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) append(buffer, f);
+    for (int v = 0; v < 3; ++v)
+        for (float f : {1e-22f, 0.f, 1e-20f}) append(buffer, f);
+    const std::string gltf =
+        R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":72,"uri":)"
+        R"("data:application/octet-stream;base64,)" +
+        base64(buffer) +
+        R"("}],"bufferViews":[{"buffer":0,"byteLength":36},{"buffer":0,"byteOffset":36,)"
+        R"("byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,)"
+        R"("type":"VEC3","min":[0,0,0],"max":[1,1,0]},{"bufferView":1,"componentType":5126,)"
+        R"("count":3,"type":"VEC3"}],"meshes":[{"primitives":[{"attributes":{"POSITION":0,)"
+        R"("NORMAL":1}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0})";
+    const Scene scene = load_scene(fixture("tiny-normals", "tiny.gltf", gltf));
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    ASSERT_EQ(scene.meshes[0].normals.size(), 3u);
+    for (const glm::vec3& n : scene.meshes[0].normals) {
+        EXPECT_NEAR(glm::length(n), 1.0f, 1e-6f);
+        EXPECT_NEAR(n.z, 1.0f, 1e-3f);
+    }
+}
+
+// fuzz_load_gltf: stb_image quotes the bytes of an unknown PNG chunk type in its failure reason,
+// so a chunk named "\n\nAB" made a warning of three lines.
+TEST(FuzzRegressions, TextureDecodeWarningIsOneLine) {
+    std::string png("\x89PNG\r\n\x1a\n", 8);
+    const auto chunk = [&](std::string_view type, std::string_view data) {
+        const std::uint32_t n = std::uint32_t(data.size());
+        const char length[4] = {char(n >> 24), char(n >> 16), char(n >> 8), char(n)};
+        png.append(length, 4);
+        png.append(type);
+        png.append(data);
+        png.append(4, '\0');  // CRC: stb_image does not check it
+    };
+    chunk("IHDR", std::string("\0\0\0\x02\0\0\0\x02\x08\x06\0\0\0", 13));
+    chunk("\n\nAB", "x");
+    const std::string gltf =
+        R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":42,"uri":)"
+        R"("data:application/octet-stream;base64,)" +
+        base64(std::string(
+            "\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x80\x3f\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x80\x3f\0\0\0\0"
+            "\0\0\x01\0\x02\0",
+            42)) +
+        R"("}],"bufferViews":[{"buffer":0,"byteLength":36},{"buffer":0,"byteOffset":36,)"
+        R"("byteLength":6}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,)"
+        R"("type":"VEC3","min":[0,0,0],"max":[1,1,0]},{"bufferView":1,"componentType":5123,)"
+        R"("count":3,"type":"SCALAR"}],"images":[{"uri":"data:image/png;base64,)" +
+        base64(png) +
+        R"("}],"textures":[{"source":0}],"materials":[{"pbrMetallicRoughness":)"
+        R"({"baseColorTexture":{"index":0}}}],"meshes":[{"primitives":[{"attributes":)"
+        R"({"POSITION":0},"indices":1,"material":0}]}],"nodes":[{"mesh":0}],)"
+        R"("scenes":[{"nodes":[0]}],"scene":0})";
+    const Scene scene = load_scene(fixture("png-chunk", "chunk.gltf", gltf));
+    ASSERT_FALSE(scene.warnings.empty());
+    for (const std::string& w : scene.warnings) {
+        EXPECT_EQ(w.find('\n'), std::string::npos) << w;
+        EXPECT_NE(w.find("cannot be decoded"), std::string::npos) << w;
+    }
+}
+
+// An InputError is one line whatever its cause quotes (names and paths come from the file).
+TEST(FuzzRegressions, InputErrorIsOneLine) {
+    const InputError e("model.obj", "bad name 'a\nb\r\x01' here");
+    EXPECT_EQ(std::string(e.what()), "model.obj: bad name 'a b ?' here");
+    EXPECT_EQ(e.cause(), "bad name 'a b ?' here");
+}
+
+}  // namespace
+}  // namespace zraster

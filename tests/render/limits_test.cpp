@@ -1,0 +1,130 @@
+// RenderOptions::limits and the scene checks of render(): requests past a limit and scenes whose
+// arrays disagree are refused with one-line InputErrors before anything is allocated.
+#include <zraster/error.hpp>
+#include <zraster/render.hpp>
+#include <zraster/scenes.hpp>
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <string>
+
+namespace zraster {
+namespace {
+
+Scene triangle_scene() {
+    Mesh mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    mesh.indices = {0, 1, 2};
+    update_bounds(mesh);
+    std::vector<Mesh> meshes;
+    meshes.push_back(mesh);
+    Scene scene = scene_from_meshes(std::move(meshes));
+    scene.source = "triangle";
+    return scene;
+}
+
+void expect_refused(const Scene& scene, const RenderOptions& options, const std::string& cause) {
+    const auto start = std::chrono::steady_clock::now();
+    try {
+        render(scene, options);
+        ADD_FAILURE() << "no InputError (expected '" << cause << "')";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find(cause), std::string::npos) << e.what();
+        EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+    }
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));
+}
+
+TEST(Limits, DefaultsAreSensible) {
+    const RenderLimits limits;
+    EXPECT_EQ(limits.max_pixels, 64u << 20);       // 8192 x 8192
+    EXPECT_GE(limits.max_triangles, 20'000'000u);  // the largest benchmark scene
+    EXPECT_LE(limits.max_vertices, (1u << 31) - 1);
+}
+
+TEST(Limits, ImageSize) {
+    RenderOptions o;
+    o.width = 1'000'000;
+    o.height = 1'000'000;
+    expect_refused(triangle_scene(), o, "image size 1000000x1000000 out of range (1..16384");
+    o.width = 16384;
+    o.height = 16384;  // within the per-side range, over 64 Mpx
+    expect_refused(triangle_scene(), o,
+                   "image size 16384x16384 is 268435456 pixels, more than the limit of 67108864");
+    o.width = 64;
+    o.height = 64;
+    o.limits.max_pixels = 4095;
+    expect_refused(triangle_scene(), o, "is 4096 pixels, more than the limit of 4095");
+    o.limits.max_pixels = 4096;
+    EXPECT_EQ(render(triangle_scene(), o).targets.depth.size(), 4096u);
+}
+
+TEST(Limits, TrianglesAndVerticesOverInstances) {
+    Scene scene = triangle_scene();
+    for (int i = 0; i < 9; ++i) scene.instances.push_back(scene.instances[0]);  // 10 instances
+    RenderOptions o;
+    o.width = 16;
+    o.height = 16;
+    o.limits.max_triangles = 9;
+    expect_refused(scene, o, "triangle: 10 triangles over all instances, more than the limit of 9");
+    o.limits.max_triangles = 10;
+    o.limits.max_vertices = 29;
+    expect_refused(scene, o, "30 vertices over all instances, more than the limit of 29");
+    o.limits.max_vertices = 30;
+    EXPECT_NO_THROW(render(scene, o));
+}
+
+// Millions of instances of one mesh: counted before the vertex stage sizes its arrays (whose
+// 32-bit vertex count would otherwise wrap).
+TEST(Limits, InstanceCountCannotWrapTheVertexCount) {
+    Scene scene = make_procedural_scene("sphere:20000");
+    const Instance one = scene.instances[0];
+    scene.instances.assign(300'000, one);  // 300k x ~10k vertices: 3e9, past 2^31
+    RenderOptions o;
+    o.width = 16;
+    o.height = 16;
+    o.limits.max_triangles = ~std::uint64_t{0};
+    o.limits.max_vertices = ~std::uint64_t{0};
+    expect_refused(scene, o, "more than the limit of 2147483647");
+}
+
+TEST(Limits, InconsistentScenes) {
+    RenderOptions o;
+    o.width = 16;
+    o.height = 16;
+    {
+        Scene scene = triangle_scene();
+        scene.instances[0].mesh = 3;
+        expect_refused(scene, o, "triangle: instance 0 refers to mesh 3 of 1");
+    }
+    {
+        Scene scene = triangle_scene();
+        scene.meshes[0].indices = {0, 1, 3};
+        expect_refused(scene, o, "mesh 0 '': vertex index 3 out of range (3 positions)");
+    }
+    {
+        Scene scene = triangle_scene();
+        scene.meshes[0].normals.resize(2);
+        expect_refused(scene, o, "2 normals for 3 positions");
+    }
+    {
+        Scene scene = triangle_scene();
+        scene.meshes[0].uvs.resize(4);
+        expect_refused(scene, o, "4 uvs for 3 positions");
+    }
+    {
+        Scene scene = triangle_scene();
+        scene.materials.clear();
+        expect_refused(scene, o, "the scene has no materials");
+    }
+    {
+        // A trailing partial triple is ignored (triangle_count() drops it), whatever it holds.
+        Scene scene = triangle_scene();
+        scene.meshes[0].indices.push_back(99);
+        EXPECT_NO_THROW(render(scene, o));
+    }
+}
+
+}  // namespace
+}  // namespace zraster
