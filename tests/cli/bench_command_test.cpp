@@ -73,11 +73,10 @@ TEST(BenchCommand, BunnyHasTheReferenceFraming) {
         << r.output;
 }
 
-// Disabled: Assimp's OBJ number parser (fast_atof) misrounds 2 of the bunny's `v` lines, the ones
-// written with exponents (-3.85359e-05 and 7.70718e-05 come out 1 ulp off), so 24 triangle
-// corners differ from glbench's strtof and the hash is a87e88ed72c3a76f. Enable once the loader
-// parses coordinates correctly rounded.
-TEST(BenchCommand, DISABLED_BunnyHasTheReferenceGeometryHash) {
+// zraster's OBJ parser rounds coordinates correctly (Assimp's fast_atof misrounded the two `v`
+// lines written with exponents, giving hash a87e88ed72c3a76f), so the bunny hashes like
+// glbench's strtof-based loader.
+TEST(BenchCommand, BunnyHasTheReferenceGeometryHash) {
     ZRASTER_REQUIRE_SHARED_DATA();
     const BenchRun r = run_zraster("bench '" + shared_data("meshes/obj/bunny.obj").string() +
                                    "' --mode depth --size 64x48 --frames 1 --warmup 0");
