@@ -4,9 +4,9 @@
 // The input is the arguments separated by NUL bytes. The work directory (the current directory
 // during the run) holds small scenes the arguments may name (t.obj with t.mtl and t.png, t.ply,
 // t.stl, t.off, t.gltf). Heavy requests are skipped before the run, judged by the same parser:
-// images over 64x64 pixels, procedural scenes over 2000 triangles, more than 2 bench frames,
-// more than 4 threads, and any argument containing '/' (reads and writes stay in the work
-// directory).
+// images over 64x64 pixels or supersampled more than 4x4, procedural scenes over 2000
+// triangles, more than 2 bench frames, more than 4 threads, and any argument containing '/'
+// (reads and writes stay in the work directory).
 //
 // Oracles: the exit status is 0 or 2 (1 means an internal error: a bug), and a failed run leaves
 // no file behind (outputs are written to a temporary and renamed).
@@ -30,6 +30,7 @@
 #include "../tools/zraster/info_command.hpp"
 #include "../tools/zraster/render_command.hpp"
 #include "../tools/zraster/run.hpp"
+#include "../tools/zraster/svg_command.hpp"
 #include "fuzz_support.hpp"
 
 namespace {
@@ -138,6 +139,8 @@ bool light_enough(std::vector<std::string> args) {
     cli::add_info_command(app, info_args);
     cli::BenchArguments bench_args;
     cli::add_bench_command(app, bench_args);
+    cli::SvgArguments svg_args;
+    cli::add_svg_command(app, svg_args);
     if (!args.empty() && args[0].starts_with("-") && args[0] != "-h" && args[0] != "--help")
         args.insert(args.begin(), "render");
     std::reverse(args.begin(), args.end());
@@ -150,8 +153,11 @@ bool light_enough(std::vector<std::string> args) {
     if (app.got_subcommand("bench"))
         return small_scene(bench_args.scene) && small_size(bench_args.size) &&
                std::int64_t{bench_args.frames} + bench_args.warmup <= 2 && bench_args.threads <= 4;
-    return small_scene(render_args.scene) && small_size(render_args.size) &&
-           render_args.threads <= 4;
+    const auto small_render = [](const cli::RenderArguments& a) {
+        return small_scene(a.scene) && small_size(a.size) && a.threads <= 4 && a.aa <= 4;
+    };
+    if (app.got_subcommand("svg")) return small_render(svg_args.render);
+    return small_render(render_args);
 }
 
 }  // namespace

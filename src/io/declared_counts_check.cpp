@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <fstream>
+#include <iterator>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -72,6 +73,96 @@ std::uint64_t ply_scalar_size(const std::string& type) {
     return 1;  // unknown: Assimp will complain; stay conservative here
 }
 
+struct PlyProperty {
+    bool list = false;
+    std::uint64_t bytes = 1;       // the scalar, or the list's length
+    std::uint64_t item_bytes = 1;  // list items
+};
+
+// PLY lists: Assimp resizes a list to its declared length (8 bytes per entry) before reading the
+// entries, so one binary length of 0x3ff00000 allocated 8 GiB for a 400-byte file (found by
+// fuzz_load_ply); an ASCII "4000000000" would ask for 32 GiB. Walks the records as Assimp does
+// (binary: packed; ASCII: one record per line) and refuses a list longer than the rest of the
+// file can hold.
+void check_ply_lists(const std::filesystem::path& path, std::size_t header_bytes,
+                     const std::vector<DeclaredElement>& elements,
+                     const std::vector<std::vector<PlyProperty>>& layout, bool ascii,
+                     bool big_endian) {
+    bool has_list = false;
+    for (const auto& properties : layout)
+        for (const PlyProperty& p : properties) has_list |= p.list;
+    if (!has_list) return;
+    std::ifstream in(path, std::ios::binary);
+    const std::string file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::uint64_t at = std::min<std::uint64_t>(header_bytes, file.size());
+    const std::uint64_t end = file.size();
+    const auto refuse = [&](const std::string& element, std::uint64_t length) {
+        throw InputError(path.string(), "truncated or malformed file: a PLY " + element +
+                                            " record holds a list of " + std::to_string(length) +
+                                            " entries, more than the rest of the file can hold");
+    };
+    for (std::size_t e = 0; e < elements.size(); ++e) {
+        if (layout[e].empty()) continue;  // Assimp skips the records of such an element
+        for (std::uint64_t r = 0; r < elements[e].count && at < end; ++r) {
+            if (ascii) {
+                std::uint64_t line_end = file.find('\n', at);
+                if (line_end == std::string::npos) line_end = end;
+                std::istringstream words(file.substr(at, line_end - at));
+                // Each entry takes at least a digit and a separator of what is left.
+                const std::uint64_t available = end - at;
+                at = line_end + 1;
+                for (const PlyProperty& p : layout[e]) {
+                    std::string token;
+                    if (!(words >> token)) break;
+                    if (!p.list) continue;
+                    const std::uint64_t length = parse_count(token).value_or(0);
+                    if (length > available / 2 + 1) refuse(elements[e].name, length);
+                    for (std::uint64_t i = 0; i < length && words >> token; ++i) {
+                    }
+                }
+                continue;
+            }
+            for (const PlyProperty& p : layout[e]) {
+                if (p.bytes > 8 || end - at < p.bytes) return;  // truncated: Assimp reports it
+                if (!p.list) {
+                    at += p.bytes;
+                    continue;
+                }
+                std::uint64_t length = 0;
+                for (std::uint64_t b = 0; b < p.bytes; ++b) {
+                    const auto byte = static_cast<std::uint8_t>(file[at + b]);
+                    const std::uint64_t shift = big_endian ? 8 * (p.bytes - 1 - b) : 8 * b;
+                    length |= std::uint64_t{byte} << shift;
+                }
+                at += p.bytes;
+                if (length > (end - at) / p.item_bytes) refuse(elements[e].name, length);
+                at += length * p.item_bytes;
+            }
+        }
+    }
+}
+
+// GLB (binary glTF): Assimp allocates each chunk's declared length before reading it (a JSON
+// chunk claiming 1.9 GB in a 3 KB file, found by fuzz_load_gltf). Chunks must fit in the file.
+void check_glb(const std::filesystem::path& path, std::uintmax_t file_size) {
+    std::ifstream in(path, std::ios::binary);
+    std::uint64_t at = 12;
+    for (int chunk = 0; at + 8 <= file_size; ++chunk) {
+        char header[8];
+        in.seekg(static_cast<std::streamoff>(at));
+        if (!in.read(header, 8)) return;
+        std::uint64_t length = 0;
+        for (int b = 0; b < 4; ++b)
+            length |= std::uint64_t{static_cast<std::uint8_t>(header[b])} << (8 * b);
+        if (length > file_size - at - 8)
+            throw InputError(path.string(),
+                             "unsupported or malformed file: GLB chunk " + std::to_string(chunk) +
+                                 " declares " + std::to_string(length) + " bytes, more than the " +
+                                 std::to_string(file_size - at - 8) + " left in the file");
+        at += 8 + length;
+    }
+}
+
 // Binary records hold every scalar and each list's length; ASCII records at least one digit and
 // one separator per value.
 void check_ply(const std::filesystem::path& path, const std::string& head,
@@ -81,8 +172,13 @@ void check_ply(const std::filesystem::path& path, const std::string& head,
     bool ascii = false;
     bool ended = false;
     std::vector<DeclaredElement> elements;
-    std::vector<std::uint64_t> property_bytes;  // per element, binary size
-    std::vector<std::uint64_t> property_count;  // per element
+    std::vector<std::uint64_t> property_bytes;     // per element, binary size
+    std::vector<std::uint64_t> property_count;     // per element
+    std::vector<std::vector<PlyProperty>> layout;  // per element
+    bool big_endian = false;
+    // Assimp attaches property lines to an element only while they follow it directly (comments
+    // aside); a property after any other line belongs to no element.
+    bool in_element = false;
     std::size_t header_bytes = 0;
     while (std::getline(lines, line)) {
         header_bytes += line.size() + 1;
@@ -94,16 +190,19 @@ void check_ply(const std::filesystem::path& path, const std::string& head,
         if (keyword == "end_header") {
             const std::size_t at = line.find_first_not_of(" \t");
             const std::size_t after = at + 10;
-            const bool exact = line.compare(at, 10, "end_header") == 0 &&
-                               (after >= line.size() ||
-                                std::string_view(" \t\r\f\0", 5).find(line[after]) !=
-                                    std::string_view::npos);
+            const bool exact =
+                line.compare(at, 10, "end_header") == 0 &&
+                (after >= line.size() ||
+                 std::string_view(" \t\r\f\0", 5).find(line[after]) != std::string_view::npos);
             if (!exact) keyword.clear();
         }
+        if (keyword != "property" && keyword != "comment" && keyword != "element")
+            in_element = false;
         if (keyword == "format") {
             std::string kind;
             words >> kind;
             ascii = kind == "ascii";
+            big_endian = kind == "binary_big_endian";
         } else if (keyword == "element") {
             std::string name, count;
             words >> name >> count;
@@ -111,10 +210,20 @@ void check_ply(const std::filesystem::path& path, const std::string& head,
             elements.push_back({name, parse_count(count).value_or(0), 1});
             property_bytes.push_back(0);
             property_count.push_back(0);
-        } else if (keyword == "property" && !elements.empty()) {
+            layout.emplace_back();
+            in_element = true;
+        } else if (keyword == "property" && in_element) {
             std::string type;
             words >> type;
-            if (type == "list") words >> type;  // the list's length type
+            PlyProperty property;
+            if (type == "list") {
+                std::string item;
+                words >> type >> item;  // the list's length type, then its items'
+                property.list = true;
+                property.item_bytes = ply_scalar_size(item);
+            }
+            property.bytes = ply_scalar_size(type);
+            layout.back().push_back(property);
             property_bytes.back() += ply_scalar_size(type);
             property_count.back() += 1;
         } else if (keyword == "end_header") {
@@ -133,6 +242,7 @@ void check_ply(const std::filesystem::path& path, const std::string& head,
         elements[i].min_record_bytes = bytes > 0 ? bytes : 1;
     }
     check_body(path, "PLY", elements, file_size - header_bytes);
+    check_ply_lists(path, header_bytes, elements, layout, ascii, big_endian);
 }
 
 // The OFF header read exactly as Assimp's OFF importer reads it (OFFLoader.cpp), since it
@@ -194,24 +304,26 @@ class OffHeaderReader {
             const char* line = p_;
             if (!next_line()) return;  // a short body: Assimp reports it
             const char* line_end = p_;
-            while (line_end > line && (line_end[-1] == '\r' || line_end[-1] == '\n' ||
-                                       line_end[-1] == '\f'))
+            while (line_end > line &&
+                   (line_end[-1] == '\r' || line_end[-1] == '\n' || line_end[-1] == '\f'))
                 --line_end;
             const char* q = line;
             while (q < line_end && (*q == ' ' || *q == '\t')) ++q;
             std::uint64_t n = 0;
-            for (; q < line_end && *q >= '0' && *q <= '9'; ++q) n = std::min<std::uint64_t>(n * 10 + std::uint64_t(*q - '0'), 1000);
+            for (; q < line_end && *q >= '0' && *q <= '9'; ++q)
+                n = std::min<std::uint64_t>(n * 10 + std::uint64_t(*q - '0'), 1000);
             if (n == 0 || n > 9)
-                throw InputError(path.string(),
-                                 "unsupported or malformed file: OFF face record " +
-                                     std::to_string(f) + " has " + std::to_string(n) +
-                                     " vertex indices (1 to 9 are supported)");
+                throw InputError(path.string(), "unsupported or malformed file: OFF face record " +
+                                                    std::to_string(f) + " has " +
+                                                    std::to_string(n) +
+                                                    " vertex indices (1 to 9 are supported)");
         }
     }
 
   private:
     bool starts_with(std::string_view s) const {
-        return static_cast<std::size_t>(end_ - p_) >= s.size() && std::string_view(p_, s.size()) == s;
+        return static_cast<std::size_t>(end_ - p_) >= s.size() &&
+               std::string_view(p_, s.size()) == s;
     }
     static bool line_end(char c) { return c == '\r' || c == '\n' || c == '\0'; }
     void skip_spaces_and_line_ends() {
@@ -273,6 +385,10 @@ void check_declared_counts(const std::filesystem::path& path, std::uintmax_t fil
     const std::string head = read_prefix(path, 64 * 1024);
     if (is_ply(head)) {
         check_ply(path, head, file_size);
+        return;
+    }
+    if (head.size() >= 12 && head.starts_with("glTF")) {
+        check_glb(path, file_size);
         return;
     }
     // Assimp picks the importer by extension for the formats below; for an unknown one it asks

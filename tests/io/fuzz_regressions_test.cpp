@@ -94,6 +94,35 @@ TEST(FuzzRegressions, PlyHeaderWithoutEnd) {
                    cause);
 }
 
+// fuzz_load_ply: Assimp resizes a list to its declared length before reading it: a binary
+// length of 0x3ff00000 asked for 8 GiB (and RSS reached it) in a 400-byte file. A property line
+// after a stray line belongs to no element in Assimp's reading, which the check now follows.
+TEST(FuzzRegressions, PlyListLongerThanTheFile) {
+    std::string binary =
+        "ply\nformat binary_big_endian 1.0\nelement vertex 3\nproperty double x\n"
+        "999999property double y\nproperty double z\nelement face 1\n"
+        "property list uint ushort vertex_indices\nend_header\n";
+    binary += std::string(24, '\0');
+    binary += std::string("\x3f\xf0\0\0", 4) + std::string(16, '\0');
+    expect_refused("ply-binary-list", "list.ply", binary,
+                   "a PLY face record holds a list of 1072693248 entries");
+    expect_refused("ply-ascii-list", "ascii.ply",
+                   "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                   "property float z\nelement face 1\nproperty list uint int vertex_indices\n"
+                   "end_header\n0 0 0\n1 0 0\n0 1 0\n4000000000 0 1 2\n",
+                   "a PLY face record holds a list of 4000000000 entries");
+}
+
+// fuzz_load_gltf: Assimp allocates a GLB chunk's declared length before reading it (a JSON
+// chunk of 1,929,380,992 bytes in a 2.8 KB file).
+TEST(FuzzRegressions, GlbChunkLongerThanTheFile) {
+    std::string glb("glTF\x02\0\0\0\x40\0\0\0", 12);
+    glb += std::string("\x80\x0b\x00\x73JSON", 8);
+    glb += R"({"asset":{"version":"2.0"}})";
+    expect_refused("glb-chunk", "chunk.glb", glb,
+                   "GLB chunk 0 declares 1929382784 bytes, more than the 27 left in the file");
+}
+
 // fuzz_load_gltf: file normals with tiny components were normalized in float, where their
 // squares are denormal: (1e-22, 0, 1e-20) came out 6% too long. load.hpp promises unit normals.
 TEST(FuzzRegressions, TinyFileNormalsComeOutUnitLength) {
