@@ -15,10 +15,11 @@ bash "$root/scripts/install-deps.sh"
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
-run-clang-tidy -p "$build" -j "${ZRASTER_TIDY_JOBS:-2}" -quiet "$filter" >"$log" 2>&1 || true
+run-clang-tidy -p "$build" -j "${ZRASTER_TIDY_JOBS:-2}" -quiet "$filter" 2>&1 |
+    sed 's/\x1b\[[0-9;]*m//g' >"$log" || true  # without colors
 # Findings, each once (a header's finding repeats for every file that includes it).
 findings=$(grep -E "^/.*: (warning|error): " "$log" | sort -u || true)
-files=$(grep -cE "^clang-tidy" "$log" || true)
+files=$(grep -cE "^clang-tidy.* -p=" "$log" || true)
 if [ -n "$findings" ]; then
     echo "$findings"
     echo "tidy: $(echo "$findings" | wc -l) findings in $files files"

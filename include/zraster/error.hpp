@@ -28,8 +28,10 @@ class InputError : public std::runtime_error {
     // control characters there would break the one-line contract; they become spaces and '?'.
     static std::string one_line(std::string text) {
         for (char& c : text) {
-            if (c == '\n' || c == '\r') c = ' ';
-            else if ((c >= 0 && c < ' ' && c != '\t') || c == 0x7f) c = '?';
+            if (c == '\n' || c == '\r')
+                c = ' ';
+            else if ((c >= 0 && c < ' ' && c != '\t') || c == 0x7f)
+                c = '?';
         }
         return text;
     }

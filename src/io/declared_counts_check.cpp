@@ -1,5 +1,7 @@
 #include "io/declared_counts_check.hpp"
 
+#include "io/gltf_bounds_check.hpp"
+
 #include <zraster/error.hpp>
 
 #include <algorithm>
@@ -147,6 +149,8 @@ void check_ply_lists(const std::filesystem::path& path, std::size_t header_bytes
 void check_glb(const std::filesystem::path& path, std::uintmax_t file_size) {
     std::ifstream in(path, std::ios::binary);
     std::uint64_t at = 12;
+    std::string json;
+    std::optional<std::uint64_t> binary;
     for (int chunk = 0; at + 8 <= file_size; ++chunk) {
         char header[8];
         in.seekg(static_cast<std::streamoff>(at));
@@ -159,8 +163,15 @@ void check_glb(const std::filesystem::path& path, std::uintmax_t file_size) {
                              "unsupported or malformed file: GLB chunk " + std::to_string(chunk) +
                                  " declares " + std::to_string(length) + " bytes, more than the " +
                                  std::to_string(file_size - at - 8) + " left in the file");
+        if (chunk == 0 && std::string_view(header + 4, 4) == "JSON") {
+            json.resize(static_cast<std::size_t>(length));
+            if (!in.read(json.data(), static_cast<std::streamsize>(length))) return;
+        } else if (chunk == 1 && std::string_view(header + 4, 4) == std::string_view("BIN\0", 4)) {
+            binary = length;
+        }
         at += 8 + length;
     }
+    check_gltf_bounds(path, json, binary);
 }
 
 // Binary records hold every scalar and each list's length; ASCII records at least one digit and
@@ -382,7 +393,7 @@ bool is_ply(const std::string& head) {
 
 void check_declared_counts(const std::filesystem::path& path, std::uintmax_t file_size) {
     // Headers are short; 64 KiB leaves room for long comment blocks.
-    const std::string head = read_prefix(path, 64 * 1024);
+    const std::string head = read_prefix(path, std::size_t{64} * 1024);
     if (is_ply(head)) {
         check_ply(path, head, file_size);
         return;
@@ -396,7 +407,14 @@ void check_declared_counts(const std::filesystem::path& path, std::uintmax_t fil
     // the header as OFF then too (it only refuses what Assimp would take as an OFF header).
     std::string extension = path.extension().string();
     for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    for (const char* other : {".obj", ".ply", ".stl", ".gltf", ".glb", ".3ds"})
+    if (extension == ".gltf") {
+        std::ifstream in(path, std::ios::binary);
+        check_gltf_bounds(
+            path, std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()),
+            std::nullopt);
+        return;
+    }
+    for (const char* other : {".obj", ".ply", ".stl", ".glb", ".3ds"})
         if (extension == other) return;
     check_off(path, head, file_size);
 }

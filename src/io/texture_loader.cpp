@@ -45,7 +45,7 @@ bool is_file(const std::filesystem::path& p) {
 
 }  // namespace
 
-TextureLoader::TextureLoader(const aiScene& scene, std::filesystem::path model_path,
+TextureLoader::TextureLoader(const aiScene& scene, const std::filesystem::path& model_path,
                              std::vector<std::string>& warnings)
     : scene_(scene), model_dir_(model_path.parent_path()), warnings_(warnings) {}
 

@@ -16,7 +16,7 @@ namespace zraster::io {
 class TextureLoader {
   public:
     // Problems are appended to `warnings` (as causes, without the model's name).
-    TextureLoader(const aiScene& scene, std::filesystem::path model_path,
+    TextureLoader(const aiScene& scene, const std::filesystem::path& model_path,
                   std::vector<std::string>& warnings);
 
     // The texture a material refers to, or null (with a warning) when it is missing or

@@ -42,7 +42,7 @@ struct PhongBatch {
 
 // Writes r, g, b (0..255) for the first `count` pixels.
 void shade_phong_batch(const PhongConstants& constants, PhongBatch& batch);
-void shade_phong_batch_scalar(const PhongConstants& constants, PhongBatch& batch);
+void shade_phong_batch_scalar(const PhongConstants& k, PhongBatch& batch);
 
 // The scalar unit normal used by both paths: n / |n|, or (0, 1, 0) for a zero vector.
 glm::vec3 unit_normal(const glm::vec3& n);

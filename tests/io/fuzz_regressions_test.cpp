@@ -123,6 +123,28 @@ TEST(FuzzRegressions, GlbChunkLongerThanTheFile) {
                    "GLB chunk 0 declares 1929382784 bytes, more than the 27 left in the file");
 }
 
+// fuzz_load_gltf: Assimp copied an accessor's bytes without checking them against its buffer
+// view: 72 VEC3 floats from byte 1 of an 864-byte view read one byte past the buffer
+// (heap-buffer-overflow in Assimp's memcpy).
+TEST(FuzzRegressions, GltfAccessorPastItsBufferView) {
+    const std::string buffer(36, '\0');
+    const auto gltf = [&](const std::string& accessor_offset, const std::string& view_length) {
+        return R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":)"
+               R"("data:application/octet-stream;base64,)" +
+               base64(buffer) + R"("}],"bufferViews":[{"buffer":0,"byteLength":)" + view_length +
+               R"(}],"accessors":[{"bufferView":0,"byteOffset":)" + accessor_offset +
+               R"(,"componentType":5126,"count":3,"type":"VEC3"}],"meshes":[{"primitives":)"
+               R"([{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],)"
+               R"("scene":0})";
+    };
+    expect_refused("gltf-accessor", "accessor.gltf", gltf("1", "36"),
+                   "glTF accessor 0 reads 3 elements of 12 bytes from byte 1 of buffer view 0, "
+                   "which holds 36");
+    expect_refused("gltf-view", "view.gltf", gltf("0", "40"),
+                   "glTF buffer view 0 spans bytes 0 + 40 of buffer 0, which holds 36");
+    EXPECT_NO_THROW(load_scene(fixture("gltf-fits", "fits.gltf", gltf("0", "36"))));
+}
+
 // fuzz_load_gltf: file normals with tiny components were normalized in float, where their
 // squares are denormal: (1e-22, 0, 1e-20) came out 6% too long. load.hpp promises unit normals.
 TEST(FuzzRegressions, TinyFileNormalsComeOutUnitLength) {

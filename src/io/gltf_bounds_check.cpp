@@ -1,0 +1,207 @@
+#include "io/gltf_bounds_check.hpp"
+
+#include <zraster/error.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <system_error>
+#include <vector>
+
+namespace zraster::io {
+
+namespace {
+
+using nlohmann::json;
+
+// A non-negative integer member, or `fallback` when absent; nullopt when malformed (Assimp then
+// reports the document itself).
+std::optional<std::uint64_t> unsigned_member(const json& object, const char* key,
+                                             std::uint64_t fallback) {
+    const auto it = object.find(key);
+    if (it == object.end()) return fallback;
+    if (!it->is_number_unsigned()) return std::nullopt;
+    return it->get<std::uint64_t>();
+}
+
+// The same for a member defaulting to 0, as a flag and an out value.
+bool read_unsigned(const json& object, const char* key, std::uint64_t& value) {
+    const auto member = unsigned_member(object, key, 0);
+    value = member.value_or(0);
+    return member.has_value();
+}
+
+std::uint64_t component_bytes(std::uint64_t type) {
+    switch (type) {
+        case 5120:  // BYTE
+        case 5121:  // UNSIGNED_BYTE
+            return 1;
+        case 5122:  // SHORT
+        case 5123:  // UNSIGNED_SHORT
+            return 2;
+        case 5125:  // UNSIGNED_INT
+        case 5126:  // FLOAT
+            return 4;
+        default:
+            return 0;
+    }
+}
+
+std::uint64_t components(const std::string& type) {
+    if (type == "SCALAR") return 1;
+    if (type == "VEC2") return 2;
+    if (type == "VEC3") return 3;
+    if (type == "VEC4" || type == "MAT2") return 4;
+    if (type == "MAT3") return 9;
+    if (type == "MAT4") return 16;
+    return 0;
+}
+
+// Bytes a base64 data: URI decodes to.
+std::optional<std::uint64_t> data_uri_bytes(const std::string& uri) {
+    const std::size_t comma = uri.find(',');
+    if (comma == std::string::npos || uri.find(";base64", 0) > comma) return std::nullopt;
+    std::uint64_t chars = uri.size() - comma - 1, padding = 0;
+    for (std::size_t i = uri.size(); i > comma + 1 && uri[i - 1] == '='; --i) ++padding;
+    return chars / 4 * 3 - std::min<std::uint64_t>(padding, 2) + (chars % 4 ? chars % 4 - 1 : 0);
+}
+
+class Checker {
+  public:
+    Checker(const std::filesystem::path& path, const json& document,
+            std::optional<std::uint64_t> glb_binary)
+        : path_(path), document_(document), glb_binary_(glb_binary) {}
+
+    void run() {
+        buffers();
+        views();
+        accessors();
+    }
+
+  private:
+    [[noreturn]] void refuse(const std::string& what) const {
+        throw InputError(path_.string(), "unsupported or malformed file: glTF " + what);
+    }
+
+    const json& array(const char* key) const {
+        static const json empty = json::array();
+        const auto it = document_.find(key);
+        return it != document_.end() && it->is_array() ? *it : empty;
+    }
+
+    void buffers() {
+        const json& list = array("buffers");
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            const json& b = list[i];
+            // A plain integer, not an optional: GCC 12 misreads the optional as uninitialized.
+            std::uint64_t length = 0;
+            const bool valid = b.is_object() && read_unsigned(b, "byteLength", length);
+            buffer_bytes_.push_back(valid ? length : 0);
+            if (!valid) continue;
+            std::optional<std::uint64_t> data;
+            const auto uri = b.find("uri");
+            if (uri == b.end()) {
+                if (i == 0) data = glb_binary_;
+            } else if (uri->is_string()) {
+                const std::string text = uri->get<std::string>();
+                if (text.starts_with("data:")) {
+                    data = data_uri_bytes(text);
+                } else {
+                    std::error_code ec;
+                    const auto size = std::filesystem::file_size(path_.parent_path() / text, ec);
+                    if (!ec) data = size;
+                }
+            }
+            // A missing file or an undecodable URI is Assimp's to report; a short one is ours.
+            if (data && length > *data)
+                refuse("buffer " + std::to_string(i) + " declares " + std::to_string(length) +
+                       " bytes, its data holds " + std::to_string(*data));
+        }
+    }
+
+    void views() {
+        const json& list = array("bufferViews");
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            const json& v = list[i];
+            view_bytes_.push_back(0);
+            view_stride_.push_back(0);
+            if (!v.is_object()) continue;
+            const auto buffer = unsigned_member(v, "buffer", ~std::uint64_t{0});
+            const auto offset = unsigned_member(v, "byteOffset", 0);
+            const auto length = unsigned_member(v, "byteLength", 0);
+            const auto stride = unsigned_member(v, "byteStride", 0);
+            if (!buffer || !offset || !length || !stride || *buffer >= buffer_bytes_.size())
+                continue;
+            const std::uint64_t size = buffer_bytes_[*buffer];
+            if (*offset > size || *length > size - *offset)
+                refuse("buffer view " + std::to_string(i) + " spans bytes " +
+                       std::to_string(*offset) + " + " + std::to_string(*length) + " of buffer " +
+                       std::to_string(*buffer) + ", which holds " + std::to_string(size));
+            view_bytes_.back() = *length;
+            view_stride_.back() = *stride;
+        }
+    }
+
+    // `count` elements of `element` bytes, `stride` apart, from `offset` in buffer view `view`.
+    void range(const std::string& what, const json& holder, std::uint64_t count,
+               std::uint64_t element, bool strided) {
+        const auto view = unsigned_member(holder, "bufferView", ~std::uint64_t{0});
+        const auto offset = unsigned_member(holder, "byteOffset", 0);
+        if (!view || !offset || *view >= view_bytes_.size() || count == 0 || element == 0) return;
+        const std::uint64_t size = view_bytes_[*view];
+        const std::uint64_t stride =
+            strided && view_stride_[*view] > 0 ? view_stride_[*view] : element;
+        const bool fits = *offset <= size && element <= size - *offset &&
+                          (count - 1) <= (size - *offset - element) / stride;
+        if (!fits)
+            refuse(what + " reads " + std::to_string(count) + " elements of " +
+                   std::to_string(element) + " bytes from byte " + std::to_string(*offset) +
+                   " of buffer view " + std::to_string(*view) + ", which holds " +
+                   std::to_string(size));
+    }
+
+    void accessors() {
+        const json& list = array("accessors");
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            const json& a = list[i];
+            if (!a.is_object()) continue;
+            const auto count = unsigned_member(a, "count", 0);
+            const auto type = unsigned_member(a, "componentType", 0);
+            const auto kind = a.find("type");
+            if (!count || !type || kind == a.end() || !kind->is_string()) continue;
+            const std::uint64_t element =
+                component_bytes(*type) * components(kind->get<std::string>());
+            const std::string name = "accessor " + std::to_string(i);
+            range(name, a, *count, element, true);
+            const auto sparse = a.find("sparse");
+            if (sparse == a.end() || !sparse->is_object()) continue;
+            const auto sparse_count = unsigned_member(*sparse, "count", 0);
+            const auto indices = sparse->find("indices");
+            const auto values = sparse->find("values");
+            if (!sparse_count) continue;
+            if (indices != sparse->end() && indices->is_object()) {
+                const auto index_type = unsigned_member(*indices, "componentType", 0);
+                if (index_type)
+                    range(name + " (sparse indices)", *indices, *sparse_count,
+                          component_bytes(*index_type), false);
+            }
+            if (values != sparse->end() && values->is_object())
+                range(name + " (sparse values)", *values, *sparse_count, element, false);
+        }
+    }
+
+    const std::filesystem::path& path_;
+    const json& document_;
+    std::optional<std::uint64_t> glb_binary_;
+    std::vector<std::uint64_t> buffer_bytes_, view_bytes_, view_stride_;
+};
+
+}  // namespace
+
+void check_gltf_bounds(const std::filesystem::path& path, const std::string& json_text,
+                       std::optional<std::uint64_t> glb_binary) {
+    const json document = json::parse(json_text, nullptr, false);
+    if (document.is_discarded() || !document.is_object()) return;
+    Checker(path, document, glb_binary).run();
+}
+
+}  // namespace zraster::io

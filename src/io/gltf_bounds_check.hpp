@@ -1,0 +1,21 @@
+// glTF 2.0 byte ranges, checked before Assimp reads them: Debian's Assimp 5.2.5 copies an
+// accessor's bytes without checking that they lie inside its buffer view and buffer (a
+// heap-buffer-overflow found by fuzz_load_gltf), and allocates a GLB chunk's declared length
+// before reading it.
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace zraster::io {
+
+// `json` is the glTF document (a .gltf file, or a GLB's JSON chunk); `glb_binary` the length of
+// a GLB's BIN chunk, if any. Buffers with a uri are sized from their data: URI or from the file
+// beside `path`. Throws InputError("unsupported or malformed file: ...") for a buffer view
+// outside its buffer, an accessor (sparse parts included) outside its buffer view, or a buffer
+// declaring more bytes than its data holds. Leaves documents it cannot parse to Assimp.
+void check_gltf_bounds(const std::filesystem::path& path, const std::string& json,
+                       std::optional<std::uint64_t> glb_binary);
+
+}  // namespace zraster::io
