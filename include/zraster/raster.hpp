@@ -79,6 +79,9 @@ struct SetupSettings {
     ClipDepthRange depth_range = ClipDepthRange::NegativeOneToOne;
     CullMode cull = CullMode::Back;
     FrontFace front_face = FrontFace::CounterClockwise;
+    // Compute the perspective-correct barycentric planes q, p1, p2 (depth-only work needs only
+    // the depth plane).
+    bool barycentric_planes = true;
     // Compute the screen-linear barycentric planes l1, l2 too (only ScreenLinear needs them).
     bool screen_linear_planes = true;
 };

@@ -58,6 +58,9 @@ struct RenderOptions {
     ShadingStrategy strategy = ShadingStrategy::Auto;
     // Use the SIMD kernels (off: the scalar reference path everywhere, for comparisons).
     bool simd = true;
+    // Hierarchical z: skip 8x8 blocks whose stored depths already hide the triangle there. The
+    // test is conservative, so the image is the same with it off (for comparisons).
+    bool hierarchical_z = true;
 
     CullMode cull = CullMode::Back;
     FrontFace front_face = FrontFace::CounterClockwise;
@@ -113,6 +116,7 @@ struct RenderStats {
     std::uint64_t triangles_degenerate = 0;
     std::uint64_t triangles_no_coverage = 0;  // no pixel center in their bounding box
     std::uint64_t triangles_rasterized = 0;   // set up and binned (after clipping: pieces)
+    std::uint64_t blocks_hidden = 0;          // skipped by hierarchical z (triangle x block)
     std::uint64_t fragments_passed = 0;       // passed the depth test
     std::uint64_t fragments_shaded = 0;
     bool deferred = false;         // which shading strategy ran

@@ -128,6 +128,7 @@ SetupResult setup_triangle(const std::array<ScreenVertex, 3>& v, const SetupSett
     };
     const double z0 = v[0].z;
     t.depth = plane(z0, double(v[1].z) - z0, double(v[2].z) - z0);
+    if (!settings.barycentric_planes) return SetupResult::Visible;
     // Scale 1/w so the largest is 1: the ratios are what matter, and this keeps them in range.
     const double scale =
         1.0 / std::max({double(v[0].inv_w), double(v[1].inv_w), double(v[2].inv_w)});

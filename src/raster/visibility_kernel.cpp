@@ -85,6 +85,7 @@ int VisibilityBlock(const BlockJob& job, TileBuffers& tile) {
             const auto pass_u = hn::RebindMask(du, pass);
             hn::StoreU(hn::IfThenElse(pass_u, ref, hn::LoadU(du, tile.ref + at)), du,
                        tile.ref + at);
+            if (!job.barycentrics) continue;
             hn::Vec<decltype(df)> b1, b2;
             if (job.perspective) {
                 const auto q = plane_at(df, t.q, dx, dy);
@@ -101,6 +102,19 @@ int VisibilityBlock(const BlockJob& job, TileBuffers& tile) {
     return passed;
 }
 
+float BlockFarthestDepth(const TileBuffers& tile, int block_x, int block_y, bool largest) {
+    const hn::CappedTag<float, 8> df;
+    const float* row = tile.depth + (block_y * 8 * TileBuffers::kStride + block_x * 8);
+    // 8 rows of 8 floats; narrower vectors take each row in several steps.
+    auto acc = hn::LoadU(df, row);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; x += static_cast<int>(hn::Lanes(df))) {
+            const auto v = hn::LoadU(df, row + y * TileBuffers::kStride + x);
+            acc = largest ? hn::Max(acc, v) : hn::Min(acc, v);
+        }
+    return hn::GetLane(largest ? hn::MaxOfLanes(df, acc) : hn::MinOfLanes(df, acc));
+}
+
 const char* TargetName() {
     return hwy::TargetName(HWY_TARGET);
 }
@@ -113,6 +127,22 @@ namespace zraster::detail {
 
 HWY_EXPORT(VisibilityBlock);
 HWY_EXPORT(TargetName);
+HWY_EXPORT(BlockFarthestDepth);
+
+float block_farthest_depth(const TileBuffers& tile, int block_x, int block_y, bool largest) {
+    return HWY_DYNAMIC_DISPATCH(BlockFarthestDepth)(tile, block_x, block_y, largest);
+}
+
+float block_farthest_depth_scalar(const TileBuffers& tile, int block_x, int block_y, bool largest) {
+    const float* row = tile.depth + (block_y * 8 * TileBuffers::kStride + block_x * 8);
+    float farthest = row[0];
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            const float v = row[y * TileBuffers::kStride + x];
+            farthest = largest ? (v > farthest ? v : farthest) : (v < farthest ? v : farthest);
+        }
+    return farthest;
+}
 
 int visibility_block(const BlockJob& job, TileBuffers& tile) {
     return HWY_DYNAMIC_DISPATCH(VisibilityBlock)(job, tile);
@@ -144,6 +174,7 @@ int visibility_block_scalar(const BlockJob& job, TileBuffers& tile) {
             if (job.write_depth) tile.depth[at] = z;
             if (!job.attributes) continue;
             tile.ref[at] = job.ref;
+            if (!job.barycentrics) continue;
             if (job.perspective) {
                 const float q = t.q.at(dx, dy);
                 tile.b1[at] = t.p1.at(dx, dy) / q;

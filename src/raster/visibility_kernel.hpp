@@ -25,6 +25,10 @@ struct TileBuffers {
     alignas(64) std::uint32_t ref[kPixels];
     alignas(64) float b1[kPixels];
     alignas(64) float b2[kPixels];
+    // Hierarchical z: per 8x8 block (row-major, kStride / 8 per row), the farthest depth stored
+    // in it (render/hierarchical_z.hpp).
+    static constexpr int kBlocksPerRow = kStride / 8;
+    alignas(64) float farthest[kBlocksPerRow * kBlocksPerRow];
 };
 
 // One block of at most 8 pixels wide (any height) of one triangle.
@@ -42,13 +46,19 @@ struct BlockJob {
     bool perspective = true;
     CompareFunc compare = CompareFunc::Less;
     bool write_depth = true;
-    bool attributes = true;  // store the triangle reference and barycentrics (off: depth only)
+    bool attributes = true;    // store the triangle reference (off: depth only)
+    bool barycentrics = true;  // ... and the barycentrics (needs the setup's q, p1, p2 planes)
     std::uint32_t ref = 0;
 };
 
 // Returns the number of fragments that passed the depth test. D32F only.
 int visibility_block(const BlockJob& job, TileBuffers& tile);
 int visibility_block_scalar(const BlockJob& job, TileBuffers& tile);
+
+// The farthest depth stored in the 8x8 block (block_x, block_y) of the tile: the largest when
+// `largest`, else the smallest. Exact (a max/min over the stored values).
+float block_farthest_depth(const TileBuffers& tile, int block_x, int block_y, bool largest);
+float block_farthest_depth_scalar(const TileBuffers& tile, int block_x, int block_y, bool largest);
 
 // Name of the instruction set the dispatcher picked (for reports).
 const char* visibility_kernel_target();

@@ -150,6 +150,7 @@ void render_frame(detail::Frame& frame, const Scene& scene, const RenderOptions&
     frame.setup_settings.screen_linear_planes =
         options.interpolation == Interpolation::ScreenLinear;
     frame.needs_attributes = options.color_target || options.normal_target;
+    frame.setup_settings.barycentric_planes = frame.needs_attributes;
     frame.tiles_x = (options.width + detail::kTileSize - 1) / detail::kTileSize;
     frame.tiles_y = (options.height + detail::kTileSize - 1) / detail::kTileSize;
     result.stats.camera = frame.camera;

@@ -16,6 +16,7 @@
 
 #include "raster/visibility_kernel.hpp"
 #include "render/frame.hpp"
+#include "render/hierarchical_z.hpp"
 #include "render/shade_fragment.hpp"
 
 namespace zraster::detail {
@@ -33,11 +34,13 @@ struct TileContext {
     RenderTargets& targets;
     const DepthBuffer& codec;  // encodes/decodes the depth format
     CompareFunc compare;
-    bool kernel;         // the block traversal with the visibility kernel may be used
-    bool simd;           // ... in its SIMD version
-    bool forward;        // shade as fragments pass (scalar path)
-    bool shade;          // color or normal target wanted
-    int x0, y0, x1, y1;  // tile rectangle in the image, [x0, x1) x [y0, y1)
+    bool kernel;                   // the block traversal with the visibility kernel may be used
+    bool simd;                     // ... in its SIMD version
+    bool forward;                  // shade as fragments pass (scalar path)
+    HierarchicalZ hiz;             // per-block depth bounds in use (kernel path, depth writes on)
+    std::uint64_t& blocks_hidden;  // this tile's count of blocks skipped by them
+    bool shade;                    // color or normal target wanted
+    int x0, y0, x1, y1;            // tile rectangle in the image, [x0, x1) x [y0, y1)
 };
 
 std::size_t tile_index(int x, int y) {
@@ -113,10 +116,27 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
     job.compare = c.compare;
     job.write_depth = options.depth_write;
     job.attributes = c.shade || !c.targets.instance_id.empty();
+    job.barycentrics = c.shade;
     job.ref = id;
     // Runs the kernel on pixels [x0, x1] x [y0, y1] of the triangle (edge values there fit 32
-    // bits).
-    const auto run_block = [&](int x0, int y0, int x1, int y1, bool full) {
+    // bits), unless hierarchical z shows them hidden; then refreshes the blocks' depth bounds.
+    const auto run_block = [&](int x0, int y0, int x1, int y1, bool full) -> std::uint64_t {
+        const int bx0 = (x0 - c.x0) / kBlockSize, bx1 = (x1 - c.x0) / kBlockSize;
+        const int by0 = (y0 - c.y0) / kBlockSize, by1 = (y1 - c.y0) / kBlockSize;
+        if (c.hiz != HierarchicalZ::Off) {
+            const bool largest = c.hiz == HierarchicalZ::Largest;
+            float farthest = tile.farthest[by0 * TileBuffers::kBlocksPerRow + bx0];
+            for (int by = by0; by <= by1; ++by)
+                for (int bx = bx0; bx <= bx1; ++bx) {
+                    const float f = tile.farthest[by * TileBuffers::kBlocksPerRow + bx];
+                    farthest = largest ? std::max(farthest, f) : std::min(farthest, f);
+                }
+            if (block_hidden(setup.depth, x0 - setup.min_x, y0 - setup.min_y, x1 - setup.min_x,
+                             y1 - setup.min_y, farthest, c.compare)) {
+                ++c.blocks_hidden;
+                return 0;
+            }
+        }
         for (std::size_t k = 0; k < 3; ++k) {
             job.e[k] = static_cast<std::int32_t>(edge_at(setup, k, x0, y0));
             job.step_x[k] = static_cast<std::int32_t>(setup.edge_a[k]);
@@ -129,8 +149,17 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
         job.height = y1 - y0 + 1;
         job.plane_dx = x0 - setup.min_x;
         job.plane_dy = y0 - setup.min_y;
-        return static_cast<std::uint64_t>(c.simd ? visibility_block(job, tile)
-                                                 : visibility_block_scalar(job, tile));
+        const int passed =
+            c.simd ? visibility_block(job, tile) : visibility_block_scalar(job, tile);
+        if (passed > 0 && c.hiz != HierarchicalZ::Off) {
+            const bool largest = c.hiz == HierarchicalZ::Largest;
+            for (int by = by0; by <= by1; ++by)
+                for (int bx = bx0; bx <= bx1; ++bx)
+                    tile.farthest[by * TileBuffers::kBlocksPerRow + bx] =
+                        c.simd ? block_farthest_depth(tile, bx, by, largest)
+                               : block_farthest_depth_scalar(tile, bx, by, largest);
+        }
+        return static_cast<std::uint64_t>(passed);
     };
     // Small triangles (vertices within 64 pixels each way, the common case) have edge values
     // that fit 32 bits anywhere near them (|E| <= 2^22 * 65 * 2 < 2^30), so a triangle whose
@@ -326,6 +355,10 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
     // The block kernel covers the common case; the rest takes the scalar reference path.
     const bool kernel = options.depth_format == DepthFormat::D32F && options.depth_test &&
                         !options.coverage_counts && !forward;
+    // Without depth writes the stored depths stay the clear value: nothing to gain.
+    const HierarchicalZ hiz = kernel && options.depth_write && options.hierarchical_z
+                                  ? hierarchical_z_mode(compare)
+                                  : HierarchicalZ::Off;
     const std::uint8_t background_rgba[4] = {to_unorm8(options.background.x),
                                              to_unorm8(options.background.y),
                                              to_unorm8(options.background.z), 255};
@@ -335,7 +368,8 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
     stats.simd_target = options.simd ? visibility_kernel_target() : "scalar";
 
     const std::size_t tiles = std::size_t(frame.tiles_x) * std::size_t(frame.tiles_y);
-    std::vector<std::uint64_t> passed_per_tile(tiles, 0), shaded_per_tile(tiles, 0);
+    std::vector<std::uint64_t> passed_per_tile(tiles, 0), shaded_per_tile(tiles, 0),
+        hidden_per_tile(tiles, 0);
     tbb::parallel_for(std::size_t{0}, tiles, [&](std::size_t tile_number) {
         thread_local std::unique_ptr<TileBuffers> buffers;
         if (!buffers) buffers = std::make_unique<TileBuffers>();
@@ -349,6 +383,8 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
                             kernel,
                             options.simd,
                             forward,
+                            hiz,
+                            hidden_per_tile[tile_number],
                             shade,
                             tx * kTileSize,
                             ty * kTileSize,
@@ -366,6 +402,8 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
             std::fill_n(tile.depth + tile_index(0, y), c.x1 - c.x0, clear);
             std::fill_n(tile.ref + tile_index(0, y), c.x1 - c.x0, kNoTriangle);
         }
+        // Blocks past the image edge are never drawn; their bound only has to be valid.
+        std::fill_n(tile.farthest, std::size(tile.farthest), clear);
 
         std::uint64_t passed = 0;
         TriangleSetup setup;
@@ -392,6 +430,7 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
     for (std::size_t t = 0; t < tiles; ++t) {
         stats.fragments_passed += passed_per_tile[t];
         stats.fragments_shaded += shaded_per_tile[t];
+        stats.blocks_hidden += hidden_per_tile[t];
     }
 }
 
