@@ -40,9 +40,12 @@ void draw_edges(const Frame& frame, RenderTargets& targets) {
 
     if (!hidden_line && !targets.color.empty()) {  // wireframe: the surfaces are not shown
         const std::uint8_t bg[4] = {
-            static_cast<std::uint8_t>(std::lround(std::fmin(std::fmax(options.background.x, 0.f), 1.f) * 255)),
-            static_cast<std::uint8_t>(std::lround(std::fmin(std::fmax(options.background.y, 0.f), 1.f) * 255)),
-            static_cast<std::uint8_t>(std::lround(std::fmin(std::fmax(options.background.z, 0.f), 1.f) * 255)),
+            static_cast<std::uint8_t>(
+                std::lround(std::fmin(std::fmax(options.background.x, 0.f), 1.f) * 255)),
+            static_cast<std::uint8_t>(
+                std::lround(std::fmin(std::fmax(options.background.y, 0.f), 1.f) * 255)),
+            static_cast<std::uint8_t>(
+                std::lround(std::fmin(std::fmax(options.background.z, 0.f), 1.f) * 255)),
             255};
         for (std::size_t p = 0; p < targets.color.size(); p += 4)
             std::copy(bg, bg + 4, &targets.color[p]);
@@ -72,8 +75,8 @@ void draw_edges(const Frame& frame, RenderTargets& targets) {
                     const std::size_t at = std::size_t(p.y) * std::size_t(width) + std::size_t(p.x);
                     if (hidden_line) {
                         const float surface = targets.depth[at];
-                        const bool visible = reversed ? p.depth >= surface - offset
-                                                      : p.depth <= surface + offset;
+                        const bool visible =
+                            reversed ? p.depth >= surface - offset : p.depth <= surface + offset;
                         if (!visible) continue;
                     }
                     std::copy(rgba, rgba + 4, &targets.color[at * 4]);

@@ -29,9 +29,27 @@ struct FrameInstance {
     ShadingMode shading = ShadingMode::Phong;
     std::uint32_t first_vertex = 0;  // into FrameVertices
     glm::mat4 mvp{1.0f};
+    glm::mat4 model{1.0f};
+    glm::mat3 normal_matrix{1.0f};  // object to world for normals (inverse transpose)
     bool textured = false;
     int phong_kernel = -1;  // index into Frame::phong_constants when the SIMD shader applies
+    // World positions and normals computed per visible triangle by the deferred SIMD shader
+    // (from the mesh) instead of per vertex by the vertex stage: a dense mesh has many more
+    // vertices than visible triangles, and the per-vertex arrays cost memory bandwidth.
+    bool lazy_attributes = false;
 };
+
+// A vertex's world position and unit world normal ((0, 1, 0) for a zero normal): the one
+// definition the vertex stage and the lazy path share, so both give the same bits.
+inline void world_attributes(const FrameInstance& fi, std::uint32_t local, glm::vec3& world,
+                             glm::vec3& normal) {
+    const Mesh& mesh = *fi.mesh;
+    world = glm::vec3(fi.model * glm::vec4(mesh.positions[local], 1.0f));
+    glm::vec3 n = mesh.normals.empty() ? glm::vec3(0, 1, 0) : mesh.normals[local];
+    n = fi.normal_matrix * n;
+    const float len = glm::length(n);
+    normal = len > 0.0f ? n / len : glm::vec3(0, 1, 0);
+}
 
 // Output of the vertex stage for every vertex of every visible instance.
 struct FrameVertices {

@@ -161,15 +161,6 @@ void render_frame(detail::Frame& frame, const Scene& scene, const RenderOptions&
     tbb::task_arena arena(threads);
     arena.execute([&] {
         detail::run_vertex_stage(frame, result.stats);
-        frame.phong_constants.clear();
-        for (detail::FrameInstance& fi : frame.instances) {
-            if (fi.shading != ShadingMode::Phong || fi.textured || !options.simd ||
-                !detail::phong_kernel_applies(options.lighting, *fi.material))
-                continue;
-            fi.phong_kernel = static_cast<int>(frame.phong_constants.size());
-            frame.phong_constants.push_back(detail::make_phong_constants(
-                options.lighting, *fi.material, frame.eye, frame.view_axis));
-        }
         detail::assemble_and_bin(frame, result.stats);
         const auto setup_done = std::chrono::steady_clock::now();
         result.stats.setup_ms =

@@ -243,6 +243,19 @@ struct PendingPhong {
     }
 };
 
+// World positions and normals of the corners of the last triangle shaded, for instances with
+// lazy attributes (computed here from the mesh, as the vertex stage would).
+struct LazyTriangle {
+    std::uint32_t id = kNoTriangle;
+    glm::vec3 world[3], normal[3];
+
+    void load(const FrameInstance& fi, const TriangleRef& ref, std::uint32_t triangle) {
+        id = triangle;
+        for (std::size_t k = 0; k < 3; ++k)
+            world_attributes(fi, ref.vertex[k] - fi.first_vertex, world[k], normal[k]);
+    }
+};
+
 // Finishes a tile: deferred shading of every pixel with a triangle (once each), background
 // elsewhere, and the depth and id targets. Returns the number of pixels shaded.
 std::uint64_t finish_tile(const TileContext& c, const TileBuffers& tile, std::uint32_t background,
@@ -256,6 +269,7 @@ std::uint64_t finish_tile(const TileContext& c, const TileBuffers& tile, std::ui
     thread_local PendingPhong pending;
     ShadingTriangle cache;
     std::uint32_t cached_id = kNoTriangle;
+    LazyTriangle lazy;
     std::uint64_t shaded = 0;
     for (int py = c.y0; py < c.y1; ++py) {
         const std::size_t row = std::size_t(py) * std::size_t(t.width);
@@ -300,8 +314,16 @@ std::uint64_t finish_tile(const TileContext& c, const TileBuffers& tile, std::ui
                 }
                 const glm::vec3 b = original_barycentrics(
                     cache, {1.0f - tile.b1[at] - tile.b2[at], tile.b1[at], tile.b2[at]});
-                const glm::vec3 normal = interpolate(c.frame.vertices.normal, ref.vertex, b);
-                const glm::vec3 position = interpolate(c.frame.vertices.world, ref.vertex, b);
+                const FrameInstance& fi = c.frame.instances[ref.instance];
+                glm::vec3 normal, position;
+                if (fi.lazy_attributes) {
+                    if (id != lazy.id) lazy.load(fi, ref, id);
+                    normal = lazy.normal[0] * b.x + lazy.normal[1] * b.y + lazy.normal[2] * b.z;
+                    position = lazy.world[0] * b.x + lazy.world[1] * b.y + lazy.world[2] * b.z;
+                } else {
+                    normal = interpolate(c.frame.vertices.normal, ref.vertex, b);
+                    position = interpolate(c.frame.vertices.world, ref.vertex, b);
+                }
                 PhongBatch& batch = pending.batch;
                 const int i = batch.count++;
                 batch.nx[i] = normal.x;

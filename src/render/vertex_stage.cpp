@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "render/frame.hpp"
+#include "render/shade_kernel.hpp"
 
 namespace zraster::detail {
 namespace {
@@ -41,6 +42,24 @@ bool finite(const glm::vec4& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
 }
 
+// Instances the SIMD Phong shader can draw get its constants; those it draws alone (deferred,
+// color only, no user clip planes) get their attributes lazily.
+void assign_phong_kernels(Frame& frame) {
+    const RenderOptions& options = *frame.options;
+    const bool deferred = options.strategy != ShadingStrategy::Forward;
+    frame.phong_constants.clear();
+    for (FrameInstance& fi : frame.instances) {
+        if (fi.shading != ShadingMode::Phong || fi.textured || !options.simd ||
+            !phong_kernel_applies(options.lighting, *fi.material))
+            continue;
+        fi.phong_kernel = static_cast<int>(frame.phong_constants.size());
+        frame.phong_constants.push_back(
+            make_phong_constants(options.lighting, *fi.material, frame.eye, frame.view_axis));
+        fi.lazy_attributes = deferred && options.color_target && !options.normal_target &&
+                             options.clip_planes.empty();
+    }
+}
+
 }  // namespace
 
 void run_vertex_stage(Frame& frame, RenderStats& stats) {
@@ -67,38 +86,43 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
         fi.shading = instance.shading.value_or(options.shading);
         fi.first_vertex = vertex_count;
         fi.mvp = mvp;
+        fi.model = instance.transform;
+        fi.normal_matrix = normal_matrix(instance.transform);
         fi.textured = options.textures && fi.material->base_color_texture && !mesh.uvs.empty();
         frame.instances.push_back(fi);
         vertex_count += static_cast<std::uint32_t>(mesh.positions.size());
     }
 
+    assign_phong_kernels(frame);
+
     FrameVertices& v = frame.vertices;
     const bool attributes = frame.needs_attributes;
     const bool world = attributes || !options.clip_planes.empty();
+    bool any_gouraud = false, any_textured = false, any_eager = false;
+    for (const FrameInstance& fi : frame.instances) {
+        any_gouraud |= fi.shading == ShadingMode::Gouraud;
+        any_textured |= fi.textured;
+        any_eager |= !fi.lazy_attributes;
+    }
     v.clip.resize(vertex_count);
     v.screen.resize(vertex_count);
     v.outcode.resize(vertex_count);
-    if (world) v.world.resize(vertex_count);
-    if (attributes) {
-        v.normal.resize(vertex_count);
-        v.uv.resize(vertex_count);
-    }
-    bool any_gouraud = false;
-    for (const FrameInstance& fi : frame.instances)
-        any_gouraud |= fi.shading == ShadingMode::Gouraud;
+    // Arrays no instance reads stay empty (a reused Renderer may still hold old ones: the stages
+    // index them only for instances that need them).
+    if (world && any_eager) v.world.resize(vertex_count);
+    if (attributes && any_eager) v.normal.resize(vertex_count);
+    if (attributes && any_textured) v.uv.resize(vertex_count);
     if (any_gouraud && attributes) v.gouraud.resize(vertex_count);
 
     for (const FrameInstance& fi : frame.instances) {
         const Mesh& mesh = *fi.mesh;
-        const glm::mat4 model = scene.instances[fi.scene_instance].transform;
-        const glm::mat3 to_world_normal = normal_matrix(model);
         const bool lit_per_vertex = fi.shading == ShadingMode::Gouraud && attributes;
+        const bool eager = world && !fi.lazy_attributes;
         tbb::parallel_for(
             tbb::blocked_range<std::size_t>(0, mesh.positions.size(), 8192),
             [&](const tbb::blocked_range<std::size_t>& r) {
                 for (std::size_t k = r.begin(); k < r.end(); ++k) {
                     const std::size_t out = fi.first_vertex + k;
-                    const glm::vec4 p(mesh.positions[k], 1.0f);
                     const glm::vec4 clip = transform(fi.mvp, mesh.positions[k]);
                     v.clip[out] = clip;
                     std::uint32_t code = kNonFinite;
@@ -108,14 +132,14 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
                             code = kClipLeft;  // not representable: let the clipper handle it
                     }
                     v.outcode[out] = code;
-                    if (!world) continue;
-                    v.world[out] = glm::vec3(model * p);
-                    if (!attributes) continue;
-                    glm::vec3 n = mesh.normals.empty() ? glm::vec3(0, 1, 0) : mesh.normals[k];
-                    n = to_world_normal * n;
-                    const float len = glm::length(n);
-                    v.normal[out] = len > 0.0f ? n / len : glm::vec3(0, 1, 0);
-                    v.uv[out] = mesh.uvs.empty() ? glm::vec2(0.0f) : mesh.uvs[k];
+                    if (!eager) continue;
+                    if (!attributes) {  // user clip planes only need the world position
+                        v.world[out] = glm::vec3(fi.model * glm::vec4(mesh.positions[k], 1.0f));
+                        continue;
+                    }
+                    world_attributes(fi, static_cast<std::uint32_t>(k), v.world[out],
+                                     v.normal[out]);
+                    if (fi.textured) v.uv[out] = mesh.uvs[k];
                     if (lit_per_vertex)
                         v.gouraud[out] =
                             evaluate_lighting(options.lighting, *fi.material, v.world[out],
