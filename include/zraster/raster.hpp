@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 
@@ -112,6 +113,10 @@ struct TriangleBounds {
 };
 SetupResult classify_triangle(const std::array<ScreenVertex, 3>& v, const SetupSettings& settings,
                               TriangleBounds& out);
+// The same on three vertices in place (inline: the front end calls it once per triangle).
+inline SetupResult classify_triangle(const ScreenVertex& v0, const ScreenVertex& v1,
+                                     const ScreenVertex& v2, const SetupSettings& settings,
+                                     TriangleBounds& out);
 
 // Convenience: to_screen on each vertex (all must be inside the guard band with w > 0, what
 // the clipper guarantees; otherwise Degenerate), then setup_triangle.
@@ -143,6 +148,41 @@ void for_each_covered_pixel(const TriangleSetup& t, int x0, int y0, int x1, int 
             e2 += t.edge_a[2];
         }
     }
+}
+
+inline SetupResult classify_triangle(const ScreenVertex& v0, const ScreenVertex& v1,
+                                     const ScreenVertex& v2, const SetupSettings& settings,
+                                     TriangleBounds& out) {
+    // Twice the signed area in y-down window space; negative means counter-clockwise as seen with
+    // y up, i.e. OpenGL's default front face.
+    const std::int64_t x0 = v0.x, y0 = v0.y;
+    const std::int64_t area = (std::int64_t{v1.x} - x0) * (std::int64_t{v2.y} - y0) -
+                              (std::int64_t{v2.x} - x0) * (std::int64_t{v1.y} - y0);
+    if (area == 0) return SetupResult::Degenerate;
+    out.front_facing = (settings.front_face == FrontFace::CounterClockwise) == (area < 0);
+    if ((settings.cull == CullMode::Back && !out.front_facing) ||
+        (settings.cull == CullMode::Front && out.front_facing))
+        return SetupResult::Culled;
+    // Bounding box of covered pixel centers: px * S + S/2 within [min, max]. S is a power of
+    // two, so floor division is an arithmetic shift (C++20 defines >> on negatives so).
+    static_assert(kSubpixelScale == 1 << kSubpixelBits);
+    constexpr std::int64_t half = kSubpixelScale / 2;
+    const std::int64_t lo_x = std::min(std::min(v0.x, v1.x), v2.x);
+    const std::int64_t hi_x = std::max(std::max(v0.x, v1.x), v2.x);
+    const std::int64_t lo_y = std::min(std::min(v0.y, v1.y), v2.y);
+    const std::int64_t hi_y = std::max(std::max(v0.y, v1.y), v2.y);
+    const std::int64_t px0 = std::max<std::int64_t>(0, -((half - lo_x) >> kSubpixelBits));  // ceil
+    const std::int64_t py0 = std::max<std::int64_t>(0, -((half - lo_y) >> kSubpixelBits));
+    const std::int64_t px1 =
+        std::min<std::int64_t>(settings.viewport.width - 1, (hi_x - half) >> kSubpixelBits);
+    const std::int64_t py1 =
+        std::min<std::int64_t>(settings.viewport.height - 1, (hi_y - half) >> kSubpixelBits);
+    if (px0 > px1 || py0 > py1) return SetupResult::NoCoverage;
+    out.min_x = static_cast<int>(px0);
+    out.min_y = static_cast<int>(py0);
+    out.max_x = static_cast<int>(px1);
+    out.max_y = static_cast<int>(py1);
+    return SetupResult::Visible;
 }
 
 inline bool to_screen(const glm::vec4& clip, const SetupSettings& settings, ScreenVertex& out) {

@@ -10,12 +10,6 @@ namespace {
 
 constexpr std::int64_t kHalfPixel = kSubpixelScale / 2;
 
-std::int64_t floor_div(std::int64_t a, std::int64_t b) {
-    std::int64_t q = a / b;
-    if ((a % b != 0) && ((a < 0) != (b < 0))) --q;
-    return q;
-}
-
 }  // namespace
 
 std::array<std::int64_t, 2> snap_to_grid(const glm::dvec2& window) {
@@ -33,35 +27,7 @@ SetupResult setup_triangle(const std::array<glm::vec4, 3>& clip, const SetupSett
 
 SetupResult classify_triangle(const std::array<ScreenVertex, 3>& v, const SetupSettings& settings,
                               TriangleBounds& out) {
-    // Twice the signed area in y-down window space; negative means counter-clockwise as seen with
-    // y up, i.e. OpenGL's default front face.
-    const std::int64_t x0 = v[0].x, y0 = v[0].y;
-    const std::int64_t area = (std::int64_t{v[1].x} - x0) * (std::int64_t{v[2].y} - y0) -
-                              (std::int64_t{v[2].x} - x0) * (std::int64_t{v[1].y} - y0);
-    if (area == 0) return SetupResult::Degenerate;
-    out.front_facing = (settings.front_face == FrontFace::CounterClockwise) == (area < 0);
-    if ((settings.cull == CullMode::Back && !out.front_facing) ||
-        (settings.cull == CullMode::Front && out.front_facing))
-        return SetupResult::Culled;
-    // Bounding box of covered pixel centers: px * S + S/2 within [min, max].
-    const std::int64_t lo_x = std::min({v[0].x, v[1].x, v[2].x});
-    const std::int64_t hi_x = std::max({v[0].x, v[1].x, v[2].x});
-    const std::int64_t lo_y = std::min({v[0].y, v[1].y, v[2].y});
-    const std::int64_t hi_y = std::max({v[0].y, v[1].y, v[2].y});
-    const std::int64_t px0 =
-        std::max<std::int64_t>(0, -floor_div(kHalfPixel - lo_x, kSubpixelScale));  // ceil
-    const std::int64_t py0 =
-        std::max<std::int64_t>(0, -floor_div(kHalfPixel - lo_y, kSubpixelScale));
-    const std::int64_t px1 = std::min<std::int64_t>(settings.viewport.width - 1,
-                                                    floor_div(hi_x - kHalfPixel, kSubpixelScale));
-    const std::int64_t py1 = std::min<std::int64_t>(settings.viewport.height - 1,
-                                                    floor_div(hi_y - kHalfPixel, kSubpixelScale));
-    if (px0 > px1 || py0 > py1) return SetupResult::NoCoverage;
-    out.min_x = static_cast<int>(px0);
-    out.min_y = static_cast<int>(py0);
-    out.max_x = static_cast<int>(px1);
-    out.max_y = static_cast<int>(py1);
-    return SetupResult::Visible;
+    return classify_triangle(v[0], v[1], v[2], settings, out);
 }
 
 SetupResult setup_triangle(const std::array<ScreenVertex, 3>& v, const SetupSettings& settings,

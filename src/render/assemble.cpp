@@ -16,9 +16,10 @@ namespace zraster::detail {
 namespace {
 
 // Tests a triangle of snapped vertices and, if it covers a pixel center, appends its ref.
-void emit(const Frame& frame, TriangleRef ref, const std::array<ScreenVertex, 3>& v, Chunk& chunk) {
+void emit(const Frame& frame, TriangleRef ref, const ScreenVertex& v0, const ScreenVertex& v1,
+          const ScreenVertex& v2, Chunk& chunk) {
     TriangleBounds setup;
-    switch (classify_triangle(v, frame.setup_settings, setup)) {
+    switch (classify_triangle(v0, v1, v2, frame.setup_settings, setup)) {
         case SetupResult::Visible:
             break;
         case SetupResult::Degenerate:
@@ -73,8 +74,8 @@ void clip_and_emit(const Frame& frame, TriangleRef ref, const std::array<glm::ve
         ref.screen = {a | kExtraVertex, b | kExtraVertex, c | kExtraVertex};
         ref.piece = static_cast<std::uint32_t>(chunk.pieces.size());
         const std::size_t before = chunk.refs.size();
-        emit(frame, ref,
-             {chunk.extra_vertices[a], chunk.extra_vertices[b], chunk.extra_vertices[c]}, chunk);
+        emit(frame, ref, chunk.extra_vertices[a], chunk.extra_vertices[b], chunk.extra_vertices[c],
+             chunk);
         if (chunk.refs.size() != before)
             chunk.pieces.push_back({{polygon.vertices[0].weights,
                                      polygon.vertices[static_cast<std::size_t>(k)].weights,
@@ -93,6 +94,25 @@ void process_instance_range(const Frame& frame, std::uint32_t instance, std::siz
     const std::uint32_t* indices = mesh.indices.data();
 
     for (std::size_t t = first; t < end; ++t) {
+        // The common case first: indices in range, all vertices inside the view volume and the
+        // guard band, no user planes. Most triangles of a dense mesh end in classify_triangle.
+        if (user_planes == 0) {
+            const std::uint32_t i0 = indices[3 * t], i1 = indices[3 * t + 1],
+                                i2 = indices[3 * t + 2];
+            if (i0 < vertex_total && i1 < vertex_total && i2 < vertex_total) {
+                const std::uint32_t g0 = fi.first_vertex + i0, g1 = fi.first_vertex + i1,
+                                    g2 = fi.first_vertex + i2;
+                if ((vertices.outcode[g0] | vertices.outcode[g1] | vertices.outcode[g2]) == 0) {
+                    TriangleRef ref;
+                    ref.instance = instance;
+                    ref.primitive = static_cast<std::uint32_t>(t);
+                    ref.vertex = ref.screen = {g0, g1, g2};
+                    emit(frame, ref, vertices.screen[g0], vertices.screen[g1], vertices.screen[g2],
+                         chunk);
+                    continue;
+                }
+            }
+        }
         TriangleRef ref;
         ref.instance = instance;
         ref.primitive = static_cast<std::uint32_t>(t);
@@ -122,10 +142,8 @@ void process_instance_range(const Frame& frame, std::uint32_t instance, std::siz
         }
         const std::uint32_t crossing = code[0] | code[1] | code[2];
         if (crossing == 0) {
-            emit(frame, ref,
-                 {vertices.screen[ref.vertex[0]], vertices.screen[ref.vertex[1]],
-                  vertices.screen[ref.vertex[2]]},
-                 chunk);
+            emit(frame, ref, vertices.screen[ref.vertex[0]], vertices.screen[ref.vertex[1]],
+                 vertices.screen[ref.vertex[2]], chunk);
             continue;
         }
         ++chunk.stats.triangles_clipped;

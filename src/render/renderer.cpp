@@ -1,10 +1,13 @@
 // The Renderer: joins the stages for one frame (see include/zraster/render.hpp).
+#include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
+#include <tbb/parallel_reduce.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <span>
 #include <string>
 #include <thread>
 #include <vector>
@@ -30,6 +33,24 @@ namespace {
 
 bool finite(const glm::dvec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// The largest index, as a branch-free max the compiler vectorizes, in parallel for big meshes:
+// this check runs every frame, over every index.
+std::uint32_t largest_index(std::span<const std::uint32_t> indices) {
+    const auto serial = [&](std::size_t begin, std::size_t end) {
+        std::uint32_t largest = 0;
+        for (std::size_t i = begin; i < end; ++i)
+            largest = indices[i] > largest ? indices[i] : largest;
+        return largest;
+    };
+    if (indices.size() < (std::size_t{1} << 18)) return serial(0, indices.size());
+    return tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, indices.size(), std::size_t{1} << 16), std::uint32_t{0},
+        [&](const tbb::blocked_range<std::size_t>& r, std::uint32_t largest) {
+            return std::max(largest, serial(r.begin(), r.end()));
+        },
+        [](std::uint32_t a, std::uint32_t b) { return std::max(a, b); });
 }
 
 // Options and scene are checked before anything is allocated: a frame that would need absurd
@@ -84,10 +105,9 @@ void validate(const Scene& scene, const RenderOptions& options) {
             throw InputError(source, label + ": " + std::to_string(mesh.uvs.size()) + " uvs for " +
                                          std::to_string(n) + " positions");
         const std::size_t used = mesh.triangle_count() * 3;  // a partial last triple is ignored
-        const auto end = mesh.indices.begin() + static_cast<std::ptrdiff_t>(used);
-        const auto largest = std::max_element(mesh.indices.begin(), end);
-        if (largest != end && *largest >= n)
-            throw InputError(source, label + ": vertex index " + std::to_string(*largest) +
+        const std::uint32_t largest = largest_index(std::span(mesh.indices.data(), used));
+        if (used > 0 && largest >= n)
+            throw InputError(source, label + ": vertex index " + std::to_string(largest) +
                                          " out of range (" + std::to_string(n) + " positions)");
     }
     if (options.clip_planes.size() > std::size_t(kMaxUserClipPlanes))
@@ -127,8 +147,22 @@ void reset(detail::Frame& frame) {
     }
 }
 
+void render_frame_in_arena(detail::Frame& frame, const Scene& scene, const RenderOptions& options,
+                           RenderResult& result);
+
 void render_frame(detail::Frame& frame, const Scene& scene, const RenderOptions& options,
                   RenderResult& result) {
+    // Everything runs in an arena of the requested thread count, the checks too (the index
+    // check is parallel): a 1-thread frame uses one thread throughout.
+    const int threads = options.threads > 0
+                            ? options.threads
+                            : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    tbb::task_arena arena(threads);
+    arena.execute([&] { render_frame_in_arena(frame, scene, options, result); });
+}
+
+void render_frame_in_arena(detail::Frame& frame, const Scene& scene, const RenderOptions& options,
+                           RenderResult& result) {
     validate(scene, options);
     const auto start = std::chrono::steady_clock::now();
     result.stats = RenderStats{};
@@ -155,22 +189,15 @@ void render_frame(detail::Frame& frame, const Scene& scene, const RenderOptions&
     frame.tiles_y = (options.height + detail::kTileSize - 1) / detail::kTileSize;
     result.stats.camera = frame.camera;
 
-    const int threads = options.threads > 0
-                            ? options.threads
-                            : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    tbb::task_arena arena(threads);
-    arena.execute([&] {
-        detail::run_vertex_stage(frame, result.stats);
-        detail::assemble_and_bin(frame, result.stats);
-        const auto setup_done = std::chrono::steady_clock::now();
-        result.stats.setup_ms =
-            std::chrono::duration<double, std::milli>(setup_done - start).count();
-        detail::rasterize_tiles(frame, result.targets, result.stats);
-        if (options.edges != RenderOptions::Edges::None) detail::draw_edges(frame, result.targets);
-        result.stats.raster_ms =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - setup_done)
-                .count();
-    });
+    detail::run_vertex_stage(frame, result.stats);
+    detail::assemble_and_bin(frame, result.stats);
+    const auto setup_done = std::chrono::steady_clock::now();
+    result.stats.setup_ms = std::chrono::duration<double, std::milli>(setup_done - start).count();
+    detail::rasterize_tiles(frame, result.targets, result.stats);
+    if (options.edges != RenderOptions::Edges::None) detail::draw_edges(frame, result.targets);
+    result.stats.raster_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - setup_done)
+            .count();
     result.stats.total_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
