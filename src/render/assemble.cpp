@@ -10,6 +10,7 @@
 
 #include <zraster/error.hpp>
 
+#include "render/classify_kernel.hpp"
 #include "render/frame.hpp"
 
 namespace zraster::detail {
@@ -83,8 +84,9 @@ void clip_and_emit(const Frame& frame, TriangleRef ref, const std::array<glm::ve
     }
 }
 
-void process_instance_range(const Frame& frame, std::uint32_t instance, std::size_t first,
-                            std::size_t end, Chunk& chunk) {
+// One triangle the general way: bad indices, non-finite vertices, user planes, outcodes,
+// clipping.
+void assemble_triangle(const Frame& frame, std::uint32_t instance, std::size_t t, Chunk& chunk) {
     const FrameInstance& fi = frame.instances[instance];
     const Mesh& mesh = *fi.mesh;
     const RenderOptions& options = *frame.options;
@@ -92,66 +94,96 @@ void process_instance_range(const Frame& frame, std::uint32_t instance, std::siz
     const int user_planes = frame.clip_settings.user_plane_count;
     const auto vertex_total = static_cast<std::uint32_t>(mesh.positions.size());
     const std::uint32_t* indices = mesh.indices.data();
-
-    for (std::size_t t = first; t < end; ++t) {
-        // The common case first: indices in range, all vertices inside the view volume and the
-        // guard band, no user planes. Most triangles of a dense mesh end in classify_triangle.
-        if (user_planes == 0) {
-            const std::uint32_t i0 = indices[3 * t], i1 = indices[3 * t + 1],
-                                i2 = indices[3 * t + 2];
-            if (i0 < vertex_total && i1 < vertex_total && i2 < vertex_total) {
-                const std::uint32_t g0 = fi.first_vertex + i0, g1 = fi.first_vertex + i1,
-                                    g2 = fi.first_vertex + i2;
-                if ((vertices.outcode[g0] | vertices.outcode[g1] | vertices.outcode[g2]) == 0) {
-                    TriangleRef ref;
-                    ref.instance = instance;
-                    ref.primitive = static_cast<std::uint32_t>(t);
-                    ref.vertex = ref.screen = {g0, g1, g2};
-                    emit(frame, ref, vertices.screen[g0], vertices.screen[g1], vertices.screen[g2],
-                         chunk);
-                    continue;
-                }
-            }
-        }
-        TriangleRef ref;
-        ref.instance = instance;
-        ref.primitive = static_cast<std::uint32_t>(t);
-        std::array<std::uint32_t, 3> code{};
-        bool valid = true, finite = true;
-        for (std::size_t k = 0; k < 3; ++k) {
-            const std::uint32_t local = indices[3 * t + k];
-            valid &= local < vertex_total;  // the loaders reject this; be safe
-            const std::uint32_t global = fi.first_vertex + (local < vertex_total ? local : 0);
-            ref.vertex[k] = ref.screen[k] = global;
-            code[k] = vertices.outcode[global];
-            finite &= code[k] != kNonFinite;
-        }
-        if (!valid || !finite) {  // a NaN/Inf vertex: nothing sensible to draw
-            ++chunk.stats.triangles_non_finite;
-            continue;
-        }
-        for (int p = 0; p < user_planes; ++p) {
-            const glm::vec4& plane = options.clip_planes[static_cast<std::size_t>(p)];
-            for (std::size_t k = 0; k < 3; ++k)
-                if (!(glm::dot(glm::vec3(plane), vertices.world[ref.vertex[k]]) + plane.w >= 0.0f))
-                    code[k] |= kClipUser0 << p;
-        }
-        if (code[0] & code[1] & code[2]) {
-            ++chunk.stats.triangles_trivially_rejected;
-            continue;
-        }
-        const std::uint32_t crossing = code[0] | code[1] | code[2];
-        if (crossing == 0) {
-            emit(frame, ref, vertices.screen[ref.vertex[0]], vertices.screen[ref.vertex[1]],
-                 vertices.screen[ref.vertex[2]], chunk);
-            continue;
-        }
-        ++chunk.stats.triangles_clipped;
-        clip_and_emit(frame, ref,
-                      {vertices.clip[ref.vertex[0]], vertices.clip[ref.vertex[1]],
-                       vertices.clip[ref.vertex[2]]},
-                      crossing, chunk);
+    TriangleRef ref;
+    ref.instance = instance;
+    ref.primitive = static_cast<std::uint32_t>(t);
+    std::array<std::uint32_t, 3> code{};
+    bool valid = true, finite = true;
+    for (std::size_t k = 0; k < 3; ++k) {
+        const std::uint32_t local = indices[3 * t + k];
+        valid &= local < vertex_total;  // the renderer refuses such scenes; be safe
+        const std::uint32_t global = fi.first_vertex + (local < vertex_total ? local : 0);
+        ref.vertex[k] = ref.screen[k] = global;
+        code[k] = vertices.outcode[global];
+        finite &= code[k] != kNonFinite;
     }
+    if (!valid || !finite) {  // a NaN/Inf vertex: nothing sensible to draw
+        ++chunk.stats.triangles_non_finite;
+        return;
+    }
+    for (int p = 0; p < user_planes; ++p) {
+        const glm::vec4& plane = options.clip_planes[static_cast<std::size_t>(p)];
+        for (std::size_t k = 0; k < 3; ++k)
+            if (!(glm::dot(glm::vec3(plane), vertices.world[ref.vertex[k]]) + plane.w >= 0.0f))
+                code[k] |= kClipUser0 << p;
+    }
+    if (code[0] & code[1] & code[2]) {
+        ++chunk.stats.triangles_trivially_rejected;
+        return;
+    }
+    const std::uint32_t crossing = code[0] | code[1] | code[2];
+    if (crossing == 0) {
+        emit(frame, ref, vertices.screen[ref.vertex[0]], vertices.screen[ref.vertex[1]],
+             vertices.screen[ref.vertex[2]], chunk);
+        return;
+    }
+    ++chunk.stats.triangles_clipped;
+    clip_and_emit(
+        frame, ref,
+        {vertices.clip[ref.vertex[0]], vertices.clip[ref.vertex[1]], vertices.clip[ref.vertex[2]]},
+        crossing, chunk);
+}
+
+void process_instance_range(const Frame& frame, std::uint32_t instance, std::size_t first,
+                            std::size_t end, Chunk& chunk) {
+    const FrameInstance& fi = frame.instances[instance];
+    const Mesh& mesh = *fi.mesh;
+    const FrameVertices& vertices = frame.vertices;
+    // The batch classifier gathers 32-bit words of ScreenVertex (6 per vertex).
+    const bool batch = frame.clip_settings.user_plane_count == 0 &&
+                       vertices.screen.size() < (std::size_t{1} << 31) / 6;
+    if (!batch) {
+        for (std::size_t t = first; t < end; ++t) assemble_triangle(frame, instance, t, chunk);
+        return;
+    }
+    ClassifyInput in;
+    in.indices = mesh.indices.data();
+    in.vertex_total = static_cast<std::uint32_t>(mesh.positions.size());
+    in.first_vertex = fi.first_vertex;
+    in.outcode = vertices.outcode.data();
+    in.screen = vertices.screen.data();
+    in.settings = frame.setup_settings;
+    thread_local ClassifyOutput out;
+    out.degenerate = out.culled = out.no_coverage = 0;
+    for (std::size_t t = first; t < end; t += ClassifyOutput::kMaxBatch) {
+        const std::size_t n = std::min(ClassifyOutput::kMaxBatch, end - t);
+        if (frame.options->simd)
+            classify_triangles(in, t, n, out);
+        else
+            classify_triangles_scalar(in, t, n, out);
+        for (std::uint32_t k = 0; k < out.count; ++k) {
+            if (out.flags[k] & ClassifyOutput::kSlow) {
+                assemble_triangle(frame, instance, out.triangle[k], chunk);
+                continue;
+            }
+            TriangleRef ref;
+            ref.instance = instance;
+            ref.primitive = out.triangle[k];
+            const std::uint32_t* corner = in.indices + 3 * std::size_t{out.triangle[k]};
+            ref.vertex = ref.screen = {fi.first_vertex + corner[0], fi.first_vertex + corner[1],
+                                       fi.first_vertex + corner[2]};
+            ref.front_facing = (out.flags[k] & ClassifyOutput::kFront) != 0;
+            ref.tile_x0 = static_cast<std::uint16_t>(out.min_x[k] / kTileSize);
+            ref.tile_y0 = static_cast<std::uint16_t>(out.min_y[k] / kTileSize);
+            ref.tile_x1 = static_cast<std::uint16_t>(out.max_x[k] / kTileSize);
+            ref.tile_y1 = static_cast<std::uint16_t>(out.max_y[k] / kTileSize);
+            ++chunk.stats.triangles_rasterized;
+            chunk.refs.push_back(ref);
+        }
+    }
+    chunk.stats.triangles_degenerate += out.degenerate;
+    chunk.stats.triangles_backface_culled += out.culled;
+    chunk.stats.triangles_no_coverage += out.no_coverage;
 }
 
 void process_chunk(const Frame& frame, Chunk& chunk) {

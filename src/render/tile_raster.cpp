@@ -22,7 +22,11 @@
 namespace zraster::detail {
 namespace {
 
-constexpr int kLocalBits = 20;  // a pixel's triangle reference: chunk << 20 | index in chunk
+constexpr int kLocalBits = 20;
+// Hierarchical z refreshes a block's bound after a triangle wrote at least this many fragments
+// there (or covered it whole).
+constexpr int kRefreshAfterFragments =
+    8;  // a pixel's triangle reference: chunk << 20 | index in chunk
 
 // Round to nearest (+ 0.5 and truncate: much cheaper than lround), as the SIMD shader does.
 std::uint8_t to_unorm8(float v) {
@@ -131,8 +135,10 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
                     const float f = tile.farthest[by * TileBuffers::kBlocksPerRow + bx];
                     farthest = largest ? std::max(farthest, f) : std::min(farthest, f);
                 }
-            if (block_hidden(setup.depth, x0 - setup.min_x, y0 - setup.min_y, x1 - setup.min_x,
-                             y1 - setup.min_y, farthest, c.compare)) {
+            // Blocks still at the far plane (1, or 0 reversed) hide nothing worth the test.
+            const bool drawn = largest ? farthest < 1.0f : farthest > 0.0f;
+            if (drawn && block_hidden(setup.depth, x0 - setup.min_x, y0 - setup.min_y,
+                                      x1 - setup.min_x, y1 - setup.min_y, farthest, c.compare)) {
                 ++c.blocks_hidden;
                 return 0;
             }
@@ -151,7 +157,9 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
         job.plane_dy = y0 - setup.min_y;
         const int passed =
             c.simd ? visibility_block(job, tile) : visibility_block_scalar(job, tile);
-        if (passed > 0 && c.hiz != HierarchicalZ::Off) {
+        // A stale bound is still a bound (stored depths only move nearer): refresh it only
+        // after real work, not after every 1-pixel triangle.
+        if (c.hiz != HierarchicalZ::Off && (full || passed >= kRefreshAfterFragments)) {
             const bool largest = c.hiz == HierarchicalZ::Largest;
             for (int by = by0; by <= by1; ++by)
                 for (int bx = bx0; bx <= bx1; ++bx)

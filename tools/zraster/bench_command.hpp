@@ -18,6 +18,7 @@ struct BenchArguments {
     int warmup = 2;
     int threads = 0;
     bool no_cull = false;
+    bool no_hierarchical_z = false;
     bool verbose = false;
     std::string out;
 };
