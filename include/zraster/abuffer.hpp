@@ -16,6 +16,11 @@
 //   geometry in arbitrary order, and antialiasing without shading every subsample (one color per
 //   fragment, as Carpenter's).
 //
+// Multisampling (src/visibility/multisample.cpp): coverage and depth per subsample (the A-buffer's
+// masks), shading once per pixel and visible surface, samples averaged. Cost: 8 bytes per sample,
+// shading as an aliased frame. Opaque only. When to use: antialiased edges and intersection
+// lines at about the shading cost of an aliased frame.
+//
 // Supersampling (src/visibility/supersample.cpp): render() at factor x the resolution with the
 // same options, box-filtered down. Cost: factor^2 times a frame's memory and work (every
 // subsample is shaded). Opaque only (the z-buffer keeps the nearest surface; opacity is ignored).
@@ -89,5 +94,17 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
 // Stats are the big frame's. factor = 1 is render(). Throws InputError for factor < 1 or a
 // supersampled size render() refuses.
 RenderResult render_supersampled(const Scene& scene, RenderOptions options, int factor);
+
+// Multisampling (MSAA): project_scene's polygons (slivers kept) rasterized into
+// samples_per_side^2 samples per pixel (the A-buffer's grid and exact masks), each sample keeping
+// the nearest polygon by its window-depth plane at the sample (equal depths: the first drawn).
+// Each pixel then shades every polygon that holds one of its samples once, as the A-buffer shades
+// a fragment (render()'s color at the pixel center when it holds every sample, else at the
+// centroid of its samples), and averages the samples (background where none), quantized as
+// render() quantizes. Material opacity is ignored (opaque). Depth, ids and normal: the polygon of
+// sample (n / 2, n / 2). Throws InputError as project_scene does or for samples_per_side other
+// than 1, 2, 4, 8. Bit-identical for any thread count.
+RenderResult render_multisampled(const Scene& scene, const RenderOptions& options,
+                                 int samples_per_side);
 
 }  // namespace zraster

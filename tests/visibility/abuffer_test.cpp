@@ -281,6 +281,10 @@ TEST(ABuffer, EdgeCoverageMatchesA256SampleReference) {
     const CoverageError abuf = coverage_error(render_abuffer(scene, options).targets);
     const CoverageError ssaa = coverage_error(render_supersampled(scene, options, 4).targets);
     const CoverageError aliased = coverage_error(render_supersampled(scene, options, 1).targets);
+    const CoverageError msaa = coverage_error(render_multisampled(scene, options, 4).targets);
+    EXPECT_LE(msaa.mean_edge, 1.0 / 16);
+    EXPECT_LE(msaa.max, 1.0 / 8);
+    std::printf("MSAA 4x4: %.4f / %.4f\n", msaa.mean_edge, msaa.max);
     std::printf(
         "edge pixels %d; |coverage error| mean / max: A-buffer 4x4 %.4f / %.4f, SSAA 4x4 "
         "%.4f / %.4f, no AA %.4f / %.4f\n",
@@ -537,6 +541,11 @@ TEST(ABufferShading, OpaqueTexturedSceneMatchesTheZBufferInside) {
         const RenderResult z = render(scene, o);
         const RenderResult a = render_abuffer(scene, o);
         const ShadingAgreement agreement = compare_shading(z.targets, a.targets);
+        const ShadingAgreement msaa =
+            compare_shading(z.targets, render_multisampled(scene, o, 4).targets);
+        print("MSAA 4x4 vs z-buffer", msaa);
+        EXPECT_EQ(msaa.interior_equal, msaa.interior);
+        EXPECT_LT(msaa.edge_mean, 12.0);
         print(interpolation == Interpolation::PerspectiveCorrect ? "A-buffer 4x4 vs z-buffer"
                                                                  : "A-buffer, screen-linear",
               agreement);
@@ -659,6 +668,74 @@ TEST(ABufferShading, TransparentPhongLayersAreOrderIndependent) {
         else
             EXPECT_EQ(r.targets.color, first) << order[0] << order[1] << order[2];
     } while (std::next_permutation(order.begin(), order.end()));
+}
+
+// Two surfaces crossing inside a pixel: MSAA decides per sample (depth per sample), like 4x4
+// supersampling; the A-buffer gives the whole pixel the order at its center.
+TEST(Multisample, IntersectionLinesAreResolvedPerSample) {
+    Scene scene = scene_from_triangles(interpenetrating_pair());
+    Material red, blue;
+    red.base_color = {1.0f, 0.0f, 0.0f};
+    blue.base_color = {0.0f, 0.0f, 1.0f};
+    scene.materials = {Material{}, red, blue};
+    scene.meshes[0].material = 1;
+    scene.meshes[1].material = 2;
+    RenderOptions options;
+    // An odd height: the intersection line (y = 0) runs through the centers of row 60, so each
+    // of its pixels is split between the two surfaces.
+    options.width = 160;
+    options.height = 121;
+    options.threads = 1;
+    options.camera = front_camera();
+    options.cull = CullMode::None;
+    options.shading = ShadingMode::Unlit;
+    const RenderResult ssaa = render_supersampled(scene, options, 4);
+    const RenderResult msaa = render_multisampled(scene, options, 4);
+    const RenderResult abuf = render_abuffer(scene, options);
+    // Pixels where both triangles show in the SSAA frame (red and blue both > 0): the
+    // intersection line and the outlines where one lies over the other.
+    std::size_t mixed = 0, msaa_close = 0, abuf_close = 0;
+    for (std::size_t p = 0; p < ssaa.targets.color.size(); p += 4) {
+        const auto* s = &ssaa.targets.color[p];
+        if (s[0] < 20 || s[2] < 20 || s[0] + s[2] < 200) continue;
+        ++mixed;
+        auto close = [&](const std::vector<std::uint8_t>& image) {
+            int d = 0;
+            for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(int(image[p + c]) - int(s[c])));
+            return d <= 17;  // one sample of 16 is 16 levels
+        };
+        msaa_close += close(msaa.targets.color);
+        abuf_close += close(abuf.targets.color);
+    }
+    std::printf(
+        "pixels with both surfaces: %zu; within one sample of 4x4 SSAA: MSAA %zu, "
+        "A-buffer %zu\n",
+        mixed, msaa_close, abuf_close);
+    ASSERT_GT(mixed, 40u);
+    EXPECT_GE(double(msaa_close), 0.95 * double(mixed));
+    EXPECT_LT(abuf_close, msaa_close);
+    // And the rest of the frame: same sample grid, same colors.
+    std::size_t far = 0;
+    for (std::size_t i = 0; i < ssaa.targets.color.size(); ++i)
+        far += std::abs(int(ssaa.targets.color[i]) - int(msaa.targets.color[i])) > 17;
+    EXPECT_LE(far, 8u);
+}
+
+TEST(Multisample, BitIdenticalForAnyThreadCountAndRejectsBadSampleCounts) {
+    const Scene scene = make_procedural_scene("builtin:default");
+    RenderOptions options;
+    options.width = 96;
+    options.height = 64;
+    options.threads = 1;
+    const RenderResult one = render_multisampled(scene, options, 4);
+    options.threads = 2;
+    EXPECT_EQ(render_multisampled(scene, options, 4).targets.color, one.targets.color);
+    EXPECT_THROW(render_multisampled(scene, options, 3), InputError);
+    EXPECT_THROW(render_multisampled(scene, options, 16), InputError);
+    // One sample per pixel at its center: render() exactly, shading included.
+    options.id_targets = true;
+    EXPECT_EQ(render_multisampled(scene, options, 1).targets.color,
+              render(scene, options).targets.color);
 }
 
 // ---------------------------------------------------------------------------------------------
