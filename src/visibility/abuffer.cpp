@@ -49,12 +49,6 @@ std::int64_t floor_div(std::int64_t a, std::int64_t b) {
     return q;
 }
 
-void check_samples_per_side(int n) {
-    if (n != 1 && n != 2 && n != 4 && n != 8)
-        throw InputError(
-            "", "A-buffer samples per side must be 1, 2, 4 or 8, not " + std::to_string(n));
-}
-
 // Calls fn(px, py, mask) for every pixel of the viewport where the polygon covers a sample.
 template <class Fn>
 void for_each_mask(const ScreenPolygon& polygon, const Viewport& viewport, int n, Fn&& fn) {
@@ -160,7 +154,7 @@ double sample_offset(int i, int n) {
 
 std::vector<PixelCoverage> polygon_coverage(const ScreenPolygon& polygon, const Viewport& viewport,
                                             int samples_per_side) {
-    check_samples_per_side(samples_per_side);
+    visibility_detail::check_samples_per_side(samples_per_side, "A-buffer");
     std::vector<PixelCoverage> out;
     for_each_mask(polygon, viewport, samples_per_side, [&](int px, int py, std::uint64_t mask) {
         out.push_back({px, py, mask});
@@ -172,7 +166,7 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
                             const ABufferOptions& abuffer, ABufferStats* stats) {
     using visibility_detail::SurfaceShader;
     const auto start = std::chrono::steady_clock::now();
-    check_samples_per_side(abuffer.samples_per_side);
+    visibility_detail::check_samples_per_side(abuffer.samples_per_side, "A-buffer");
     // Slivers between pixel centers may still cover subsamples: keep them.
     const std::vector<ScreenPolygon> polygons = project_scene(scene, options, true);
     const visibility_detail::FrameContext frame =
@@ -233,16 +227,8 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
 
     // Targets.
     RenderResult result;
+    result.targets = visibility_detail::blank_targets(options);
     RenderTargets& t = result.targets;
-    t.width = width;
-    t.height = height;
-    if (options.color_target) t.color.assign(pixels * 4, 255);
-    t.depth.assign(pixels, depth_clear_value(options));
-    if (options.normal_target) t.normal.assign(pixels, glm::vec3(0.0f));
-    if (options.id_targets) {
-        t.instance_id.assign(pixels, -1);
-        t.primitive_id.assign(pixels, -1);
-    }
     const glm::dvec3 background =
         glm::clamp(glm::dvec3(options.background), glm::dvec3(0.0), glm::dvec3(1.0));
     const std::uint64_t full =
@@ -356,12 +342,9 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
     arena.execute([&] { tbb::parallel_for(tbb::blocked_range<int>(0, height, 8), resolve_rows); });
 
     if (stats) *stats = local;
-    result.stats.camera = camera;
-    result.stats.triangles_in = scene.triangle_count();
     result.stats.triangles_rasterized = polygons.size();
     result.stats.fragments_shaded = shaded_total.load();
-    result.stats.total_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    visibility_detail::finish_stats(result.stats, camera, scene, start);
     return result;
 }
 

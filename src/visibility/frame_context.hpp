@@ -7,6 +7,7 @@
 #include <zraster/visibility.hpp>
 
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <span>
@@ -37,6 +38,17 @@ inline std::uint8_t unorm8(float v) {
     v = v < 1.0f ? v : 1.0f;
     return static_cast<std::uint8_t>(v * 255.0f + 0.5f);
 }
+
+// Targets as options asks for them, cleared: color white (RGBA 255), depth to
+// depth_clear_value, normal zero, ids -1.
+RenderTargets blank_targets(const RenderOptions& options);
+
+// The stats every visibility frame fills in: camera, triangles_in, total_ms since `start`.
+void finish_stats(RenderStats& stats, const Camera& camera, const Scene& scene,
+                  std::chrono::steady_clock::time_point start);
+
+// Throws InputError unless n is 1, 2, 4 or 8 (subsamples per pixel side; `what` names the user).
+void check_samples_per_side(int n, const char* what);
 
 // Throws InputError for an image size out of range or too many user clip planes.
 FrameContext make_frame_context(const Scene& scene, const RenderOptions& options);

@@ -40,9 +40,7 @@ RenderResult render_multisampled(const Scene& scene, const RenderOptions& option
     using visibility_detail::SurfaceShader;
     const auto start = std::chrono::steady_clock::now();
     const int n = samples_per_side;
-    if (n != 1 && n != 2 && n != 4 && n != 8)
-        throw InputError(
-            "", "multisampling samples per side must be 1, 2, 4 or 8, not " + std::to_string(n));
+    visibility_detail::check_samples_per_side(n, "multisampling");
     const std::vector<ScreenPolygon> polygons = project_scene(scene, options, true);
     const visibility_detail::FrameContext frame =
         visibility_detail::make_frame_context(scene, options);
@@ -77,16 +75,8 @@ RenderResult render_multisampled(const Scene& scene, const RenderOptions& option
     // Deferred shading and resolve, parallel over rows.
     const SurfaceShader shader(frame);
     RenderResult result;
+    result.targets = visibility_detail::blank_targets(options);
     RenderTargets& t = result.targets;
-    t.width = width;
-    t.height = height;
-    if (options.color_target) t.color.assign(pixels * 4, 255);
-    t.depth.assign(pixels, depth_clear_value(options));
-    if (options.normal_target) t.normal.assign(pixels, glm::vec3(0.0f));
-    if (options.id_targets) {
-        t.instance_id.assign(pixels, -1);
-        t.primitive_id.assign(pixels, -1);
-    }
     const glm::dvec3 background =
         glm::clamp(glm::dvec3(options.background), glm::dvec3(0.0), glm::dvec3(1.0));
     const int center_sample = (n / 2) * n + n / 2;  // for depth, ids, normal
@@ -150,11 +140,8 @@ RenderResult render_multisampled(const Scene& scene, const RenderOptions& option
     };
     arena.execute([&] { tbb::parallel_for(tbb::blocked_range<int>(0, height, 8), resolve_rows); });
 
-    result.stats.camera = frame.camera;
-    result.stats.triangles_in = scene.triangle_count();
     result.stats.triangles_rasterized = polygons.size();
-    result.stats.total_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    visibility_detail::finish_stats(result.stats, frame.camera, scene, start);
     return result;
 }
 

@@ -94,6 +94,35 @@ FrameContext make_frame_context(const Scene& scene, const RenderOptions& options
     return f;
 }
 
+RenderTargets blank_targets(const RenderOptions& options) {
+    const std::size_t pixels = std::size_t(options.width) * std::size_t(options.height);
+    RenderTargets t;
+    t.width = options.width;
+    t.height = options.height;
+    if (options.color_target) t.color.assign(pixels * 4, 255);
+    t.depth.assign(pixels, depth_clear_value(options));
+    if (options.normal_target) t.normal.assign(pixels, glm::vec3(0.0f));
+    if (options.id_targets) {
+        t.instance_id.assign(pixels, -1);
+        t.primitive_id.assign(pixels, -1);
+    }
+    return t;
+}
+
+void finish_stats(RenderStats& stats, const Camera& camera, const Scene& scene,
+                  std::chrono::steady_clock::time_point start) {
+    stats.camera = camera;
+    stats.triangles_in = scene.triangle_count();
+    stats.total_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+void check_samples_per_side(int n, const char* what) {
+    if (n != 1 && n != 2 && n != 4 && n != 8)
+        throw InputError("", std::string(what) + " samples per side must be 1, 2, 4 or 8, not " +
+                                 std::to_string(n));
+}
+
 bool set_window_xy(PolygonVertex& v, const Viewport& viewport) {
     SetupSettings settings;
     settings.viewport = viewport;

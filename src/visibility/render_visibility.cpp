@@ -55,11 +55,8 @@ RenderResult render_bsp(const BspTree& tree, const Scene& scene, const RenderOpt
     for_each_bsp_piece(tree, frame, [&](const ScreenPolygon& piece) { canvas.draw(piece); });
     RenderResult result;
     result.targets = canvas.take();
-    result.stats.camera = frame.camera;
-    result.stats.triangles_in = scene.triangle_count();
     result.stats.fragments_shaded = canvas.fragments();
-    result.stats.total_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    finish_stats(result.stats, frame.camera, scene, start);
     return result;
 }
 
@@ -106,9 +103,7 @@ RenderResult render_with_visibility(const Scene& scene, const RenderOptions& opt
             break;
         }
     }
-    result.stats.triangles_in = scene.triangle_count();
-    result.stats.total_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    visibility_detail::finish_stats(result.stats, result.stats.camera, scene, start);
     return result;
 }
 

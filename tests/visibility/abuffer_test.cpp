@@ -528,11 +528,7 @@ void print(const char* label, const ShadingAgreement& a) {
 // lighting, and spheres with flat, Gouraud and Phong shading (instance overrides).
 TEST(ABufferShading, OpaqueTexturedSceneMatchesTheZBufferInside) {
     const Scene scene = make_procedural_scene("builtin:default");
-    RenderOptions options;
-    options.width = 240;
-    options.height = 160;
-    options.threads = 1;
-    options.id_targets = true;
+    RenderOptions options = id_options(240, 160);
     const RenderResult reference = render(scene, options);
     for (const Interpolation interpolation :
          {Interpolation::PerspectiveCorrect, Interpolation::ScreenLinear}) {
@@ -572,11 +568,7 @@ TEST(ABufferShading, OpaqueTexturedSceneMatchesTheZBufferInside) {
 
 TEST(ABufferShading, NormalTargetIsTheShadingNormal) {
     const Scene scene = make_procedural_scene("builtin:default");
-    RenderOptions options;
-    options.width = 240;
-    options.height = 160;
-    options.threads = 1;
-    options.id_targets = true;
+    RenderOptions options = id_options(240, 160);
     options.normal_target = true;
     const RenderResult z = render(scene, options);
     const RenderResult a = render_abuffer(scene, options);
@@ -604,10 +596,7 @@ TEST(ABufferShading, TexturedSpotMatchesTheZBufferInside) {
     for (Material& m : scene.materials)
         m.base_color_texture = std::make_shared<Texture>(image.width, image.height, image.rgba);
     ASSERT_FALSE(scene.meshes[0].uvs.empty());
-    RenderOptions options;  // large enough for pixels inside triangles
-    options.width = 800;
-    options.height = 600;
-    options.id_targets = true;
+    RenderOptions options = id_options(800, 600);  // large enough for pixels inside triangles
     for (const ShadingMode mode : {ShadingMode::Phong, ShadingMode::Gouraud, ShadingMode::Flat}) {
         options.shading = mode;
         const RenderResult z = render(scene, options);
@@ -627,11 +616,7 @@ TEST(ABufferShading, TexturedSpotMatchesTheZBufferInside) {
 // edges, sampled from a finer mip level) makes the largest differences.
 TEST(SupersampleShading, ShadesLikeTheZBuffer) {
     const Scene scene = make_procedural_scene("builtin:default");
-    RenderOptions options;
-    options.width = 240;
-    options.height = 160;
-    options.threads = 1;
-    options.id_targets = true;
+    RenderOptions options = id_options(240, 160);
     const RenderResult z = render(scene, options);
     const ShadingAgreement agreement =
         compare_shading(z.targets, render_supersampled(scene, options, 2).targets);
@@ -680,12 +665,9 @@ TEST(Multisample, IntersectionLinesAreResolvedPerSample) {
     scene.materials = {Material{}, red, blue};
     scene.meshes[0].material = 1;
     scene.meshes[1].material = 2;
-    RenderOptions options;
     // An odd height: the intersection line (y = 0) runs through the centers of row 60, so each
     // of its pixels is split between the two surfaces.
-    options.width = 160;
-    options.height = 121;
-    options.threads = 1;
+    RenderOptions options = id_options(160, 121);
     options.camera = front_camera();
     options.cull = CullMode::None;
     options.shading = ShadingMode::Unlit;
@@ -723,17 +705,13 @@ TEST(Multisample, IntersectionLinesAreResolvedPerSample) {
 
 TEST(Multisample, BitIdenticalForAnyThreadCountAndRejectsBadSampleCounts) {
     const Scene scene = make_procedural_scene("builtin:default");
-    RenderOptions options;
-    options.width = 96;
-    options.height = 64;
-    options.threads = 1;
+    RenderOptions options = id_options(96, 64);
     const RenderResult one = render_multisampled(scene, options, 4);
     options.threads = 2;
     EXPECT_EQ(render_multisampled(scene, options, 4).targets.color, one.targets.color);
     EXPECT_THROW(render_multisampled(scene, options, 3), InputError);
     EXPECT_THROW(render_multisampled(scene, options, 16), InputError);
     // One sample per pixel at its center: render() exactly, shading included.
-    options.id_targets = true;
     EXPECT_EQ(render_multisampled(scene, options, 1).targets.color,
               render(scene, options).targets.color);
 }

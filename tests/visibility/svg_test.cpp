@@ -65,39 +65,6 @@ void expect_well_formed(const std::string& svg) {
     EXPECT_EQ(roots, 1u);
 }
 
-// The subpaths of every <path d="...">: lists of points.
-std::vector<std::vector<glm::dvec2>> subpaths(const std::string& svg) {
-    std::vector<std::vector<glm::dvec2>> out;
-    for (std::size_t at = svg.find("<path d=\""); at != std::string::npos;
-         at = svg.find("<path d=\"", at + 1)) {
-        const std::size_t begin = at + 9, end = svg.find('"', begin);
-        const std::string d = svg.substr(begin, end - begin);
-        const char* p = d.c_str();
-        std::vector<double> numbers;
-        while (*p) {
-            if (*p == 'M' || *p == 'Z') {
-                if (*p == 'Z' || !numbers.empty()) {
-                    std::vector<glm::dvec2> loop;
-                    for (std::size_t k = 0; k + 1 < numbers.size(); k += 2)
-                        loop.emplace_back(numbers[k], numbers[k + 1]);
-                    if (!loop.empty()) out.push_back(loop);
-                    numbers.clear();
-                }
-                ++p;
-            } else if (*p == 'L' || *p == ' ') {
-                ++p;
-            } else {
-                char* next = nullptr;
-                numbers.push_back(std::strtod(p, &next));
-                EXPECT_NE(next, p) << d;
-                if (next == p) return out;
-                p = next;
-            }
-        }
-    }
-    return out;
-}
-
 double area(const std::vector<glm::dvec2>& loop) {
     double a = 0.0;
     for (std::size_t i = 0; i < loop.size(); ++i) {
@@ -161,6 +128,7 @@ std::vector<PathElement> parse_paths(const std::string& svg) {
             } else {
                 char* next = nullptr;
                 numbers.push_back(std::strtod(p, &next));
+                EXPECT_NE(next, p) << d;
                 if (next == p) break;
                 p = next;
             }
@@ -168,6 +136,14 @@ std::vector<PathElement> parse_paths(const std::string& svg) {
         flush(false);
         out.push_back(std::move(e));
     }
+    return out;
+}
+
+// The subpaths of every fill <path>: lists of points.
+std::vector<std::vector<glm::dvec2>> subpaths(const std::string& svg) {
+    std::vector<std::vector<glm::dvec2>> out;
+    for (const PathElement& e : parse_paths(svg))
+        if (!e.edge) out.insert(out.end(), e.subpaths.begin(), e.subpaths.end());
     return out;
 }
 
