@@ -243,33 +243,26 @@ std::vector<std::uint32_t> BspTree::back_to_front(const glm::dvec4& eye) const {
 std::vector<BspPolygon> bsp_polygons_from_scene(const Scene& scene) {
     std::vector<BspPolygon> out;
     out.reserve(scene.triangle_count());
-    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
-        const Instance& instance = scene.instances[i];
-        const Mesh& mesh = scene.meshes.at(instance.mesh);
-        const glm::dmat4 model(instance.transform);
-        for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    visibility_detail::for_each_scene_triangle(
+        scene, [&](std::size_t i, const Instance& instance, const Mesh& mesh, std::size_t t,
+                   const std::array<std::uint32_t, 3>& index) {
+            const glm::dmat4 model(instance.transform);
             BspPolygon polygon;
             polygon.instance = static_cast<std::int32_t>(i);
             polygon.primitive = static_cast<std::int32_t>(t);
-            std::array<std::uint32_t, 3> index;
-            if (!visibility_detail::triangle_indices(mesh, t, index)) continue;
-            bool valid = true;
             for (std::size_t k = 0; k < 3; ++k) {
                 BspVertex v;
                 v.object = mesh.positions[index[k]];
                 v.weights[static_cast<glm::length_t>(k)] = 1.0f;
                 v.world = glm::dvec3(model * glm::dvec4(glm::dvec3(v.object), 1.0));
-                valid = valid && std::isfinite(v.world.x) && std::isfinite(v.world.y) &&
-                        std::isfinite(v.world.z);
+                if (!std::isfinite(v.world.x + v.world.y + v.world.z)) return;
                 polygon.vertices.push_back(v);
             }
-            if (!valid) continue;
             polygon.plane = visibility_detail::plane_through(
                 polygon.vertices[0].world, polygon.vertices[1].world, polygon.vertices[2].world);
-            if (polygon.plane == glm::dvec4(0.0)) continue;  // degenerate: covers nothing
+            if (polygon.plane == glm::dvec4(0.0)) return;  // degenerate: covers nothing
             out.push_back(std::move(polygon));
-        }
-    }
+        });
     return out;
 }
 

@@ -78,6 +78,19 @@ struct TriangleSource {
 // The three vertex indices of triangle t of `mesh`; false when one is past its positions.
 bool triangle_indices(const Mesh& mesh, std::size_t t, std::array<std::uint32_t, 3>& out);
 
+// Calls fn(instance index, instance, mesh, triangle index, its vertex indices) for every triangle
+// of every instance (in submission order) whose vertex indices are valid.
+template <class Fn>
+void for_each_scene_triangle(const Scene& scene, Fn&& fn) {
+    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+        const Instance& instance = scene.instances[i];
+        const Mesh& mesh = scene.meshes.at(instance.mesh);
+        std::array<std::uint32_t, 3> index;
+        for (std::size_t t = 0; t < mesh.triangle_count(); ++t)
+            if (triangle_indices(mesh, t, index)) fn(i, instance, mesh, t, index);
+    }
+}
+
 // Clips and projects the triangle; false when nothing of it is left (rejected, clipped away,
 // non-finite, zero snapped area, culled, or no pixel center in its bounding box).
 bool project_triangle(const FrameContext& frame, const TriangleSource& source, ScreenPolygon& out);

@@ -311,28 +311,30 @@ std::vector<ScreenPolygon> project_scene(const Scene& scene, const RenderOptions
     frame.keep_subpixel = keep_subpixel;
     std::vector<ScreenPolygon> out;
     ScreenPolygon polygon;
-    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
-        const Instance& instance = scene.instances[i];
-        const Mesh& mesh = scene.meshes.at(instance.mesh);
-        const glm::mat4 mvp = frame.view_projection * instance.transform;
-        const glm::dmat4 model_d(instance.transform);
-        for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
-            TriangleSource source;
-            source.instance = static_cast<std::int32_t>(i);
-            source.primitive = static_cast<std::int32_t>(t);
-            std::array<std::uint32_t, 3> index;
-            if (!triangle_indices(mesh, t, index)) continue;
-            for (std::size_t k = 0; k < 3; ++k) {
-                const glm::vec4 p(mesh.positions[index[k]], 1.0f);
-                source.clip[k] = mvp * p;
-                source.world_f[k] = glm::vec3(instance.transform * p);
-                source.world[k] = glm::dvec3(model_d * glm::dvec4(p));
-            }
-            source.plane = plane_through(source.world[0], source.world[1], source.world[2]);
-            if (source.plane == glm::dvec4(0.0)) continue;  // no area: nothing to see
-            if (project_triangle(frame, source, polygon)) out.push_back(polygon);
+    std::size_t current = scene.instances.size();
+    glm::mat4 mvp(1.0f);
+    glm::dmat4 model_d(1.0);
+    for_each_scene_triangle(scene, [&](std::size_t i, const Instance& instance, const Mesh& mesh,
+                                       std::size_t t, const std::array<std::uint32_t, 3>& index) {
+        // As the renderer's vertex stage computes them (float), plus double world positions.
+        if (i != current) {
+            current = i;
+            mvp = frame.view_projection * instance.transform;
+            model_d = glm::dmat4(instance.transform);
         }
-    }
+        TriangleSource source;
+        source.instance = static_cast<std::int32_t>(i);
+        source.primitive = static_cast<std::int32_t>(t);
+        for (std::size_t k = 0; k < 3; ++k) {
+            const glm::vec4 p(mesh.positions[index[k]], 1.0f);
+            source.clip[k] = mvp * p;
+            source.world_f[k] = glm::vec3(instance.transform * p);
+            source.world[k] = glm::dvec3(model_d * glm::dvec4(p));
+        }
+        source.plane = plane_through(source.world[0], source.world[1], source.world[2]);
+        if (source.plane == glm::dvec4(0.0)) return;  // no area: nothing to see
+        if (project_triangle(frame, source, polygon)) out.push_back(polygon);
+    });
     return out;
 }
 
