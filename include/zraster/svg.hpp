@@ -12,10 +12,12 @@
 // joins); since everything is painted back to front, nearer polygons cover the strokes of
 // farther ones.
 //
-// Edges (SvgOptions::edges): after each outline's fill, the sides of it that lie on edges of the
-// mesh are stroked with edge_color (decided exactly from PolygonVertex::weights: BSP and
-// painter's split lines, fan diagonals and clipping lines are not drawn). Hidden edges are
-// covered by nearer polygons because of the paint order.
+// Edges (SvgOptions::edges): the sides of each outline that lie on edges of the mesh are stroked
+// with edge_color (decided exactly from PolygonVertex::weights: BSP and painter's split lines, fan
+// diagonals and clipping lines are not drawn): an outline made of mesh edges only is one element
+// whose stroke is the edges (it covers the seams too); any other is its fill (with its seam
+// stroke) followed by a path of its mesh-edge sides. Hidden edges are covered by nearer polygons
+// because of the paint order.
 //
 // Merging (SvgOptions::merge_coplanar): a polygon with the same 8-bit fill as an outline up to
 // merge_lookback places back in the paint order, lying in its plane (with edges on; without edges
@@ -55,7 +57,7 @@ struct SvgStats {
     std::size_t polygons_in = 0;   // polygons in the paint order (clipped and split pieces)
     std::size_t polygons_out = 0;  // after merging
     std::size_t paths = 0;         // <path> elements, edge paths included
-    std::size_t edge_paths = 0;    // of which edge strokes
+    std::size_t edge_paths = 0;    // of which draw edges (an all-edge outline, or edge sides)
     std::size_t bytes = 0;         // size of the document
 };
 

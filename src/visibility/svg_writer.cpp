@@ -348,15 +348,23 @@ std::string render_svg(const Scene& scene, const RenderOptions& options,
                     outlines.size(), o.order == SvgOptions::Order::Bsp ? "BSP" : "painter's");
     out += fmt::format("<rect width=\"{}\" height=\"{}\" fill=\"{}\"/>\n", w, h,
                        hex(options.background));
+    // With edges the group's style is the edges' (an edge path is then just its d); fills carry
+    // their own fill and seam stroke.
     const bool seams = o.seam_width > 0.0f;
-    if (seams)
+    std::string seam_width;  // on each fill when it differs from the group's stroke width
+    if (o.edges) {
+        out += fmt::format(
+            "<g fill=\"none\" stroke=\"{}\" stroke-width=\"{}\" stroke-linejoin=\"round\" "
+            "stroke-linecap=\"round\">\n",
+            hex(o.edge_color), number(o.edge_width));
+        if (seams && number(o.seam_width) != number(o.edge_width))
+            seam_width = fmt::format(" stroke-width=\"{}\"", number(o.seam_width));
+    } else if (seams) {
         out += fmt::format("<g stroke-width=\"{}\" stroke-linejoin=\"round\">\n",
                            number(o.seam_width));
-    else
+    } else {
         out += "<g>\n";
-    const std::string edge_attributes =
-        fmt::format("fill=\"none\" stroke=\"{}\" stroke-width=\"{}\" stroke-linecap=\"round\"",
-                    hex(o.edge_color), number(o.edge_width));
+    }
 
     std::size_t paths = 0, edge_paths = 0;
     for (std::size_t i = 0; i < outlines.size();) {
@@ -372,8 +380,22 @@ std::string render_svg(const Scene& scene, const RenderOptions& options,
             append_subpath(out, outlines[k].loop, o.precision);
         }
         const std::string fill = hex(outlines[i].color);
+        const auto& flags = outlines[i].mesh_edge;
+        const bool all_edges =
+            o.edges && std::all_of(flags.begin(), flags.end(), [](std::uint8_t f) { return f; });
+        if (all_edges) {
+            // Its whole outline is mesh edges: the group's edge stroke draws them and covers the
+            // seams, in one element.
+            out += fmt::format("\" fill=\"{}\"/>\n", fill);
+            ++paths;
+            ++edge_paths;
+            i = end;
+            continue;
+        }
         if (seams)
-            out += fmt::format("\" fill=\"{0}\" stroke=\"{0}\"/>\n", fill);
+            out += fmt::format("\" fill=\"{0}\" stroke=\"{0}\"{1}/>\n", fill, seam_width);
+        else if (o.edges)
+            out += fmt::format("\" fill=\"{}\" stroke=\"none\"/>\n", fill);
         else
             out += fmt::format("\" fill=\"{}\"/>\n", fill);
         ++paths;
@@ -382,7 +404,7 @@ std::string render_svg(const Scene& scene, const RenderOptions& options,
             // edges of the model.
             std::string d;
             if (append_edges(d, outlines[i], o.precision) > 0) {
-                out += fmt::format("<path d=\"{}\" {}/>\n", d, edge_attributes);
+                out += fmt::format("<path d=\"{}\"/>\n", d);
                 ++paths;
                 ++edge_paths;
             }

@@ -85,11 +85,12 @@ Scene default_scene() {
 }
 
 // A <path> element: its subpaths (closed by Z or open), and whether it is an edge stroke
-// (fill="none") or a fill; fill is its fill color.
+// (no fill attribute: it takes the group's edge style) or a fill; fill is its fill color.
 struct PathElement {
     std::vector<std::vector<glm::dvec2>> subpaths;
     std::vector<bool> closed;
     bool edge = false;
+    bool edge_stroked = false;  // no stroke of its own: drawn with the group's edge stroke
     std::string fill;
 };
 
@@ -102,7 +103,8 @@ std::vector<PathElement> parse_paths(const std::string& svg) {
         PathElement e;
         const std::size_t close = svg.find("/>", end);
         const std::string attributes = svg.substr(end, close - end);
-        e.edge = attributes.find("fill=\"none\"") != std::string::npos;
+        e.edge = attributes.find("fill=") == std::string::npos;  // the group's style
+        e.edge_stroked = attributes.find("stroke=") == std::string::npos;
         const std::size_t fill = attributes.find("fill=\"");
         if (fill != std::string::npos) e.fill = attributes.substr(fill + 6, 7);
         std::vector<double> numbers;
@@ -296,17 +298,28 @@ TEST(Svg, EdgesAreStrokedPathsAfterTheirFills) {
     SvgStats stats;
     const std::string svg = render_svg(scene, small_options(), svg_options, &stats);
     expect_well_formed(svg);
-    EXPECT_EQ(count(svg, "fill=\"none\" stroke=\"#ff0000\" stroke-width=\"0.75\""),
-              stats.edge_paths);
+    EXPECT_NE(svg.find("<g fill=\"none\" stroke=\"#ff0000\" stroke-width=\"0.75\""),
+              std::string::npos);
+    std::size_t edge_elements = 0, all_edge_fills = 0, seamed_fills = 0;
+    for (const PathElement& e : parse_paths(svg)) {
+        edge_elements += e.edge;
+        all_edge_fills += !e.edge && e.edge_stroked;
+        seamed_fills += !e.edge_stroked;
+    }
+    EXPECT_EQ(edge_elements + all_edge_fills, stats.edge_paths);
+    EXPECT_GT(all_edge_fills, 0u);
+    EXPECT_EQ(all_edge_fills + seamed_fills, stats.polygons_out);
+    // Seams (0.5) differ from the edge width: each seamed fill says its own.
+    EXPECT_EQ(count(svg, "stroke-width=\"0.5\"/>"), seamed_fills);
     EXPECT_GT(stats.edge_paths, stats.polygons_out / 4);
     EXPECT_LE(stats.edge_paths, stats.polygons_out);
-    EXPECT_EQ(stats.paths, stats.polygons_out + stats.edge_paths);  // one fill each
+    EXPECT_EQ(stats.paths, stats.polygons_out + edge_elements);  // one fill each
     // Each edge path directly follows its outline's fill: nearer fills hide farther edges.
     const auto elements = parse_paths(svg);
     for (std::size_t i = 0; i < elements.size(); ++i)
         if (elements[i].edge) {
             ASSERT_GT(i, 0u);
-            EXPECT_FALSE(elements[i - 1].edge);
+            EXPECT_FALSE(elements[i - 1].edge_stroked);  // a seamed fill, not all edges
         }
 }
 
@@ -348,7 +361,7 @@ TEST(Svg, EdgesAreMeshEdgesNotSplitLines) {
                 const std::size_t sides = e.closed[k] ? points.size() : points.size() - 1;
                 for (std::size_t i = 0; i < sides; ++i) {
                     const bool on = on_mesh_edge(points[i], points[(i + 1) % points.size()]);
-                    if (e.edge) {
+                    if (e.edge_stroked) {
                         ++edge_segments;
                         EXPECT_TRUE(on) << int(order) << ": " << points[i].x << "," << points[i].y;
                     } else {
