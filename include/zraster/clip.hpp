@@ -8,6 +8,9 @@
 //
 // Cost: O(vertices x planes) per polygon; only triangles that cross a plane pay it, the others
 // are accepted or rejected from their vertex outcodes.
+// When to use: every triangle before rasterization (what the pipeline does), and any polygon that
+// must be cut by planes in 3D before the divide; for polygons in 2D against a convex window see
+// polygon_clip.hpp, for line segments line_clip.hpp.
 #pragma once
 #include <zraster/camera.hpp>
 

@@ -1,7 +1,10 @@
 // SVG output of the BSP / painter's order (see svg.hpp).
 //
 // Cost: that of the order (BSP build and walk, or painter_sort) plus O(polygons * loop size) for
-// merging, with merged loops capped at kMaxMergedVertices so that it stays linear.
+// merging, with merged loops capped at kMaxMergedVertices so that it stays linear, and up to
+// merge_lookback overlap tests per polygon (exact separating-axis tests after a box test).
+// When to use: figures and diagrams that must stay sharp at any size, or be edited as vectors; a
+// few thousand polygons (the document grows with them, about 80 bytes per outline).
 #include <zraster/error.hpp>
 #include <zraster/precision.hpp>
 #include <zraster/svg.hpp>

@@ -314,6 +314,9 @@ int run_render(const RenderArguments& a) {
     if (a.aa < 1 || a.aa > 16) throw InputError("--aa", "must be in 1..16");
     if (a.msaa && a.visibility != "zbuffer")
         throw InputError("--msaa", "works with --visibility zbuffer");
+    if ((a.wireframe || a.hidden_line) && (a.visibility != "zbuffer" || a.msaa))
+        throw InputError(a.wireframe ? "--wireframe" : "--hidden-line",
+                         "works with --visibility zbuffer, without --msaa");
     if (a.msaa && a.aa != 1 && a.aa != 2 && a.aa != 4 && a.aa != 8)
         throw InputError("--aa", "with --msaa must be 1, 2, 4 or 8");
     if (a.visibility != "abuffer") warn_if_transparent(scene, "--visibility " + a.visibility);
