@@ -102,8 +102,9 @@ RenderResult render_supersampled(const Scene& scene, RenderOptions options, int 
 // a fragment (render()'s color at the pixel center when it holds every sample, else at the
 // centroid of its samples), and averages the samples (background where none), quantized as
 // render() quantizes. Material opacity is ignored (opaque). Depth, ids and normal: the polygon of
-// sample (n / 2, n / 2). Throws InputError as project_scene does or for samples_per_side other
-// than 1, 2, 4, 8. Bit-identical for any thread count.
+// sample (n / 2, n / 2). Throws InputError as project_scene does, for samples_per_side other
+// than 1, 2, 4, 8, or when width x height x samples exceeds options.limits.max_pixels (the sample
+// buffers take 8 bytes per sample). Bit-identical for any thread count.
 RenderResult render_multisampled(const Scene& scene, const RenderOptions& options,
                                  int samples_per_side);
 

@@ -12,7 +12,8 @@
 //
 // Cost: O(touched pixels x samples x polygon edges) for coverage and depth, one shading per
 // (pixel, visible polygon); memory 8 bytes per sample (float depth, polygon index), so 16 x
-// that of a depth buffer at 4 x 4. Opaque only: material opacity is ignored (use the A-buffer).
+// that of a depth buffer at 4 x 4, plus about 300 bytes per polygon for shading. Opaque only:
+// material opacity is ignored (use the A-buffer).
 //
 // When to use: antialiased edges and intersection lines (depth is per sample, so two surfaces
 // crossing inside a pixel are resolved per sample, which the A-buffer's one depth per fragment
@@ -41,6 +42,14 @@ RenderResult render_multisampled(const Scene& scene, const RenderOptions& option
     const auto start = std::chrono::steady_clock::now();
     const int n = samples_per_side;
     visibility_detail::check_samples_per_side(n, "multisampling");
+    // The sample buffers are 8 bytes per sample: bound them as render() bounds its pixels.
+    const std::uint64_t total = std::uint64_t(std::max(options.width, 0)) *
+                                std::uint64_t(std::max(options.height, 0)) * std::uint64_t(n * n);
+    if (total > options.limits.max_pixels)
+        throw InputError("", "multisampled frame of " + std::to_string(total) +
+                                 " samples exceeds the limit of " +
+                                 std::to_string(options.limits.max_pixels) +
+                                 " (RenderLimits::max_pixels, --max-pixels)");
     const std::vector<ScreenPolygon> polygons = project_scene(scene, options, true);
     const visibility_detail::FrameContext frame =
         visibility_detail::make_frame_context(scene, options);
@@ -74,6 +83,11 @@ RenderResult render_multisampled(const Scene& scene, const RenderOptions& option
 
     // Deferred shading and resolve, parallel over rows.
     const SurfaceShader shader(frame);
+    std::vector<SurfaceShader::Prepared> prepared(polygons.size());
+    arena.execute([&] {
+        tbb::parallel_for(std::size_t{0}, polygons.size(),
+                          [&](std::size_t i) { shader.prepare(polygons[i], prepared[i]); });
+    });
     RenderResult result;
     result.targets = visibility_detail::blank_targets(options);
     RenderTargets& t = result.targets;
@@ -81,8 +95,6 @@ RenderResult render_multisampled(const Scene& scene, const RenderOptions& option
         glm::clamp(glm::dvec3(options.background), glm::dvec3(0.0), glm::dvec3(1.0));
     const int center_sample = (n / 2) * n + n / 2;  // for depth, ids, normal
     auto resolve_rows = [&](const tbb::blocked_range<int>& rows) {
-        SurfaceShader::Prepared prepared;
-        std::uint32_t prepared_for = kNone;
         for (int py = rows.begin(); py < rows.end(); ++py)
             for (int px = 0; px < width; ++px) {
                 const std::size_t p = std::size_t(py) * std::size_t(width) + std::size_t(px);
@@ -109,13 +121,9 @@ RenderResult render_multisampled(const Scene& scene, const RenderOptions& option
                             has_center |= k == center_sample;
                             ++count;
                         }
-                    if (prepared_for != index) {
-                        shader.prepare(polygons[index], prepared);
-                        prepared_for = index;
-                    }
                     const bool whole = count == samples;
                     const visibility_detail::Shaded shaded =
-                        shader.shade(prepared, px, py, whole, px + x / count, py + y / count,
+                        shader.shade(prepared[index], px, py, whole, px + x / count, py + y / count,
                                      options.normal_target && has_center);
                     sum += double(count) *
                            glm::clamp(glm::dvec3(shaded.color), glm::dvec3(0.0), glm::dvec3(1.0));

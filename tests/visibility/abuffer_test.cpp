@@ -711,6 +711,10 @@ TEST(Multisample, BitIdenticalForAnyThreadCountAndRejectsBadSampleCounts) {
     EXPECT_EQ(render_multisampled(scene, options, 4).targets.color, one.targets.color);
     EXPECT_THROW(render_multisampled(scene, options, 3), InputError);
     EXPECT_THROW(render_multisampled(scene, options, 16), InputError);
+    RenderOptions limited = options;
+    limited.limits.max_pixels = 96 * 64 * 4;  // 2 x 2 fits, 4 x 4 does not
+    EXPECT_NO_THROW(render_multisampled(scene, limited, 2));
+    EXPECT_THROW(render_multisampled(scene, limited, 4), InputError);
     // One sample per pixel at its center: render() exactly, shading included.
     EXPECT_EQ(render_multisampled(scene, options, 1).targets.color,
               render(scene, options).targets.color);
