@@ -48,7 +48,7 @@ struct SvgOptions {
     bool merge_coplanar = true;
     // How far back in the paint order a polygon may look for an outline to join (1: only the
     // outline just before it). Each step costs an overlap test against that outline's pieces.
-    std::size_t merge_lookback = 64;
+    std::size_t merge_lookback = 256;
     int precision = 2;        // decimal places of coordinates, 0..6
     float seam_width = 0.5f;  // pixels; 0: no seam strokes (hairline cracks show)
 };

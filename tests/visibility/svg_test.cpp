@@ -389,14 +389,14 @@ TEST(Svg, LookbackMergingPaintsTheSameImage) {
         near.merge_coplanar = true;
         near.merge_lookback = 1;
         SvgOptions far = near;
-        far.merge_lookback = 64;
+        far.merge_lookback = SvgOptions{}.merge_lookback;
         SvgStats s_unmerged, s_near, s_far;
         const std::string a = render_svg(scene, options, unmerged, &s_unmerged);
         render_svg(scene, options, near, &s_near);
         const std::string b = render_svg(scene, options, far, &s_far);
         std::printf(
             "default scene, edges %d: %zu polygons, %zu merged with neighbours only, %zu "
-            "with lookback 64\n",
+            "with the default lookback\n",
             int(edges), s_unmerged.polygons_out, s_near.polygons_out, s_far.polygons_out);
         EXPECT_LT(s_near.polygons_out, s_unmerged.polygons_out);
         EXPECT_LT(s_far.polygons_out, s_near.polygons_out);
@@ -417,7 +417,7 @@ TEST(Svg, BunnySmallMergeCounts) {
         SvgOptions svg_options;
         svg_options.edges = edges;
         std::size_t out[2] = {};
-        for (const std::size_t lookback : {std::size_t{1}, std::size_t{64}}) {
+        for (const std::size_t lookback : {std::size_t{1}, SvgOptions{}.merge_lookback}) {
             svg_options.merge_lookback = lookback;
             SvgStats stats;
             const std::string svg = render_svg(scene, options, svg_options, &stats);
