@@ -1,23 +1,28 @@
 // The A-buffer: L. Carpenter (1984), "The A-buffer, an antialiased hidden surface method",
 // SIGGRAPH '84 (Computer Graphics 18(3)).
 //
-// What: every polygon of project_scene leaves, in every pixel where it covers at least one
-// subsample, a fragment (depth, subsample mask, polygon: color and opacity). Fragments are kept in
-// per-pixel linked lists in one pool (Carpenter's fragment lists); resolving a pixel sorts its list
-// by depth and composites, for each subsample, the fragments covering it front to back (an opaque
-// one ends the sample), over the background, then averages the samples.
+// What: every polygon of project_scene (slivers between pixel centers kept) leaves, in every
+// pixel where it covers at least one subsample, a fragment (depth, subsample mask, polygon: its
+// opacity and what shading needs). Fragments are kept in per-pixel linked lists in one pool
+// (Carpenter's fragment lists); resolving a pixel sorts its list by depth and composites, for each
+// subsample, the fragments covering it front to back (an opaque one ends the sample), over the
+// background, then averages the samples. A fragment is shaded (surface_shader.hpp: render()'s
+// shading, at the pixel center when it covers every sample, else at the centroid of its samples)
+// the first time it contributes to a sample, so fragments hidden everywhere are never shaded.
 //
 // Differences from the paper, deliberately: masks are exact point samples on a regular n x n grid
 // (1, 2, 4 or 8 per side) decided with the rasterizer's integer edge functions and top-left rule
 // rather than area-sampled bit patterns, so polygons sharing an edge partition the samples; each
 // fragment has one depth, the polygon's depth plane at the pixel center (Carpenter's zmin/zmax
 // blending of interpenetrating fragments is not done: where two surfaces cross inside a pixel, the
-// whole pixel takes the order at its center). Ordering ties are broken by the fragments' content
+// whole pixel takes the order at its center; render_multisampled resolves such pixels per sample).
+// Ordering ties are broken by the fragments' content
 // (color, opacity, mask) before ids, so neither submission order nor instance numbering decides.
 //
 // Cost: masks O(touched pixels x (edges + samples)) per polygon; resolve O(f log f + f x samples)
-// per pixel with f fragments. Memory: 24 bytes per fragment plus 8 per pixel, bounded by
-// ABufferOptions::max_fragments (InputError beyond it, checked before each fragment is added).
+// per pixel with f fragments, plus one shading per contributing fragment. Memory: 24 bytes per
+// fragment plus 8 per pixel, bounded by ABufferOptions::max_fragments (InputError beyond it,
+// checked before each fragment is added).
 //
 // When to use: transparent surfaces submitted in any order (order-independent transparency), and
 // antialiased edges with one shading per fragment instead of per subsample (compare with
