@@ -16,8 +16,8 @@
 // fragment has one depth, the polygon's depth plane at the pixel center (Carpenter's zmin/zmax
 // blending of interpenetrating fragments is not done: where two surfaces cross inside a pixel, the
 // whole pixel takes the order at its center; render_multisampled resolves such pixels per sample).
-// Ordering ties are broken by the fragments' content
-// (color, opacity, mask) before ids, so neither submission order nor instance numbering decides.
+// Ordering ties are broken by the fragments' content (opacity, mask, shaded color) before ids, so
+// neither submission order nor instance numbering decides.
 //
 // Cost: masks O(touched pixels x (edges + samples)) per polygon; resolve O(f log f + f x samples)
 // per pixel with f fragments, plus one shading per contributing fragment. Memory: 24 bytes per
