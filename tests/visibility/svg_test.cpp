@@ -443,6 +443,18 @@ TEST(Svg, SeamStrokesUseTheFillColor) {
     const std::string color = svg.substr(fill + 7, 7);
     EXPECT_NE(svg.find("stroke=\"" + color + "\"", fill), std::string::npos);
     EXPECT_NE(svg.find("stroke-linejoin=\"round\""), std::string::npos);
+    // Every fill carries a seam stroke of its own color (no hairline cracks between neighbours);
+    // with edges, each fill is stroked either with its seam or, when its outline is all mesh
+    // edges, with the edge stroke.
+    for (const PathElement& e : parse_paths(svg)) {
+        ASSERT_FALSE(e.edge);
+        EXPECT_FALSE(e.edge_stroked) << e.fill;
+    }
+    std::size_t stroked = 0;
+    for (const PathElement& e : parse_paths(svg))
+        stroked +=
+            svg.find("fill=\"" + e.fill + "\" stroke=\"" + e.fill + "\"") != std::string::npos;
+    EXPECT_EQ(stroked, parse_paths(svg).size());
 }
 
 TEST(Svg, PrecisionControlsDecimals) {
