@@ -3,17 +3,27 @@
 // method", SIGGRAPH '84), and the brute-force comparison, supersampling of the z-buffer path.
 //
 // A-buffer (src/visibility/abuffer.cpp): every polygon leaves, in every pixel it touches, a
-// fragment holding its depth, a subpixel coverage mask, its color and its opacity. Each pixel's
-// fragment list is sorted by depth and composited front to back per subsample, then the samples
-// are averaged: antialiased edges and correct transparency for any submission order.
+// fragment holding its depth, a subpixel coverage mask and its opacity; a fragment is shaded once,
+// as render() shades a pixel (shading mode, lighting, textures, perspective-correct attributes),
+// when it first matters. Each pixel's fragment list is sorted by depth and composited front to
+// back per subsample, then the samples are averaged: antialiased edges and correct transparency
+// for any submission order. On opaque surfaces every pixel a surface covers whole is render()'s
+// pixel bit for bit; only pixels along edges differ.
 //   Cost: O(touched pixels x samples x polygon edges) to build masks, O(f log f) per pixel to sort
-//   its f fragments, O(f x samples) to resolve; memory 24 bytes per fragment (+ 8 per pixel),
-//   bounded by ABufferOptions::max_fragments. When to use: transparent geometry in arbitrary order,
-//   and antialiasing without shading every subsample (one color per fragment, as Carpenter's).
+//   its f fragments, one shading per fragment that is visible in at least one sample,
+//   O(f x samples) to resolve; memory 24 bytes per fragment (+ 8 per pixel, + about 300 per
+//   polygon for shading), bounded by ABufferOptions::max_fragments. When to use: transparent
+//   geometry in arbitrary order, and antialiasing without shading every subsample (one color per
+//   fragment, as Carpenter's).
 //
-// Supersampling (src/visibility/supersample.cpp): render() at factor x the resolution with flat
-// shading, box-filtered down. Cost: factor^2 times a frame's memory and work. Opaque only (the
-// z-buffer keeps the nearest surface; opacity is ignored).
+// Multisampling (src/visibility/multisample.cpp): coverage and depth per subsample (the A-buffer's
+// masks), shading once per pixel and visible surface, samples averaged. Cost: 8 bytes per sample,
+// shading as an aliased frame. Opaque only. When to use: antialiased edges and intersection
+// lines at about the shading cost of an aliased frame.
+//
+// Supersampling (src/visibility/supersample.cpp): render() at factor x the resolution with the
+// same options, box-filtered down. Cost: factor^2 times a frame's memory and work (every
+// subsample is shaded). Opaque only (the z-buffer keeps the nearest surface; opacity is ignored).
 #pragma once
 #include <zraster/render.hpp>
 #include <zraster/visibility.hpp>
@@ -56,31 +66,46 @@ struct PixelCoverage {
 std::vector<PixelCoverage> polygon_coverage(const ScreenPolygon& polygon, const Viewport& viewport,
                                             int samples_per_side);
 
-// One frame through the A-buffer. Geometry is project_scene's (the renderer's camera, clipping,
-// back-face culling per options.cull, flat shading per polygon with options' lighting; no
-// textures). Fragment alpha = the mesh material's opacity (clamped to [0, 1]), fragment depth =
-// the polygon's window-space depth plane at the pixel center. A pixel's fragments are ordered by
-// (depth, color, opacity, mask, instance, primitive) — nothing that depends on submission order
-// decides, and fragments that tie on everything but ids composite identically in either order —
-// then each sample composites the fragments covering it front to back (an opaque one ends it),
-// over options.background; samples are averaged. The result is bit-identical for any submission
-// order and thread count.
-// Targets: color (alpha 255); depth, ids and normal of the nearest fragment of each pixel (depth
-// stored as render() stores it; cleared where no fragment); no coverage counts.
-// Limitation: project_scene drops polygons whose bounding box holds no pixel center, so a
-// sliver lying between pixel centers leaves no fragments even where it covers subsamples.
-// Stats (optional): fragment counts. Throws InputError as project_scene does, for a bad
-// samples_per_side, or when the fragment limit is exceeded.
+// One frame through the A-buffer. Geometry is project_scene's with keep_subpixel (the renderer's
+// camera, clipping, back-face culling per options.cull; slivers between pixel centers are kept,
+// they may cover subsamples). Fragment alpha = the mesh material's opacity (clamped to [0, 1]),
+// fragment depth = the polygon's window-space depth plane at the pixel center. Fragment color =
+// the surface shaded as render() shades it (options.shading or the instance's, lighting,
+// textures, options.interpolation): a fragment covering every sample is shaded at the pixel
+// center (render()'s color there, bit for bit, for a polygon that render() draws there), a partial
+// one at the centroid of the samples it covers. A pixel's fragments are ordered by depth, then
+// by content (opacity, mask, shaded color) and ids last: nothing that depends on submission
+// order decides, and fragments that tie on everything but ids composite identically in either
+// order. Then each sample composites the fragments covering it front to back (an opaque one ends
+// it), over options.background; samples are averaged and quantized as render() quantizes. The
+// result is bit-identical for any submission order and thread count.
+// Targets: color (alpha 255); depth, ids and normal (render()'s shading normal) of the nearest
+// fragment of each pixel (depth stored as render() stores it; cleared where no fragment); no
+// coverage counts. Stats (optional): fragment counts; RenderStats::fragments_shaded counts the
+// fragments actually shaded. Throws InputError as project_scene does, for a bad samples_per_side,
+// or when the fragment limit is exceeded.
 RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
                             const ABufferOptions& abuffer = {}, ABufferStats* stats = nullptr);
 
-// render() at (factor * width) x (factor * height) with flat shading and no textures (colors
-// comparable with the A-buffer's and render_with_visibility's), the same camera as the
-// unsupersampled frame (effective_camera), box-filtered down: each color channel is the exact
-// integer mean of the factor^2 samples, rounded half up. Depth, id and normal targets take the
-// sample (factor / 2, factor / 2) of each block; no coverage counts. Stats are the big frame's.
-// factor = 1 is render() with flat shading. Throws InputError for factor < 1 or a supersampled
-// size render() refuses.
+// render() at (factor * width) x (factor * height) with the same options (shading, textures,
+// lighting) and the same camera as the unsupersampled frame (effective_camera), box-filtered down:
+// each color channel is the exact integer mean of the factor^2 samples, rounded half up. Depth, id
+// and normal targets take the sample (factor / 2, factor / 2) of each block; no coverage counts.
+// Stats are the big frame's. factor = 1 is render(). Throws InputError for factor < 1 or a
+// supersampled size render() refuses.
 RenderResult render_supersampled(const Scene& scene, RenderOptions options, int factor);
+
+// Multisampling (MSAA): project_scene's polygons (slivers kept) rasterized into
+// samples_per_side^2 samples per pixel (the A-buffer's grid and exact masks), each sample keeping
+// the nearest polygon by its window-depth plane at the sample (equal depths: the first drawn).
+// Each pixel then shades every polygon that holds one of its samples once, as the A-buffer shades
+// a fragment (render()'s color at the pixel center when it holds every sample, else at the
+// centroid of its samples), and averages the samples (background where none), quantized as
+// render() quantizes. Material opacity is ignored (opaque). Depth, ids and normal: the polygon of
+// sample (n / 2, n / 2). Throws InputError as project_scene does, for samples_per_side other
+// than 1, 2, 4, 8, or when width x height x samples exceeds options.limits.max_pixels (the sample
+// buffers take 8 bytes per sample). Bit-identical for any thread count.
+RenderResult render_multisampled(const Scene& scene, const RenderOptions& options,
+                                 int samples_per_side);
 
 }  // namespace zraster

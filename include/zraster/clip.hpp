@@ -8,12 +8,16 @@
 //
 // Cost: O(vertices x planes) per polygon; only triangles that cross a plane pay it, the others
 // are accepted or rejected from their vertex outcodes.
+// When to use: every triangle before rasterization (what the pipeline does), and any polygon that
+// must be cut by planes in 3D before the divide; for polygons in 2D against a convex window see
+// polygon_clip.hpp, for line segments line_clip.hpp.
 #pragma once
 #include <zraster/camera.hpp>
 
 #include <glm/glm.hpp>
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 
@@ -101,8 +105,18 @@ void clip_triangle(const std::array<glm::vec4, 3>& v, std::uint32_t planes,
                    std::span<const std::array<float, 3>> user_distances, ClippedPolygon& out);
 
 // Sutherland-Hodgman against one homogeneous plane (keep dot(plane, v) >= 0); the building block,
-// also usable on its own. Writes at most in.size() + 1 vertices to out and returns the count.
+// also usable on its own. Writes the clipped polygon to out and returns its vertex count. The
+// output holds each inside vertex plus one new vertex per crossing edge: at most n + 1 vertices
+// for a convex input of n vertices, but up to floor(3n / 2) for a concave one (n/2 inside
+// vertices each between two crossings, e.g. a comb whose teeth cross the plane), so `out` must
+// hold max_clip_output(n) = n + n / 2 + 1 vertices unless the input is known to be convex
+// (the count may exceed out.size() otherwise: a precondition, checked by assert only).
 int clip_polygon_against_plane(std::span<const ClipVertex> in, const glm::vec4& plane,
                                std::span<ClipVertex> out);
+
+// Output capacity that clip_polygon_against_plane needs for any input of n vertices.
+constexpr std::size_t max_clip_output(std::size_t n) {
+    return n + n / 2 + 1;
+}
 
 }  // namespace zraster

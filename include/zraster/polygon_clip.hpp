@@ -48,7 +48,7 @@ inline std::vector<ClipVertex> clip_polygon_homogeneous(std::span<const ClipVert
         if (current.empty()) break;
         // One plane turns n vertices into at most 3n/2 when the polygon is concave (I inside
         // vertices plus at most 2 min(I, n - I) crossings), n + 1 when it is convex.
-        next.resize(current.size() * 3 / 2 + 1);
+        next.resize(max_clip_output(current.size()));
         next.resize(static_cast<std::size_t>(clip_polygon_against_plane(current, plane, next)));
         std::swap(current, next);
     }

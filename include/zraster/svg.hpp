@@ -10,13 +10,22 @@
 // Cracks: anti-aliased SVG renderers leave hairline seams between adjacent filled polygons. Each
 // polygon is therefore also stroked with its own fill color (SvgOptions::seam_width, round
 // joins); since everything is painted back to front, nearer polygons cover the strokes of
-// farther ones. With edges on, the edge stroke takes that role.
+// farther ones.
 //
-// Merging (SvgOptions::merge_coplanar): a polygon that directly follows another in the paint
-// order, has the same 8-bit fill, lies in its plane (with edges on; without edges outlines are
-// not drawn and the plane test is skipped) and shares exactly one edge with it (same snapped end
-// points, no other common vertex) is joined to it into one outline (the union of the two vertex
-// loops). Only neighbours in the order are merged, so the painted result is unchanged.
+// Edges (SvgOptions::edges): the sides of each outline that lie on edges of the mesh are stroked
+// with edge_color (decided exactly from PolygonVertex::weights: BSP and painter's split lines, fan
+// diagonals and clipping lines are not drawn): an outline made of mesh edges only is one element
+// whose stroke is the edges (it covers the seams too); any other is its fill (with its seam
+// stroke) followed by a path of its mesh-edge sides. Hidden edges are covered by nearer polygons
+// because of the paint order.
+//
+// Merging (SvgOptions::merge_coplanar): a polygon with the same 8-bit fill as an outline up to
+// merge_lookback places back in the paint order, lying in its plane (with edges on; without edges
+// outlines are not drawn and the plane test is skipped), sharing exactly one side with it (same
+// snapped end points, no other common vertex), is joined to it into one outline (the union of
+// the two vertex loops) when no outline painted in between overlaps it (exact separating-axis
+// test on the snapped coordinates): moving it back in the order then paints the same. The search
+// goes back from the last outline and stops at the first one that overlaps the polygon.
 // Without edges, runs of consecutive paths of one color are further written as one <path> with
 // several subpaths (all loops have the same orientation, so the nonzero rule unions them).
 #pragma once
@@ -32,12 +41,14 @@ namespace zraster {
 struct SvgOptions {
     enum class Order { Bsp, Painter };
     Order order = Order::Bsp;
-    // Stroke every (merged) polygon outline with edge_color: hidden edges are covered by nearer
-    // polygons because of the paint order.
+    // Stroke the visible mesh edges with edge_color (see above).
     bool edges = false;
     float edge_width = 0.5f;     // pixels
     glm::vec3 edge_color{0.0f};  // 0..1
     bool merge_coplanar = true;
+    // How far back in the paint order a polygon may look for an outline to join (1: only the
+    // outline just before it). Each step costs an overlap test against that outline's pieces.
+    std::size_t merge_lookback = 256;
     int precision = 2;        // decimal places of coordinates, 0..6
     float seam_width = 0.5f;  // pixels; 0: no seam strokes (hairline cracks show)
 };
@@ -45,7 +56,8 @@ struct SvgOptions {
 struct SvgStats {
     std::size_t polygons_in = 0;   // polygons in the paint order (clipped and split pieces)
     std::size_t polygons_out = 0;  // after merging
-    std::size_t paths = 0;         // <path> elements
+    std::size_t paths = 0;         // <path> elements, edge paths included
+    std::size_t edge_paths = 0;    // of which draw edges (an all-edge outline, or edge sides)
     std::size_t bytes = 0;         // size of the document
 };
 

@@ -35,6 +35,12 @@ struct PolygonVertex {
     std::array<std::int64_t, 2> snapped{};
     glm::vec4 clip{0.0f};   // clip-space position: what setup_triangle rasterizes
     glm::dvec3 world{0.0};  // world-space position
+    // Barycentric weights of this point in its source scene triangle (vertex order of the mesh's
+    // indices): any vertex attribute is sum(weights[i] * attribute[i]). A weight is exactly 0
+    // on the source triangle's edge opposite that corner, through clipping and splitting, so an
+    // edge of the polygon lies on an edge of the mesh iff both its ends have a zero weight in
+    // common.
+    glm::vec3 weights{0.0f};
 };
 
 // A convex polygon: a scene triangle after homogeneous clipping (or a piece of one after a split).
@@ -61,8 +67,12 @@ Camera effective_camera(const Scene& scene, const RenderOptions& options);
 // center are dropped. Each polygon is flat shaded once (evaluate_lighting at the triangle's
 // centroid with its face normal, the material's base color, no texture): exactly the color
 // render() gives with ShadingMode::Flat and textures off. Result in submission order.
+// keep_subpixel: keep polygons that cover no pixel center but may cover points between them
+// (those whose snapped bounding box meets the viewport): what the A-buffer's subsamples need;
+// the list-priority algorithms and Warnock sample pixel centers only and leave it off.
 // Throws InputError for an image size out of range or too many user clip planes.
-std::vector<ScreenPolygon> project_scene(const Scene& scene, const RenderOptions& options);
+std::vector<ScreenPolygon> project_scene(const Scene& scene, const RenderOptions& options,
+                                         bool keep_subpixel = false);
 
 // Draws polygons in the given order with NO depth test (the last one drawn wins), with the
 // renderer's coverage rule: each polygon is fan-triangulated from its first vertex and every
@@ -124,6 +134,7 @@ struct BspVertex {
     // Object-space position: frames project it with the instance's model-view-projection matrix
     // exactly as render() does, so unsplit triangles rasterize bit-identically.
     glm::vec3 object{0.0f};
+    glm::vec3 weights{0.0f};  // in the source triangle, as PolygonVertex::weights
 };
 
 struct BspPolygon {

@@ -97,8 +97,12 @@ int clip_polygon_against_plane(std::span<const ClipVertex> in, const glm::vec4& 
         const float db = glm::dot(plane, b.position);
         const bool a_in = da >= 0.0f;
         const bool b_in = db >= 0.0f;
-        if (a_in) out[static_cast<std::size_t>(count++)] = a;
+        if (a_in) {
+            assert(std::size_t(count) < out.size());
+            out[static_cast<std::size_t>(count++)] = a;
+        }
         if (a_in != b_in) {
+            assert(std::size_t(count) < out.size());
             const ClipVertex& p = a_in ? a : b;  // inside
             const ClipVertex& q = a_in ? b : a;  // outside
             const float dp = a_in ? da : db;

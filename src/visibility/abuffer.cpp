@@ -1,23 +1,28 @@
 // The A-buffer: L. Carpenter (1984), "The A-buffer, an antialiased hidden surface method",
 // SIGGRAPH '84 (Computer Graphics 18(3)).
 //
-// What: every polygon of project_scene leaves, in every pixel where it covers at least one
-// subsample, a fragment (depth, subsample mask, polygon: color and opacity). Fragments are kept in
-// per-pixel linked lists in one pool (Carpenter's fragment lists); resolving a pixel sorts its list
-// by depth and composites, for each subsample, the fragments covering it front to back (an opaque
-// one ends the sample), over the background, then averages the samples.
+// What: every polygon of project_scene (slivers between pixel centers kept) leaves, in every
+// pixel where it covers at least one subsample, a fragment (depth, subsample mask, polygon: its
+// opacity and what shading needs). Fragments are kept in per-pixel linked lists in one pool
+// (Carpenter's fragment lists); resolving a pixel sorts its list by depth and composites, for each
+// subsample, the fragments covering it front to back (an opaque one ends the sample), over the
+// background, then averages the samples. A fragment is shaded (surface_shader.hpp: render()'s
+// shading, at the pixel center when it covers every sample, else at the centroid of its samples)
+// the first time it contributes to a sample, so fragments hidden everywhere are never shaded.
 //
 // Differences from the paper, deliberately: masks are exact point samples on a regular n x n grid
 // (1, 2, 4 or 8 per side) decided with the rasterizer's integer edge functions and top-left rule
 // rather than area-sampled bit patterns, so polygons sharing an edge partition the samples; each
 // fragment has one depth, the polygon's depth plane at the pixel center (Carpenter's zmin/zmax
 // blending of interpenetrating fragments is not done: where two surfaces cross inside a pixel, the
-// whole pixel takes the order at its center). Ordering ties are broken by the fragments' content
-// (color, opacity, mask) before ids, so neither submission order nor instance numbering decides.
+// whole pixel takes the order at its center; render_multisampled resolves such pixels per sample).
+// Ordering ties are broken by the fragments' content (opacity, mask, shaded color) before ids, so
+// neither submission order nor instance numbering decides.
 //
 // Cost: masks O(touched pixels x (edges + samples)) per polygon; resolve O(f log f + f x samples)
-// per pixel with f fragments. Memory: 24 bytes per fragment plus 8 per pixel, bounded by
-// ABufferOptions::max_fragments (InputError beyond it, checked before each fragment is added).
+// per pixel with f fragments, plus one shading per contributing fragment. Memory: 24 bytes per
+// fragment plus 8 per pixel, bounded by ABufferOptions::max_fragments (InputError beyond it,
+// checked before each fragment is added).
 //
 // When to use: transparent surfaces submitted in any order (order-independent transparency), and
 // antialiased edges with one shading per fragment instead of per subsample (compare with
@@ -30,6 +35,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -37,6 +43,7 @@
 #include <tuple>
 
 #include "visibility/frame_context.hpp"
+#include "visibility/surface_shader.hpp"
 
 namespace zraster {
 namespace {
@@ -45,12 +52,6 @@ std::int64_t floor_div(std::int64_t a, std::int64_t b) {
     std::int64_t q = a / b;
     if ((a % b != 0) && ((a < 0) != (b < 0))) --q;
     return q;
-}
-
-void check_samples_per_side(int n) {
-    if (n != 1 && n != 2 && n != 4 && n != 8)
-        throw InputError(
-            "", "A-buffer samples per side must be 1, 2, 4 or 8, not " + std::to_string(n));
 }
 
 // Calls fn(px, py, mask) for every pixel of the viewport where the polygon covers a sample.
@@ -137,34 +138,8 @@ void for_each_mask(const ScreenPolygon& polygon, const Viewport& viewport, int n
     }
 }
 
-// Window depth z = a x + b y + c over the polygon's plane, from Newell's normal of its window
-// vertices (as warnock.cpp; robust for nearly collinear consecutive vertices).
-struct DepthPlane {
-    double a = 0, b = 0, c = 0;
-    double at(double x, double y) const { return a * x + b * y + c; }
-};
-
-DepthPlane depth_plane(const ScreenPolygon& polygon) {
-    const auto& v = polygon.vertices;
-    const std::size_t n = v.size();
-    glm::dvec3 normal(0.0), mean(0.0);
-    for (std::size_t i = 0; i < n; ++i) {
-        const glm::dvec3& p = v[i].window;
-        const glm::dvec3& q = v[(i + 1) % n].window;
-        normal.x += (p.y - q.y) * (p.z + q.z);
-        normal.y += (p.z - q.z) * (p.x + q.x);
-        normal.z += (p.x - q.x) * (p.y + q.y);
-        mean += p;
-    }
-    mean /= double(n);
-    DepthPlane plane;
-    if (std::abs(normal.z) > 1e-300) {
-        plane.a = -normal.x / normal.z;
-        plane.b = -normal.y / normal.z;
-    }
-    plane.c = mean.z - plane.a * mean.x - plane.b * mean.y;
-    return plane;
-}
+using visibility_detail::depth_plane;
+using visibility_detail::DepthPlane;
 
 constexpr std::uint32_t kEnd = std::numeric_limits<std::uint32_t>::max();
 
@@ -175,20 +150,16 @@ struct Fragment {
     std::uint32_t next;  // next fragment of the same pixel, kEnd at the end
 };
 
-struct Surface {
-    glm::vec3 color{0.0f};  // clamped to [0, 1]
-    float alpha = 1.0f;     // clamped to [0, 1]
-};
-
-std::uint8_t to_unorm8(double v) {
-    return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+// Subsample (i, j) of an n x n grid, in pixels from the pixel's corner.
+double sample_offset(int i, int n) {
+    return (i + 0.5) / n;
 }
 
 }  // namespace
 
 std::vector<PixelCoverage> polygon_coverage(const ScreenPolygon& polygon, const Viewport& viewport,
                                             int samples_per_side) {
-    check_samples_per_side(samples_per_side);
+    visibility_detail::check_samples_per_side(samples_per_side, "A-buffer");
     std::vector<PixelCoverage> out;
     for_each_mask(polygon, viewport, samples_per_side, [&](int px, int py, std::uint64_t mask) {
         out.push_back({px, py, mask});
@@ -198,29 +169,36 @@ std::vector<PixelCoverage> polygon_coverage(const ScreenPolygon& polygon, const 
 
 RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
                             const ABufferOptions& abuffer, ABufferStats* stats) {
+    using visibility_detail::SurfaceShader;
     const auto start = std::chrono::steady_clock::now();
-    check_samples_per_side(abuffer.samples_per_side);
-    const Camera camera = effective_camera(scene, options);
-    const std::vector<ScreenPolygon> polygons = project_scene(scene, options);
+    visibility_detail::check_samples_per_side(abuffer.samples_per_side, "A-buffer");
+    // Slivers between pixel centers may still cover subsamples: keep them.
+    const std::vector<ScreenPolygon> polygons = project_scene(scene, options, true);
+    const visibility_detail::FrameContext frame =
+        visibility_detail::make_frame_context(scene, options);
+    const Camera& camera = frame.camera;
     const int width = options.width, height = options.height;
     const Viewport viewport{width, height};
     const int n = abuffer.samples_per_side;
     const int samples = n * n;
+    tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
 
-    // Per-polygon surface: flat color and the mesh material's opacity.
-    std::vector<Surface> surfaces(polygons.size());
+    // Per polygon: opacity (the mesh material's), depth plane, and what shading needs.
+    const SurfaceShader shader(frame);
+    std::vector<float> alphas(polygons.size());
     std::vector<DepthPlane> planes(polygons.size());
-    for (std::size_t i = 0; i < polygons.size(); ++i) {
-        const ScreenPolygon& p = polygons[i];
-        const Mesh& mesh = scene.meshes.at(scene.instances.at(std::size_t(p.instance)).mesh);
-        float opacity = 1.0f;
-        if (!scene.materials.empty())
-            opacity =
+    std::vector<SurfaceShader::Prepared> prepared(polygons.size());
+    arena.execute([&] {
+        tbb::parallel_for(std::size_t{0}, polygons.size(), [&](std::size_t i) {
+            const ScreenPolygon& p = polygons[i];
+            const Mesh& mesh = scene.meshes.at(scene.instances.at(std::size_t(p.instance)).mesh);
+            const float opacity =
                 scene.materials[mesh.material < scene.materials.size() ? mesh.material : 0].opacity;
-        surfaces[i].color = glm::clamp(p.color, glm::vec3(0.0f), glm::vec3(1.0f));
-        surfaces[i].alpha = std::isnan(opacity) ? 1.0f : std::clamp(opacity, 0.0f, 1.0f);
-        planes[i] = depth_plane(p);
-    }
+            alphas[i] = std::isnan(opacity) ? 1.0f : std::clamp(opacity, 0.0f, 1.0f);
+            planes[i] = depth_plane(p);
+            shader.prepare(p, prepared[i]);
+        });
+    });
 
     // Build the fragment lists. Fragment indices are 32-bit (kEnd marks the end of a list).
     const std::size_t limit = std::min<std::size_t>(abuffer.max_fragments, std::size_t{kEnd} - 1);
@@ -251,51 +229,90 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
         local.max_list_length = std::max<std::uint64_t>(local.max_list_length, length[p]);
         local.pixels_with_fragments += length[p] != 0;
     }
-    if (stats) *stats = local;
 
     // Targets.
     RenderResult result;
+    result.targets = visibility_detail::blank_targets(options);
     RenderTargets& t = result.targets;
-    t.width = width;
-    t.height = height;
-    if (options.color_target) t.color.assign(pixels * 4, 255);
-    t.depth.assign(pixels, depth_clear_value(options));
-    if (options.normal_target) t.normal.assign(pixels, glm::vec3(0.0f));
-    if (options.id_targets) {
-        t.instance_id.assign(pixels, -1);
-        t.primitive_id.assign(pixels, -1);
-    }
     const glm::dvec3 background =
         glm::clamp(glm::dvec3(options.background), glm::dvec3(0.0), glm::dvec3(1.0));
+    const std::uint64_t full =
+        samples == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << samples) - 1;
 
-    // Strict order: nearest first; ties by content, then ids (distinct for distinct polygons).
-    auto key = [&](const Fragment& f) {
-        const Surface& s = surfaces[f.polygon];
-        const ScreenPolygon& p = polygons[f.polygon];
-        return std::make_tuple(f.depth, s.color.x, s.color.y, s.color.z, s.alpha, f.mask,
-                               p.instance, p.primitive);
+    // A fragment of the pixel being resolved, shaded on first use (hidden ones never are).
+    struct Entry {
+        const Fragment* fragment;
+        bool shaded;
+        visibility_detail::Shaded shading;
     };
+    auto shade = [&](Entry& e, int px, int py) {
+        if (e.shaded) return;
+        const Fragment& f = *e.fragment;
+        // A full fragment is shaded at the pixel center, as render() shades the pixel; a partial
+        // one at the centroid of the samples it covers (always inside the convex polygon).
+        double x = 0.0, y = 0.0;
+        if (f.mask != full) {
+            int count = 0;
+            for (int s = 0; s < samples; ++s)
+                if (f.mask >> s & 1) {
+                    x += sample_offset(s % n, n);
+                    y += sample_offset(s / n, n);
+                    ++count;
+                }
+            x = px + x / count;
+            y = py + y / count;
+        }
+        e.shading =
+            shader.shade(prepared[f.polygon], px, py, f.mask == full, x, y, options.normal_target);
+        e.shading.color = glm::clamp(e.shading.color, glm::vec3(0.0f), glm::vec3(1.0f));
+        e.shaded = true;
+    };
+    // Nearest first; equal depths by content (opacity, mask, then the shaded color), ids last.
+    auto before = [&](const Entry& a, const Entry& b) {
+        const Fragment& f = *a.fragment;
+        const Fragment& g = *b.fragment;
+        return std::make_tuple(f.depth, alphas[f.polygon], f.mask) <
+               std::make_tuple(g.depth, alphas[g.polygon], g.mask);
+    };
+    auto ids = [&](const Entry& e) {
+        const ScreenPolygon& p = polygons[e.fragment->polygon];
+        return std::make_tuple(e.shading.color.x, e.shading.color.y, e.shading.color.z, p.instance,
+                               p.primitive);
+    };
+    std::atomic<std::uint64_t> shaded_total{0};
     auto resolve_rows = [&](const tbb::blocked_range<int>& rows) {
-        std::vector<const Fragment*> list;
+        std::vector<Entry> list;
+        std::uint64_t shaded = 0;
         for (int py = rows.begin(); py < rows.end(); ++py) {
             for (int px = 0; px < width; ++px) {
                 const std::size_t p = std::size_t(py) * std::size_t(width) + std::size_t(px);
                 list.clear();
                 for (std::uint32_t f = head[p]; f != kEnd; f = pool[f].next)
-                    list.push_back(&pool[f]);
-                std::sort(list.begin(), list.end(),
-                          [&](const Fragment* a, const Fragment* b) { return key(*a) < key(*b); });
+                    list.push_back({&pool[f], false, {}});
+                std::sort(list.begin(), list.end(), before);
+                // Ties: order by the shaded color, so submission order never decides.
+                for (std::size_t i = 0; i < list.size();) {
+                    std::size_t j = i + 1;
+                    while (j < list.size() && !before(list[i], list[j])) ++j;
+                    if (j - i > 1) {
+                        for (std::size_t k = i; k < j; ++k) shade(list[k], px, py);
+                        std::sort(list.begin() + std::ptrdiff_t(i),
+                                  list.begin() + std::ptrdiff_t(j),
+                                  [&](const Entry& a, const Entry& b) { return ids(a) < ids(b); });
+                    }
+                    i = j;
+                }
                 if (options.color_target) {
                     glm::dvec3 sum(0.0);
                     for (int s = 0; s < samples; ++s) {
                         const std::uint64_t bit = std::uint64_t{1} << s;
                         glm::dvec3 color(0.0);
                         double transmittance = 1.0;
-                        for (const Fragment* f : list) {
-                            if (!(f->mask & bit)) continue;
-                            const Surface& surface = surfaces[f->polygon];
-                            const double alpha = surface.alpha;
-                            color += transmittance * alpha * glm::dvec3(surface.color);
+                        for (Entry& e : list) {
+                            if (!(e.fragment->mask & bit)) continue;
+                            shade(e, px, py);
+                            const double alpha = alphas[e.fragment->polygon];
+                            color += transmittance * alpha * glm::dvec3(e.shading.color);
                             if (alpha >= 1.0) {
                                 transmittance = 0.0;
                                 break;
@@ -305,30 +322,34 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
                         sum += color + transmittance * background;
                     }
                     sum /= double(samples);
-                    for (int c = 0; c < 3; ++c) t.color[p * 4 + std::size_t(c)] = to_unorm8(sum[c]);
+                    for (int c = 0; c < 3; ++c)
+                        t.color[p * 4 + std::size_t(c)] = visibility_detail::unorm8(float(sum[c]));
                 }
                 if (!list.empty()) {
-                    const ScreenPolygon& nearest = polygons[list.front()->polygon];
-                    const double z = list.front()->depth;
+                    Entry& nearest = list.front();
+                    const ScreenPolygon& polygon = polygons[nearest.fragment->polygon];
+                    const double z = nearest.fragment->depth;
                     t.depth[p] = float(camera.reversed_z ? 1.0 - z : z);
-                    if (options.normal_target) t.normal[p] = nearest.normal;
+                    if (options.normal_target) {
+                        shade(nearest, px, py);
+                        t.normal[p] = nearest.shading.normal;
+                    }
                     if (options.id_targets) {
-                        t.instance_id[p] = nearest.instance;
-                        t.primitive_id[p] = nearest.primitive;
+                        t.instance_id[p] = polygon.instance;
+                        t.primitive_id[p] = polygon.primitive;
                     }
                 }
+                for (const Entry& e : list) shaded += e.shaded;
             }
         }
+        shaded_total += shaded;
     };
-    tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
     arena.execute([&] { tbb::parallel_for(tbb::blocked_range<int>(0, height, 8), resolve_rows); });
 
-    result.stats.camera = camera;
-    result.stats.triangles_in = scene.triangle_count();
+    if (stats) *stats = local;
     result.stats.triangles_rasterized = polygons.size();
-    result.stats.fragments_shaded = local.fragments;
-    result.stats.total_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    result.stats.fragments_shaded = shaded_total.load();
+    visibility_detail::finish_stats(result.stats, camera, scene, start);
     return result;
 }
 

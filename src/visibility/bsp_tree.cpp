@@ -55,38 +55,23 @@ Side classify(const BspPolygon& polygon, const glm::dvec4& plane, double eps) {
 }
 
 // Splits a spanning polygon. New vertices are interpolated from the front vertex towards the back
-// one (both in world and object space, with the same t), so neighbors sharing an edge get the
+// one (world, object space and weights with the same t), so neighbors sharing an edge get the
 // same new vertex.
 void split(const BspPolygon& polygon, const glm::dvec4& plane, double eps, BspPolygon& front,
            BspPolygon& back) {
-    const auto& v = polygon.vertices;
-    const std::size_t n = v.size();
-    std::vector<double> d(n);
-    std::vector<int> side(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        d[i] = distance(plane, v[i].world);
-        side[i] = d[i] > eps ? 1 : (d[i] < -eps ? -1 : 0);
-    }
     front.plane = back.plane = polygon.plane;
     front.instance = back.instance = polygon.instance;
     front.primitive = back.primitive = polygon.primitive;
-    front.vertices.clear();
-    back.vertices.clear();
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::size_t j = (i + 1) % n;
-        if (side[i] >= 0) front.vertices.push_back(v[i]);
-        if (side[i] <= 0) back.vertices.push_back(v[i]);
-        if (side[i] * side[j] < 0) {
-            const std::size_t f = side[i] > 0 ? i : j, b = side[i] > 0 ? j : i;
-            const double t = d[f] / (d[f] - d[b]);
-            BspVertex c;
-            c.world = v[f].world + t * (v[b].world - v[f].world);
-            const glm::dvec3 of(v[f].object), ob(v[b].object);
+    visibility_detail::split_by_plane(
+        polygon.vertices, plane, eps, front.vertices, back.vertices,
+        [](const BspVertex& f, const BspVertex& b, double t, BspVertex& c) {
+            c.world = f.world + t * (b.world - f.world);
+            const glm::dvec3 of(f.object), ob(b.object);
             c.object = glm::vec3(of + t * (ob - of));
-            front.vertices.push_back(c);
-            back.vertices.push_back(c);
-        }
-    }
+            const glm::dvec3 wf(f.weights), wb(b.weights);
+            c.weights = glm::vec3(wf + t * (wb - wf));
+            return true;
+        });
 }
 
 }  // namespace
@@ -258,35 +243,26 @@ std::vector<std::uint32_t> BspTree::back_to_front(const glm::dvec4& eye) const {
 std::vector<BspPolygon> bsp_polygons_from_scene(const Scene& scene) {
     std::vector<BspPolygon> out;
     out.reserve(scene.triangle_count());
-    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
-        const Instance& instance = scene.instances[i];
-        const Mesh& mesh = scene.meshes.at(instance.mesh);
-        const glm::dmat4 model(instance.transform);
-        for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    visibility_detail::for_each_scene_triangle(
+        scene, [&](std::size_t i, const Instance& instance, const Mesh& mesh, std::size_t t,
+                   const std::array<std::uint32_t, 3>& index) {
+            const glm::dmat4 model(instance.transform);
             BspPolygon polygon;
             polygon.instance = static_cast<std::int32_t>(i);
             polygon.primitive = static_cast<std::int32_t>(t);
-            bool valid = true;
             for (std::size_t k = 0; k < 3; ++k) {
-                const std::uint32_t index = mesh.indices[3 * t + k];
-                if (index >= mesh.positions.size()) {
-                    valid = false;
-                    break;
-                }
                 BspVertex v;
-                v.object = mesh.positions[index];
+                v.object = mesh.positions[index[k]];
+                v.weights[static_cast<glm::length_t>(k)] = 1.0f;
                 v.world = glm::dvec3(model * glm::dvec4(glm::dvec3(v.object), 1.0));
-                valid = valid && std::isfinite(v.world.x) && std::isfinite(v.world.y) &&
-                        std::isfinite(v.world.z);
+                if (!std::isfinite(v.world.x + v.world.y + v.world.z)) return;
                 polygon.vertices.push_back(v);
             }
-            if (!valid) continue;
             polygon.plane = visibility_detail::plane_through(
                 polygon.vertices[0].world, polygon.vertices[1].world, polygon.vertices[2].world);
-            if (polygon.plane == glm::dvec4(0.0)) continue;  // degenerate: covers nothing
+            if (polygon.plane == glm::dvec4(0.0)) return;  // degenerate: covers nothing
             out.push_back(std::move(polygon));
-        }
-    }
+        });
     return out;
 }
 

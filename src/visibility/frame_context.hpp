@@ -7,7 +7,9 @@
 #include <zraster/visibility.hpp>
 
 #include <array>
+#include <chrono>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -26,7 +28,27 @@ struct FrameContext {
     glm::dvec4 viewer{0.0};  // bsp_eye(camera)
     ClipSettings clip_settings;
     SetupSettings setup_settings;
+    // project_triangle keeps polygons that cover no pixel center (see project_scene).
+    bool keep_subpixel = false;
 };
+
+// The renderer's color quantization (src/render/shade_kernel.hpp, to_unorm8_int).
+inline std::uint8_t unorm8(float v) {
+    v = v > 0.0f ? v : 0.0f;
+    v = v < 1.0f ? v : 1.0f;
+    return static_cast<std::uint8_t>(v * 255.0f + 0.5f);
+}
+
+// Targets as options asks for them, cleared: color white (RGBA 255), depth to
+// depth_clear_value, normal zero, ids -1.
+RenderTargets blank_targets(const RenderOptions& options);
+
+// The stats every visibility frame fills in: camera, triangles_in, total_ms since `start`.
+void finish_stats(RenderStats& stats, const Camera& camera, const Scene& scene,
+                  std::chrono::steady_clock::time_point start);
+
+// Throws InputError unless n is 1, 2, 4 or 8 (subsamples per pixel side; `what` names the user).
+void check_samples_per_side(int n, const char* what);
 
 // Throws InputError for an image size out of range or too many user clip planes.
 FrameContext make_frame_context(const Scene& scene, const RenderOptions& options);
@@ -49,7 +71,25 @@ struct TriangleSource {
     std::array<glm::dvec3, 3> world{};   // world positions (double)
     std::array<glm::vec3, 3> world_f{};  // float world positions (user clip plane distances)
     glm::dvec4 plane{0.0};               // the source triangle's world plane, unit normal
+    // Each corner's weights in the scene triangle (identity for a whole scene triangle).
+    std::array<glm::vec3, 3> weights{glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, 0, 1)};
 };
+
+// The three vertex indices of triangle t of `mesh`; false when one is past its positions.
+bool triangle_indices(const Mesh& mesh, std::size_t t, std::array<std::uint32_t, 3>& out);
+
+// Calls fn(instance index, instance, mesh, triangle index, its vertex indices) for every triangle
+// of every instance (in submission order) whose vertex indices are valid.
+template <class Fn>
+void for_each_scene_triangle(const Scene& scene, Fn&& fn) {
+    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+        const Instance& instance = scene.instances[i];
+        const Mesh& mesh = scene.meshes.at(instance.mesh);
+        std::array<std::uint32_t, 3> index;
+        for (std::size_t t = 0; t < mesh.triangle_count(); ++t)
+            if (triangle_indices(mesh, t, index)) fn(i, instance, mesh, t, index);
+    }
+}
 
 // Clips and projects the triangle; false when nothing of it is left (rejected, clipped away,
 // non-finite, zero snapped area, culled, or no pixel center in its bounding box).
@@ -57,8 +97,9 @@ bool project_triangle(const FrameContext& frame, const TriangleSource& source, S
 
 // Flat shading of a scene triangle, exactly as the renderer's flat path computes it.
 struct FlatShade {
-    glm::vec3 color{0.0f};
-    glm::vec3 normal{0.0f};
+    glm::vec3 color{0.0f};   // combine(terms, material base color); the base color when unlit
+    glm::vec3 normal{0.0f};  // the face normal, flipped for back faces with two-sided lighting
+    LightTerms terms;        // lighting at the centroid (zero when unlit)
 };
 FlatShade flat_shade(const FrameContext& frame, std::int32_t instance, std::int32_t primitive,
                      bool front_facing);
@@ -68,6 +109,57 @@ glm::dvec4 plane_through(const glm::dvec3& a, const glm::dvec3& b, const glm::dv
 
 // A plane flipped (if needed) so that `viewer` is on its positive side.
 glm::dvec4 orient_towards(const glm::dvec4& plane, const glm::dvec4& viewer);
+
+// Splits a convex polygon's vertex loop by `plane` (Sutherland-Hodgman against both half
+// spaces at once): vertices within eps of the plane go to both sides; a new vertex is made on
+// every edge that crosses it by make(from_front, to_back, t, out), t = the fraction from the front
+// vertex towards the back one, so polygons sharing an edge get bit-identical new vertices on it.
+// make returns false to abandon the split. Vertex needs a dvec3 `world`. False when a side is
+// empty (the polygon does not straddle the plane beyond eps) or make refused.
+template <class Vertex, class Make>
+bool split_by_plane(const std::vector<Vertex>& v, const glm::dvec4& plane, double eps,
+                    std::vector<Vertex>& front, std::vector<Vertex>& back, Make&& make) {
+    const std::size_t n = v.size();
+    std::vector<double> d(n);
+    std::vector<int> side(n);
+    bool any_front = false, any_back = false;
+    for (std::size_t i = 0; i < n; ++i) {
+        d[i] = glm::dot(glm::dvec3(plane), v[i].world) + plane.w;
+        side[i] = d[i] > eps ? 1 : (d[i] < -eps ? -1 : 0);
+        any_front |= side[i] > 0;
+        any_back |= side[i] < 0;
+    }
+    if (!any_front || !any_back) return false;
+    front.clear();
+    back.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t j = (i + 1) % n;
+        if (side[i] >= 0) front.push_back(v[i]);
+        if (side[i] <= 0) back.push_back(v[i]);
+        if (side[i] * side[j] < 0) {
+            const std::size_t f = side[i] > 0 ? i : j, b = side[i] > 0 ? j : i;
+            Vertex c;
+            if (!make(v[f], v[b], d[f] / (d[f] - d[b]), c)) return false;
+            front.push_back(c);
+            back.push_back(c);
+        }
+    }
+    return true;
+}
+
+// Window depth z = a x + b y + c over a polygon's plane (x, y in pixels), from Newell's normal of
+// its window vertices (robust for nearly collinear consecutive vertices).
+struct DepthPlane {
+    double a = 0, b = 0, c = 0;
+    double at(double x, double y) const { return a * x + b * y + c; }
+};
+DepthPlane depth_plane(const ScreenPolygon& polygon);
+
+// The BSP tree's walk for the frame's viewer, every stored polygon projected fan triangle by fan
+// triangle through project_triangle (the renderer's clipping, culling and snapping): calls
+// fn(piece) for each piece that is left, back to front.
+void for_each_bsp_piece(const BspTree& tree, const FrameContext& frame,
+                        const std::function<void(const ScreenPolygon&)>& fn);
 
 // Render targets filled polygon by polygon without a depth test.
 class Canvas {

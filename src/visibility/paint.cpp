@@ -30,22 +30,11 @@ Canvas::Canvas(const RenderOptions& options, const Camera& camera) : options_(op
     setup_.cull = options.cull;
     setup_.front_face = options.front_face;
 
-    const std::size_t pixels = std::size_t(options.width) * std::size_t(options.height);
-    targets_.width = options.width;
-    targets_.height = options.height;
-    if (options.color_target) {
-        const std::uint8_t bg[4] = {to_unorm8(options.background.x),
-                                    to_unorm8(options.background.y),
-                                    to_unorm8(options.background.z), 255};
-        targets_.color.resize(pixels * 4);
-        for (std::size_t i = 0; i < pixels; ++i) std::copy(bg, bg + 4, &targets_.color[i * 4]);
-    }
-    targets_.depth.assign(pixels, depth_clear_value(options));
-    if (options.normal_target) targets_.normal.assign(pixels, glm::vec3(0.0f));
-    if (options.id_targets) {
-        targets_.instance_id.assign(pixels, -1);
-        targets_.primitive_id.assign(pixels, -1);
-    }
+    targets_ = blank_targets(options);
+    const std::uint8_t bg[4] = {to_unorm8(options.background.x), to_unorm8(options.background.y),
+                                to_unorm8(options.background.z), 255};
+    for (std::size_t i = 0; i < targets_.color.size(); i += 4)
+        std::copy(bg, bg + 4, &targets_.color[i]);
 }
 
 void Canvas::prepare(const ScreenPolygon& polygon, std::vector<TriangleSetup>& fans) const {

@@ -116,43 +116,23 @@ bool projections_overlap(const Item& a, const Item& b) {
 // edge get bit-identical new vertices on it.
 bool split_polygon(const ScreenPolygon& polygon, const glm::dvec4& plane, double eps,
                    const Viewport& viewport, ScreenPolygon& front, ScreenPolygon& back) {
-    const auto& v = polygon.vertices;
-    const std::size_t n = v.size();
-    std::vector<double> d(n);
-    std::vector<int> side(n);
-    bool any_front = false, any_back = false;
-    for (std::size_t i = 0; i < n; ++i) {
-        d[i] = distance(plane, v[i].world);
-        side[i] = d[i] > eps ? 1 : (d[i] < -eps ? -1 : 0);
-        any_front |= side[i] > 0;
-        any_back |= side[i] < 0;
-    }
-    if (!any_front || !any_back) return false;
     front = polygon;
     back = polygon;
-    front.vertices.clear();
-    back.vertices.clear();
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::size_t j = (i + 1) % n;
-        if (side[i] >= 0) front.vertices.push_back(v[i]);
-        if (side[i] <= 0) back.vertices.push_back(v[i]);
-        if (side[i] * side[j] < 0) {
-            const std::size_t f = side[i] > 0 ? i : j, b = side[i] > 0 ? j : i;
-            const double t = d[f] / (d[f] - d[b]);
-            PolygonVertex c;
-            c.world = v[f].world + t * (v[b].world - v[f].world);
-            const glm::dvec4 cf(v[f].clip), cb(v[b].clip);
+    return visibility_detail::split_by_plane(
+        polygon.vertices, plane, eps, front.vertices, back.vertices,
+        [&](const PolygonVertex& f, const PolygonVertex& b, double t, PolygonVertex& c) {
+            c.world = f.world + t * (b.world - f.world);
+            const glm::dvec4 cf(f.clip), cb(b.clip);
             c.clip = glm::vec4(cf + t * (cb - cf));
+            const glm::dvec3 wf(f.weights), wb(b.weights);
+            c.weights = glm::vec3(wf + t * (wb - wf));
             // A convex combination of two vertices inside the guard band is inside it too.
             if (!set_window_xy(c, viewport)) return false;
             // Window depth is affine in z/w: the w-weighted mean of the endpoints' depths.
-            const double wf = (1.0 - t) * cf.w, wb = t * cb.w;
-            c.window.z = (wf * v[f].window.z + wb * v[b].window.z) / (wf + wb);
-            front.vertices.push_back(c);
-            back.vertices.push_back(c);
-        }
-    }
-    return true;
+            const double w_f = (1.0 - t) * cf.w, w_b = t * cb.w;
+            c.window.z = (w_f * f.window.z + w_b * b.window.z) / (w_f + w_b);
+            return true;
+        });
 }
 
 bool usable(const ScreenPolygon& p) {

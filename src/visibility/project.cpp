@@ -39,8 +39,9 @@ std::int64_t floor_div(std::int64_t a, std::int64_t b) {
 }
 
 // True when the snapped bounding box of the polygon holds a pixel center of the viewport (the
-// same test setup_triangle uses to report NoCoverage).
-bool may_cover_a_pixel(std::span<const PolygonVertex> vertices, const Viewport& viewport) {
+// same test setup_triangle uses to report NoCoverage), or with `subpixel` any point of it.
+bool may_cover_a_pixel(std::span<const PolygonVertex> vertices, const Viewport& viewport,
+                       bool subpixel) {
     std::int64_t lo_x = vertices[0].snapped[0], hi_x = lo_x;
     std::int64_t lo_y = vertices[0].snapped[1], hi_y = lo_y;
     for (const PolygonVertex& v : vertices) {
@@ -49,6 +50,9 @@ bool may_cover_a_pixel(std::span<const PolygonVertex> vertices, const Viewport& 
         lo_y = std::min(lo_y, v.snapped[1]);
         hi_y = std::max(hi_y, v.snapped[1]);
     }
+    if (subpixel)
+        return hi_x >= 0 && hi_y >= 0 && lo_x <= std::int64_t(viewport.width) * kSubpixelScale &&
+               lo_y <= std::int64_t(viewport.height) * kSubpixelScale;
     const std::int64_t px0 =
         std::max<std::int64_t>(0, -floor_div(kHalfPixel - lo_x, kSubpixelScale));
     const std::int64_t py0 =
@@ -88,6 +92,35 @@ FrameContext make_frame_context(const Scene& scene, const RenderOptions& options
     f.setup_settings.cull = options.cull;
     f.setup_settings.front_face = options.front_face;
     return f;
+}
+
+RenderTargets blank_targets(const RenderOptions& options) {
+    const std::size_t pixels = std::size_t(options.width) * std::size_t(options.height);
+    RenderTargets t;
+    t.width = options.width;
+    t.height = options.height;
+    if (options.color_target) t.color.assign(pixels * 4, 255);
+    t.depth.assign(pixels, depth_clear_value(options));
+    if (options.normal_target) t.normal.assign(pixels, glm::vec3(0.0f));
+    if (options.id_targets) {
+        t.instance_id.assign(pixels, -1);
+        t.primitive_id.assign(pixels, -1);
+    }
+    return t;
+}
+
+void finish_stats(RenderStats& stats, const Camera& camera, const Scene& scene,
+                  std::chrono::steady_clock::time_point start) {
+    stats.camera = camera;
+    stats.triangles_in = scene.triangle_count();
+    stats.total_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+void check_samples_per_side(int n, const char* what) {
+    if (n != 1 && n != 2 && n != 4 && n != 8)
+        throw InputError("", std::string(what) + " samples per side must be 1, 2, 4 or 8, not " +
+                                 std::to_string(n));
 }
 
 bool set_window_xy(PolygonVertex& v, const Viewport& viewport) {
@@ -164,9 +197,9 @@ FlatShade flat_shade(const FrameContext& frame, std::int32_t instance, std::int3
         return out;
     }
     const glm::vec3 centroid = (w[0] + w[1] + w[2]) / 3.0f;
-    out.color = combine(
-        evaluate_lighting(options.lighting, material, centroid, n, frame.eye, frame.view_axis),
-        material.base_color);
+    out.terms =
+        evaluate_lighting(options.lighting, material, centroid, n, frame.eye, frame.view_axis);
+    out.color = combine(out.terms, material.base_color);
     return out;
 }
 
@@ -196,6 +229,7 @@ bool project_triangle(const FrameContext& frame, const TriangleSource& source, S
             PolygonVertex v;
             v.clip = source.clip[k];
             v.world = source.world[k];
+            v.weights = source.weights[k];
             out.vertices.push_back(v);
         }
     } else {
@@ -210,6 +244,8 @@ bool project_triangle(const FrameContext& frame, const TriangleSource& source, S
             v.clip = c.position;
             v.world = double(c.weights.x) * source.world[0] +
                       double(c.weights.y) * source.world[1] + double(c.weights.z) * source.world[2];
+            v.weights = c.weights.x * source.weights[0] + c.weights.y * source.weights[1] +
+                        c.weights.z * source.weights[2];
             out.vertices.push_back(v);
         }
     }
@@ -224,7 +260,8 @@ bool project_triangle(const FrameContext& frame, const TriangleSource& source, S
     if ((options.cull == CullMode::Back && !out.front_facing) ||
         (options.cull == CullMode::Front && out.front_facing))
         return false;
-    if (!may_cover_a_pixel(out.vertices, frame.setup_settings.viewport)) return false;
+    if (!may_cover_a_pixel(out.vertices, frame.setup_settings.viewport, frame.keep_subpixel))
+        return false;
 
     out.plane = orient_towards(source.plane, frame.viewer);
     out.instance = source.instance;
@@ -235,41 +272,69 @@ bool project_triangle(const FrameContext& frame, const TriangleSource& source, S
     return true;
 }
 
+bool triangle_indices(const Mesh& mesh, std::size_t t, std::array<std::uint32_t, 3>& out) {
+    for (std::size_t k = 0; k < 3; ++k) {
+        out[k] = mesh.indices[3 * t + k];
+        if (out[k] >= mesh.positions.size()) return false;
+    }
+    return true;
+}
+
+DepthPlane depth_plane(const ScreenPolygon& polygon) {
+    const auto& v = polygon.vertices;
+    const std::size_t n = v.size();
+    glm::dvec3 normal(0.0), mean(0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const glm::dvec3& p = v[i].window;
+        const glm::dvec3& q = v[(i + 1) % n].window;
+        normal.x += (p.y - q.y) * (p.z + q.z);
+        normal.y += (p.z - q.z) * (p.x + q.x);
+        normal.z += (p.x - q.x) * (p.y + q.y);
+        mean += p;
+    }
+    mean /= double(n);
+    DepthPlane plane;
+    if (std::abs(normal.z) > 1e-300) {
+        plane.a = -normal.x / normal.z;
+        plane.b = -normal.y / normal.z;
+    }
+    plane.c = mean.z - plane.a * mean.x - plane.b * mean.y;
+    return plane;
+}
+
 }  // namespace visibility_detail
 
-std::vector<ScreenPolygon> project_scene(const Scene& scene, const RenderOptions& options) {
+std::vector<ScreenPolygon> project_scene(const Scene& scene, const RenderOptions& options,
+                                         bool keep_subpixel) {
     using namespace visibility_detail;
-    const FrameContext frame = make_frame_context(scene, options);
+    FrameContext frame = make_frame_context(scene, options);
+    frame.keep_subpixel = keep_subpixel;
     std::vector<ScreenPolygon> out;
     ScreenPolygon polygon;
-    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
-        const Instance& instance = scene.instances[i];
-        const Mesh& mesh = scene.meshes.at(instance.mesh);
-        const glm::mat4 mvp = frame.view_projection * instance.transform;
-        const glm::dmat4 model_d(instance.transform);
-        const std::size_t vertex_total = mesh.positions.size();
-        for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
-            TriangleSource source;
-            source.instance = static_cast<std::int32_t>(i);
-            source.primitive = static_cast<std::int32_t>(t);
-            bool valid = true;
-            for (std::size_t k = 0; k < 3; ++k) {
-                const std::uint32_t index = mesh.indices[3 * t + k];
-                if (index >= vertex_total) {
-                    valid = false;
-                    break;
-                }
-                const glm::vec4 p(mesh.positions[index], 1.0f);
-                source.clip[k] = mvp * p;
-                source.world_f[k] = glm::vec3(instance.transform * p);
-                source.world[k] = glm::dvec3(model_d * glm::dvec4(p));
-            }
-            if (!valid) continue;
-            source.plane = plane_through(source.world[0], source.world[1], source.world[2]);
-            if (source.plane == glm::dvec4(0.0)) continue;  // no area: nothing to see
-            if (project_triangle(frame, source, polygon)) out.push_back(polygon);
+    std::size_t current = scene.instances.size();
+    glm::mat4 mvp(1.0f);
+    glm::dmat4 model_d(1.0);
+    for_each_scene_triangle(scene, [&](std::size_t i, const Instance& instance, const Mesh& mesh,
+                                       std::size_t t, const std::array<std::uint32_t, 3>& index) {
+        // As the renderer's vertex stage computes them (float), plus double world positions.
+        if (i != current) {
+            current = i;
+            mvp = frame.view_projection * instance.transform;
+            model_d = glm::dmat4(instance.transform);
         }
-    }
+        TriangleSource source;
+        source.instance = static_cast<std::int32_t>(i);
+        source.primitive = static_cast<std::int32_t>(t);
+        for (std::size_t k = 0; k < 3; ++k) {
+            const glm::vec4 p(mesh.positions[index[k]], 1.0f);
+            source.clip[k] = mvp * p;
+            source.world_f[k] = glm::vec3(instance.transform * p);
+            source.world[k] = glm::dvec3(model_d * glm::dvec4(p));
+        }
+        source.plane = plane_through(source.world[0], source.world[1], source.world[2]);
+        if (source.plane == glm::dvec4(0.0)) return;  // no area: nothing to see
+        if (project_triangle(frame, source, polygon)) out.push_back(polygon);
+    });
     return out;
 }
 

@@ -10,17 +10,15 @@
 
 namespace zraster {
 
-RenderResult render_bsp(const BspTree& tree, const Scene& scene, const RenderOptions& options) {
-    using namespace visibility_detail;
-    const auto start = std::chrono::steady_clock::now();
-    const FrameContext frame = make_frame_context(scene, options);
+namespace visibility_detail {
+
+void for_each_bsp_piece(const BspTree& tree, const FrameContext& frame,
+                        const std::function<void(const ScreenPolygon&)>& fn) {
+    const Scene& scene = *frame.scene;
     std::vector<glm::mat4> mvp(scene.instances.size());
     for (std::size_t i = 0; i < mvp.size(); ++i)
         mvp[i] = frame.view_projection * scene.instances[i].transform;
-
-    Canvas canvas(options, frame.camera);
     ScreenPolygon piece;
-    RenderResult result;
     const std::vector<BspPolygon>& polygons = tree.polygons();
     for (const std::uint32_t index : tree.back_to_front(frame.viewer)) {
         const BspPolygon& polygon = polygons[index];
@@ -40,16 +38,25 @@ RenderResult render_bsp(const BspTree& tree, const Scene& scene, const RenderOpt
                 source.clip[c] = mvp[instance] * p;
                 source.world[c] = v.world;
                 source.world_f[c] = glm::vec3(model * p);
+                source.weights[c] = v.weights;
             }
-            if (project_triangle(frame, source, piece)) canvas.draw(piece);
+            if (project_triangle(frame, source, piece)) fn(piece);
         }
     }
+}
+
+}  // namespace visibility_detail
+
+RenderResult render_bsp(const BspTree& tree, const Scene& scene, const RenderOptions& options) {
+    using namespace visibility_detail;
+    const auto start = std::chrono::steady_clock::now();
+    const FrameContext frame = make_frame_context(scene, options);
+    Canvas canvas(options, frame.camera);
+    for_each_bsp_piece(tree, frame, [&](const ScreenPolygon& piece) { canvas.draw(piece); });
+    RenderResult result;
     result.targets = canvas.take();
-    result.stats.camera = frame.camera;
-    result.stats.triangles_in = scene.triangle_count();
     result.stats.fragments_shaded = canvas.fragments();
-    result.stats.total_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    finish_stats(result.stats, frame.camera, scene, start);
     return result;
 }
 
@@ -96,9 +103,7 @@ RenderResult render_with_visibility(const Scene& scene, const RenderOptions& opt
             break;
         }
     }
-    result.stats.triangles_in = scene.triangle_count();
-    result.stats.total_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    visibility_detail::finish_stats(result.stats, result.stats.camera, scene, start);
     return result;
 }
 

@@ -2,11 +2,11 @@
 // with (L. Carpenter 1984, "The A-buffer, an antialiased hidden surface method", measures itself
 // against it).
 //
-// What: render() at factor x the resolution in each direction (flat shading, no textures, the
-// unsupersampled frame's camera), then a box filter: each output channel is the exact integer mean
-// of its factor x factor block of 8-bit samples, rounded half up. Sample (i, j) of output pixel
-// (px, py) is the big image's pixel center, i.e. (px + (i + 0.5) / factor, py + (j + 0.5) /
-// factor): for factor 4 the same 4 x 4 grid as the A-buffer's masks.
+// What: render() at factor x the resolution in each direction (the options' own shading and
+// textures, the unsupersampled frame's camera), then a box filter: each output channel is the exact
+// integer mean of its factor x factor block of 8-bit samples, rounded half up. Sample (i, j) of
+// output pixel (px, py) is the big image's pixel center, i.e. (px + (i + 0.5) / factor, py + (j +
+// 0.5) / factor): for factor 4 the same 4 x 4 grid as the A-buffer's masks.
 //
 // Cost: factor^2 times the frame's rasterization, shading and memory (every subsample is shaded);
 // the filter is O(big pixels). Opaque only: the z-buffer keeps the nearest surface per sample and
@@ -36,8 +36,6 @@ RenderResult render_supersampled(const Scene& scene, RenderOptions options, int 
     options.camera = effective_camera(scene, options);
     options.width = int(big_width);
     options.height = int(big_height);
-    options.shading = ShadingMode::Flat;
-    options.textures = false;
     options.coverage_counts = false;
     RenderResult big = render(scene, options);
 

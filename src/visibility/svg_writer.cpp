@@ -1,7 +1,10 @@
 // SVG output of the BSP / painter's order (see svg.hpp).
 //
 // Cost: that of the order (BSP build and walk, or painter_sort) plus O(polygons * loop size) for
-// merging, with merged loops capped at kMaxMergedVertices so that it stays linear.
+// merging, with merged loops capped at kMaxMergedVertices so that it stays linear, and up to
+// merge_lookback overlap tests per polygon (exact separating-axis tests after a box test).
+// When to use: figures and diagrams that must stay sharp at any size, or be edited as vectors; a
+// few thousand polygons (the document grows with them, about 80 bytes per outline).
 #include <zraster/error.hpp>
 #include <zraster/precision.hpp>
 #include <zraster/svg.hpp>
@@ -26,22 +29,38 @@ using Point = std::array<std::int64_t, 2>;  // snapped window position, 1/kSubpi
 // (keeps the shared-edge search cheap on large flat regions).
 constexpr std::size_t kMaxMergedVertices = 256;
 
-// The 8-bit quantization of the frames (paint.cpp, the renderer's to_unorm8).
-std::uint32_t unorm8(float v) {
-    v = v > 0.0f ? v : 0.0f;
-    v = v < 1.0f ? v : 1.0f;
-    return static_cast<std::uint32_t>(v * 255.0f + 0.5f);
+std::uint32_t rgb8(const glm::vec3& c) {
+    using visibility_detail::unorm8;
+    return std::uint32_t(unorm8(c.x)) << 16 | std::uint32_t(unorm8(c.y)) << 8 | unorm8(c.z);
 }
 
-std::uint32_t rgb8(const glm::vec3& c) {
-    return unorm8(c.x) << 16 | unorm8(c.y) << 8 | unorm8(c.z);
+struct Box {
+    std::int64_t x0, y0, x1, y1;
+    bool overlaps(const Box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+};
+
+Box box_of(const std::vector<Point>& loop) {
+    Box b{loop[0][0], loop[0][1], loop[0][0], loop[0][1]};
+    for (const Point& p : loop) {
+        b.x0 = std::min(b.x0, p[0]);
+        b.y0 = std::min(b.y0, p[1]);
+        b.x1 = std::max(b.x1, p[0]);
+        b.y1 = std::max(b.y1, p[1]);
+    }
+    return b;
 }
 
 struct Outline {
     std::vector<Point> loop;  // positive signed area (clockwise on screen, y down)
+    // mesh_edge[i]: the side loop[i] -> loop[i + 1] lies on an edge of the mesh (not on a BSP or
+    // painter's split line, a fan diagonal or a clipping line).
+    std::vector<std::uint8_t> mesh_edge;
     std::uint32_t color = 0;
     glm::dvec4 plane{0.0};
     std::size_t pieces = 1;
+    // The convex polygons it was made of, and their boxes: what overlap tests look at.
+    std::vector<std::vector<Point>> convex;
+    std::vector<Box> boxes;
 };
 
 std::int64_t area2(const std::vector<Point>& loop) {
@@ -56,11 +75,53 @@ std::int64_t area2(const std::vector<Point>& loop) {
 
 Outline outline_of(const ScreenPolygon& polygon) {
     Outline o;
-    for (const PolygonVertex& v : polygon.vertices) o.loop.push_back(v.snapped);
-    if (area2(o.loop) < 0) std::reverse(o.loop.begin(), o.loop.end());
+    std::vector<const PolygonVertex*> v;
+    for (const PolygonVertex& p : polygon.vertices) v.push_back(&p);
+    for (const PolygonVertex* p : v) o.loop.push_back(p->snapped);
+    if (area2(o.loop) < 0) {
+        std::reverse(o.loop.begin(), o.loop.end());
+        std::reverse(v.begin(), v.end());
+    }
+    // A side is on a mesh edge iff both ends have the same zero barycentric weight (exact: see
+    // PolygonVertex::weights).
+    for (std::size_t i = 0, n = v.size(); i < n; ++i) {
+        const glm::vec3& a = v[i]->weights;
+        const glm::vec3& b = v[(i + 1) % n]->weights;
+        o.mesh_edge.push_back((a.x == 0.0f && b.x == 0.0f) || (a.y == 0.0f && b.y == 0.0f) ||
+                              (a.z == 0.0f && b.z == 0.0f));
+    }
     o.color = rgb8(polygon.color);
     o.plane = polygon.plane;
+    o.convex.push_back(o.loop);
+    o.boxes.push_back(box_of(o.loop));
     return o;
+}
+
+// True when some side of convex loop `a` (positive area) has every point of `b` outside or on it.
+bool has_separating_side(const std::vector<Point>& a, const std::vector<Point>& b) {
+    for (std::size_t i = 0, n = a.size(); i < n; ++i) {
+        const Point& p = a[i];
+        const Point& q = a[(i + 1) % n];
+        const std::int64_t dx = q[0] - p[0], dy = q[1] - p[1];
+        bool separates = true;
+        for (const Point& v : b)
+            if (dx * (v[1] - p[1]) - dy * (v[0] - p[0]) > 0) {
+                separates = false;
+                break;
+            }
+        if (separates) return true;
+    }
+    return false;
+}
+
+// Whether the interiors of the outline's pieces and the convex loop overlap (exact, on the
+// snapped coordinates; touching along a side is no overlap).
+bool overlaps(const Outline& outline, const std::vector<Point>& convex, const Box& box) {
+    for (std::size_t k = 0; k < outline.convex.size(); ++k)
+        if (outline.boxes[k].overlaps(box) && !has_separating_side(outline.convex[k], convex) &&
+            !has_separating_side(convex, outline.convex[k]))
+            return true;
+    return false;
 }
 
 // Every vertex of `polygon` within a small fraction of its size of `plane`.
@@ -74,50 +135,71 @@ bool in_plane(const ScreenPolygon& polygon, const glm::dvec4& plane) {
     return true;
 }
 
-// Joins `next` (same orientation) into `into` when they share exactly one edge and no other
-// vertex: the union's loop is then `into` with the edge replaced by the rest of `next`.
-bool try_merge(Outline& into, const std::vector<Point>& next) {
-    const std::size_t n = into.loop.size(), m = next.size();
+// Joins `next` (same orientation) into `into` when they share exactly one side and no other
+// vertex: the union's loop is then `into` with that side replaced by the rest of `next`.
+bool try_merge(Outline& into, const Outline& next) {
+    const std::size_t n = into.loop.size(), m = next.loop.size();
     if (n + m > kMaxMergedVertices) return false;
     std::size_t shared_i = n, shared_j = m, common = 0;
     for (std::size_t j = 0; j < m; ++j) {
-        const auto it = std::find(into.loop.begin(), into.loop.end(), next[j]);
+        const auto it = std::find(into.loop.begin(), into.loop.end(), next.loop[j]);
         if (it == into.loop.end()) continue;
         ++common;
-        // The edge next[j] -> next[j + 1] runs the other way in `into`: into[i] = next[j + 1],
+        // The side next[j] -> next[j + 1] runs the other way in `into`: into[i] = next[j + 1],
         // into[i + 1] = next[j].
         const auto i = static_cast<std::size_t>(std::distance(into.loop.begin(), it));
-        if (into.loop[(i + n - 1) % n] == next[(j + 1) % m]) {
-            if (shared_j != m) return false;  // two shared edges
+        if (into.loop[(i + n - 1) % n] == next.loop[(j + 1) % m]) {
+            if (shared_j != m) return false;  // two shared sides
             shared_i = (i + n - 1) % n;
             shared_j = j;
         }
     }
     if (shared_j == m || common != 2) return false;
-    std::vector<Point> merged;
-    merged.reserve(n + m - 2);
-    for (std::size_t k = 0; k <= shared_i; ++k) merged.push_back(into.loop[k]);
-    for (std::size_t k = 2; k < m; ++k) merged.push_back(next[(shared_j + k) % m]);
-    for (std::size_t k = shared_i + 1; k < n; ++k) merged.push_back(into.loop[k]);
-    into.loop = std::move(merged);
-    ++into.pieces;
+    std::vector<Point> loop;
+    std::vector<std::uint8_t> edge;
+    loop.reserve(n + m - 2);
+    edge.reserve(n + m - 2);
+    // Each vertex keeps the flag of the side leaving it; into[shared_i] now leaves along next's
+    // side from next[shared_j + 1] (the same point).
+    for (std::size_t k = 0; k <= shared_i; ++k) {
+        loop.push_back(into.loop[k]);
+        edge.push_back(k == shared_i ? next.mesh_edge[(shared_j + 1) % m] : into.mesh_edge[k]);
+    }
+    for (std::size_t k = 2; k < m; ++k) {
+        loop.push_back(next.loop[(shared_j + k) % m]);
+        edge.push_back(next.mesh_edge[(shared_j + k) % m]);
+    }
+    for (std::size_t k = shared_i + 1; k < n; ++k) {
+        loop.push_back(into.loop[k]);
+        edge.push_back(into.mesh_edge[k]);
+    }
+    into.loop = std::move(loop);
+    into.mesh_edge = std::move(edge);
+    into.convex.insert(into.convex.end(), next.convex.begin(), next.convex.end());
+    into.boxes.insert(into.boxes.end(), next.boxes.begin(), next.boxes.end());
+    into.pieces += next.pieces;
     return true;
 }
 
-// Drops vertices on the line through their neighbours (left where merged pieces met).
-void drop_collinear(std::vector<Point>& loop) {
+// Drops vertices on the line through their neighbours (left where merged pieces met), unless the
+// two sides meeting there differ in being mesh edges.
+void drop_collinear(Outline& o) {
+    auto& loop = o.loop;
+    auto& edge = o.mesh_edge;
     bool changed = true;
     while (changed && loop.size() > 3) {
         changed = false;
         for (std::size_t i = 0; i < loop.size() && loop.size() > 3; ++i) {
             const std::size_t n = loop.size();
-            const Point& a = loop[(i + n - 1) % n];
+            const std::size_t h = (i + n - 1) % n;
+            const Point& a = loop[h];
             const Point& b = loop[i];
             const Point& c = loop[(i + 1) % n];
             const std::int64_t cross =
                 (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0]);
-            if (cross == 0) {
+            if (cross == 0 && edge[h] == edge[i]) {
                 loop.erase(loop.begin() + static_cast<std::ptrdiff_t>(i));
+                edge.erase(edge.begin() + static_cast<std::ptrdiff_t>(i));
                 changed = true;
             }
         }
@@ -146,6 +228,44 @@ void append_subpath(std::string& out, const std::vector<Point>& loop, int precis
     out += 'Z';
 }
 
+// The outline's mesh-edge sides as polylines ("M a L b c ..."), one closed loop when all are.
+std::size_t append_edges(std::string& out, const Outline& o, int precision) {
+    const std::size_t n = o.loop.size();
+    std::size_t first = n;  // a vertex where an edge run starts (its incoming side is no edge)
+    for (std::size_t i = 0; i < n && first == n; ++i)
+        if (o.mesh_edge[i] && !o.mesh_edge[(i + n - 1) % n]) first = i;
+    if (first == n) {
+        if (!o.mesh_edge[0]) return 0;
+        append_subpath(out, o.loop, precision);  // every side
+        return 1;
+    }
+    std::size_t runs = 0;
+    for (std::size_t step = 0; step < n;) {
+        const std::size_t i = (first + step) % n;
+        if (!o.mesh_edge[i]) {
+            ++step;
+            continue;
+        }
+        out += 'M';
+        append_number(out, o.loop[i][0], precision);
+        out += ' ';
+        append_number(out, o.loop[i][1], precision);
+        out += 'L';
+        bool space = false;
+        while (step < n && o.mesh_edge[(first + step) % n]) {
+            const Point& q = o.loop[(first + step + 1) % n];
+            if (space) out += ' ';
+            append_number(out, q[0], precision);
+            out += ' ';
+            append_number(out, q[1], precision);
+            space = true;
+            ++step;
+        }
+        ++runs;
+    }
+    return runs;
+}
+
 std::string hex(std::uint32_t rgb) {
     return fmt::format("#{:06x}", rgb);
 }
@@ -164,34 +284,9 @@ std::vector<ScreenPolygon> bsp_order(const Scene& scene, const RenderOptions& op
     using namespace visibility_detail;
     const FrameContext frame = make_frame_context(scene, options);
     const BspTree tree = BspTree::build(bsp_polygons_from_scene(scene));
-    std::vector<glm::mat4> mvp(scene.instances.size());
-    for (std::size_t i = 0; i < mvp.size(); ++i)
-        mvp[i] = frame.view_projection * scene.instances[i].transform;
+    // The pieces render_bsp fills.
     std::vector<ScreenPolygon> out;
-    ScreenPolygon piece;
-    const std::vector<BspPolygon>& polygons = tree.polygons();
-    // As render_bsp: every fan triangle of a stored polygon through the renderer's clipping and
-    // projection (project_triangle), so the pieces are the ones its frames fill.
-    for (const std::uint32_t index : tree.back_to_front(frame.viewer)) {
-        const BspPolygon& polygon = polygons[index];
-        const auto instance = static_cast<std::size_t>(polygon.instance);
-        const glm::mat4& model = scene.instances.at(instance).transform;
-        for (std::size_t k = 1; k + 1 < polygon.vertices.size(); ++k) {
-            TriangleSource source;
-            source.instance = polygon.instance;
-            source.primitive = polygon.primitive;
-            source.plane = polygon.plane;
-            const std::size_t corner[3] = {0, k, k + 1};
-            for (std::size_t c = 0; c < 3; ++c) {
-                const BspVertex& v = polygon.vertices[corner[c]];
-                const glm::vec4 p(v.object, 1.0f);
-                source.clip[c] = mvp[instance] * p;
-                source.world[c] = v.world;
-                source.world_f[c] = glm::vec3(model * p);
-            }
-            if (project_triangle(frame, source, piece)) out.push_back(piece);
-        }
-    }
+    for_each_bsp_piece(tree, frame, [&](const ScreenPolygon& piece) { out.push_back(piece); });
     return out;
 }
 
@@ -218,19 +313,29 @@ std::string render_svg(const Scene& scene, const RenderOptions& options,
 
     const std::vector<ScreenPolygon> polygons = svg_polygons(scene, options, o.order);
 
-    // Merge neighbours in the paint order.
+    // Merge. A polygon may join an outline up to merge_lookback places back in the paint order
+    // when no outline painted in between overlaps it: moving it back then changes nothing that is
+    // painted. The scan stops at the first outline in between that overlaps it.
     std::vector<Outline> outlines;
     outlines.reserve(polygons.size());
+    const std::size_t lookback = std::max<std::size_t>(1, o.merge_lookback);
     for (const ScreenPolygon& polygon : polygons) {
         Outline next = outline_of(polygon);
-        if (o.merge_coplanar && !outlines.empty()) {
-            Outline& last = outlines.back();
-            // Without edges outlines are invisible: any same-color neighbour can join.
-            if (last.color == next.color && (!o.edges || in_plane(polygon, last.plane)) &&
-                try_merge(last, next.loop))
-                continue;
+        bool merged = false;
+        if (o.merge_coplanar) {
+            for (std::size_t back = 0; back < lookback && back < outlines.size(); ++back) {
+                Outline& candidate = outlines[outlines.size() - 1 - back];
+                // Without edges outlines are invisible: any same-color neighbour can join.
+                if (candidate.color == next.color &&
+                    (!o.edges || in_plane(polygon, candidate.plane)) &&
+                    try_merge(candidate, next)) {
+                    merged = true;
+                    break;
+                }
+                if (overlaps(candidate, next.loop, next.boxes[0])) break;
+            }
         }
-        outlines.push_back(std::move(next));
+        if (!merged) outlines.push_back(std::move(next));
     }
 
     std::string out;
@@ -246,37 +351,67 @@ std::string render_svg(const Scene& scene, const RenderOptions& options,
                     outlines.size(), o.order == SvgOptions::Order::Bsp ? "BSP" : "painter's");
     out += fmt::format("<rect width=\"{}\" height=\"{}\" fill=\"{}\"/>\n", w, h,
                        hex(options.background));
-    const bool seams = !o.edges && o.seam_width > 0.0f;
-    if (o.edges)
+    // With edges the group's style is the edges' (an edge path is then just its d); fills carry
+    // their own fill and seam stroke.
+    const bool seams = o.seam_width > 0.0f;
+    std::string seam_width;  // on each fill when it differs from the group's stroke width
+    if (o.edges) {
         out += fmt::format(
-            "<g stroke=\"{}\" stroke-width=\"{}\" stroke-linejoin=\"round\" "
+            "<g fill=\"none\" stroke=\"{}\" stroke-width=\"{}\" stroke-linejoin=\"round\" "
             "stroke-linecap=\"round\">\n",
             hex(o.edge_color), number(o.edge_width));
-    else if (seams)
+        if (seams && number(o.seam_width) != number(o.edge_width))
+            seam_width = fmt::format(" stroke-width=\"{}\"", number(o.seam_width));
+    } else if (seams) {
         out += fmt::format("<g stroke-width=\"{}\" stroke-linejoin=\"round\">\n",
                            number(o.seam_width));
-    else
+    } else {
         out += "<g>\n";
+    }
 
-    std::size_t paths = 0;
+    std::size_t paths = 0, edge_paths = 0;
     for (std::size_t i = 0; i < outlines.size();) {
         // Without edges, a run of one color is one element (nonzero rule over same-orientation
-        // loops: their union); with edges each outline is its own element so that nearer fills
-        // cover farther edges.
+        // loops: their union); with edges each outline is its own element followed by its edges,
+        // so that nearer fills cover farther edges.
         std::size_t end = i + 1;
         if (!o.edges)
             while (end < outlines.size() && outlines[end].color == outlines[i].color) ++end;
         out += "<path d=\"";
         for (std::size_t k = i; k < end; ++k) {
-            drop_collinear(outlines[k].loop);
+            drop_collinear(outlines[k]);
             append_subpath(out, outlines[k].loop, o.precision);
         }
         const std::string fill = hex(outlines[i].color);
+        const auto& flags = outlines[i].mesh_edge;
+        const bool all_edges =
+            o.edges && std::all_of(flags.begin(), flags.end(), [](std::uint8_t f) { return f; });
+        if (all_edges) {
+            // Its whole outline is mesh edges: the group's edge stroke draws them and covers the
+            // seams, in one element.
+            out += fmt::format("\" fill=\"{}\"/>\n", fill);
+            ++paths;
+            ++edge_paths;
+            i = end;
+            continue;
+        }
         if (seams)
-            out += fmt::format("\" fill=\"{0}\" stroke=\"{0}\"/>\n", fill);
+            out += fmt::format("\" fill=\"{0}\" stroke=\"{0}\"{1}/>\n", fill, seam_width);
+        else if (o.edges)
+            out += fmt::format("\" fill=\"{}\" stroke=\"none\"/>\n", fill);
         else
             out += fmt::format("\" fill=\"{}\"/>\n", fill);
         ++paths;
+        if (o.edges) {
+            // Only sides on mesh edges: split lines, fan diagonals and clipping lines are not
+            // edges of the model.
+            std::string d;
+            if (append_edges(d, outlines[i], o.precision) > 0) {
+                out += fmt::format("<path d=\"{}\"/>\n", d);
+                ++paths;
+                ++edge_paths;
+            }
+        }
         i = end;
     }
     out += "</g>\n</svg>\n";
@@ -284,6 +419,7 @@ std::string render_svg(const Scene& scene, const RenderOptions& options,
         stats->polygons_in = polygons.size();
         stats->polygons_out = outlines.size();
         stats->paths = paths;
+        stats->edge_paths = edge_paths;
         stats->bytes = out.size();
     }
     return out;

@@ -88,34 +88,8 @@ RegionRelation classify(const Edges& e, const PixelRegion& r) {
     return RegionRelation::Intersecting;
 }
 
-// Window depth z = a x + b y + c over the polygon's plane, from Newell's normal of its window
-// vertices (robust for polygons with nearly collinear consecutive vertices).
-struct DepthPlane {
-    double a = 0, b = 0, c = 0;
-    double at(double x, double y) const { return a * x + b * y + c; }
-};
-
-DepthPlane depth_plane(const ScreenPolygon& polygon) {
-    const auto& v = polygon.vertices;
-    const std::size_t n = v.size();
-    glm::dvec3 normal(0.0), mean(0.0);
-    for (std::size_t i = 0; i < n; ++i) {
-        const glm::dvec3& p = v[i].window;
-        const glm::dvec3& q = v[(i + 1) % n].window;
-        normal.x += (p.y - q.y) * (p.z + q.z);
-        normal.y += (p.z - q.z) * (p.x + q.x);
-        normal.z += (p.x - q.x) * (p.y + q.y);
-        mean += p;
-    }
-    mean /= double(n);
-    DepthPlane plane;
-    if (std::abs(normal.z) > 1e-300) {
-        plane.a = -normal.x / normal.z;
-        plane.b = -normal.y / normal.z;
-    }
-    plane.c = mean.z - plane.a * mean.x - plane.b * mean.y;
-    return plane;
-}
+using visibility_detail::depth_plane;
+using visibility_detail::DepthPlane;
 
 struct Task {
     PixelRegion region;

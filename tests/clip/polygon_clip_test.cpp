@@ -216,5 +216,42 @@ TEST(HomogeneousPolygonClip, AgreesWithTheTwoDimensionalClipper) {
     }
 }
 
+// One plane can turn a concave polygon of n vertices into more than n + 1 (the convex bound):
+// a comb of k teeth crossing x = 0 (n = 2k + 1 vertices) gives k tips plus 2k crossings. The
+// bound max_clip_output(n) = n + n/2 + 1 holds, and the tight case (in and out vertices
+// alternating all around) reaches floor(3n/2).
+TEST(HomogeneousPolygonClip, ConcaveOutputExceedsTheConvexBound) {
+    const glm::vec4 keep_right(1.0f, 0.0f, 0.0f, 0.0f);  // keep x >= 0
+    for (int k = 1; k <= 12; ++k) {
+        std::vector<ClipVertex> comb;
+        auto add = [&](float x, float y) {
+            comb.push_back({glm::vec4(x, y, 0.0f, 1.0f), glm::vec3(0.0f)});
+        };
+        add(-2.0f, 0.0f);  // spine, outside
+        for (int t = 0; t < k; ++t) {
+            add(1.0f, float(t) + 0.5f);                  // tip, inside
+            if (t + 1 < k) add(-1.0f, float(t) + 1.0f);  // valley, outside
+        }
+        add(-2.0f, float(k));
+        const std::size_t n = comb.size();
+        ASSERT_EQ(n, std::size_t(2 * k + 1));
+        std::vector<ClipVertex> out(max_clip_output(n));
+        const int count = clip_polygon_against_plane(comb, keep_right, out);
+        EXPECT_EQ(count, 3 * k);
+        EXPECT_LE(std::size_t(count), max_clip_output(n));
+        if (k >= 3) {
+            EXPECT_GT(std::size_t(count), n + 1);
+        }
+        // Alternating in/out all around (self-intersecting, but the count is what matters).
+        std::vector<ClipVertex> alternating;
+        for (int i = 0; i < 2 * k; ++i)
+            alternating.push_back(
+                {glm::vec4(i % 2 ? -1.0f : 1.0f, float(i), 0.0f, 1.0f), glm::vec3(0.0f)});
+        std::vector<ClipVertex> out2(max_clip_output(alternating.size()));
+        EXPECT_EQ(clip_polygon_against_plane(alternating, keep_right, out2), 3 * k);
+        EXPECT_EQ(std::size_t(3 * k), alternating.size() * 3 / 2);
+    }
+}
+
 }  // namespace
 }  // namespace zraster

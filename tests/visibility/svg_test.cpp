@@ -7,11 +7,19 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
+#include <zraster/load.hpp>
+
+#include "support/test_support.hpp"
 #include "visibility/visibility_test_util.hpp"
 
 namespace zraster::test {
@@ -57,39 +65,6 @@ void expect_well_formed(const std::string& svg) {
     EXPECT_EQ(roots, 1u);
 }
 
-// The subpaths of every <path d="...">: lists of points.
-std::vector<std::vector<glm::dvec2>> subpaths(const std::string& svg) {
-    std::vector<std::vector<glm::dvec2>> out;
-    for (std::size_t at = svg.find("<path d=\""); at != std::string::npos;
-         at = svg.find("<path d=\"", at + 1)) {
-        const std::size_t begin = at + 9, end = svg.find('"', begin);
-        const std::string d = svg.substr(begin, end - begin);
-        const char* p = d.c_str();
-        std::vector<double> numbers;
-        while (*p) {
-            if (*p == 'M' || *p == 'Z') {
-                if (*p == 'Z' || !numbers.empty()) {
-                    std::vector<glm::dvec2> loop;
-                    for (std::size_t k = 0; k + 1 < numbers.size(); k += 2)
-                        loop.emplace_back(numbers[k], numbers[k + 1]);
-                    if (!loop.empty()) out.push_back(loop);
-                    numbers.clear();
-                }
-                ++p;
-            } else if (*p == 'L' || *p == ' ') {
-                ++p;
-            } else {
-                char* next = nullptr;
-                numbers.push_back(std::strtod(p, &next));
-                EXPECT_NE(next, p) << d;
-                if (next == p) return out;
-                p = next;
-            }
-        }
-    }
-    return out;
-}
-
 double area(const std::vector<glm::dvec2>& loop) {
     double a = 0.0;
     for (std::size_t i = 0; i < loop.size(); ++i) {
@@ -109,6 +84,116 @@ Scene default_scene() {
     return make_procedural_scene("builtin:default");
 }
 
+// A <path> element: its subpaths (closed by Z or open), and whether it is an edge stroke
+// (no fill attribute: it takes the group's edge style) or a fill; fill is its fill color.
+struct PathElement {
+    std::vector<std::vector<glm::dvec2>> subpaths;
+    std::vector<bool> closed;
+    bool edge = false;
+    bool edge_stroked = false;  // no stroke of its own: drawn with the group's edge stroke
+    std::string fill;
+};
+
+std::vector<PathElement> parse_paths(const std::string& svg) {
+    std::vector<PathElement> out;
+    for (std::size_t at = svg.find("<path d=\""); at != std::string::npos;
+         at = svg.find("<path d=\"", at + 1)) {
+        const std::size_t begin = at + 9, end = svg.find('"', begin);
+        const std::string d = svg.substr(begin, end - begin);
+        PathElement e;
+        const std::size_t close = svg.find("/>", end);
+        const std::string attributes = svg.substr(end, close - end);
+        e.edge = attributes.find("fill=") == std::string::npos;  // the group's style
+        e.edge_stroked = attributes.find("stroke=") == std::string::npos;
+        const std::size_t fill = attributes.find("fill=\"");
+        if (fill != std::string::npos) e.fill = attributes.substr(fill + 6, 7);
+        std::vector<double> numbers;
+        auto flush = [&](bool closed) {
+            std::vector<glm::dvec2> points;
+            for (std::size_t k = 0; k + 1 < numbers.size(); k += 2)
+                points.emplace_back(numbers[k], numbers[k + 1]);
+            if (!points.empty()) {
+                e.subpaths.push_back(points);
+                e.closed.push_back(closed);
+            }
+            numbers.clear();
+        };
+        for (const char* p = d.c_str(); *p;) {
+            if (*p == 'M') {
+                flush(false);
+                ++p;
+            } else if (*p == 'Z') {
+                flush(true);
+                ++p;
+            } else if (*p == 'L' || *p == ' ') {
+                ++p;
+            } else {
+                char* next = nullptr;
+                numbers.push_back(std::strtod(p, &next));
+                EXPECT_NE(next, p) << d;
+                if (next == p) break;
+                p = next;
+            }
+        }
+        flush(false);
+        out.push_back(std::move(e));
+    }
+    return out;
+}
+
+// The subpaths of every fill <path>: lists of points.
+std::vector<std::vector<glm::dvec2>> subpaths(const std::string& svg) {
+    std::vector<std::vector<glm::dvec2>> out;
+    for (const PathElement& e : parse_paths(svg))
+        if (!e.edge) out.insert(out.end(), e.subpaths.begin(), e.subpaths.end());
+    return out;
+}
+
+// The fills point-sampled at pixel centers, nonzero rule, painted in document order: the fill
+// color of each pixel as 0xRRGGBB (0xffffffff where none).
+std::vector<std::uint32_t> rasterize(const std::string& svg, int width, int height) {
+    std::vector<std::uint32_t> image(std::size_t(width) * std::size_t(height), 0xffffffffu);
+    for (const PathElement& e : parse_paths(svg)) {
+        if (e.edge) continue;
+        const std::uint32_t color = std::uint32_t(std::stoul(e.fill.substr(1), nullptr, 16));
+        for (const auto& loop : e.subpaths) {
+            glm::dvec2 lo(1e300), hi(-1e300);
+            for (const glm::dvec2& p : loop) {
+                lo = glm::min(lo, p);
+                hi = glm::max(hi, p);
+            }
+            for (int y = std::max(0, int(lo.y) - 1); y < std::min(height, int(hi.y) + 1); ++y)
+                for (int x = std::max(0, int(lo.x) - 1); x < std::min(width, int(hi.x) + 1); ++x) {
+                    const glm::dvec2 c(x + 0.5, y + 0.5);
+                    int winding = 0;
+                    for (std::size_t i = 0; i < loop.size(); ++i) {
+                        const glm::dvec2 a = loop[i], b = loop[(i + 1) % loop.size()];
+                        const double side = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+                        if (a.y <= c.y && b.y > c.y && side > 0) ++winding;
+                        if (a.y > c.y && b.y <= c.y && side < 0) --winding;
+                    }
+                    if (winding != 0)
+                        image[std::size_t(y) * std::size_t(width) + std::size_t(x)] = color;
+                }
+        }
+    }
+    return image;
+}
+
+// xmllint's verdict when it is installed (the document must parse as XML).
+void expect_valid_xml(const std::string& svg) {
+    if (std::system("command -v xmllint > /dev/null 2>&1") != 0) return;
+    const std::filesystem::path file = std::filesystem::temp_directory_path() /
+                                       ("zraster-svg-test-" + std::to_string(::getpid()) + ".svg");
+    {
+        std::ofstream out(file);
+        out << svg;
+    }
+    const int status = std::system(("xmllint --noout '" + file.string() + "'").c_str());
+    std::filesystem::remove(file);
+    EXPECT_EQ(status, 0) << "xmllint rejected the document";
+}
+
 TEST(Svg, DocumentIsWellFormedSvg11) {
     const Scene scene = default_scene();
     SvgStats stats;
@@ -119,6 +204,7 @@ TEST(Svg, DocumentIsWellFormedSvg11) {
               std::string::npos);
     EXPECT_NE(svg.find("<rect width=\"160\" height=\"120\" fill=\"#333333\"/>"), std::string::npos);
     expect_well_formed(svg);
+    expect_valid_xml(svg);
     EXPECT_GT(stats.polygons_in, 50u);
     EXPECT_LE(stats.polygons_out, stats.polygons_in);
     EXPECT_LE(stats.paths, stats.polygons_out);
@@ -203,7 +289,7 @@ TEST(Svg, CoplanarTrianglesOfAFaceMerge) {
     }
 }
 
-TEST(Svg, EdgesStrokeEveryOutline) {
+TEST(Svg, EdgesAreStrokedPathsAfterTheirFills) {
     const Scene scene = default_scene();
     SvgOptions svg_options;
     svg_options.edges = true;
@@ -212,9 +298,140 @@ TEST(Svg, EdgesStrokeEveryOutline) {
     SvgStats stats;
     const std::string svg = render_svg(scene, small_options(), svg_options, &stats);
     expect_well_formed(svg);
-    EXPECT_NE(svg.find("<g stroke=\"#ff0000\" stroke-width=\"0.75\""), std::string::npos);
-    EXPECT_EQ(stats.paths, stats.polygons_out);  // one element each: nearer fills hide edges
-    EXPECT_EQ(count(svg, "stroke=\""), 1u);
+    EXPECT_NE(svg.find("<g fill=\"none\" stroke=\"#ff0000\" stroke-width=\"0.75\""),
+              std::string::npos);
+    std::size_t edge_elements = 0, all_edge_fills = 0, seamed_fills = 0;
+    for (const PathElement& e : parse_paths(svg)) {
+        edge_elements += e.edge;
+        all_edge_fills += !e.edge && e.edge_stroked;
+        seamed_fills += !e.edge_stroked;
+    }
+    EXPECT_EQ(edge_elements + all_edge_fills, stats.edge_paths);
+    EXPECT_GT(all_edge_fills, 0u);
+    EXPECT_EQ(all_edge_fills + seamed_fills, stats.polygons_out);
+    // Seams (0.5) differ from the edge width: each seamed fill says its own.
+    EXPECT_EQ(count(svg, "stroke-width=\"0.5\"/>"), seamed_fills);
+    EXPECT_GT(stats.edge_paths, stats.polygons_out / 4);
+    EXPECT_LE(stats.edge_paths, stats.polygons_out);
+    EXPECT_EQ(stats.paths, stats.polygons_out + edge_elements);  // one fill each
+    // Each edge path directly follows its outline's fill: nearer fills hide farther edges.
+    const auto elements = parse_paths(svg);
+    for (std::size_t i = 0; i < elements.size(); ++i)
+        if (elements[i].edge) {
+            ASSERT_GT(i, 0u);
+            EXPECT_FALSE(elements[i - 1].edge_stroked);  // a seamed fill, not all edges
+        }
+}
+
+// Two triangles crossing each other: the BSP tree and the painter's algorithm split one along
+// the intersection line. With edges on, only the triangles' own edges are stroked: every stroked
+// segment lies on an edge of one of the two triangles, while the fills do have sides that do not
+// (the split line).
+TEST(Svg, EdgesAreMeshEdgesNotSplitLines) {
+    const Scene scene = scene_from_triangles(interpenetrating_pair());
+    RenderOptions options = small_options();
+    options.camera = front_camera();
+    options.cull = CullMode::None;
+    const std::vector<ScreenPolygon> triangles = project_scene(scene, options);
+    ASSERT_EQ(triangles.size(), 2u);
+    auto on_mesh_edge = [&](glm::dvec2 a, glm::dvec2 b) {
+        for (const ScreenPolygon& t : triangles)
+            for (std::size_t k = 0; k < 3; ++k) {
+                const glm::dvec2 p(t.vertices[k].window), q(t.vertices[(k + 1) % 3].window);
+                const glm::dvec2 d = glm::normalize(q - p);
+                auto off = [&](glm::dvec2 x) {
+                    return std::abs(d.x * (x.y - p.y) - d.y * (x.x - p.x));
+                };
+                if (off(a) < 0.01 && off(b) < 0.01) return true;
+            }
+        return false;
+    };
+    for (const SvgOptions::Order order : {SvgOptions::Order::Bsp, SvgOptions::Order::Painter}) {
+        SvgOptions svg_options;
+        svg_options.order = order;
+        svg_options.edges = true;
+        svg_options.precision = 6;
+        SvgStats stats;
+        const std::string svg = render_svg(scene, options, svg_options, &stats);
+        EXPECT_GT(stats.polygons_in, 2u) << int(order);  // split
+        std::size_t edge_segments = 0, fill_sides_off_edges = 0;
+        for (const PathElement& e : parse_paths(svg))
+            for (std::size_t k = 0; k < e.subpaths.size(); ++k) {
+                const auto& points = e.subpaths[k];
+                const std::size_t sides = e.closed[k] ? points.size() : points.size() - 1;
+                for (std::size_t i = 0; i < sides; ++i) {
+                    const bool on = on_mesh_edge(points[i], points[(i + 1) % points.size()]);
+                    if (e.edge_stroked) {
+                        ++edge_segments;
+                        EXPECT_TRUE(on) << int(order) << ": " << points[i].x << "," << points[i].y;
+                    } else {
+                        fill_sides_off_edges += !on;
+                    }
+                }
+            }
+        EXPECT_GE(edge_segments, 6u) << int(order);
+        EXPECT_GE(fill_sides_off_edges, 1u) << int(order);  // the split line is there, unstroked
+    }
+}
+
+// Merging across the paint order (merge_lookback) joins more polygons and paints the same image:
+// the fills, point-sampled at pixel centers with the nonzero rule and painted in document order,
+// match those of the unmerged document.
+TEST(Svg, LookbackMergingPaintsTheSameImage) {
+    const Scene scene = default_scene();
+    const RenderOptions options = small_options();
+    for (const bool edges : {false, true}) {
+        SvgOptions unmerged;
+        unmerged.edges = edges;
+        unmerged.precision = 6;
+        unmerged.merge_coplanar = false;
+        SvgOptions near = unmerged;
+        near.merge_coplanar = true;
+        near.merge_lookback = 1;
+        SvgOptions far = near;
+        far.merge_lookback = SvgOptions{}.merge_lookback;
+        SvgStats s_unmerged, s_near, s_far;
+        const std::string a = render_svg(scene, options, unmerged, &s_unmerged);
+        render_svg(scene, options, near, &s_near);
+        const std::string b = render_svg(scene, options, far, &s_far);
+        std::printf(
+            "default scene, edges %d: %zu polygons, %zu merged with neighbours only, %zu "
+            "with the default lookback\n",
+            int(edges), s_unmerged.polygons_out, s_near.polygons_out, s_far.polygons_out);
+        EXPECT_LT(s_near.polygons_out, s_unmerged.polygons_out);
+        EXPECT_LT(s_far.polygons_out, s_near.polygons_out);
+        const std::vector<std::uint32_t> ia = rasterize(a, options.width, options.height);
+        const std::vector<std::uint32_t> ib = rasterize(b, options.width, options.height);
+        std::size_t differing = 0;
+        for (std::size_t p = 0; p < ia.size(); ++p) differing += ia[p] != ib[p];
+        // Only pixel centers exactly on a side that merging removed may go either way.
+        EXPECT_LE(double(differing), 0.002 * double(ia.size())) << edges;
+    }
+}
+
+TEST(Svg, BunnySmallMergeCounts) {
+    ZRASTER_REQUIRE_SHARED_DATA();
+    const Scene scene = load_scene(shared_data("meshes/obj/bunny-small.obj"));
+    const RenderOptions options = small_options(480, 360);
+    for (const bool edges : {false, true}) {
+        SvgOptions svg_options;
+        svg_options.edges = edges;
+        std::size_t out[2] = {};
+        for (const std::size_t lookback : {std::size_t{1}, SvgOptions{}.merge_lookback}) {
+            svg_options.merge_lookback = lookback;
+            SvgStats stats;
+            const std::string svg = render_svg(scene, options, svg_options, &stats);
+            expect_well_formed(svg);
+            expect_valid_xml(svg);
+            std::printf(
+                "bunny-small 480x360, edges %d, lookback %zu: %zu polygons -> %zu "
+                "(%zu paths, %zu edge paths, %zu bytes)\n",
+                int(edges), lookback, stats.polygons_in, stats.polygons_out, stats.paths,
+                stats.edge_paths, stats.bytes);
+            out[lookback == 1 ? 0 : 1] = stats.polygons_out;
+        }
+        EXPECT_LT(out[1], out[0]) << edges;
+    }
 }
 
 TEST(Svg, SeamStrokesUseTheFillColor) {
@@ -226,6 +443,18 @@ TEST(Svg, SeamStrokesUseTheFillColor) {
     const std::string color = svg.substr(fill + 7, 7);
     EXPECT_NE(svg.find("stroke=\"" + color + "\"", fill), std::string::npos);
     EXPECT_NE(svg.find("stroke-linejoin=\"round\""), std::string::npos);
+    // Every fill carries a seam stroke of its own color (no hairline cracks between neighbours);
+    // with edges, each fill is stroked either with its seam or, when its outline is all mesh
+    // edges, with the edge stroke.
+    for (const PathElement& e : parse_paths(svg)) {
+        ASSERT_FALSE(e.edge);
+        EXPECT_FALSE(e.edge_stroked) << e.fill;
+    }
+    std::size_t stroked = 0;
+    for (const PathElement& e : parse_paths(svg))
+        stroked +=
+            svg.find("fill=\"" + e.fill + "\" stroke=\"" + e.fill + "\"") != std::string::npos;
+    EXPECT_EQ(stroked, parse_paths(svg).size());
 }
 
 TEST(Svg, PrecisionControlsDecimals) {

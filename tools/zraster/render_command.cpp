@@ -35,15 +35,21 @@ void add_render_command(CLI::App& app, RenderArguments& a) {
     cmd->add_flag("--stats", a.print_stats, "Print pipeline statistics");
     cmd->add_option("--visibility", a.visibility,
                     "Visible-surface algorithm: zbuffer (the pipeline), painter (Newell's "
-                    "painter's algorithm), bsp (BSP tree), warnock (area subdivision), abuffer "
-                    "(Carpenter's A-buffer: antialiased, order-independent transparency); all "
-                    "but zbuffer flat-shade")
+                    "painter's algorithm), bsp (BSP tree), warnock (area subdivision): these four "
+                    "draw every surface opaque (material opacity is ignored) and painter, bsp, "
+                    "warnock flat-shade; abuffer (Carpenter's A-buffer): shaded as zbuffer, "
+                    "antialiased, transparent materials blended in any submission order")
         ->check(CLI::IsMember({"zbuffer", "painter", "bsp", "warnock", "abuffer"}))
         ->capture_default_str();
     cmd->add_option("--aa", a.aa,
-                    "Antialiasing: N x N supersampling of the z-buffer path (flat shading), or "
-                    "with --visibility abuffer the A-buffer's samples per side (1, 2, 4, 8)")
+                    "Antialiasing: N x N supersampling of the z-buffer path (every sample "
+                    "shaded), or with --msaa N x N multisampling (N = 1, 2, 4, 8; one shading per "
+                    "pixel and surface), or with --visibility abuffer the A-buffer's samples per "
+                    "side (1, 2, 4, 8; default 4)")
         ->capture_default_str();
+    cmd->add_flag("--msaa", a.msaa,
+                  "With --aa N and --visibility zbuffer: multisample (coverage and depth per "
+                  "sample, shading per pixel) instead of supersampling");
 }
 
 void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
@@ -267,6 +273,23 @@ void validate_output(const std::string& path, std::initializer_list<const char*>
 
 }  // namespace
 
+// Material opacity only counts in the A-buffer: say so when the scene has any to ignore.
+void warn_if_transparent(const Scene& scene, const std::string& what) {
+    std::size_t transparent = 0;
+    std::string first;
+    for (const Instance& instance : scene.instances) {
+        const Mesh& mesh = scene.meshes.at(instance.mesh);
+        const Material& m =
+            scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
+        if (m.opacity < 1.0f && transparent++ == 0) first = m.name;
+    }
+    if (transparent > 0)
+        fmt::print(stderr,
+                   "note: {} instance(s) have a transparent material (opacity < 1, e.g. '{}'): "
+                   "{} draws them opaque; `zraster render --visibility abuffer` blends them\n",
+                   transparent, first, what);
+}
+
 int run_render(const RenderArguments& a) {
     validate_output(a.output, {".png"}, "the color output");
     validate_output(a.depth_out, {".npy", ".png"}, "the depth output");
@@ -289,12 +312,22 @@ int run_render(const RenderArguments& a) {
     ABufferStats abuffer_stats;
     RenderResult result;
     if (a.aa < 1 || a.aa > 16) throw InputError("--aa", "must be in 1..16");
+    if (a.msaa && a.visibility != "zbuffer")
+        throw InputError("--msaa", "works with --visibility zbuffer");
+    if ((a.wireframe || a.hidden_line) && (a.visibility != "zbuffer" || a.msaa))
+        throw InputError(a.wireframe ? "--wireframe" : "--hidden-line",
+                         "works with --visibility zbuffer, without --msaa");
+    if (a.msaa && a.aa != 1 && a.aa != 2 && a.aa != 4 && a.aa != 8)
+        throw InputError("--aa", "with --msaa must be 1, 2, 4 or 8");
+    if (a.visibility != "abuffer") warn_if_transparent(scene, "--visibility " + a.visibility);
     if (a.visibility == "abuffer") {
         ABufferOptions abuffer;
         abuffer.samples_per_side = a.aa == 1 ? 4 : a.aa;
         result = render_abuffer(scene, options, abuffer, &abuffer_stats);
     } else if (a.visibility == "zbuffer") {
-        result = a.aa > 1 ? render_supersampled(scene, options, a.aa) : render(scene, options);
+        result = a.msaa     ? render_multisampled(scene, options, a.aa)
+                 : a.aa > 1 ? render_supersampled(scene, options, a.aa)
+                            : render(scene, options);
     } else {
         if (a.aa > 1) throw InputError("--aa", "works with --visibility zbuffer or abuffer");
         result = render_with_visibility(scene, options,

@@ -36,7 +36,7 @@ struct RenderArguments {
     bool print_stats = false;
     std::string visibility = "zbuffer";
     int aa = 1;
-    int abuffer_samples = 4;
+    bool msaa = false;
     bool wireframe = false, hidden_line = false;
     std::string edge_color = "0,0,0";
 };
@@ -46,5 +46,7 @@ void add_render_arguments(CLI::App& cmd, RenderArguments& arguments);
 void add_render_command(CLI::App& app, RenderArguments& arguments);
 RenderOptions make_render_options(const RenderArguments& arguments, const Scene& scene);
 int run_render(const RenderArguments& arguments);
+// A note on stderr when instances have transparent materials, which `what` draws opaque.
+void warn_if_transparent(const Scene& scene, const std::string& what);
 
 }  // namespace zraster::cli

@@ -59,6 +59,7 @@ int run_svg(const SvgArguments& a) {
     const Scene scene = load_scene_or_procedural(a.render.scene);
     for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
     const RenderOptions options = make_render_options(a.render, scene);
+    warn_if_transparent(scene, "zraster svg");
 
     SvgOptions svg;
     svg.order = a.order == "painter" ? SvgOptions::Order::Painter : SvgOptions::Order::Bsp;

@@ -1,0 +1,221 @@
+// Shading of visibility polygons as render() shades pixels (see surface_shader.hpp).
+#include "visibility/surface_shader.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace zraster::visibility_detail {
+namespace {
+
+glm::vec3 unit_or_up(glm::vec3 n) {
+    const float len = glm::length(n);
+    return len > 0.0f ? n / len : glm::vec3(0, 1, 0);
+}
+
+// The renderer's Phong normalization (src/render/shade_kernel.cpp, unit_normal).
+glm::vec3 unit_normal(const glm::vec3& n) {
+    const float len = std::sqrt((n.x * n.x + n.y * n.y) + n.z * n.z);
+    return len > 0.0f ? glm::vec3(n.x / len, n.y / len, n.z / len) : glm::vec3(0, 1, 0);
+}
+
+template <class T>
+T interpolate(const std::vector<T>& values, const std::array<std::uint32_t, 3>& v,
+              const glm::vec3& b) {
+    return values[v[0]] * b.x + values[v[1]] * b.y + values[v[2]] * b.z;
+}
+
+}  // namespace
+
+SurfaceShader::SurfaceShader(const FrameContext& frame) : frame_(frame) {
+    const Scene& scene = *frame.scene;
+    const RenderOptions& options = *frame.options;
+    std::uint32_t total = 0;
+    for (const Instance& instance : scene.instances) {
+        const Mesh& mesh = scene.meshes.at(instance.mesh);
+        InstanceInfo info;
+        info.material =
+            &scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
+        info.shading = instance.shading.value_or(options.shading);
+        info.textured = options.textures && info.material->base_color_texture && !mesh.uvs.empty();
+        info.first_vertex = total;
+        instances_.push_back(info);
+        total += static_cast<std::uint32_t>(mesh.positions.size());
+    }
+    world_.resize(total);
+    normal_.resize(total);
+    uv_.resize(total);
+    gouraud_.resize(total);
+    // As the renderer's vertex stage (src/render/vertex_stage.cpp).
+    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+        const Instance& instance = scene.instances[i];
+        const Mesh& mesh = scene.meshes[instance.mesh];
+        const InstanceInfo& info = instances_[i];
+        const glm::mat3 to_world_normal = normal_matrix(instance.transform);
+        for (std::size_t k = 0; k < mesh.positions.size(); ++k) {
+            const std::size_t out = info.first_vertex + k;
+            world_[out] = glm::vec3(instance.transform * glm::vec4(mesh.positions[k], 1.0f));
+            glm::vec3 n = k < mesh.normals.size() ? mesh.normals[k] : glm::vec3(0, 1, 0);
+            n = to_world_normal * n;
+            const float len = glm::length(n);
+            normal_[out] = len > 0.0f ? n / len : glm::vec3(0, 1, 0);
+            uv_[out] = k < mesh.uvs.size() ? mesh.uvs[k] : glm::vec2(0.0f);
+            if (info.shading == ShadingMode::Gouraud)
+                gouraud_[out] = evaluate_lighting(options.lighting, *info.material, world_[out],
+                                                  normal_[out], frame.eye, frame.view_axis);
+        }
+    }
+}
+
+void SurfaceShader::prepare(const ScreenPolygon& polygon, Prepared& out) const {
+    const Scene& scene = *frame_.scene;
+    out.polygon = &polygon;
+    out.instance = static_cast<std::uint32_t>(polygon.instance);
+    const InstanceInfo& info = instances_[out.instance];
+    const Mesh& mesh = scene.meshes[scene.instances[out.instance].mesh];
+    for (std::size_t k = 0; k < 3; ++k)
+        out.vertex[k] =
+            info.first_vertex + mesh.indices[3 * static_cast<std::size_t>(polygon.primitive) + k];
+    out.flat =
+        info.shading == ShadingMode::Flat
+            ? flat_shade(frame_, polygon.instance, polygon.primitive, polygon.front_facing).terms
+            : LightTerms{};
+    const auto& v = polygon.vertices;
+    out.screen.resize(v.size());
+    for (std::size_t k = 0; k < v.size(); ++k)
+        to_screen(v[k].clip, frame_.setup_settings, out.screen[k]);
+    out.fans.clear();
+    out.fan_k.clear();
+    out.fan_valid.clear();
+    for (std::size_t k = 1; k + 1 < v.size(); ++k) {
+        TriangleSetup setup;
+        const bool valid = setup_triangle({out.screen[0], out.screen[k], out.screen[k + 1]},
+                                          frame_.setup_settings, setup) == SetupResult::Visible;
+        out.fans.push_back(setup);
+        out.fan_k.push_back(static_cast<std::uint32_t>(k));
+        out.fan_valid.push_back(valid);
+    }
+}
+
+glm::vec3 SurfaceShader::original_weights(const Prepared& p, std::size_t fan,
+                                          const glm::vec3& b) const {
+    const auto& v = p.polygon->vertices;
+    const std::size_t k = p.fan_k[fan];
+    return b.x * v[0].weights + b.y * v[k].weights + b.z * v[k + 1].weights;
+}
+
+glm::vec3 SurfaceShader::fan_barycentrics(const Prepared& p, std::size_t fan, double x,
+                                          double y) const {
+    const std::size_t k = p.fan_k[fan];
+    const ScreenVertex* s[3] = {&p.screen[0], &p.screen[k], &p.screen[k + 1]};
+    const double x0 = s[0]->window_x, y0 = s[0]->window_y;
+    const double ex1 = s[1]->window_x - x0, ey1 = s[1]->window_y - y0;
+    const double ex2 = s[2]->window_x - x0, ey2 = s[2]->window_y - y0;
+    const double det = ex1 * ey2 - ex2 * ey1;
+    if (!(std::abs(det) > 0.0)) return {1.0f, 0.0f, 0.0f};
+    const double dx = x - x0, dy = y - y0;
+    const double l1 = (dx * ey2 - ex2 * dy) / det, l2 = (ex1 * dy - dx * ey1) / det;
+    double b[3] = {1.0 - l1 - l2, l1, l2};
+    if (frame_.options->interpolation == Interpolation::PerspectiveCorrect) {
+        double sum = 0.0;
+        for (int i = 0; i < 3; ++i) sum += b[i] *= s[i]->inv_w;
+        if (sum != 0.0)
+            for (double& value : b) value /= sum;
+    }
+    return {float(b[0]), float(b[1]), float(b[2])};
+}
+
+Shaded SurfaceShader::shade(const Prepared& p, int px, int py, bool center, double x, double y,
+                            bool want_normal) const {
+    const RenderOptions& options = *frame_.options;
+    const InstanceInfo& info = instances_[p.instance];
+    const Material& material = *info.material;
+    const Interpolation interpolation = options.interpolation;
+
+    // Which fan, and the barycentrics of the source triangle there and one pixel over.
+    std::size_t fan = p.fans.size();
+    if (center) {
+        for (std::size_t f = 0; f < p.fans.size() && fan == p.fans.size(); ++f) {
+            if (!p.fan_valid[f]) continue;
+            const TriangleSetup& t = p.fans[f];
+            bool inside = true;
+            for (int e = 0; e < 3; ++e)
+                inside = inside && t.edge_a[e] * px + t.edge_b[e] * py + t.edge_c[e] >= 0;
+            if (inside) fan = f;
+        }
+        x = px + 0.5;
+        y = py + 0.5;
+    }
+    glm::vec3 b, b_dx, b_dy;
+    if (fan < p.fans.size()) {
+        const TriangleSetup& t = p.fans[fan];
+        b = original_weights(p, fan, barycentrics(t, px, py, interpolation));
+        b_dx = original_weights(p, fan, barycentrics(t, px + 1, py, interpolation));
+        b_dy = original_weights(p, fan, barycentrics(t, px, py + 1, interpolation));
+    } else {
+        // The fan holding (x, y), else the one it is least outside of.
+        double best = -1e300;
+        for (std::size_t f = 0; f < p.fans.size(); ++f) {
+            const glm::vec3 l = fan_barycentrics(p, f, x, y);
+            const double worst = std::min({l.x, l.y, l.z});
+            if (worst > best) {
+                best = worst;
+                fan = f;
+            }
+        }
+        if (fan == p.fans.size()) return {p.polygon->color, p.polygon->normal};
+        b = original_weights(p, fan, fan_barycentrics(p, fan, x, y));
+        b_dx = original_weights(p, fan, fan_barycentrics(p, fan, x + 1.0, y));
+        b_dy = original_weights(p, fan, fan_barycentrics(p, fan, x, y + 1.0));
+    }
+
+    const auto& idx = p.vertex;
+    glm::vec3 base = material.base_color;
+    if (info.textured) {
+        const glm::vec2 uv = interpolate(uv_, idx, b);
+        glm::vec2 duv_dx(0.0f), duv_dy(0.0f);
+        if (options.texture_filter == TextureFilter::Trilinear) {
+            duv_dx = interpolate(uv_, idx, b_dx) - uv;
+            duv_dy = interpolate(uv_, idx, b_dy) - uv;
+            if (!std::isfinite(duv_dx.x + duv_dx.y + duv_dy.x + duv_dy.y)) duv_dx = duv_dy = {};
+        }
+        const glm::vec4 texel =
+            material.base_color_texture->sample(uv, duv_dx, duv_dy, options.texture_filter);
+        base = material.base_color * glm::vec3(texel);
+    }
+    const bool flip = !p.polygon->front_facing && options.two_sided_lighting;
+    Shaded out;
+    switch (info.shading) {
+        case ShadingMode::Unlit:
+            out.color = base;
+            break;
+        case ShadingMode::Flat:
+            out.color = combine(p.flat, base);
+            break;
+        case ShadingMode::Gouraud: {
+            LightTerms terms;
+            terms.diffuse = gouraud_[idx[0]].diffuse * b.x + gouraud_[idx[1]].diffuse * b.y +
+                            gouraud_[idx[2]].diffuse * b.z;
+            terms.specular = gouraud_[idx[0]].specular * b.x + gouraud_[idx[1]].specular * b.y +
+                             gouraud_[idx[2]].specular * b.z;
+            out.color = combine(terms, base);
+            break;
+        }
+        case ShadingMode::Phong: {
+            glm::vec3 n = unit_normal(interpolate(normal_, idx, b));
+            if (flip) n = -n;
+            const glm::vec3 position = interpolate(world_, idx, b);
+            out.color = combine(evaluate_lighting(options.lighting, material, position, n,
+                                                  frame_.eye, frame_.view_axis),
+                                base);
+            out.normal = n;
+            return out;
+        }
+    }
+    if (want_normal) {
+        const glm::vec3 n = unit_or_up(interpolate(normal_, idx, b));
+        out.normal = flip ? -n : n;
+    }
+    return out;
+}
+
+}  // namespace zraster::visibility_detail

@@ -1,0 +1,72 @@
+// Shading of project_scene's polygons at any point, the way render() shades a pixel: the
+// instance's shading mode (unlit, flat, Gouraud, Phong), the lighting model, textures with the
+// renderer's filter and level of detail, perspective-correct (or screen-linear, per
+// options.interpolation) attributes. What the A-buffer shades its fragments with.
+//
+// At a pixel center covered by one of the polygon's fan triangles the result is render()'s for
+// that pixel bit for bit: the same fan (the renderer triangulates a clipped polygon from its first
+// vertex too), the same setup_triangle planes, the same barycentrics and the same operations in
+// the same order (src/render/shade_fragment.cpp, which this mirrors through the public API; keep
+// the two in step). Anywhere else (the centroid of a partial A-buffer fragment) the barycentrics
+// come from the fan's window positions in double.
+//
+// Cost: O(vertices) once per frame for the per-vertex attributes (world position, normal, uv,
+// Gouraud lighting), O(fan triangles) setups per polygon, one lighting evaluation per shade.
+#pragma once
+#include <zraster/raster.hpp>
+
+#include <cstdint>
+#include <vector>
+
+#include "visibility/frame_context.hpp"
+
+namespace zraster::visibility_detail {
+
+struct Shaded {
+    glm::vec3 color{0.0f};
+    glm::vec3 normal{0.0f};  // world-space shading normal, as render()'s normal target
+};
+
+class SurfaceShader {
+  public:
+    // What shading needs about one polygon, computed once.
+    struct Prepared {
+        const ScreenPolygon* polygon = nullptr;
+        std::vector<ScreenVertex> screen;       // the polygon's vertices through to_screen
+        std::vector<TriangleSetup> fans;        // setup_triangle of fan (0, k, k + 1), with planes
+        std::vector<std::uint32_t> fan_k;       // k of each entry of fans
+        std::vector<std::uint8_t> fan_valid;    // setup_triangle accepted it (else only `screen`)
+        std::array<std::uint32_t, 3> vertex{};  // the source triangle's vertices (frame arrays)
+        std::uint32_t instance = 0;
+        LightTerms flat;  // flat shading, lit once per polygon
+    };
+
+    // `frame` must outlive the shader. Computes the per-vertex attributes of every instance.
+    explicit SurfaceShader(const FrameContext& frame);
+
+    void prepare(const ScreenPolygon& polygon, Prepared& out) const;
+
+    // At the center of pixel (px, py) (the renderer's result there), or with center = false at
+    // the window point (x, y) (pixels, y down) inside the polygon.
+    Shaded shade(const Prepared& p, int px, int py, bool center, double x, double y,
+                 bool want_normal) const;
+
+  private:
+    struct InstanceInfo {
+        const Material* material = nullptr;
+        ShadingMode shading = ShadingMode::Phong;
+        bool textured = false;
+        std::uint32_t first_vertex = 0;
+    };
+    glm::vec3 original_weights(const Prepared& p, std::size_t fan, const glm::vec3& b) const;
+    // Barycentrics (of the fan's corners) at window point (x, y) from the window positions.
+    glm::vec3 fan_barycentrics(const Prepared& p, std::size_t fan, double x, double y) const;
+
+    const FrameContext& frame_;
+    std::vector<InstanceInfo> instances_;
+    std::vector<glm::vec3> world_, normal_;
+    std::vector<glm::vec2> uv_;
+    std::vector<LightTerms> gouraud_;  // Gouraud instances only (else empty entries)
+};
+
+}  // namespace zraster::visibility_detail
