@@ -1,0 +1,200 @@
+// Google Benchmark suites for the pipeline's stages and for whole frames:
+//   triangle setup, front-end classification (SIMD and scalar), the visibility kernel on 8x8
+//   blocks (SIMD and scalar), the Phong shading kernel, and whole frames of the benchmark scenes
+//   in depth-only and Phong modes at several resolutions and thread counts (binning, tile
+//   raster and deferred shading together; `zraster bench --verbose` splits a frame further).
+// Run: build-bench/pipeline_bench [--benchmark_filter=...]. Speed is measured here, never in
+// unit tests.
+#include <benchmark/benchmark.h>
+
+#include <zraster/render.hpp>
+#include <zraster/scenes.hpp>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "raster/visibility_kernel.hpp"
+#include "render/classify_kernel.hpp"
+#include "render/shade_kernel.hpp"
+
+namespace zraster {
+namespace {
+
+// Random small triangles (about `size` pixels across) in a 1920x1080 viewport, snapped.
+std::vector<ScreenVertex> random_vertices(std::size_t n, double size, std::uint64_t seed) {
+    SplitMix64 rng(seed);
+    SetupSettings settings;
+    settings.viewport = {1920, 1080};
+    std::vector<ScreenVertex> out(n);
+    for (std::size_t t = 0; t < n; t += 3) {
+        const double cx = rng.uniform(0, 1920), cy = rng.uniform(0, 1080);
+        for (std::size_t k = 0; k < 3 && t + k < n; ++k) {
+            const double x = cx + rng.uniform(-size, size), y = cy + rng.uniform(-size, size);
+            const glm::vec4 clip(float(x / 960.0 - 1.0), float(1.0 - y / 540.0),
+                                 float(rng.uniform(0, 1)), 1.0f);
+            to_screen(clip, settings, out[t + k]);
+        }
+    }
+    return out;
+}
+
+void BM_TriangleSetup(benchmark::State& state) {
+    const auto vertices = random_vertices(3 * 4096, double(state.range(0)), 1);
+    SetupSettings settings;
+    settings.viewport = {1920, 1080};
+    settings.cull = CullMode::None;
+    TriangleSetup setup;
+    for (auto _ : state)
+        for (std::size_t t = 0; t < vertices.size(); t += 3) {
+            benchmark::DoNotOptimize(
+                setup_triangle({vertices[t], vertices[t + 1], vertices[t + 2]}, settings, setup));
+            benchmark::DoNotOptimize(setup);
+        }
+    state.SetItemsProcessed(std::int64_t(state.iterations()) * 4096);
+    state.SetLabel("triangles of about " + std::to_string(state.range(0)) + " px");
+}
+BENCHMARK(BM_TriangleSetup)->Arg(2)->Arg(10)->Arg(50);
+
+void BM_ClassifyTriangles(benchmark::State& state) {
+    const bool simd = state.range(0) != 0;
+    const std::size_t triangles = 1 << 16;
+    const auto screen = random_vertices(3 * triangles, 1.0, 2);
+    const std::vector<std::uint32_t> outcode(screen.size(), 0);
+    std::vector<std::uint32_t> indices(screen.size());
+    for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = std::uint32_t(i);
+    detail::ClassifyInput in;
+    in.indices = indices.data();
+    in.vertex_total = std::uint32_t(screen.size());
+    in.outcode = outcode.data();
+    in.screen = screen.data();
+    in.settings.viewport = {1920, 1080};
+    auto out = std::make_unique<detail::ClassifyOutput>();
+    for (auto _ : state)
+        for (std::size_t t = 0; t < triangles; t += detail::ClassifyOutput::kMaxBatch) {
+            if (simd)
+                detail::classify_triangles(in, t, detail::ClassifyOutput::kMaxBatch, *out);
+            else
+                detail::classify_triangles_scalar(in, t, detail::ClassifyOutput::kMaxBatch, *out);
+            benchmark::DoNotOptimize(out->count);
+        }
+    state.SetItemsProcessed(std::int64_t(state.iterations() * triangles));
+    state.SetLabel(simd ? "simd (sub-pixel triangles, back-face culling)" : "scalar");
+}
+BENCHMARK(BM_ClassifyTriangles)->Arg(1)->Arg(0);
+
+void BM_VisibilityBlock(benchmark::State& state) {
+    const bool simd = state.range(0) != 0;
+    const bool attributes = state.range(1) != 0;
+    const auto vertices = random_vertices(3 * 1024, 6.0, 3);
+    SetupSettings settings;
+    settings.viewport = {1920, 1080};
+    settings.cull = CullMode::None;
+    std::vector<TriangleSetup> setups;
+    for (std::size_t t = 0; t < vertices.size(); t += 3) {
+        TriangleSetup s;
+        if (setup_triangle({vertices[t], vertices[t + 1], vertices[t + 2]}, settings, s) ==
+                SetupResult::Visible &&
+            s.max_x - s.min_x < 8 && s.max_y - s.min_y < 8 && s.min_x < 1900 && s.min_y < 1060)
+            setups.push_back(s);
+    }
+    auto tile = std::make_unique<detail::TileBuffers>();
+    std::fill(std::begin(tile->depth), std::end(tile->depth), 1.0f);
+    std::int64_t pixels = 0;
+    for (auto _ : state)
+        for (const TriangleSetup& s : setups) {
+            detail::BlockJob job;
+            for (int k = 0; k < 3; ++k) {
+                job.e[k] =
+                    std::int32_t(s.edge_a[std::size_t(k)] * s.min_x +
+                                 s.edge_b[std::size_t(k)] * s.min_y + s.edge_c[std::size_t(k)]);
+                job.step_x[k] = std::int32_t(s.edge_a[std::size_t(k)]);
+                job.step_y[k] = std::int32_t(s.edge_b[std::size_t(k)]);
+            }
+            job.setup = &s;
+            job.width = s.max_x - s.min_x + 1;
+            job.height = s.max_y - s.min_y + 1;
+            job.attributes = job.barycentrics = attributes;
+            job.compare = CompareFunc::Always;  // every covered pixel does the full work
+            pixels += simd ? detail::visibility_block(job, *tile)
+                           : detail::visibility_block_scalar(job, *tile);
+        }
+    state.SetItemsProcessed(std::int64_t(state.iterations() * setups.size()));
+    state.counters["fragments/s"] = benchmark::Counter(double(pixels), benchmark::Counter::kIsRate);
+    state.SetLabel(std::string(simd ? detail::visibility_kernel_target() : "scalar") +
+                   (attributes ? ", depth + ids + barycentrics" : ", depth only") +
+                   ", triangles of about 6 px");
+}
+BENCHMARK(BM_VisibilityBlock)->Args({1, 0})->Args({1, 1})->Args({0, 0})->Args({0, 1});
+
+void BM_PhongShading(benchmark::State& state) {
+    const bool simd = state.range(0) != 0;
+    Material material;
+    LightingModel lighting;
+    const auto constants = detail::make_phong_constants(lighting, material, {0, 0, 5}, {0, 0, 1});
+    auto batch = std::make_unique<detail::PhongBatch>();
+    SplitMix64 rng(4);
+    for (int i = 0; i < detail::kShadeBatch; ++i) {
+        batch->nx[i] = float(rng.uniform(-1, 1));
+        batch->ny[i] = float(rng.uniform(-1, 1));
+        batch->nz[i] = float(rng.uniform(0, 1));
+        batch->px[i] = float(rng.uniform(-1, 1));
+        batch->py[i] = float(rng.uniform(-1, 1));
+        batch->pz[i] = float(rng.uniform(-1, 1));
+        batch->flip[i] = 0;
+    }
+    for (auto _ : state) {
+        batch->count = detail::kShadeBatch;
+        if (simd)
+            detail::shade_phong_batch(constants, *batch);
+        else
+            detail::shade_phong_batch_scalar(constants, *batch);
+        benchmark::DoNotOptimize(batch->r[0]);
+    }
+    state.SetItemsProcessed(std::int64_t(state.iterations()) * detail::kShadeBatch);
+    state.SetLabel(simd ? "simd, pixels" : "scalar, pixels");
+}
+BENCHMARK(BM_PhongShading)->Arg(1)->Arg(0);
+
+// Whole frames: scene index, mode (0 depth, 1 phong), width, threads.
+const char* const kScenes[] = {"sphere:1000000", "city:20000", "soup:1000000", "sphere:20000"};
+
+const Scene& cached_scene(int index) {
+    static std::map<int, Scene> scenes;
+    auto it = scenes.find(index);
+    if (it == scenes.end()) it = scenes.emplace(index, make_procedural_scene(kScenes[index])).first;
+    return it->second;
+}
+
+void BM_Frame(benchmark::State& state) {
+    Scene scene = cached_scene(int(state.range(0)));
+    const bool phong = state.range(1) != 0;
+    for (Material& m : scene.materials) {
+        m.base_color = phong ? glm::vec3(0.8f, 0.75f, 0.7f) : glm::vec3(0.9f, 0.6f, 0.3f);
+    }
+    RenderOptions o;
+    o.width = int(state.range(2));
+    o.height = o.width * 9 / 16;
+    o.threads = int(state.range(3));
+    o.color_target = phong;
+    o.shading = ShadingMode::Phong;
+    o.camera = fit_camera(scene.world_positions());
+    Renderer renderer;
+    renderer.render(scene, o);  // warm-up: allocations
+    for (auto _ : state) benchmark::DoNotOptimize(renderer.render(scene, o).stats.total_ms);
+    state.SetLabel(std::string(kScenes[state.range(0)]) + (phong ? " phong " : " depth ") +
+                   std::to_string(o.width) + "x" + std::to_string(o.height) + ", " +
+                   std::to_string(o.threads) + " thread(s)");
+    state.SetItemsProcessed(std::int64_t(state.iterations() * scene.triangle_count()));
+}
+BENCHMARK(BM_Frame)
+    ->ArgsProduct({{0, 1, 2}, {0, 1}, {1920}, {1, 2}})
+    ->ArgsProduct({{3}, {1}, {640, 1920, 3840}, {2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+}  // namespace
+}  // namespace zraster
+
+BENCHMARK_MAIN();
