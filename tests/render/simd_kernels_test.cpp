@@ -4,6 +4,7 @@
 #include <zraster/scenes.hpp>
 
 #include <gtest/gtest.h>
+#include <hwy/targets.h>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -22,7 +23,7 @@ bool same_bits(const T* a, const T* b, std::size_t n) {
     return std::memcmp(a, b, n * sizeof(T)) == 0;
 }
 
-TEST(SimdKernels, VisibilityBlockMatchesScalarOnRandomTriangles) {
+void VisibilityBlockMatchesScalarOnRandomTriangles() {
     std::mt19937 rng(99);
     std::uniform_real_distribution<double> coord(-20.0, 84.0);
     std::uniform_real_distribution<float> depth(0.0f, 1.0f), w(0.2f, 4.0f);
@@ -89,10 +90,10 @@ TEST(SimdKernels, VisibilityBlockMatchesScalarOnRandomTriangles) {
     EXPECT_TRUE(same_bits(simd_tile->ref, scalar_tile->ref, TileBuffers::kPixels));
     EXPECT_TRUE(same_bits(simd_tile->b1, scalar_tile->b1, TileBuffers::kPixels));
     EXPECT_TRUE(same_bits(simd_tile->b2, scalar_tile->b2, TileBuffers::kPixels));
-    RecordProperty("target", visibility_kernel_target());
+    ::testing::Test::RecordProperty("target", visibility_kernel_target());
 }
 
-TEST(SimdKernels, PhongShadingMatchesScalarOnRandomInputs) {
+void PhongShadingMatchesScalarOnRandomInputs() {
     std::mt19937 rng(5);
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
     for (int round = 0; round < 200; ++round) {
@@ -145,7 +146,7 @@ void expect_simd_equals_scalar(const Scene& scene, RenderOptions o) {
     EXPECT_EQ(simd.targets.primitive_id, scalar.targets.primitive_id);
 }
 
-TEST(SimdKernels, WholeFramesMatchTheScalarPath) {
+void WholeFramesMatchTheScalarPath() {
     RenderOptions o;
     o.width = 320;
     o.height = 200;
@@ -170,6 +171,47 @@ TEST(SimdKernels, WholeFramesMatchTheScalarPath) {
     scene.instances.push_back(second);
     o.camera.reset();
     expect_simd_equals_scalar(scene, o);
+}
+
+// Each check on every instruction set this machine runs (AVX-512, AVX2, SSE4, ...), not only the
+// best one: another machine may lack AVX-512.
+template <class Check>
+void on_every_target(Check check) {
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        SCOPED_TRACE(hwy::TargetName(target));
+        // The dispatcher really switched (not just the best target again).
+        ASSERT_STREQ(visibility_kernel_target(), hwy::TargetName(target));
+        check();
+    }
+    hwy::SetSupportedTargetsForTest(0);
+}
+
+TEST(SimdKernels, VisibilityBlockMatchesScalarOnRandomTriangles) {
+    on_every_target(VisibilityBlockMatchesScalarOnRandomTriangles);
+}
+
+TEST(SimdKernels, PhongShadingMatchesScalarOnRandomInputs) {
+    on_every_target(PhongShadingMatchesScalarOnRandomInputs);
+}
+
+TEST(SimdKernels, WholeFramesMatchTheScalarPath) {
+    on_every_target(WholeFramesMatchTheScalarPath);
+}
+
+TEST(SimdKernels, BlockFarthestDepthMatchesScalar) {
+    on_every_target([] {
+        std::mt19937 rng(3);
+        std::uniform_real_distribution<float> depth(0.0f, 1.0f);
+        auto tile = std::make_unique<TileBuffers>();
+        for (int round = 0; round < 50; ++round) {
+            for (float& d : tile->depth) d = depth(rng);
+            for (int b = 0; b < 64; ++b)
+                for (const bool largest : {true, false})
+                    ASSERT_EQ(block_farthest_depth(*tile, b % 8, b / 8, largest),
+                              block_farthest_depth_scalar(*tile, b % 8, b / 8, largest));
+        }
+    });
 }
 
 }  // namespace
