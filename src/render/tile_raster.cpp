@@ -251,16 +251,40 @@ struct PendingPhong {
     }
 };
 
-// World positions and normals of the corners of the last triangle shaded, for instances with
-// lazy attributes (computed here from the mesh, as the vertex stage would).
-struct LazyTriangle {
+// What the deferred pass needs of the triangle of the last pixel: consecutive pixels mostly
+// share one, so the lookups (chunk, ref, instance: cache misses on dense meshes) and, for the
+// SIMD shader, its corners' world positions and normals are fetched once per run.
+struct TriangleRun {
     std::uint32_t id = kNoTriangle;
-    glm::vec3 world[3], normal[3];
+    const Chunk* chunk = nullptr;
+    const TriangleRef* ref = nullptr;
+    std::int32_t instance_id = -1, primitive_id = -1;
+    int kernel = -1;                   // SIMD shader constants, or -1: the scalar shader
+    const glm::vec3* piece = nullptr;  // a clipped piece's corner weights
+    std::uint32_t flip = 0;            // ~0 where the shader negates the normal
+    glm::vec3 world[3], normal[3];     // corners (kernel >= 0)
 
-    void load(const FrameInstance& fi, const TriangleRef& ref, std::uint32_t triangle) {
+    void load(const Frame& frame, std::uint32_t triangle, bool kernel_shading) {
         id = triangle;
-        for (std::size_t k = 0; k < 3; ++k)
-            world_attributes(fi, ref.vertex[k] - fi.first_vertex, world[k], normal[k]);
+        chunk = &frame.chunks[triangle >> kLocalBits];
+        ref = &chunk->refs[triangle & ((1u << kLocalBits) - 1)];
+        const FrameInstance& fi = frame.instances[ref->instance];
+        instance_id = static_cast<std::int32_t>(fi.scene_instance);
+        primitive_id = static_cast<std::int32_t>(ref->primitive);
+        kernel = kernel_shading ? fi.phong_kernel : -1;
+        if (kernel < 0) return;
+        piece = ref->piece == TriangleRef::kNotClipped ? nullptr
+                                                       : chunk->pieces[ref->piece].weights.data();
+        flip = !ref->front_facing && frame.options->two_sided_lighting ? ~0u : 0u;
+        for (std::size_t k = 0; k < 3; ++k) {
+            // The same values interpolate() reads, or computes lazily: the same bits.
+            if (fi.lazy_attributes) {
+                world_attributes(fi, ref->vertex[k] - fi.first_vertex, world[k], normal[k]);
+            } else {
+                world[k] = frame.vertices.world[ref->vertex[k]];
+                normal[k] = frame.vertices.normal[ref->vertex[k]];
+            }
+        }
     }
 };
 
@@ -277,7 +301,7 @@ std::uint64_t finish_tile(const TileContext& c, const TileBuffers& tile, std::ui
     thread_local PendingPhong pending;
     ShadingTriangle cache;
     std::uint32_t cached_id = kNoTriangle;
-    LazyTriangle lazy;
+    TriangleRun run;
     std::uint64_t shaded = 0;
     for (int py = c.y0; py < c.y1; ++py) {
         const std::size_t row = std::size_t(py) * std::size_t(t.width);
@@ -301,37 +325,26 @@ std::uint64_t finish_tile(const TileContext& c, const TileBuffers& tile, std::ui
                 if (want_ids) t.instance_id[p] = t.primitive_id[p] = -1;
                 continue;
             }
-            const Chunk& chunk = c.frame.chunks[id >> kLocalBits];
-            const TriangleRef& ref = chunk.refs[id & ((1u << kLocalBits) - 1)];
+            if (id != run.id) run.load(c.frame, id, kernel_shading);
             if (want_ids) {
-                t.instance_id[p] =
-                    static_cast<std::int32_t>(c.frame.instances[ref.instance].scene_instance);
-                t.primitive_id[p] = static_cast<std::int32_t>(ref.primitive);
+                t.instance_id[p] = run.instance_id;
+                t.primitive_id[p] = run.primitive_id;
             }
             if (!shade_now) continue;
             ++shaded;
-            const int kernel = c.frame.instances[ref.instance].phong_kernel;
-            if (kernel_shading && kernel >= 0) {
-                // The kernel needs no per-triangle preparation beyond the piece weights.
-                cache.chunk = &chunk;
-                cache.ref = &ref;
-                cached_id = kNoTriangle;
-                if (pending.kernel != kernel || pending.batch.count == kShadeBatch) {
+            if (run.kernel >= 0) {
+                if (pending.kernel != run.kernel || pending.batch.count == kShadeBatch) {
                     pending.flush(c);
-                    pending.kernel = kernel;
+                    pending.kernel = run.kernel;
                 }
-                const glm::vec3 b = original_barycentrics(
-                    cache, {1.0f - tile.b1[at] - tile.b2[at], tile.b1[at], tile.b2[at]});
-                const FrameInstance& fi = c.frame.instances[ref.instance];
-                glm::vec3 normal, position;
-                if (fi.lazy_attributes) {
-                    if (id != lazy.id) lazy.load(fi, ref, id);
-                    normal = lazy.normal[0] * b.x + lazy.normal[1] * b.y + lazy.normal[2] * b.z;
-                    position = lazy.world[0] * b.x + lazy.world[1] * b.y + lazy.world[2] * b.z;
-                } else {
-                    normal = interpolate(c.frame.vertices.normal, ref.vertex, b);
-                    position = interpolate(c.frame.vertices.world, ref.vertex, b);
-                }
+                const float b1 = tile.b1[at], b2 = tile.b2[at];
+                glm::vec3 b{1.0f - b1 - b2, b1, b2};
+                if (run.piece != nullptr)  // as original_barycentrics()
+                    b = b.x * run.piece[0] + b.y * run.piece[1] + b.z * run.piece[2];
+                const glm::vec3 normal =
+                    run.normal[0] * b.x + run.normal[1] * b.y + run.normal[2] * b.z;
+                const glm::vec3 position =
+                    run.world[0] * b.x + run.world[1] * b.y + run.world[2] * b.z;
                 PhongBatch& batch = pending.batch;
                 const int i = batch.count++;
                 batch.nx[i] = normal.x;
@@ -340,10 +353,12 @@ std::uint64_t finish_tile(const TileContext& c, const TileBuffers& tile, std::ui
                 batch.px[i] = position.x;
                 batch.py[i] = position.y;
                 batch.pz[i] = position.z;
-                batch.flip[i] = !ref.front_facing && c.frame.options->two_sided_lighting ? ~0u : 0u;
+                batch.flip[i] = run.flip;
                 pending.x[i] = px;
                 continue;
             }
+            const Chunk& chunk = *run.chunk;
+            const TriangleRef& ref = *run.ref;
             if (id != cached_id) {
                 prepare_shading_triangle(c.frame, chunk, ref, cache);
                 cached_id = id;
