@@ -9,6 +9,7 @@
 
 #include "render/frame.hpp"
 #include "render/shade_kernel.hpp"
+#include "render/vertex_kernel.hpp"
 
 namespace zraster::detail {
 namespace {
@@ -26,20 +27,6 @@ bool outside_frustum(const Bounds3f& box, const glm::mat4& mvp, ClipDepthRange r
         if (all == 0) return false;
     }
     return true;
-}
-
-// m * (p, 1), written out: glm's operator* is not always inlined at -O2, and this is the
-// innermost loop of the vertex stage. Same operations in the same order as glm's
-// (m0 x + m1 y) + (m2 z + m3 w) with w = 1, so results equal m * vec4(p, 1) bit for bit.
-inline glm::vec4 transform(const glm::mat4& m, const glm::vec3& p) {
-    return glm::vec4((m[0].x * p.x + m[1].x * p.y) + (m[2].x * p.z + m[3].x),
-                     (m[0].y * p.x + m[1].y * p.y) + (m[2].y * p.z + m[3].y),
-                     (m[0].z * p.x + m[1].z * p.y) + (m[2].z * p.z + m[3].z),
-                     (m[0].w * p.x + m[1].w * p.y) + (m[2].w * p.z + m[3].w));
-}
-
-bool finite(const glm::vec4& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
 }
 
 // Instances the SIMD Phong shader can draw get its constants; those it draws alone (deferred,
@@ -121,18 +108,22 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
         tbb::parallel_for(
             tbb::blocked_range<std::size_t>(0, mesh.positions.size(), 8192),
             [&](const tbb::blocked_range<std::size_t>& r) {
+                VertexJob job;
+                job.positions = mesh.positions.data() + r.begin();
+                job.count = r.end() - r.begin();
+                job.mvp = fi.mvp;
+                job.clip = frame.clip_settings;
+                job.setup = frame.setup_settings;
+                job.clip_out = v.clip.data() + fi.first_vertex + r.begin();
+                job.screen_out = v.screen.data() + fi.first_vertex + r.begin();
+                job.outcode_out = v.outcode.data() + fi.first_vertex + r.begin();
+                if (options.simd)
+                    transform_vertices(job);
+                else
+                    transform_vertices_scalar(job);
+                if (!eager) return;
                 for (std::size_t k = r.begin(); k < r.end(); ++k) {
                     const std::size_t out = fi.first_vertex + k;
-                    const glm::vec4 clip = transform(fi.mvp, mesh.positions[k]);
-                    v.clip[out] = clip;
-                    std::uint32_t code = kNonFinite;
-                    if (finite(clip)) {
-                        code = frustum_outcode(clip, frame.clip_settings);
-                        if (code == 0 && !to_screen(clip, frame.setup_settings, v.screen[out]))
-                            code = kClipLeft;  // not representable: let the clipper handle it
-                    }
-                    v.outcode[out] = code;
-                    if (!eager) continue;
                     if (!attributes) {  // user clip planes only need the world position
                         v.world[out] = glm::vec3(fi.model * glm::vec4(mesh.positions[k], 1.0f));
                         continue;

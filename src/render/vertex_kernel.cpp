@@ -1,0 +1,163 @@
+// See vertex_kernel.hpp. Highway's foreach_target re-includes this file once per instruction
+// set; the scalar reference and the dispatcher are compiled once (HWY_ONCE).
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "render/vertex_kernel.cpp"
+#include <hwy/foreach_target.h>  // must come before highway.h
+#include <hwy/highway.h>
+
+#include <cmath>
+
+#include "render/frame.hpp"
+#include "render/vertex_kernel.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace zraster::detail::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+void TransformVertices(const VertexJob& job) {
+    // Lanes of doubles for the snap; floats and 32-bit integers of the same lane count.
+    const hn::CappedTag<double, 8> dd;
+    const hn::Rebind<float, decltype(dd)> df;
+    const hn::Rebind<std::int32_t, decltype(dd)> di;
+    const std::size_t lanes = hn::Lanes(dd);
+    const glm::mat4& m = job.mvp;
+    const auto row = [&](int r) {
+        return std::array{hn::Set(df, m[0][r]), hn::Set(df, m[1][r]), hn::Set(df, m[2][r]),
+                          hn::Set(df, m[3][r])};
+    };
+    const auto mx = row(0), my = row(1), mz = row(2), mw = row(3);
+    const auto zero_f = hn::Zero(df);
+    const auto guard_x = hn::Set(df, job.clip.guard_x), guard_y = hn::Set(df, job.clip.guard_y);
+    const bool zero_to_one_clip = job.clip.depth_range == ClipDepthRange::ZeroToOne;
+    const auto bit = [&](std::uint32_t b) { return hn::Set(di, static_cast<std::int32_t>(b)); };
+    const auto zero_i = hn::Zero(di);
+    const double width = job.setup.viewport.width, height = job.setup.viewport.height;
+    const auto one_d = hn::Set(dd, 1.0), half_d = hn::Set(dd, 0.5);
+    const auto limit = hn::Set(dd, kGuardBand + double(kMaxViewport));
+    const auto scale = hn::Set(dd, double(kSubpixelScale));
+    const bool zero_to_one_window = job.setup.depth_range != ClipDepthRange::NegativeOneToOne;
+    alignas(64) std::int32_t sx[8], sy[8];
+    alignas(64) float sz[8], sw[8], wx_out[8], wy_out[8];
+    std::size_t k = 0;
+    for (; k + lanes <= job.count; k += lanes) {
+        hn::Vec<decltype(df)> x, y, z;
+        hn::LoadInterleaved3(df, &job.positions[k].x, x, y, z);
+        // (m0 x + m1 y) + (m2 z + m3), as transform() in the scalar twin.
+        const auto apply = [&](const auto& r) {
+            return hn::Add(hn::Add(hn::Mul(r[0], x), hn::Mul(r[1], y)),
+                           hn::Add(hn::Mul(r[2], z), r[3]));
+        };
+        const auto cx = apply(mx), cy = apply(my), cz = apply(mz), cw = apply(mw);
+        hn::StoreInterleaved4(cx, cy, cz, cw, df, &job.clip_out[k].x);
+        const auto finite =
+            hn::RebindMask(di, hn::And(hn::And(hn::IsFinite(cx), hn::IsFinite(cy)),
+                                       hn::And(hn::IsFinite(cz), hn::IsFinite(cw))));
+        // frustum_outcode(), the same expressions.
+        const auto depth_min = zero_to_one_clip ? cz : hn::Add(cz, cw);
+        const auto gx = hn::Mul(guard_x, cw), gy = hn::Mul(guard_y, cw);
+        const auto outside = [&](auto distance, std::uint32_t b) {
+            return hn::IfThenZeroElse(hn::RebindMask(di, hn::Ge(distance, zero_f)), bit(b));
+        };
+        auto code = hn::Or(
+            hn::Or(outside(depth_min, kClipDepthMin), outside(hn::Sub(cw, cz), kClipDepthMax)),
+            hn::Or(
+                hn::Or(outside(hn::Add(cx, gx), kClipLeft), outside(hn::Sub(gx, cx), kClipRight)),
+                hn::Or(outside(hn::Add(cy, gy), kClipBottom), outside(hn::Sub(gy, cy), kClipTop))));
+        // to_screen() in double lanes.
+        const auto w = hn::PromoteTo(dd, cw);
+        const auto rw = hn::Div(one_d, w);
+        const auto wx = hn::Mul(hn::Mul(hn::Add(hn::Mul(hn::PromoteTo(dd, cx), rw), one_d), half_d),
+                                hn::Set(dd, width));
+        const auto wy = hn::Mul(hn::Mul(hn::Sub(one_d, hn::Mul(hn::PromoteTo(dd, cy), rw)), half_d),
+                                hn::Set(dd, height));
+        const auto neg_limit = hn::Neg(limit);
+        const auto representable = hn::And(
+            hn::And(hn::Gt(w, hn::Zero(dd)), hn::And(hn::Ge(wx, neg_limit), hn::Le(wx, limit))),
+            hn::And(hn::Ge(wy, neg_limit), hn::Le(wy, limit)));
+        const auto inside = hn::Eq(code, zero_i);
+        // Inside but not representable: the clipper takes it (kClipLeft).
+        // (A mask of double lanes does not convert to 32-bit lanes: go through 0/1 values.)
+        const auto representable_i =
+            hn::Eq(hn::DemoteTo(di, hn::IfThenElseZero(representable, one_d)), hn::Set(di, 1));
+        const auto unrepresentable = hn::AndNot(representable_i, inside);
+        code = hn::IfThenElse(unrepresentable, bit(kClipLeft), code);
+        code = hn::IfThenElse(finite, code, hn::Set(di, static_cast<std::int32_t>(kNonFinite)));
+        hn::StoreU(hn::BitCast(hn::Rebind<std::uint32_t, decltype(dd)>(), code),
+                   hn::Rebind<std::uint32_t, decltype(dd)>(), job.outcode_out + k);
+        if (hn::AllFalse(di, hn::Eq(code, zero_i))) continue;
+        // Values outside the representable range are not converted (their lanes are unused).
+        const auto safe_x = hn::IfThenElseZero(representable, wx);
+        const auto safe_y = hn::IfThenElseZero(representable, wy);
+        hn::Store(hn::DemoteTo(di, hn::Round(hn::Mul(safe_x, scale))), di, sx);
+        hn::Store(hn::DemoteTo(di, hn::Round(hn::Mul(safe_y, scale))), di, sy);
+        const auto zd = hn::Mul(hn::PromoteTo(dd, cz), rw);
+        const auto window_z = zero_to_one_window ? zd : hn::Add(hn::Mul(half_d, zd), half_d);
+        hn::Store(hn::DemoteTo(df, window_z), df, sz);
+        hn::Store(hn::DemoteTo(df, rw), df, sw);
+        hn::Store(hn::DemoteTo(df, wx), df, wx_out);
+        hn::Store(hn::DemoteTo(df, wy), df, wy_out);
+        for (std::size_t i = 0; i < lanes; ++i) {
+            if (job.outcode_out[k + i] != 0) continue;
+            ScreenVertex& s = job.screen_out[k + i];
+            s.x = sx[i];
+            s.y = sy[i];
+            s.z = sz[i];
+            s.inv_w = sw[i];
+            s.window_x = wx_out[i];
+            s.window_y = wy_out[i];
+        }
+    }
+    if (k < job.count) {
+        VertexJob tail = job;
+        tail.positions += k;
+        tail.count -= k;
+        tail.clip_out += k;
+        tail.screen_out += k;
+        tail.outcode_out += k;
+        transform_vertices_scalar(tail);
+    }
+}
+
+}  // namespace zraster::detail::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace zraster::detail {
+namespace {
+
+// m * (p, 1), written out in the order the SIMD version uses; equal to glm's m * vec4(p, 1).
+inline glm::vec4 transform(const glm::mat4& m, const glm::vec3& p) {
+    return glm::vec4((m[0].x * p.x + m[1].x * p.y) + (m[2].x * p.z + m[3].x),
+                     (m[0].y * p.x + m[1].y * p.y) + (m[2].y * p.z + m[3].y),
+                     (m[0].z * p.x + m[1].z * p.y) + (m[2].z * p.z + m[3].z),
+                     (m[0].w * p.x + m[1].w * p.y) + (m[2].w * p.z + m[3].w));
+}
+
+bool finite(const glm::vec4& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
+}
+
+}  // namespace
+
+HWY_EXPORT(TransformVertices);
+
+void transform_vertices(const VertexJob& job) {
+    HWY_DYNAMIC_DISPATCH(TransformVertices)(job);
+}
+
+void transform_vertices_scalar(const VertexJob& job) {
+    for (std::size_t k = 0; k < job.count; ++k) {
+        const glm::vec4 clip = transform(job.mvp, job.positions[k]);
+        job.clip_out[k] = clip;
+        std::uint32_t code = kNonFinite;
+        if (finite(clip)) {
+            code = frustum_outcode(clip, job.clip);
+            if (code == 0 && !to_screen(clip, job.setup, job.screen_out[k]))
+                code = kClipLeft;  // not representable: let the clipper handle it
+        }
+        job.outcode_out[k] = code;
+    }
+}
+
+}  // namespace zraster::detail
+#endif  // HWY_ONCE

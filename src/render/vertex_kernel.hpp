@@ -1,0 +1,33 @@
+// The vertex stage's inner loop: object position -> clip position (mvp), outcode (frustum and
+// guard band; kNonFinite for NaN/Inf), and for vertices inside, the snapped screen vertex
+// (to_screen, in double). Vertices inside whose screen position is not representable get
+// kClipLeft so the clipper handles them.
+//
+// Two implementations with identical output: a scalar reference and a SIMD one (Highway,
+// instruction set picked at run time; 8 vertices per AVX-512 step, the snap in double lanes).
+// Screen vertices are only defined where the outcode is 0; a test compares both there and the
+// clip positions and outcodes everywhere.
+#pragma once
+#include <zraster/clip.hpp>
+#include <zraster/raster.hpp>
+
+#include <cstddef>
+#include <cstdint>
+
+namespace zraster::detail {
+
+struct VertexJob {
+    const glm::vec3* positions = nullptr;
+    std::size_t count = 0;
+    glm::mat4 mvp{1.0f};
+    ClipSettings clip;
+    SetupSettings setup;
+    glm::vec4* clip_out = nullptr;
+    ScreenVertex* screen_out = nullptr;
+    std::uint32_t* outcode_out = nullptr;
+};
+
+void transform_vertices(const VertexJob& job);
+void transform_vertices_scalar(const VertexJob& job);
+
+}  // namespace zraster::detail
