@@ -1,0 +1,269 @@
+// OcclusionBuffer (include/zraster/occlusion_buffer.hpp): storage, occluder batches, and the
+// conversion of boxes, triangles and NDC rectangles into conservative pixel rectangles.
+#include <zraster/error.hpp>
+#include <zraster/occlusion_buffer.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "occlusion/occluder_setup.hpp"
+#include "occlusion/occlusion_kernel.hpp"
+
+namespace zraster {
+
+using detail::OccluderTriangle;
+using detail::OcclusionTile;
+
+namespace {
+
+static_assert(OcclusionBuffer::kTileWidth == detail::kOcclusionTileWidth &&
+              OcclusionBuffer::kTileHeight == detail::kOcclusionTileHeight);
+static_assert(sizeof(glm::vec4) == 4 * sizeof(float));  // clip positions are read as floats
+
+constexpr int kMaxSide = 16384;
+
+bool finite(const glm::vec4& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
+}
+
+}  // namespace
+
+struct OcclusionBuffer::Impl {
+    int width = 0, height = 0;
+    detail::TileGrid grid;
+    std::vector<OcclusionTile> tiles;
+    std::vector<OccluderTriangle> batch;  // kSetupOutput slots
+    std::size_t batch_size = 0;
+    std::vector<glm::vec4> transformed;  // scratch for render_occluders with a matrix
+    bool simd = true;
+    std::uint64_t rasterized = 0;
+
+    void flush() {
+        if (batch_size == 0) return;
+        if (simd)
+            detail::rasterize_occluders(batch.data(), batch_size, grid);
+        else
+            detail::rasterize_occluders_scalar(batch.data(), batch_size, grid);
+        rasterized += batch_size;
+        batch_size = 0;
+    }
+
+    bool occluded(int x0, int y0, int x1, int y1, float depth) const {
+        return simd ? detail::rect_occluded(grid, x0, y0, x1, y1, depth)
+                    : detail::rect_occluded_scalar(grid, x0, y0, x1, y1, depth);
+    }
+
+    // The conservative answer for an object whose clip-space points are `points`.
+    OcclusionResult test_points(const glm::vec4* points, int n) const;
+};
+
+OcclusionBuffer::OcclusionBuffer() : impl_(std::make_unique<Impl>()) {}
+
+OcclusionBuffer::OcclusionBuffer(int width, int height) : OcclusionBuffer() {
+    set_resolution(width, height);
+}
+
+OcclusionBuffer::~OcclusionBuffer() = default;
+OcclusionBuffer::OcclusionBuffer(OcclusionBuffer&&) noexcept = default;
+OcclusionBuffer& OcclusionBuffer::operator=(OcclusionBuffer&&) noexcept = default;
+
+void OcclusionBuffer::set_resolution(int width, int height) {
+    if (width < 1 || height < 1 || width > kMaxSide || height > kMaxSide)
+        throw InputError("", "occlusion buffer size " + std::to_string(width) + "x" +
+                                 std::to_string(height) + " out of range (1.." +
+                                 std::to_string(kMaxSide) + " per side)");
+    Impl& m = *impl_;
+    m.width = width;
+    m.height = height;
+    m.grid.tiles_x = (width + kTileWidth - 1) / kTileWidth;
+    m.grid.tiles_y = (height + kTileHeight - 1) / kTileHeight;
+    m.tiles.resize(static_cast<std::size_t>(m.grid.tiles_x) * m.grid.tiles_y);
+    m.grid.tiles = m.tiles.data();
+    m.batch.resize(detail::kSetupOutput);
+    clear();
+}
+
+int OcclusionBuffer::width() const {
+    return impl_->width;
+}
+int OcclusionBuffer::height() const {
+    return impl_->height;
+}
+void OcclusionBuffer::set_simd(bool on) {
+    impl_->simd = on;
+}
+const char* OcclusionBuffer::simd_target() {
+    return detail::occlusion_kernel_target();
+}
+
+void OcclusionBuffer::clear() {
+    OcclusionTile empty;
+    std::fill(std::begin(empty.mask), std::end(empty.mask), 0u);
+    std::fill(std::begin(empty.far_depth), std::end(empty.far_depth), detail::kClearFarDepth);
+    std::fill(std::begin(empty.near_depth), std::end(empty.near_depth), detail::kEmptyNearDepth);
+    std::fill(impl_->tiles.begin(), impl_->tiles.end(), empty);
+    impl_->rasterized = 0;
+}
+
+void OcclusionBuffer::render_occluders(std::span<const glm::vec4> clip_positions,
+                                       std::span<const std::uint32_t> indices,
+                                       const OccluderOptions& options) {
+    Impl& m = *impl_;
+    if (m.width == 0) return;
+    detail::OccluderSource source;
+    source.clip = reinterpret_cast<const float*>(clip_positions.data());
+    source.vertex_count = clip_positions.size();
+    source.indices = indices.data();
+    source.triangle_count = indices.size() / 3;
+    source.width = m.width;
+    source.height = m.height;
+    source.cull_back = options.cull == OccluderCull::Back;
+    source.cull_front = options.cull == OccluderCull::Front;
+    source.front_face_clockwise = options.front_face_clockwise;
+    // NaN or negative: none; huge: nothing is covered (still conservative).
+    source.subpixel_margin =
+        options.subpixel_margin > 0.0f ? std::min(options.subpixel_margin, 1e6f) : 0.0f;
+    const std::size_t triangles = indices.size() / 3;
+    // Set up a group, rasterize it while it is in L1, next group.
+    for (std::size_t first = 0; first < triangles; first += detail::kSetupGroup) {
+        const std::size_t count = std::min(detail::kSetupGroup, triangles - first);
+        m.batch_size = m.simd
+                           ? detail::setup_occluders(source, first, count, m.batch.data())
+                           : detail::setup_occluders_scalar(source, first, count, m.batch.data());
+        m.flush();
+    }
+}
+
+void OcclusionBuffer::render_occluders(std::span<const glm::vec3> positions,
+                                       std::span<const std::uint32_t> indices,
+                                       const glm::mat4& to_clip, const OccluderOptions& options) {
+    std::vector<glm::vec4>& clip = impl_->transformed;
+    clip.resize(positions.size());
+    for (std::size_t i = 0; i < positions.size(); ++i)
+        clip[i] = to_clip * glm::vec4(positions[i], 1.0f);
+    render_occluders(std::span<const glm::vec4>(clip), indices, options);
+}
+
+OcclusionResult OcclusionBuffer::Impl::test_points(const glm::vec4* points, int n) const {
+    unsigned outside_all = 0x3f;
+    bool crosses_near = false;
+    for (int i = 0; i < n; ++i) {
+        const glm::vec4& p = points[i];
+        if (!finite(p)) return OcclusionResult::Visible;
+        unsigned code = 0;
+        if (p.x < -p.w) code |= 1;
+        if (p.x > p.w) code |= 2;
+        if (p.y < -p.w) code |= 4;
+        if (p.y > p.w) code |= 8;
+        if (p.z > p.w) code |= 16;
+        if (p.z < -p.w) code |= 32;
+        outside_all &= code;
+        crosses_near |= (code & 32) != 0 || !(p.w > 0.0f);
+    }
+    if (outside_all) return OcclusionResult::OutsideView;
+    if (crosses_near || width == 0) return OcclusionResult::Visible;
+    double xmin = HUGE_VAL, xmax = -HUGE_VAL, ymin = HUGE_VAL, ymax = -HUGE_VAL;
+    double nearest = HUGE_VAL, max_abs = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const glm::vec4& p = points[i];
+        const double inv_w = 1.0 / p.w;
+        const double x = (p.x * inv_w * 0.5 + 0.5) * width;
+        const double y = (0.5 - p.y * inv_w * 0.5) * height;
+        xmin = std::min(xmin, x);
+        xmax = std::max(xmax, x);
+        ymin = std::min(ymin, y);
+        ymax = std::max(ymax, y);
+        max_abs = std::max({max_abs, std::abs(x), std::abs(y)});
+        nearest = std::min(nearest, p.z * inv_w * 0.5 + 0.5);
+    }
+    // Grow by more than the snapping of an exact rasterizer and the float error of the corners.
+    const double margin = 0x1p-6 + max_abs * 0x1p-18;
+    // Pixels whose center may be inside [min - margin, max + margin].
+    const auto pixel = [](double v, double limit) { return std::clamp(v - 0.5, -2.0, limit); };
+    int x0 = static_cast<int>(std::ceil(pixel(xmin - margin, width + 1.0)));
+    int x1 = static_cast<int>(std::floor(pixel(xmax + margin, width + 1.0)));
+    int y0 = static_cast<int>(std::ceil(pixel(ymin - margin, height + 1.0)));
+    int y1 = static_cast<int>(std::floor(pixel(ymax + margin, height + 1.0)));
+    // Between pixel centers: test the neighbours instead of calling it hidden.
+    if (x0 > x1) std::swap(x0, x1);
+    if (y0 > y1) std::swap(y0, y1);
+    x0 = std::max(x0, 0);
+    y0 = std::max(y0, 0);
+    x1 = std::min(x1, width - 1);
+    y1 = std::min(y1, height - 1);
+    if (x0 > x1 || y0 > y1) return OcclusionResult::OutsideView;
+    const float depth = static_cast<float>(nearest - 0x1p-20);
+    return occluded(x0, y0, x1, y1, depth) ? OcclusionResult::Occluded : OcclusionResult::Visible;
+}
+
+OcclusionResult OcclusionBuffer::test_rect(glm::vec2 ndc_min, glm::vec2 ndc_max,
+                                           float nearest_depth) const {
+    if (!std::isfinite(ndc_min.x) || !std::isfinite(ndc_min.y) || !std::isfinite(ndc_max.x) ||
+        !std::isfinite(ndc_max.y) || std::isnan(nearest_depth))
+        return OcclusionResult::Visible;
+    if (ndc_max.x < -1.0f || ndc_min.x > 1.0f || ndc_max.y < -1.0f || ndc_min.y > 1.0f ||
+        nearest_depth > 1.0f)
+        return OcclusionResult::OutsideView;
+    if (nearest_depth < 0.0f || ndc_min.x > ndc_max.x || ndc_min.y > ndc_max.y)
+        return OcclusionResult::Visible;
+    // The rectangle's corners as clip-space points with w = 1.
+    const glm::vec4 corners[2] = {{ndc_min.x, ndc_min.y, nearest_depth * 2.0f - 1.0f, 1.0f},
+                                  {ndc_max.x, ndc_max.y, nearest_depth * 2.0f - 1.0f, 1.0f}};
+    return impl_->test_points(corners, 2);
+}
+
+OcclusionResult OcclusionBuffer::test_pixel_rect(int x0, int y0, int x1, int y1,
+                                                 float nearest_depth) const {
+    const Impl& m = *impl_;
+    if (std::isnan(nearest_depth)) return OcclusionResult::Visible;
+    if (x1 < 0 || y1 < 0 || x0 >= m.width || y0 >= m.height || x0 > x1 || y0 > y1 ||
+        nearest_depth > 1.0f)
+        return OcclusionResult::OutsideView;
+    if (nearest_depth < 0.0f) return OcclusionResult::Visible;
+    return m.occluded(std::max(x0, 0), std::max(y0, 0), std::min(x1, m.width - 1),
+                      std::min(y1, m.height - 1), nearest_depth)
+               ? OcclusionResult::Occluded
+               : OcclusionResult::Visible;
+}
+
+OcclusionResult OcclusionBuffer::test_box(const Bounds3f& box, const glm::mat4& to_clip) const {
+    if (box.empty()) return OcclusionResult::OutsideView;
+    glm::vec4 corners[8];
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec4 p((i & 1) ? box.hi.x : box.lo.x, (i & 2) ? box.hi.y : box.lo.y,
+                          (i & 4) ? box.hi.z : box.lo.z, 1.0f);
+        corners[i] = to_clip * p;
+    }
+    return impl_->test_points(corners, 8);
+}
+
+OcclusionResult OcclusionBuffer::test_triangle(const glm::vec4& a, const glm::vec4& b,
+                                               const glm::vec4& c) const {
+    const glm::vec4 points[3] = {a, b, c};
+    return impl_->test_points(points, 3);
+}
+
+void OcclusionBuffer::depth_bounds(std::span<float> out) const {
+    const Impl& m = *impl_;
+    const std::size_t n = static_cast<std::size_t>(m.width) * m.height;
+    for (std::size_t i = 0; i < std::min(n, out.size()); ++i) {
+        const int x = static_cast<int>(i % m.width), y = static_cast<int>(i / m.width);
+        const OcclusionTile& tile =
+            m.tiles[static_cast<std::size_t>(y / kTileHeight) * m.grid.tiles_x + x / kTileWidth];
+        const int r = y % kTileHeight;
+        const bool masked = (tile.mask[r] >> (x % kTileWidth)) & 1u;
+        out[i] = masked ? tile.near_depth[r] : tile.far_depth[r];
+    }
+}
+
+std::span<const std::byte> OcclusionBuffer::raw_storage() const {
+    return std::as_bytes(std::span<const OcclusionTile>(impl_->tiles));
+}
+
+std::uint64_t OcclusionBuffer::occluder_triangles_rasterized() const {
+    return impl_->rasterized;
+}
+
+}  // namespace zraster
