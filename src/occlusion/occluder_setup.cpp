@@ -219,8 +219,6 @@ int setup_occluder(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c, i
     return count;
 }
 
-namespace {
-
 // Orientation of the projected triangle (sign of the (x, y, w) determinant, which is the sign of
 // its screen area when all w > 0); 0 when a w is not positive or a value is not finite.
 int orientation(const OccluderSource& s, const std::uint32_t* t) {
@@ -232,27 +230,6 @@ int orientation(const OccluderSource& s, const std::uint32_t* t) {
     }
     const float det = glm::dot(p[0], glm::cross(p[1], p[2]));
     return det > 0.0f ? 1 : (det < 0.0f ? -1 : 0);
-}
-
-}  // namespace
-
-std::uint32_t interior_edges(const OccluderSource& s, std::size_t triangle) {
-    const std::uint32_t* t = s.indices + 3 * triangle;
-    std::uint32_t shared = 0;
-    int self = 2;  // not computed yet
-    for (const std::size_t other : {triangle - 1, triangle + 1}) {
-        if (other >= s.triangle_count) continue;  // also catches triangle - 1 wrapping around
-        const std::uint32_t* u = s.indices + 3 * other;
-        if (u[0] >= s.vertex_count || u[1] >= s.vertex_count || u[2] >= s.vertex_count) continue;
-        std::uint32_t found = 0;
-        for (int k = 0; k < 3; ++k)
-            for (int j = 0; j < 3; ++j)
-                if (t[k] == u[(j + 1) % 3] && t[(k + 1) % 3] == u[j]) found |= 1u << k;
-        if (!found) continue;
-        if (self == 2) self = orientation(s, t);
-        if (self != 0 && orientation(s, u) == self) shared |= found;
-    }
-    return shared;
 }
 
 }  // namespace zraster::detail

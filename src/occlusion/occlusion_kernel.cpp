@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 #include "occlusion/occluder_setup.hpp"
 #include "occlusion/occlusion_kernel.hpp"
@@ -68,6 +69,7 @@ void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, Ti
         const auto span_hi = hn::Set(df, static_cast<float>(t.x1 + 1));
         const auto row_lo = hn::Set(di, t.y0 - 1), row_hi = hn::Set(di, t.y1 + 1);
         const auto origin_y = hn::Set(di, t.y0);
+        const auto origin_x = hn::Set(di, t.x0);
         const auto z_origin = hn::Set(df, t.z_origin), z_dx = hn::Set(df, t.z_dx);
         const auto z_dy = hn::Set(df, t.z_dy), z_kx = hn::Set(df, t.z_kx);
         const auto z_ky = hn::Set(df, t.z_ky), z_bias = hn::Set(df, t.z_bias);
@@ -97,7 +99,16 @@ void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, Ti
                 hi = hn::IfThenElse(hn::Gt(hi, span_hi), span_hi, hi);
                 const auto first = hn::ConvertTo(di, hn::Floor(lo));
                 const auto end = hn::IfThenElse(row_valid, hn::ConvertTo(di, hn::Ceil(hi)), first);
-                const auto row_depth = hn::Add(z_origin, hn::Mul(z_dy, hn::Add(yf, z_ky)));
+                // The bound is taken at the extreme covered column of the whole row and at the
+                // tile's extreme column; the plane being affine, the smaller of the two bounds
+                // the covered pixels of the row inside the tile.
+                const auto row_depth =
+                    hn::Add(hn::Add(z_origin, hn::Mul(z_dy, hn::Add(yf, z_ky))), z_bias);
+                const auto row_extreme = t.z_dx_positive ? hn::Sub(hn::Sub(end, one_i), origin_x)
+                                                         : hn::Sub(first, origin_x);
+                auto row_bound = hn::Add(
+                    row_depth, hn::Mul(z_dx, hn::Add(hn::ConvertTo(df, row_extreme), z_kx)));
+                row_bound = hn::IfThenElse(hn::Lt(row_bound, z_max), row_bound, z_max);
                 for (int tx = tx0; tx <= tx1; ++tx) {
                     OcclusionTile& tile = row_tiles[tx];
                     const auto tile_x = hn::Set(di, tx * kOcclusionTileWidth);
@@ -107,14 +118,10 @@ void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, Ti
                     e = hn::Min(hn::Max(e, zero_i), width_i);
                     // Columns s..e-1: (~0 << s) & ~(~0 << e).
                     const auto coverage = hn::AndNot(ones_shifted_left(e), ones_shifted_left(s));
-                    // The covered span's extreme column, relative to the bounding box.
-                    const auto rel = hn::Set(di, tx * kOcclusionTileWidth - t.x0);
-                    const auto column =
-                        t.z_dx_positive ? hn::Add(rel, hn::Sub(e, one_i)) : hn::Add(rel, s);
-                    auto z =
-                        hn::Add(row_depth, hn::Mul(z_dx, hn::Add(hn::ConvertTo(df, column), z_kx)));
-                    z = hn::Add(z, z_bias);
-                    z = hn::IfThenElse(hn::Lt(z, z_max), z, z_max);
+                    if (hn::AllTrue(du, hn::Eq(coverage, zero_u))) continue;
+                    const auto tile_bound = hn::Add(row_depth, hn::Set(df, tile_depth_step(t, tx)));
+                    const auto z =
+                        hn::IfThenElse(hn::Lt(row_bound, tile_bound), row_bound, tile_bound);
 
                     const auto mask = hn::Load(du, tile.mask + r);
                     const auto far_depth = hn::Load(df, tile.far_depth + r);
@@ -200,7 +207,7 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
     const DI di;
     constexpr std::size_t kMaxLanes = kOcclusionTileHeight;
     const std::size_t lanes = hn::Lanes(df);
-    alignas(64) std::int32_t offsets[3][kMaxLanes];
+    alignas(64) float corners[3][kMaxLanes * 4];  // x, y, z, w of each lane's corner v
     alignas(64) std::int32_t box[4][kMaxLanes];
     alignas(64) float fields[k::kFloatFields][kMaxLanes];
     alignas(64) float keep_lanes[kMaxLanes], fast_lanes[kMaxLanes];
@@ -230,24 +237,24 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
         const std::size_t m = std::min(lanes, count - base);
         std::uint32_t valid = 0;
         for (std::size_t l = 0; l < lanes; ++l) {
-            offsets[0][l] = offsets[1][l] = offsets[2][l] = 0;
             interior[l] = 0;
-            if (l >= m) continue;
             const std::uint32_t* t = src.indices + 3 * (first + base + l);
-            if (t[0] >= src.vertex_count || t[1] >= src.vertex_count || t[2] >= src.vertex_count)
+            if (l >= m || t[0] >= src.vertex_count || t[1] >= src.vertex_count ||
+                t[2] >= src.vertex_count) {
+                for (int v = 0; v < 3; ++v) std::fill_n(corners[v] + 4 * l, 4, 0.0f);
                 continue;
+            }
             valid |= 1u << l;
-            for (int v = 0; v < 3; ++v) offsets[v][l] = static_cast<std::int32_t>(t[v] * 4);
+            for (int v = 0; v < 3; ++v)
+                std::memcpy(corners[v] + 4 * l, src.clip + 4 * std::size_t{t[v]},
+                            4 * sizeof(float));
             interior[l] = static_cast<std::int32_t>(interior_edges(src, first + base + l));
         }
         hn::Vec<DF> X[3], Y[3], Z[3];
         auto fast = hn::Eq(zero, zero);
         for (int v = 0; v < 3; ++v) {
-            const auto at = hn::Load(di, offsets[v]);
-            const auto x = hn::GatherIndex(df, src.clip, at);
-            const auto y = hn::GatherIndex(df, src.clip + 1, at);
-            const auto z = hn::GatherIndex(df, src.clip + 2, at);
-            const auto w = hn::GatherIndex(df, src.clip + 3, at);
+            hn::Vec<DF> x, y, z, w;
+            hn::LoadInterleaved4(df, corners[v], x, y, z, w);
             // In front of the near plane, before the far plane, inside the guard band (false
             // for NaN): no clipping needed.
             fast = hn::And(fast, hn::And(hn::Gt(w, zero), hn::Lt(w, hn::Set(df, k::kMaxW))));
@@ -452,7 +459,10 @@ void rasterize_occluders_scalar(const OccluderTriangle* triangles, std::size_t c
                 hi = hi > span_hi ? span_hi : hi;
                 const int first = static_cast<int>(std::floor(lo));
                 const int end = row_valid ? static_cast<int>(std::ceil(hi)) : first;
-                const float row_depth = t.z_origin + t.z_dy * (yf + t.z_ky);
+                const float row_depth = (t.z_origin + t.z_dy * (yf + t.z_ky)) + t.z_bias;
+                const int row_extreme = t.z_dx_positive ? (end - 1) - t.x0 : first - t.x0;
+                float row_bound = row_depth + t.z_dx * (static_cast<float>(row_extreme) + t.z_kx);
+                row_bound = row_bound < t.z_max ? row_bound : t.z_max;
                 for (int tx = t.x0 / kOcclusionTileWidth; tx <= t.x1 / kOcclusionTileWidth; ++tx) {
                     OcclusionTile& tile = row_tiles[tx];
                     const int s = std::min(std::max(first - tx * kOcclusionTileWidth, 0),
@@ -460,11 +470,9 @@ void rasterize_occluders_scalar(const OccluderTriangle* triangles, std::size_t c
                     const int e =
                         std::min(std::max(end - tx * kOcclusionTileWidth, 0), kOcclusionTileWidth);
                     const std::uint32_t coverage = ~low_bits_scalar(s) & low_bits_scalar(e);
-                    const int rel = tx * kOcclusionTileWidth - t.x0;
-                    const int column = t.z_dx_positive ? rel + (e - 1) : rel + s;
-                    float z = row_depth + t.z_dx * (static_cast<float>(column) + t.z_kx);
-                    z = z + t.z_bias;
-                    z = z < t.z_max ? z : t.z_max;
+                    if (coverage == 0) continue;
+                    const float tile_bound = row_depth + tile_depth_step(t, tx);
+                    const float z = row_bound < tile_bound ? row_bound : tile_bound;
 
                     const std::uint32_t mask = tile.mask[r];
                     const float far_depth = tile.far_depth[r], near_depth = tile.near_depth[r];

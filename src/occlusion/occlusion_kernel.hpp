@@ -34,9 +34,11 @@ struct alignas(64) OcclusionTile {
 //   max_k(left_x[k] + (y - y0) * left_step[k]) < px + 0.5 < min_k(right_x[k] + (y - y0) *
 //   right_step[k])
 // where the edge lines are already moved inwards by their error margin; an edge on the other
-// side (or horizontal) is -kNoEdge (left) or +kNoEdge (right) with step 0. The depth bound of
-// the covered pixels of a row within one tile is, for the extreme column xe of that span,
-//   min(((z_origin + z_dy * ((y - y0) + z_ky)) + z_dx * ((xe - x0) + z_kx)) + z_bias, z_max).
+// side (or horizontal) is -kNoEdge (left) or +kNoEdge (right) with step 0. With
+//   d(y, xe) = ((z_origin + z_dy * ((y - y0) + z_ky)) + z_bias) + z_dx * ((xe - x0) + z_kx),
+// the depth bound of the covered pixels of row y within a tile is the smaller of
+// min(d(y, xe), z_max) for the extreme covered column xe of the row (the last one when
+// z_dx > 0, else the first) and d(y, xt) for the tile's extreme column xt in that direction.
 struct OccluderTriangle {
     int x0 = 0, x1 = -1, y0 = 0, y1 = -1;  // pixel bounding box, inclusive, inside the viewport
     float left_x[3], left_step[3];
@@ -91,6 +93,13 @@ std::size_t setup_occluders(const OccluderSource& source, std::size_t first, std
                             OccluderTriangle* out);
 std::size_t setup_occluders_scalar(const OccluderSource& source, std::size_t first,
                                    std::size_t count, OccluderTriangle* out);
+
+// z_dx times the tile's extreme column in the direction the depth grows (relative to x0, plus
+// z_kx): added to a row's depth it bounds the plane over that row of the tile.
+inline float tile_depth_step(const OccluderTriangle& t, int tx) {
+    const int column = tx * kOcclusionTileWidth + (t.z_dx_positive ? kOcclusionTileWidth - 1 : 0);
+    return t.z_dx * (static_cast<float>(column - t.x0) + t.z_kx);
+}
 
 struct TileGrid {
     OcclusionTile* tiles = nullptr;
