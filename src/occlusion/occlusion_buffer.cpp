@@ -34,14 +34,43 @@ struct OcclusionBuffer::Impl {
     int width = 0, height = 0;
     detail::TileGrid grid;
     std::vector<OcclusionTile> tiles;
-    std::vector<OccluderTriangle> batch;  // kSetupOutput slots
+    std::vector<float> tile_max, tile_min;  // see TileGrid
+    std::vector<OccluderTriangle> batch;    // kSetupOutput slots
     std::size_t batch_size = 0;
     std::vector<glm::vec4> transformed;  // scratch for render_occluders with a matrix
     bool simd = true;
     std::uint64_t rasterized = 0;
 
+    // Tiles touched since the last refresh of tile_max and tile_min (inclusive; empty when x0 >
+    // x1).
+    int dirty_x0 = 1 << 30, dirty_y0 = 1 << 30, dirty_x1 = -1, dirty_y1 = -1;
+
+    void refresh_coarse_levels() {
+        for (int ty = dirty_y0; ty <= dirty_y1; ++ty)
+            for (int tx = dirty_x0; tx <= dirty_x1; ++tx) {
+                const std::size_t i = static_cast<std::size_t>(ty) * grid.tiles_x + tx;
+                const OcclusionTile& t = tiles[i];
+                float hi = t.far_depth[0], lo = t.far_depth[0];
+                for (int r = 0; r < kTileHeight; ++r) {
+                    const float bound = t.mask[r] != 0 ? t.near_depth[r] : t.far_depth[r];
+                    hi = t.far_depth[r] > hi ? t.far_depth[r] : hi;
+                    lo = bound < lo ? bound : lo;
+                }
+                tile_max[i] = hi;
+                tile_min[i] = lo;
+            }
+        dirty_x0 = dirty_y0 = 1 << 30;
+        dirty_x1 = dirty_y1 = -1;
+    }
+
     void flush() {
         if (batch_size == 0) return;
+        for (std::size_t i = 0; i < batch_size; ++i) {
+            dirty_x0 = std::min(dirty_x0, batch[i].x0 / kTileWidth);
+            dirty_x1 = std::max(dirty_x1, batch[i].x1 / kTileWidth);
+            dirty_y0 = std::min(dirty_y0, batch[i].y0 / kTileHeight);
+            dirty_y1 = std::max(dirty_y1, batch[i].y1 / kTileHeight);
+        }
         if (simd)
             detail::rasterize_occluders(batch.data(), batch_size, grid);
         else
@@ -57,6 +86,10 @@ struct OcclusionBuffer::Impl {
 
     // The conservative answer for an object whose clip-space points are `points`.
     OcclusionResult test_points(const glm::vec4* points, int n) const;
+    // The same for window-space bounds (x right, y down, in pixels) and nearest depth, all
+    // finite, the object in front of the near plane and not entirely outside the view.
+    OcclusionResult test_window_rect(float xmin, float xmax, float ymin, float ymax,
+                                     float nearest) const;
 };
 
 OcclusionBuffer::OcclusionBuffer() : impl_(std::make_unique<Impl>()) {}
@@ -80,7 +113,11 @@ void OcclusionBuffer::set_resolution(int width, int height) {
     m.grid.tiles_x = (width + kTileWidth - 1) / kTileWidth;
     m.grid.tiles_y = (height + kTileHeight - 1) / kTileHeight;
     m.tiles.resize(static_cast<std::size_t>(m.grid.tiles_x) * m.grid.tiles_y);
+    m.tile_max.resize(m.tiles.size());
+    m.tile_min.resize(m.tiles.size());
     m.grid.tiles = m.tiles.data();
+    m.grid.tile_max = m.tile_max.data();
+    m.grid.tile_min = m.tile_min.data();
     m.batch.resize(detail::kSetupOutput);
     clear();
 }
@@ -104,6 +141,8 @@ void OcclusionBuffer::clear() {
     std::fill(std::begin(empty.far_depth), std::end(empty.far_depth), detail::kClearFarDepth);
     std::fill(std::begin(empty.near_depth), std::end(empty.near_depth), detail::kEmptyNearDepth);
     std::fill(impl_->tiles.begin(), impl_->tiles.end(), empty);
+    std::fill(impl_->tile_max.begin(), impl_->tile_max.end(), detail::kClearFarDepth);
+    std::fill(impl_->tile_min.begin(), impl_->tile_min.end(), detail::kClearFarDepth);
     impl_->rasterized = 0;
 }
 
@@ -134,6 +173,7 @@ void OcclusionBuffer::render_occluders(std::span<const glm::vec4> clip_positions
                            : detail::setup_occluders_scalar(source, first, count, m.batch.data());
         m.flush();
     }
+    m.refresh_coarse_levels();
 }
 
 void OcclusionBuffer::render_occluders(std::span<const glm::vec3> positions,
@@ -164,28 +204,49 @@ OcclusionResult OcclusionBuffer::Impl::test_points(const glm::vec4* points, int 
     }
     if (outside_all) return OcclusionResult::OutsideView;
     if (crosses_near || width == 0) return OcclusionResult::Visible;
-    double xmin = HUGE_VAL, xmax = -HUGE_VAL, ymin = HUGE_VAL, ymax = -HUGE_VAL;
-    double nearest = HUGE_VAL, max_abs = 0.0;
+    float xmin = HUGE_VALF, xmax = -HUGE_VALF, ymin = HUGE_VALF, ymax = -HUGE_VALF;
+    float nearest = HUGE_VALF;
+    const float w = static_cast<float>(width), h = static_cast<float>(height);
     for (int i = 0; i < n; ++i) {
         const glm::vec4& p = points[i];
-        const double inv_w = 1.0 / p.w;
-        const double x = (p.x * inv_w * 0.5 + 0.5) * width;
-        const double y = (0.5 - p.y * inv_w * 0.5) * height;
-        xmin = std::min(xmin, x);
-        xmax = std::max(xmax, x);
-        ymin = std::min(ymin, y);
-        ymax = std::max(ymax, y);
-        max_abs = std::max({max_abs, std::abs(x), std::abs(y)});
-        nearest = std::min(nearest, p.z * inv_w * 0.5 + 0.5);
+        const float inv_w = 1.0f / p.w;
+        const float x = (p.x * inv_w * 0.5f + 0.5f) * w;
+        const float y = (0.5f - p.y * inv_w * 0.5f) * h;
+        xmin = x < xmin ? x : xmin;
+        xmax = x > xmax ? x : xmax;
+        ymin = y < ymin ? y : ymin;
+        ymax = y > ymax ? y : ymax;
+        const float z = p.z * inv_w * 0.5f + 0.5f;
+        nearest = z < nearest ? z : nearest;
     }
+    return test_window_rect(xmin, xmax, ymin, ymax, nearest);
+}
+
+OcclusionResult OcclusionBuffer::Impl::test_window_rect(float xmin, float xmax, float ymin,
+                                                        float ymax, float nearest) const {
+    const float w = static_cast<float>(width), h = static_cast<float>(height);
+    const float max_abs = std::max(std::max(std::abs(xmin), std::abs(xmax)),
+                                   std::max(std::abs(ymin), std::abs(ymax)));
     // Grow by more than the snapping of an exact rasterizer and the float error of the corners.
-    const double margin = 0x1p-6 + max_abs * 0x1p-18;
-    // Pixels whose center may be inside [min - margin, max + margin].
-    const auto pixel = [](double v, double limit) { return std::clamp(v - 0.5, -2.0, limit); };
-    int x0 = static_cast<int>(std::ceil(pixel(xmin - margin, width + 1.0)));
-    int x1 = static_cast<int>(std::floor(pixel(xmax + margin, width + 1.0)));
-    int y0 = static_cast<int>(std::ceil(pixel(ymin - margin, height + 1.0)));
-    int y1 = static_cast<int>(std::floor(pixel(ymax + margin, height + 1.0)));
+    const float margin = 0x1p-6f + max_abs * 0x1p-17f;
+    // Pixels whose center may be inside [min - margin, max + margin]; clamped first so that the
+    // conversions stay in range (floor and ceil by hand: no libm call per test).
+    const auto clamped = [](float v, float limit) {
+        v -= 0.5f;
+        return v < -2.0f ? -2.0f : (v > limit ? limit : v);
+    };
+    const auto floor_int = [](float v) {
+        const int i = static_cast<int>(v);
+        return i - (v < static_cast<float>(i));
+    };
+    const auto ceil_int = [](float v) {
+        const int i = static_cast<int>(v);
+        return i + (v > static_cast<float>(i));
+    };
+    int x0 = ceil_int(clamped(xmin - margin, w + 1.0f));
+    int x1 = floor_int(clamped(xmax + margin, w + 1.0f));
+    int y0 = ceil_int(clamped(ymin - margin, h + 1.0f));
+    int y1 = floor_int(clamped(ymax + margin, h + 1.0f));
     // Between pixel centers: test the neighbours instead of calling it hidden.
     if (x0 > x1) std::swap(x0, x1);
     if (y0 > y1) std::swap(y0, y1);
@@ -194,7 +255,7 @@ OcclusionResult OcclusionBuffer::Impl::test_points(const glm::vec4* points, int 
     x1 = std::min(x1, width - 1);
     y1 = std::min(y1, height - 1);
     if (x0 > x1 || y0 > y1) return OcclusionResult::OutsideView;
-    const float depth = static_cast<float>(nearest - 0x1p-20);
+    const float depth = nearest - 0x1p-20f;
     return occluded(x0, y0, x1, y1, depth) ? OcclusionResult::Occluded : OcclusionResult::Visible;
 }
 
@@ -208,10 +269,12 @@ OcclusionResult OcclusionBuffer::test_rect(glm::vec2 ndc_min, glm::vec2 ndc_max,
         return OcclusionResult::OutsideView;
     if (nearest_depth < 0.0f || ndc_min.x > ndc_max.x || ndc_min.y > ndc_max.y)
         return OcclusionResult::Visible;
-    // The rectangle's corners as clip-space points with w = 1.
-    const glm::vec4 corners[2] = {{ndc_min.x, ndc_min.y, nearest_depth * 2.0f - 1.0f, 1.0f},
-                                  {ndc_max.x, ndc_max.y, nearest_depth * 2.0f - 1.0f, 1.0f}};
-    return impl_->test_points(corners, 2);
+    const Impl& m = *impl_;
+    if (m.width == 0) return OcclusionResult::Visible;
+    const float w = static_cast<float>(m.width), h = static_cast<float>(m.height);
+    return m.test_window_rect((ndc_min.x * 0.5f + 0.5f) * w, (ndc_max.x * 0.5f + 0.5f) * w,
+                              (0.5f - ndc_max.y * 0.5f) * h, (0.5f - ndc_min.y * 0.5f) * h,
+                              nearest_depth);
 }
 
 OcclusionResult OcclusionBuffer::test_pixel_rect(int x0, int y0, int x1, int y1,

@@ -170,12 +170,13 @@ bool RectOccluded(const TileGrid& grid, int x0, int y0, int x1, int y1, float de
             const int e = std::min(x1 + 1 - tx * kOcclusionTileWidth, kOcclusionTileWidth);
             const std::uint32_t high = e >= 32 ? ~0u : (1u << e) - 1u;  // e <= tile width
             const std::uint32_t rect_mask = high & ~((1u << s) - 1u);   // s <= 31 here
-            if (all_rows && rect_mask == kOcclusionFullMask) {
-                // A full mask never stays in a tile: the far layer alone decides.
-                for (int r = 0; r < kOcclusionTileHeight; r += lanes)
-                    if (!hn::AllTrue(df, hn::Lt(hn::Load(df, tile.far_depth + r), d))) return false;
-                continue;
-            }
+            // Every row's far layer in front, or no pixel in front: settled without reading
+            // the tile.
+            if (grid.tile_max[&tile - grid.tiles] < depth) continue;
+            if (!(grid.tile_min[&tile - grid.tiles] < depth)) return false;
+            // A full mask never stays in a tile, so over whole rows the far layer decides: here
+            // one of them is not in front.
+            if (all_rows && rect_mask == kOcclusionFullMask) return false;
             const auto rect = hn::Set(du, rect_mask);
             for (int r = 0; r < kOcclusionTileHeight; r += lanes) {
                 const auto y = hn::Iota(di, ty * kOcclusionTileHeight + r);

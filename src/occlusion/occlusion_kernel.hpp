@@ -103,6 +103,12 @@ inline float tile_depth_step(const OccluderTriangle& t, int tx) {
 
 struct TileGrid {
     OcclusionTile* tiles = nullptr;
+    // Per tile, the largest far_depth of its rows: a coarse level that lets a rectangle test
+    // settle a tile it covers entirely with one comparison (refreshed after each render call).
+    float* tile_max = nullptr;
+    // Per tile, the smallest depth bound of its pixels: a rectangle touching a tile whose
+    // smallest bound is not in front of it is visible at once.
+    float* tile_min = nullptr;
     int tiles_x = 0, tiles_y = 0;
 };
 
