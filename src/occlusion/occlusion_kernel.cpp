@@ -206,6 +206,7 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
     if (src.vertex_count == 0) return 0;
     const DF df;
     const DI di;
+    const DU du;
     constexpr std::size_t kMaxLanes = kOcclusionTileHeight;
     const std::size_t lanes = hn::Lanes(df);
     alignas(64) float corners[3][kMaxLanes * 4];  // x, y, z, w of each lane's corner v
@@ -213,6 +214,10 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
     alignas(64) float fields[k::kFloatFields][kMaxLanes];
     alignas(64) float keep_lanes[kMaxLanes], fast_lanes[kMaxLanes];
     alignas(64) std::int32_t interior[kMaxLanes];
+    // Corner indices of each lane's triangle and of its neighbours in the index list; the two
+    // fillers never equal each other nor a valid index.
+    constexpr std::uint32_t kNoTriangle = 0xfffffffeu, kNoNeighbour = 0xffffffffu;
+    alignas(64) std::uint32_t own[3][kMaxLanes], previous[3][kMaxLanes], next[3][kMaxLanes];
     const float guard_x = 1.0f + 2.0f * k::kGuardPixels / static_cast<float>(src.width);
     const float guard_y = 1.0f + 2.0f * k::kGuardPixels / static_cast<float>(src.height);
     const auto zero = hn::Zero(df), half = hn::Set(df, 0.5f), one = hn::Set(df, 1.0f);
@@ -239,17 +244,50 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
         std::uint32_t valid = 0;
         for (std::size_t l = 0; l < lanes; ++l) {
             interior[l] = 0;
-            const std::uint32_t* t = src.indices + 3 * (first + base + l);
-            if (l >= m || t[0] >= src.vertex_count || t[1] >= src.vertex_count ||
+            for (int v = 0; v < 3; ++v) {
+                own[v][l] = kNoTriangle;
+                previous[v][l] = next[v][l] = kNoNeighbour;
+            }
+            const std::size_t i = first + base + l;
+            const std::uint32_t* t = l < m ? src.indices + 3 * i : nullptr;
+            if (!t || t[0] >= src.vertex_count || t[1] >= src.vertex_count ||
                 t[2] >= src.vertex_count) {
                 for (int v = 0; v < 3; ++v) std::fill_n(corners[v] + 4 * l, 4, 0.0f);
                 continue;
             }
             valid |= 1u << l;
-            for (int v = 0; v < 3; ++v)
+            for (int v = 0; v < 3; ++v) {
                 std::memcpy(corners[v] + 4 * l, src.clip + 4 * std::size_t{t[v]},
                             4 * sizeof(float));
-            interior[l] = static_cast<std::int32_t>(interior_edges(src, first + base + l));
+                own[v][l] = t[v];
+                if (i > 0) previous[v][l] = t[v - 3];
+                if (i + 1 < src.triangle_count) next[v][l] = t[v + 3];
+            }
+        }
+        // Interior edges: a quick vector search for an edge shared (reversed) with either
+        // neighbour; only lanes that have one ask interior_edges, which also checks facing.
+        {
+            const hn::Vec<DU> a = hn::Load(du, own[0]), b = hn::Load(du, own[1]),
+                              c = hn::Load(du, own[2]);
+            auto found = hn::Ne(a, a);
+            for (const auto* other : {&previous, &next}) {
+                const hn::Vec<DU> d = hn::Load(du, (*other)[0]), e = hn::Load(du, (*other)[1]),
+                                  f = hn::Load(du, (*other)[2]);
+                const auto reversed = [&](hn::Vec<DU> x, hn::Vec<DU> y) {
+                    return hn::Or(hn::Or(hn::And(hn::Eq(x, e), hn::Eq(y, d)),
+                                         hn::And(hn::Eq(x, f), hn::Eq(y, e))),
+                                  hn::And(hn::Eq(x, d), hn::Eq(y, f)));
+                };
+                found =
+                    hn::Or(found, hn::Or(hn::Or(reversed(a, b), reversed(b, c)), reversed(c, a)));
+            }
+            if (!hn::AllFalse(du, found)) {
+                hn::Store(hn::IfThenElseZero(found, hn::Set(du, 1u)), du, own[0]);
+                for (std::size_t l = 0; l < m; ++l)
+                    if (own[0][l] != 0)
+                        interior[l] =
+                            static_cast<std::int32_t>(interior_edges(src, first + base + l));
+            }
         }
         hn::Vec<DF> X[3], Y[3], Z[3];
         auto fast = hn::Eq(zero, zero);
