@@ -128,6 +128,7 @@ std::vector<InstanceCull> cull_instances(const Frame& frame, const glm::mat4& vi
     buffer.set_simd(options.simd);
     const OccluderOptions occluder = occluder_options(options);
     std::vector<bool> is_occluder(candidates.size(), false);
+    std::vector<std::size_t> occluders;
     std::size_t budget = kOccluderTriangleBudget;
     for (const std::size_t k : by_size) {
         const Candidate& c = candidates[k];
@@ -135,6 +136,15 @@ std::vector<InstanceCull> cull_instances(const Frame& frame, const glm::mat4& vi
         if (c.triangles > budget) continue;
         budget -= c.triangles;
         is_occluder[k] = true;
+        occluders.push_back(k);
+    }
+    // Drawn nearest first: the buffer keeps two depth layers per row, and a far surface drawn
+    // before a near one can cost the near one's detail.
+    std::stable_sort(occluders.begin(), occluders.end(), [&](std::size_t a, std::size_t b) {
+        return candidates[a].distance < candidates[b].distance;
+    });
+    for (const std::size_t k : occluders) {
+        const Candidate& c = candidates[k];
         draw_occluder(buffer, scene.meshes[scene.instances[c.instance].mesh], c, occluder);
     }
     // Then everything else, nearest first.
