@@ -10,13 +10,19 @@
 //  - Pixel rows top to bottom (row 0 at NDC y = +1), as in RenderTargets; NDC x = -1 is the
 //    left edge of column 0. A pixel belongs to a triangle when its center is inside.
 //
-// Representation: the screen is cut into tiles of kTileWidth x kTileHeight pixels (32 x 16); each
-// pixel row of a tile keeps a 32-bit coverage mask and two depth layers. `far_depth` bounds
-// every pixel of the row; `near_depth` bounds the pixels whose mask bit is set. When a row's
-// mask fills up, its near layer becomes the far layer. Every stored depth is an upper bound of
-// the true nearest occluder depth at each pixel (see src/occlusion/occlusion_raster.cpp), so
-// "Occluded" is only answered when every pixel the object could touch holds an occluder
-// strictly nearer than the object's nearest point.
+// Representation: the screen is cut into tiles of kTileWidth x kTileHeight pixels (16 x 16);
+// each pixel row of a tile (a 16-pixel strip) keeps a coverage bit mask and two depth layers.
+// `far_depth` bounds every pixel of the strip; `near_depth` bounds the pixels whose mask bit is
+// set. When a strip's mask fills up, its near layer becomes the far layer (MSOC's merge, with
+// its rule for dropping the near layer when a much nearer surface arrives). Rasterization works
+// on one tile at a time, one SIMD lane per strip: a row's coverage is the bits between its left
+// and right edge crossings (two shifts), its depth bound the triangle's plane at the extreme
+// covered column. Every stored depth is an upper bound of the true nearest occluder depth at
+// each pixel (src/occlusion/occluder_setup.cpp explains the margins), so "Occluded" is only
+// answered when every pixel the object could touch holds an occluder strictly nearer than the
+// object's nearest point. Per tile, the largest and smallest bounds are kept too (refreshed at
+// the end of each render_occluders call), so most tiles of a test are settled without reading
+// them.
 //
 // Guarantees:
 //  - Conservative: never Occluded for something an exact z-buffer of the same occluders would
@@ -77,9 +83,11 @@ class OcclusionBuffer {
 
     // Any size from 1x1 to 16384x16384; the storage is rounded up to whole tiles (the extra
     // pixels are never tested). Starts cleared. Throws InputError for a size out of range.
+    // Not thread-safe while occluders are drawn; tests are const and may run concurrently.
     OcclusionBuffer(int width, int height);
     OcclusionBuffer();  // 0 x 0: call set_resolution first
     ~OcclusionBuffer();
+    // A moved-from buffer may only be destroyed or assigned to.
     OcclusionBuffer(OcclusionBuffer&&) noexcept;
     OcclusionBuffer& operator=(OcclusionBuffer&&) noexcept;
 

@@ -1,5 +1,5 @@
 // See occlusion_kernel.hpp. Rasterization follows the idea of Masked Software Occlusion Culling
-// (Andersson, Hasselgren, Akenine-Möller 2015): coverage is computed for a whole 32-pixel row
+// (Andersson, Hasselgren, Akenine-Möller 2015): coverage is computed for a whole 16-pixel strip
 // at once as a bit mask between the left and right edge crossings of the row (two shifts), one
 // SIMD lane per pixel row, and merged into the two depth layers of each row:
 //  - a triangle that is not nearer than the far layer anywhere in the row teaches nothing;
