@@ -71,6 +71,14 @@ struct RenderOptions {
     bool depth_test = true;
     bool depth_write = true;
 
+    // Occlusion culling of instances (src/render/occlusion_cull.cpp): the instances covering
+    // the most screen are drawn into an OcclusionBuffer at the frame's resolution, then every
+    // other instance's box is tested, nearest first, and skipped when hidden. The image is
+    // bit-identical with and without it (the buffer is conservative and occluders are always
+    // drawn); it only runs where that holds: D32F depth, LESS or LEQUAL with depth writes, a
+    // standard depth range, no user clip planes, no edges. RenderStats counts what it skipped.
+    bool occlusion_cull = false;
+
     // World-space planes (n.x, n.y, n.z, d): points with dot(n, p) + d >= 0 are kept.
     std::vector<glm::vec4> clip_planes;
 
@@ -108,6 +116,7 @@ struct RenderTargets {
 
 struct RenderStats {
     std::uint64_t instances = 0, instances_frustum_culled = 0;
+    std::uint64_t instances_occlusion_culled = 0;  // with RenderOptions::occlusion_cull
     std::uint64_t triangles_in = 0;
     std::uint64_t triangles_trivially_rejected = 0;  // all vertices outside one plane
     std::uint64_t triangles_non_finite = 0;          // NaN/Inf vertex: dropped

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "render/frame.hpp"
+#include "render/occlusion_cull.hpp"
 #include "render/shade_kernel.hpp"
 #include "render/vertex_kernel.hpp"
 
@@ -55,14 +56,20 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
     const double aspect = double(options.width) / double(options.height);
     const glm::mat4 view_projection = frame.camera.view_projection(aspect);
 
+    const std::vector<InstanceCull> culled = cull_instances(frame, view_projection);
     std::uint32_t vertex_count = 0;
     for (std::uint32_t i = 0; i < scene.instances.size(); ++i) {
         const Instance& instance = scene.instances[i];
         ++stats.instances;
         const Mesh& mesh = scene.meshes.at(instance.mesh);
         const glm::mat4 mvp = view_projection * instance.transform;
-        if (outside_frustum(mesh.bounds, mvp, frame.camera.clip_depth_range())) {
+        if (culled[i] == InstanceCull::Frustum ||
+            outside_frustum(mesh.bounds, mvp, frame.camera.clip_depth_range())) {
             ++stats.instances_frustum_culled;
+            continue;
+        }
+        if (culled[i] == InstanceCull::Occluded) {
+            ++stats.instances_occlusion_culled;
             continue;
         }
         FrameInstance fi;

@@ -99,6 +99,8 @@ void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
         ->check(CLI::IsMember({"back", "front", "none"}))
         ->capture_default_str();
     cmd.add_flag("--no-cull", a.no_cull, "Same as --cull none");
+    cmd.add_flag("--occlusion-cull", a.occlusion_cull,
+                 "Skip instances hidden behind the largest ones (occlusion buffer; same image)");
     cmd.add_option("--front-face", a.front_face, "Front-face winding ccw|cw")
         ->check(CLI::IsMember({"ccw", "cw"}))
         ->capture_default_str();
@@ -212,6 +214,7 @@ RenderOptions make_render_options(const RenderArguments& a, const Scene& scene) 
              : a.cull == "front"           ? CullMode::Front
                                            : CullMode::Back;
     o.front_face = a.front_face == "cw" ? FrontFace::Clockwise : FrontFace::CounterClockwise;
+    o.occlusion_cull = a.occlusion_cull;
     parse_depth_format(a.depth_format, o.depth_format);
     if (!a.depth_compare.empty()) {
         CompareFunc f{};
@@ -380,8 +383,11 @@ int run_render(const RenderArguments& a) {
     }
     if (a.print_stats) {
         const RenderStats& s = result.stats;
-        fmt::print("scene {}: {} instances ({} frustum-culled), {} triangles in\n", a.scene,
-                   s.instances, s.instances_frustum_culled, s.triangles_in);
+        fmt::print(
+            "scene {}: {} instances ({} frustum-culled, {} occlusion-culled), {} triangles "
+            "in\n",
+            a.scene, s.instances, s.instances_frustum_culled, s.instances_occlusion_culled,
+            s.triangles_in);
         fmt::print("  trivially rejected {}, clipped {}, back-face culled {}, degenerate {}, "
                    "no pixel covered {}, non-finite {}, rasterized {}\n",
                    s.triangles_trivially_rejected, s.triangles_clipped,

@@ -25,6 +25,7 @@ struct RenderArguments {
     std::vector<std::string> light_dirs, point_lights;
     std::string cull = "back";
     bool no_cull = false;
+    bool occlusion_cull = false;
     std::string front_face = "ccw";
     std::string depth_format = "d32f", depth_compare;
     bool no_depth_test = false, no_depth_write = false;

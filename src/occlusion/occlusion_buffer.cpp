@@ -1,0 +1,350 @@
+// OcclusionBuffer (include/zraster/occlusion_buffer.hpp): storage, occluder batches, and the
+// conversion of boxes, triangles and NDC rectangles into conservative pixel rectangles.
+#include <zraster/error.hpp>
+#include <zraster/occlusion_buffer.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "occlusion/occluder_setup.hpp"
+#include "occlusion/occlusion_kernel.hpp"
+
+namespace zraster {
+
+using detail::OccluderTriangle;
+using detail::OcclusionTile;
+
+namespace {
+
+static_assert(OcclusionBuffer::kTileWidth == detail::kOcclusionTileWidth &&
+              OcclusionBuffer::kTileHeight == detail::kOcclusionTileHeight);
+static_assert(sizeof(glm::vec4) == 4 * sizeof(float));  // clip positions are read as floats
+
+constexpr int kMaxSide = 16384;
+
+// Written out: glm's operators are not always inlined at -O2, and box tests are short.
+inline glm::vec4 transform(const glm::mat4& m, const glm::vec3& p) {
+    return glm::vec4((m[0].x * p.x + m[1].x * p.y) + (m[2].x * p.z + m[3].x),
+                     (m[0].y * p.x + m[1].y * p.y) + (m[2].y * p.z + m[3].y),
+                     (m[0].z * p.x + m[1].z * p.y) + (m[2].z * p.z + m[3].z),
+                     (m[0].w * p.x + m[1].w * p.y) + (m[2].w * p.z + m[3].w));
+}
+inline glm::vec4 scaled(const glm::vec4& v, float s) {
+    return glm::vec4(v.x * s, v.y * s, v.z * s, v.w * s);
+}
+inline glm::vec4 sum(const glm::vec4& a, const glm::vec4& b) {
+    return glm::vec4(a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w);
+}
+
+bool finite(const glm::vec4& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
+}
+
+}  // namespace
+
+struct OcclusionBuffer::Impl {
+    int width = 0, height = 0;
+    detail::TileGrid grid;
+    std::vector<OcclusionTile> tiles;
+    std::vector<float> tile_max, tile_min;  // see TileGrid
+    std::vector<OccluderTriangle> batch;    // kSetupOutput slots
+    std::size_t batch_size = 0;
+    std::vector<glm::vec4> transformed;  // scratch for render_occluders with a matrix
+    bool simd = true;
+    std::uint64_t rasterized = 0;
+
+    // Tiles touched since the last refresh of tile_max and tile_min (inclusive; empty when x0 >
+    // x1).
+    int dirty_x0 = 1 << 30, dirty_y0 = 1 << 30, dirty_x1 = -1, dirty_y1 = -1;
+
+    void refresh_coarse_levels() {
+        for (int ty = dirty_y0; ty <= dirty_y1; ++ty)
+            for (int tx = dirty_x0; tx <= dirty_x1; ++tx) {
+                const std::size_t i = static_cast<std::size_t>(ty) * grid.tiles_x + tx;
+                const OcclusionTile& t = tiles[i];
+                float hi = t.far_depth[0], lo = t.far_depth[0];
+                for (int r = 0; r < kTileHeight; ++r) {
+                    const float bound = t.mask[r] != 0 ? t.near_depth[r] : t.far_depth[r];
+                    hi = t.far_depth[r] > hi ? t.far_depth[r] : hi;
+                    lo = bound < lo ? bound : lo;
+                }
+                tile_max[i] = hi;
+                tile_min[i] = lo;
+            }
+        dirty_x0 = dirty_y0 = 1 << 30;
+        dirty_x1 = dirty_y1 = -1;
+    }
+
+    void flush() {
+        if (batch_size == 0) return;
+        for (std::size_t i = 0; i < batch_size; ++i) {
+            dirty_x0 = std::min(dirty_x0, batch[i].x0 / kTileWidth);
+            dirty_x1 = std::max(dirty_x1, batch[i].x1 / kTileWidth);
+            dirty_y0 = std::min(dirty_y0, batch[i].y0 / kTileHeight);
+            dirty_y1 = std::max(dirty_y1, batch[i].y1 / kTileHeight);
+        }
+        if (simd)
+            detail::rasterize_occluders(batch.data(), batch_size, grid);
+        else
+            detail::rasterize_occluders_scalar(batch.data(), batch_size, grid);
+        rasterized += batch_size;
+        batch_size = 0;
+    }
+
+    bool occluded(int x0, int y0, int x1, int y1, float depth) const {
+        return simd ? detail::rect_occluded(grid, x0, y0, x1, y1, depth)
+                    : detail::rect_occluded_scalar(grid, x0, y0, x1, y1, depth);
+    }
+
+    // The conservative answer for an object whose clip-space points are `points`.
+    OcclusionResult test_points(const glm::vec4* points, int n) const;
+    // The same for window-space bounds (x right, y down, in pixels) and nearest depth, all
+    // finite, the object in front of the near plane and not entirely outside the view.
+    OcclusionResult test_window_rect(float xmin, float xmax, float ymin, float ymax,
+                                     float nearest) const;
+};
+
+OcclusionBuffer::OcclusionBuffer() : impl_(std::make_unique<Impl>()) {}
+
+OcclusionBuffer::OcclusionBuffer(int width, int height) : OcclusionBuffer() {
+    set_resolution(width, height);
+}
+
+OcclusionBuffer::~OcclusionBuffer() = default;
+OcclusionBuffer::OcclusionBuffer(OcclusionBuffer&&) noexcept = default;
+OcclusionBuffer& OcclusionBuffer::operator=(OcclusionBuffer&&) noexcept = default;
+
+void OcclusionBuffer::set_resolution(int width, int height) {
+    if (width < 1 || height < 1 || width > kMaxSide || height > kMaxSide)
+        throw InputError("", "occlusion buffer size " + std::to_string(width) + "x" +
+                                 std::to_string(height) + " out of range (1.." +
+                                 std::to_string(kMaxSide) + " per side)");
+    Impl& m = *impl_;
+    m.width = width;
+    m.height = height;
+    m.grid.tiles_x = (width + kTileWidth - 1) / kTileWidth;
+    m.grid.tiles_y = (height + kTileHeight - 1) / kTileHeight;
+    m.tiles.resize(static_cast<std::size_t>(m.grid.tiles_x) * m.grid.tiles_y);
+    m.tile_max.resize(m.tiles.size());
+    m.tile_min.resize(m.tiles.size());
+    m.grid.tiles = m.tiles.data();
+    m.grid.tile_max = m.tile_max.data();
+    m.grid.tile_min = m.tile_min.data();
+    m.batch.resize(detail::kSetupOutput);
+    clear();
+}
+
+int OcclusionBuffer::width() const {
+    return impl_->width;
+}
+int OcclusionBuffer::height() const {
+    return impl_->height;
+}
+void OcclusionBuffer::set_simd(bool on) {
+    impl_->simd = on;
+}
+const char* OcclusionBuffer::simd_target() {
+    return detail::occlusion_kernel_target();
+}
+
+void OcclusionBuffer::clear() {
+    OcclusionTile empty;
+    std::fill(std::begin(empty.mask), std::end(empty.mask), 0u);
+    std::fill(std::begin(empty.far_depth), std::end(empty.far_depth), detail::kClearFarDepth);
+    std::fill(std::begin(empty.near_depth), std::end(empty.near_depth), detail::kEmptyNearDepth);
+    std::fill(impl_->tiles.begin(), impl_->tiles.end(), empty);
+    std::fill(impl_->tile_max.begin(), impl_->tile_max.end(), detail::kClearFarDepth);
+    std::fill(impl_->tile_min.begin(), impl_->tile_min.end(), detail::kClearFarDepth);
+    impl_->rasterized = 0;
+}
+
+void OcclusionBuffer::render_occluders(std::span<const glm::vec4> clip_positions,
+                                       std::span<const std::uint32_t> indices,
+                                       const OccluderOptions& options) {
+    Impl& m = *impl_;
+    if (m.width == 0) return;
+    detail::OccluderSource source;
+    source.clip = reinterpret_cast<const float*>(clip_positions.data());
+    source.vertex_count = clip_positions.size();
+    source.indices = indices.data();
+    source.triangle_count = indices.size() / 3;
+    source.width = m.width;
+    source.height = m.height;
+    source.cull_back = options.cull == OccluderCull::Back;
+    source.cull_front = options.cull == OccluderCull::Front;
+    source.front_face_clockwise = options.front_face_clockwise;
+    // NaN or negative: none; huge: nothing is covered (still conservative).
+    source.subpixel_margin =
+        options.subpixel_margin > 0.0f ? std::min(options.subpixel_margin, 1e6f) : 0.0f;
+    const std::size_t triangles = indices.size() / 3;
+    // Set up a group, rasterize it while it is in L1, next group.
+    for (std::size_t first = 0; first < triangles; first += detail::kSetupGroup) {
+        const std::size_t count = std::min(detail::kSetupGroup, triangles - first);
+        m.batch_size = m.simd
+                           ? detail::setup_occluders(source, first, count, m.batch.data())
+                           : detail::setup_occluders_scalar(source, first, count, m.batch.data());
+        m.flush();
+    }
+    m.refresh_coarse_levels();
+}
+
+void OcclusionBuffer::render_occluders(std::span<const glm::vec3> positions,
+                                       std::span<const std::uint32_t> indices,
+                                       const glm::mat4& to_clip, const OccluderOptions& options) {
+    std::vector<glm::vec4>& clip = impl_->transformed;
+    clip.resize(positions.size());
+    for (std::size_t i = 0; i < positions.size(); ++i)
+        clip[i] = to_clip * glm::vec4(positions[i], 1.0f);
+    render_occluders(std::span<const glm::vec4>(clip), indices, options);
+}
+
+OcclusionResult OcclusionBuffer::Impl::test_points(const glm::vec4* points, int n) const {
+    unsigned outside_all = 0x3f;
+    bool crosses_near = false;
+    for (int i = 0; i < n; ++i) {
+        const glm::vec4& p = points[i];
+        if (!finite(p)) return OcclusionResult::Visible;
+        unsigned code = 0;
+        if (p.x < -p.w) code |= 1;
+        if (p.x > p.w) code |= 2;
+        if (p.y < -p.w) code |= 4;
+        if (p.y > p.w) code |= 8;
+        if (p.z > p.w) code |= 16;
+        if (p.z < -p.w) code |= 32;
+        outside_all &= code;
+        crosses_near |= (code & 32) != 0 || !(p.w > 0.0f);
+    }
+    if (outside_all) return OcclusionResult::OutsideView;
+    if (crosses_near || width == 0) return OcclusionResult::Visible;
+    float xmin = HUGE_VALF, xmax = -HUGE_VALF, ymin = HUGE_VALF, ymax = -HUGE_VALF;
+    float nearest = HUGE_VALF;
+    const float w = static_cast<float>(width), h = static_cast<float>(height);
+    for (int i = 0; i < n; ++i) {
+        const glm::vec4& p = points[i];
+        const float inv_w = 1.0f / p.w;
+        const float x = (p.x * inv_w * 0.5f + 0.5f) * w;
+        const float y = (0.5f - p.y * inv_w * 0.5f) * h;
+        xmin = x < xmin ? x : xmin;
+        xmax = x > xmax ? x : xmax;
+        ymin = y < ymin ? y : ymin;
+        ymax = y > ymax ? y : ymax;
+        const float z = p.z * inv_w * 0.5f + 0.5f;
+        nearest = z < nearest ? z : nearest;
+    }
+    return test_window_rect(xmin, xmax, ymin, ymax, nearest);
+}
+
+OcclusionResult OcclusionBuffer::Impl::test_window_rect(float xmin, float xmax, float ymin,
+                                                        float ymax, float nearest) const {
+    const float w = static_cast<float>(width), h = static_cast<float>(height);
+    const float max_abs = std::max(std::max(std::abs(xmin), std::abs(xmax)),
+                                   std::max(std::abs(ymin), std::abs(ymax)));
+    // Grow by more than the snapping of an exact rasterizer and the float error of the corners.
+    const float margin = 0x1p-6f + max_abs * 0x1p-17f;
+    // Pixels whose center may be inside [min - margin, max + margin]; clamped first so that the
+    // conversions stay in range (floor and ceil by hand: no libm call per test).
+    const auto clamped = [](float v, float limit) {
+        v -= 0.5f;
+        return v < -2.0f ? -2.0f : (v > limit ? limit : v);
+    };
+    const auto floor_int = [](float v) {
+        const int i = static_cast<int>(v);
+        return i - (v < static_cast<float>(i));
+    };
+    const auto ceil_int = [](float v) {
+        const int i = static_cast<int>(v);
+        return i + (v > static_cast<float>(i));
+    };
+    int x0 = ceil_int(clamped(xmin - margin, w + 1.0f));
+    int x1 = floor_int(clamped(xmax + margin, w + 1.0f));
+    int y0 = ceil_int(clamped(ymin - margin, h + 1.0f));
+    int y1 = floor_int(clamped(ymax + margin, h + 1.0f));
+    // Between pixel centers: test the neighbours instead of calling it hidden.
+    if (x0 > x1) std::swap(x0, x1);
+    if (y0 > y1) std::swap(y0, y1);
+    x0 = std::max(x0, 0);
+    y0 = std::max(y0, 0);
+    x1 = std::min(x1, width - 1);
+    y1 = std::min(y1, height - 1);
+    if (x0 > x1 || y0 > y1) return OcclusionResult::OutsideView;
+    const float depth = nearest - 0x1p-20f;
+    return occluded(x0, y0, x1, y1, depth) ? OcclusionResult::Occluded : OcclusionResult::Visible;
+}
+
+OcclusionResult OcclusionBuffer::test_rect(glm::vec2 ndc_min, glm::vec2 ndc_max,
+                                           float nearest_depth) const {
+    if (!std::isfinite(ndc_min.x) || !std::isfinite(ndc_min.y) || !std::isfinite(ndc_max.x) ||
+        !std::isfinite(ndc_max.y) || std::isnan(nearest_depth))
+        return OcclusionResult::Visible;
+    if (ndc_max.x < -1.0f || ndc_min.x > 1.0f || ndc_max.y < -1.0f || ndc_min.y > 1.0f ||
+        nearest_depth > 1.0f)
+        return OcclusionResult::OutsideView;
+    if (nearest_depth < 0.0f || ndc_min.x > ndc_max.x || ndc_min.y > ndc_max.y)
+        return OcclusionResult::Visible;
+    const Impl& m = *impl_;
+    if (m.width == 0) return OcclusionResult::Visible;
+    const float w = static_cast<float>(m.width), h = static_cast<float>(m.height);
+    return m.test_window_rect((ndc_min.x * 0.5f + 0.5f) * w, (ndc_max.x * 0.5f + 0.5f) * w,
+                              (0.5f - ndc_max.y * 0.5f) * h, (0.5f - ndc_min.y * 0.5f) * h,
+                              nearest_depth);
+}
+
+OcclusionResult OcclusionBuffer::test_pixel_rect(int x0, int y0, int x1, int y1,
+                                                 float nearest_depth) const {
+    const Impl& m = *impl_;
+    if (std::isnan(nearest_depth)) return OcclusionResult::Visible;
+    if (x1 < 0 || y1 < 0 || x0 >= m.width || y0 >= m.height || x0 > x1 || y0 > y1 ||
+        nearest_depth > 1.0f)
+        return OcclusionResult::OutsideView;
+    if (nearest_depth < 0.0f) return OcclusionResult::Visible;
+    return m.occluded(std::max(x0, 0), std::max(y0, 0), std::min(x1, m.width - 1),
+                      std::min(y1, m.height - 1), nearest_depth)
+               ? OcclusionResult::Occluded
+               : OcclusionResult::Visible;
+}
+
+OcclusionResult OcclusionBuffer::test_box(const Bounds3f& box, const glm::mat4& to_clip) const {
+    if (box.empty()) return OcclusionResult::OutsideView;
+    // Corners as one transformed corner plus the transformed edge vectors: 3 matrix columns
+    // scaled and 7 additions instead of 8 full transforms (the rounding differs by a few ulps,
+    // far inside the margins of test_window_rect).
+    const glm::vec4 origin = transform(to_clip, box.lo);
+    const glm::vec3 size = box.hi - box.lo;
+    const glm::vec4 dx = scaled(to_clip[0], size.x), dy = scaled(to_clip[1], size.y);
+    const glm::vec4 dz = scaled(to_clip[2], size.z);
+    const glm::vec4 odx = sum(origin, dx), ody = sum(origin, dy), odz = sum(origin, dz);
+    const glm::vec4 corners[8] = {origin, odx,          ody,          sum(odx, dy),
+                                  odz,    sum(odx, dz), sum(ody, dz), sum(sum(odx, dy), dz)};
+    return impl_->test_points(corners, 8);
+}
+
+OcclusionResult OcclusionBuffer::test_triangle(const glm::vec4& a, const glm::vec4& b,
+                                               const glm::vec4& c) const {
+    const glm::vec4 points[3] = {a, b, c};
+    return impl_->test_points(points, 3);
+}
+
+void OcclusionBuffer::depth_bounds(std::span<float> out) const {
+    const Impl& m = *impl_;
+    const std::size_t n = static_cast<std::size_t>(m.width) * m.height;
+    for (std::size_t i = 0; i < std::min(n, out.size()); ++i) {
+        const int x = static_cast<int>(i % m.width), y = static_cast<int>(i / m.width);
+        const OcclusionTile& tile =
+            m.tiles[static_cast<std::size_t>(y / kTileHeight) * m.grid.tiles_x + x / kTileWidth];
+        const int r = y % kTileHeight;
+        const bool masked = (tile.mask[r] >> (x % kTileWidth)) & 1u;
+        out[i] = masked ? tile.near_depth[r] : tile.far_depth[r];
+    }
+}
+
+std::span<const std::byte> OcclusionBuffer::raw_storage() const {
+    return std::as_bytes(std::span<const OcclusionTile>(impl_->tiles));
+}
+
+std::uint64_t OcclusionBuffer::occluder_triangles_rasterized() const {
+    return impl_->rasterized;
+}
+
+}  // namespace zraster

@@ -1,0 +1,673 @@
+// See occlusion_kernel.hpp. Rasterization follows the idea of Masked Software Occlusion Culling
+// (Andersson, Hasselgren, Akenine-Möller 2015): coverage is computed for a whole 16-pixel strip
+// at once as a bit mask between the left and right edge crossings of the row (two shifts), one
+// SIMD lane per pixel row, and merged into the two depth layers of each row:
+//  - a triangle that is not nearer than the far layer anywhere in the row teaches nothing;
+//  - the working layer is dropped when the triangle is further in front of it than the working
+//    layer is in front of the far layer (a new, nearer surface starts);
+//  - the triangle's coverage joins the mask, the near layer takes the larger (further) depth;
+//  - a full mask becomes the new far layer.
+// Highway's foreach_target re-includes this file once per instruction set; the scalar twins
+// and the dispatchers are compiled once (HWY_ONCE).
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "occlusion/occlusion_kernel.cpp"
+#include <hwy/foreach_target.h>  // must come before highway.h
+#include <hwy/highway.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+#include "occlusion/occluder_setup.hpp"
+#include "occlusion/occlusion_kernel.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace zraster::detail::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+using DF = hn::CappedTag<float, kOcclusionTileHeight>;
+using DI = hn::RebindToSigned<DF>;
+using DU = hn::RebindToUnsigned<DF>;
+
+// ~0u << n for n in [0, 32], 0 for n = 32. x86's variable shifts (AVX2 and later) already give
+// 0 for counts past 31; elsewhere a shift by 32 is not portable and is handled apart.
+HWY_INLINE hn::Vec<DU> ones_shifted_left(hn::Vec<DI> n) {
+    const DU du;
+    const auto ones = hn::Set(du, ~0u);
+#if HWY_ARCH_X86 && HWY_TARGET <= HWY_AVX2
+    return hn::Shl(ones, hn::BitCast(du, n));
+#else
+    const DI di;
+    const auto shifted = hn::Shl(ones, hn::BitCast(du, hn::Min(n, hn::Set(di, 31))));
+    return hn::IfThenZeroElse(hn::RebindMask(du, hn::Eq(n, hn::Set(di, 32))), shifted);
+#endif
+}
+
+void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, TileGrid grid) {
+    const DF df;
+    const DI di;
+    const DU du;
+    const int lanes = static_cast<int>(hn::Lanes(df));
+    const auto zero_i = hn::Zero(di);
+    const auto zero_u = hn::Zero(du);
+    const auto full_mask = hn::Set(du, kOcclusionFullMask);
+    const auto width_i = hn::Set(di, kOcclusionTileWidth);
+    const auto one_i = hn::Set(di, 1);
+    const auto half = hn::Set(df, 0.5f);
+    for (std::size_t i = 0; i < count; ++i) {
+        const OccluderTriangle& t = triangles[i];
+        const int tx0 = t.x0 / kOcclusionTileWidth, tx1 = t.x1 / kOcclusionTileWidth;
+        const int ty0 = t.y0 / kOcclusionTileHeight, ty1 = t.y1 / kOcclusionTileHeight;
+        const auto left_x0 = hn::Set(df, t.left_x[0]), left_step0 = hn::Set(df, t.left_step[0]);
+        const auto left_x1 = hn::Set(df, t.left_x[1]), left_step1 = hn::Set(df, t.left_step[1]);
+        const auto left_x2 = hn::Set(df, t.left_x[2]), left_step2 = hn::Set(df, t.left_step[2]);
+        const auto right_x0 = hn::Set(df, t.right_x[0]), right_step0 = hn::Set(df, t.right_step[0]);
+        const auto right_x1 = hn::Set(df, t.right_x[1]), right_step1 = hn::Set(df, t.right_step[1]);
+        const auto right_x2 = hn::Set(df, t.right_x[2]), right_step2 = hn::Set(df, t.right_step[2]);
+        const auto span_lo = hn::Set(df, static_cast<float>(t.x0));
+        const auto span_hi = hn::Set(df, static_cast<float>(t.x1 + 1));
+        const auto row_lo = hn::Set(di, t.y0 - 1), row_hi = hn::Set(di, t.y1 + 1);
+        const auto origin_y = hn::Set(di, t.y0);
+        const auto origin_x = hn::Set(di, t.x0);
+        const auto z_origin = hn::Set(df, t.z_origin), z_dx = hn::Set(df, t.z_dx);
+        const auto z_dy = hn::Set(df, t.z_dy), z_kx = hn::Set(df, t.z_kx);
+        const auto z_ky = hn::Set(df, t.z_ky), z_bias = hn::Set(df, t.z_bias);
+        const auto z_max = hn::Set(df, t.z_max);
+        for (int ty = ty0; ty <= ty1; ++ty) {
+            OcclusionTile* row_tiles = grid.tiles + static_cast<std::size_t>(ty) * grid.tiles_x;
+            for (int r = 0; r < kOcclusionTileHeight; r += lanes) {
+                const auto y = hn::Iota(di, ty * kOcclusionTileHeight + r);
+                const auto row_valid = hn::And(hn::Gt(y, row_lo), hn::Lt(y, row_hi));
+                const auto yf = hn::ConvertTo(df, hn::Sub(y, origin_y));
+                const auto l0 = hn::Add(left_x0, hn::Mul(yf, left_step0));
+                const auto l1 = hn::Add(left_x1, hn::Mul(yf, left_step1));
+                const auto l2 = hn::Add(left_x2, hn::Mul(yf, left_step2));
+                const auto r0 = hn::Add(right_x0, hn::Mul(yf, right_step0));
+                const auto r1 = hn::Add(right_x1, hn::Mul(yf, right_step1));
+                const auto r2 = hn::Add(right_x2, hn::Mul(yf, right_step2));
+                auto xl = hn::IfThenElse(hn::Gt(l0, l1), l0, l1);
+                xl = hn::IfThenElse(hn::Gt(xl, l2), xl, l2);
+                auto xr = hn::IfThenElse(hn::Lt(r0, r1), r0, r1);
+                xr = hn::IfThenElse(hn::Lt(xr, r2), xr, r2);
+                // First covered column and one past the last, clamped to the bounding box.
+                auto lo = hn::Add(xl, half);
+                lo = hn::IfThenElse(hn::Lt(lo, span_lo), span_lo, lo);
+                lo = hn::IfThenElse(hn::Gt(lo, span_hi), span_hi, lo);
+                auto hi = hn::Sub(xr, half);
+                hi = hn::IfThenElse(hn::Lt(hi, span_lo), span_lo, hi);
+                hi = hn::IfThenElse(hn::Gt(hi, span_hi), span_hi, hi);
+                const auto first = hn::ConvertTo(di, hn::Floor(lo));
+                const auto end = hn::IfThenElse(row_valid, hn::ConvertTo(di, hn::Ceil(hi)), first);
+                // The bound is taken at the extreme covered column of the whole row and at the
+                // tile's extreme column; the plane being affine, the smaller of the two bounds
+                // the covered pixels of the row inside the tile.
+                const auto row_depth =
+                    hn::Add(hn::Add(z_origin, hn::Mul(z_dy, hn::Add(yf, z_ky))), z_bias);
+                const auto row_extreme = t.z_dx_positive ? hn::Sub(hn::Sub(end, one_i), origin_x)
+                                                         : hn::Sub(first, origin_x);
+                auto row_bound = hn::Add(
+                    row_depth, hn::Mul(z_dx, hn::Add(hn::ConvertTo(df, row_extreme), z_kx)));
+                row_bound = hn::IfThenElse(hn::Lt(row_bound, z_max), row_bound, z_max);
+                for (int tx = tx0; tx <= tx1; ++tx) {
+                    OcclusionTile& tile = row_tiles[tx];
+                    const auto tile_x = hn::Set(di, tx * kOcclusionTileWidth);
+                    auto s = hn::Sub(first, tile_x);
+                    s = hn::Min(hn::Max(s, zero_i), width_i);
+                    auto e = hn::Sub(end, tile_x);
+                    e = hn::Min(hn::Max(e, zero_i), width_i);
+                    // Columns s..e-1: (~0 << s) & ~(~0 << e).
+                    const auto coverage = hn::AndNot(ones_shifted_left(e), ones_shifted_left(s));
+                    if (hn::AllTrue(du, hn::Eq(coverage, zero_u))) continue;
+                    const auto tile_bound = hn::Add(row_depth, hn::Set(df, tile_depth_step(t, tx)));
+                    const auto z =
+                        hn::IfThenElse(hn::Lt(row_bound, tile_bound), row_bound, tile_bound);
+
+                    const auto mask = hn::Load(du, tile.mask + r);
+                    const auto far_depth = hn::Load(df, tile.far_depth + r);
+                    const auto near_depth = hn::Load(df, tile.near_depth + r);
+                    const auto live =
+                        hn::And(hn::RebindMask(df, hn::Ne(coverage, zero_u)), hn::Lt(z, far_depth));
+                    if (hn::AllFalse(df, live)) continue;
+                    const auto discard =
+                        hn::Gt(hn::Sub(near_depth, z), hn::Sub(far_depth, near_depth));
+                    auto merged_mask = hn::IfThenZeroElse(hn::RebindMask(du, discard), mask);
+                    auto merged_near = hn::IfThenZeroElse(discard, near_depth);
+                    merged_mask = hn::Or(merged_mask, coverage);
+                    merged_near = hn::IfThenElse(hn::Lt(merged_near, z), z, merged_near);
+                    const auto full_u = hn::Eq(merged_mask, full_mask);
+                    const auto full = hn::RebindMask(df, full_u);
+                    const auto covers_row = hn::RebindMask(df, hn::Eq(coverage, full_mask));
+                    const auto new_far =
+                        hn::IfThenElse(full, hn::IfThenElse(covers_row, z, merged_near), far_depth);
+                    const auto new_mask = hn::IfThenZeroElse(full_u, merged_mask);
+                    const auto new_near = hn::IfThenZeroElse(full, merged_near);
+                    const auto live_u = hn::RebindMask(du, live);
+                    hn::Store(hn::IfThenElse(live_u, new_mask, mask), du, tile.mask + r);
+                    hn::Store(hn::IfThenElse(live, new_far, far_depth), df, tile.far_depth + r);
+                    hn::Store(hn::IfThenElse(live, new_near, near_depth), df, tile.near_depth + r);
+                }
+            }
+        }
+    }
+}
+
+bool RectOccluded(const TileGrid& grid, int x0, int y0, int x1, int y1, float depth) {
+    const DF df;
+    const DI di;
+    const DU du;
+    const int lanes = static_cast<int>(hn::Lanes(df));
+    const auto d = hn::Set(df, depth);
+    const auto zero_u = hn::Zero(du);
+    const auto row_lo = hn::Set(di, y0 - 1), row_hi = hn::Set(di, y1 + 1);
+    for (int ty = y0 / kOcclusionTileHeight; ty <= y1 / kOcclusionTileHeight; ++ty) {
+        const OcclusionTile* row_tiles = grid.tiles + static_cast<std::size_t>(ty) * grid.tiles_x;
+        const bool all_rows = ty * kOcclusionTileHeight >= y0 &&
+                              ty * kOcclusionTileHeight + kOcclusionTileHeight - 1 <= y1;
+        for (int tx = x0 / kOcclusionTileWidth; tx <= x1 / kOcclusionTileWidth; ++tx) {
+            const OcclusionTile& tile = row_tiles[tx];
+            const int s = std::max(x0 - tx * kOcclusionTileWidth, 0);
+            const int e = std::min(x1 + 1 - tx * kOcclusionTileWidth, kOcclusionTileWidth);
+            const std::uint32_t high = e >= 32 ? ~0u : (1u << e) - 1u;  // e <= tile width
+            const std::uint32_t rect_mask = high & ~((1u << s) - 1u);   // s <= 31 here
+            // Every row's far layer in front, or no pixel in front: settled without reading
+            // the tile.
+            if (grid.tile_max[&tile - grid.tiles] < depth) continue;
+            if (!(grid.tile_min[&tile - grid.tiles] < depth)) return false;
+            // A full mask never stays in a tile, so over whole rows the far layer decides: here
+            // one of them is not in front.
+            if (all_rows && rect_mask == kOcclusionFullMask) return false;
+            const auto rect = hn::Set(du, rect_mask);
+            for (int r = 0; r < kOcclusionTileHeight; r += lanes) {
+                const auto y = hn::Iota(di, ty * kOcclusionTileHeight + r);
+                const auto row_valid =
+                    hn::RebindMask(df, hn::And(hn::Gt(y, row_lo), hn::Lt(y, row_hi)));
+                const auto uncovered = hn::RebindMask(
+                    df, hn::Ne(hn::AndNot(hn::Load(du, tile.mask + r), rect), zero_u));
+                const auto bound = hn::IfThenElse(uncovered, hn::Load(df, tile.far_depth + r),
+                                                  hn::Load(df, tile.near_depth + r));
+                const auto hidden = hn::Lt(bound, d);
+                if (!hn::AllTrue(df, hn::Or(hidden, hn::Not(row_valid)))) return false;
+            }
+        }
+    }
+    return true;
+}
+
+// Triangle setup, many triangles at once (one per lane), in float. The error margins are those
+// of occluder_setup.cpp, which explains them; in float the depth plane's own error is measured
+// at the vertices (the plane and the true interpolant are both affine, so inside the triangle
+// they differ by at most the larger residual) and added to the bias.
+// Lanes that need clipping (or hold NaN/Inf) go through setup_occluder in submission order.
+
+std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::size_t count,
+                           OccluderTriangle* out) {
+    namespace k = occluder_setup;
+    if (src.vertex_count == 0) return 0;
+    const DF df;
+    const DI di;
+    const DU du;
+    constexpr std::size_t kMaxLanes = kOcclusionTileHeight;
+    const std::size_t lanes = hn::Lanes(df);
+    alignas(64) float corners[3][kMaxLanes * 4];  // x, y, z, w of each lane's corner v
+    alignas(64) std::int32_t box[4][kMaxLanes];
+    alignas(64) float fields[k::kFloatFields][kMaxLanes];
+    alignas(64) float keep_lanes[kMaxLanes], fast_lanes[kMaxLanes];
+    alignas(64) std::int32_t interior[kMaxLanes];
+    // Corner indices of each lane's triangle and of its neighbours in the index list; the two
+    // fillers never equal each other nor a valid index.
+    constexpr std::uint32_t kNoTriangle = 0xfffffffeu, kNoNeighbour = 0xffffffffu;
+    alignas(64) std::uint32_t own[3][kMaxLanes], previous[3][kMaxLanes], next[3][kMaxLanes];
+    const float guard_x = 1.0f + 2.0f * k::kGuardPixels / static_cast<float>(src.width);
+    const float guard_y = 1.0f + 2.0f * k::kGuardPixels / static_cast<float>(src.height);
+    const auto zero = hn::Zero(df), half = hn::Set(df, 0.5f), one = hn::Set(df, 1.0f);
+    const auto width = hn::Set(df, static_cast<float>(src.width));
+    const auto height = hn::Set(df, static_cast<float>(src.height));
+    const auto max_x = hn::Set(df, static_cast<float>(src.width - 1));
+    const auto max_y = hn::Set(df, static_cast<float>(src.height - 1));
+    const auto margin_base = hn::Set(df, k::kMarginBase + src.subpixel_margin);
+    const auto float_margin_base = hn::Set(df, k::kMarginBase);
+    const auto margin_per = hn::Set(df, k::kMarginPerCoordinate);
+    const auto slack = hn::Set(df, k::kDepthSlack);
+    const auto no_edge = hn::Set(df, kNoEdge), minus_no_edge = hn::Set(df, -kNoEdge);
+    const auto min_f = [](auto a, auto b) { return hn::IfThenElse(hn::Lt(a, b), a, b); };
+    const auto max_f = [](auto a, auto b) { return hn::IfThenElse(hn::Gt(a, b), a, b); };
+    OccluderOptions options;
+    options.cull = src.cull_back    ? OccluderCull::Back
+                   : src.cull_front ? OccluderCull::Front
+                                    : OccluderCull::None;
+    options.front_face_clockwise = src.front_face_clockwise;
+    options.subpixel_margin = src.subpixel_margin;
+    std::size_t n = 0;
+    for (std::size_t base = 0; base < count; base += lanes) {
+        const std::size_t m = std::min(lanes, count - base);
+        std::uint32_t valid = 0;
+        for (std::size_t l = 0; l < lanes; ++l) {
+            interior[l] = 0;
+            for (int v = 0; v < 3; ++v) {
+                own[v][l] = kNoTriangle;
+                previous[v][l] = next[v][l] = kNoNeighbour;
+            }
+            const std::size_t i = first + base + l;
+            const std::uint32_t* t = l < m ? src.indices + 3 * i : nullptr;
+            if (!t || t[0] >= src.vertex_count || t[1] >= src.vertex_count ||
+                t[2] >= src.vertex_count) {
+                for (int v = 0; v < 3; ++v) std::fill_n(corners[v] + 4 * l, 4, 0.0f);
+                continue;
+            }
+            valid |= 1u << l;
+            for (int v = 0; v < 3; ++v) {
+                std::memcpy(corners[v] + 4 * l, src.clip + 4 * std::size_t{t[v]},
+                            4 * sizeof(float));
+                own[v][l] = t[v];
+                if (i > 0) previous[v][l] = t[v - 3];
+                if (i + 1 < src.triangle_count) next[v][l] = t[v + 3];
+            }
+        }
+        // Interior edges: a quick vector search for an edge shared (reversed) with either
+        // neighbour; only lanes that have one ask interior_edges, which also checks facing.
+        {
+            const hn::Vec<DU> a = hn::Load(du, own[0]), b = hn::Load(du, own[1]),
+                              c = hn::Load(du, own[2]);
+            auto found = hn::Ne(a, a);
+            for (const auto* other : {&previous, &next}) {
+                const hn::Vec<DU> d = hn::Load(du, (*other)[0]), e = hn::Load(du, (*other)[1]),
+                                  f = hn::Load(du, (*other)[2]);
+                const auto reversed = [&](hn::Vec<DU> x, hn::Vec<DU> y) {
+                    return hn::Or(hn::Or(hn::And(hn::Eq(x, e), hn::Eq(y, d)),
+                                         hn::And(hn::Eq(x, f), hn::Eq(y, e))),
+                                  hn::And(hn::Eq(x, d), hn::Eq(y, f)));
+                };
+                found =
+                    hn::Or(found, hn::Or(hn::Or(reversed(a, b), reversed(b, c)), reversed(c, a)));
+            }
+            if (!hn::AllFalse(du, found)) {
+                hn::Store(hn::IfThenElseZero(found, hn::Set(du, 1u)), du, own[0]);
+                for (std::size_t l = 0; l < m; ++l)
+                    if (own[0][l] != 0)
+                        interior[l] =
+                            static_cast<std::int32_t>(interior_edges(src, first + base + l));
+            }
+        }
+        hn::Vec<DF> X[3], Y[3], Z[3];
+        auto fast = hn::Eq(zero, zero);
+        for (int v = 0; v < 3; ++v) {
+            hn::Vec<DF> x, y, z, w;
+            hn::LoadInterleaved4(df, corners[v], x, y, z, w);
+            // In front of the near plane, before the far plane, inside the guard band (false
+            // for NaN): no clipping needed.
+            fast = hn::And(fast, hn::And(hn::Gt(w, zero), hn::Lt(w, hn::Set(df, k::kMaxW))));
+            fast = hn::And(fast, hn::And(hn::Ge(z, hn::Neg(w)), hn::Le(z, w)));
+            fast = hn::And(fast, hn::Le(hn::Abs(x), hn::Mul(hn::Set(df, guard_x), w)));
+            fast = hn::And(fast, hn::Le(hn::Abs(y), hn::Mul(hn::Set(df, guard_y), w)));
+            const auto inv_w = hn::Div(one, w);
+            X[v] = hn::Mul(hn::Add(hn::Mul(hn::Mul(x, inv_w), half), half), width);
+            Y[v] = hn::Mul(hn::Sub(half, hn::Mul(hn::Mul(y, inv_w), half)), height);
+            Z[v] = hn::Add(hn::Mul(hn::Mul(z, inv_w), half), half);
+        }
+        const auto area2 = hn::Sub(hn::Mul(hn::Sub(X[1], X[0]), hn::Sub(Y[2], Y[0])),
+                                   hn::Mul(hn::Sub(Y[1], Y[0]), hn::Sub(X[2], X[0])));
+        const auto counter_clockwise = hn::Lt(area2, zero);
+        const auto front =
+            src.front_face_clockwise ? hn::Not(counter_clockwise) : counter_clockwise;
+        auto keep = hn::And(fast, hn::Ne(area2, zero));
+        if (src.cull_back) keep = hn::And(keep, front);
+        if (src.cull_front) keep = hn::AndNot(front, keep);
+
+        auto max_abs = hn::Abs(X[0]);
+        max_abs = max_f(max_abs, hn::Abs(Y[0]));
+        auto xmin = X[0], xmax = X[0], ymin = Y[0], ymax = Y[0], zmax = Z[0];
+        for (int v = 1; v < 3; ++v) {
+            max_abs = max_f(max_abs, hn::Abs(X[v]));
+            max_abs = max_f(max_abs, hn::Abs(Y[v]));
+            xmin = min_f(xmin, X[v]);
+            xmax = max_f(xmax, X[v]);
+            ymin = min_f(ymin, Y[v]);
+            ymax = max_f(ymax, Y[v]);
+            zmax = max_f(zmax, Z[v]);
+        }
+        const auto float_margin = hn::Add(float_margin_base, hn::Mul(max_abs, margin_per));
+        const auto margin = hn::Add(margin_base, hn::Mul(max_abs, margin_per));
+        const auto interior_bits = hn::Load(di, interior);
+        const auto x0 = max_f(hn::Ceil(hn::Sub(xmin, half)), zero);
+        const auto x1 = min_f(hn::Floor(hn::Sub(xmax, half)), max_x);
+        const auto y0 = max_f(hn::Ceil(hn::Sub(hn::Add(ymin, margin), half)), zero);
+        const auto y1 = min_f(hn::Floor(hn::Sub(hn::Sub(ymax, margin), half)), max_y);
+        keep = hn::And(keep, hn::And(hn::Le(x0, x1), hn::Le(y0, y1)));
+
+        const auto row0 = hn::Add(y0, half);
+        for (int e = 0; e < 3; ++e) {
+            const hn::Vec<DF>&ax = X[e], &ay = Y[e], &bx = X[(e + 1) % 3], &by = Y[(e + 1) % 3];
+            const auto dy = hn::Sub(by, ay);
+            const auto slanted = hn::Ge(hn::Abs(dy), hn::Set(df, k::kHorizontal));
+            const auto step = hn::Div(hn::Sub(bx, ax), hn::IfThenElse(slanted, dy, one));
+            const auto x = hn::Add(ax, hn::Mul(hn::Sub(row0, ay), step));
+            // Interior edges move outwards by the float error instead (see interior_edges).
+            const auto is_interior = hn::RebindMask(
+                df, hn::Ne(hn::And(interior_bits, hn::Set(di, 1 << e)), hn::Zero(di)));
+            const auto inset = hn::Mul(hn::Add(one, hn::Abs(step)),
+                                       hn::IfThenElse(is_interior, hn::Neg(float_margin), margin));
+            // The inside is to the right of the edge when area2 * dy < 0.
+            const auto left_side = hn::Xor(counter_clockwise, hn::Lt(dy, zero));
+            const auto is_left = hn::And(slanted, left_side);
+            const auto is_right = hn::AndNot(left_side, slanted);
+            hn::Store(hn::IfThenElse(is_left, hn::Add(x, inset), minus_no_edge), df,
+                      fields[k::kLeftX + e]);
+            hn::Store(hn::IfThenElseZero(is_left, step), df, fields[k::kLeftStep + e]);
+            hn::Store(hn::IfThenElse(is_right, hn::Sub(x, inset), no_edge), df,
+                      fields[k::kRightX + e]);
+            hn::Store(hn::IfThenElseZero(is_right, step), df, fields[k::kRightStep + e]);
+        }
+
+        const auto e1x = hn::Sub(X[1], X[0]), e1y = hn::Sub(Y[1], Y[0]), e1z = hn::Sub(Z[1], Z[0]);
+        const auto e2x = hn::Sub(X[2], X[0]), e2y = hn::Sub(Y[2], Y[0]), e2z = hn::Sub(Z[2], Z[0]);
+        const auto gx = hn::Div(hn::Sub(hn::Mul(e1z, e2y), hn::Mul(e2z, e1y)), area2);
+        const auto gy = hn::Div(hn::Sub(hn::Mul(e1x, e2z), hn::Mul(e2x, e1z)), area2);
+        const auto err1 = hn::Abs(hn::Sub(hn::Add(hn::Mul(gx, e1x), hn::Mul(gy, e1y)), e1z));
+        const auto err2 = hn::Abs(hn::Sub(hn::Add(hn::Mul(gx, e2x), hn::Mul(gy, e2y)), e2z));
+        const auto residual = max_f(err1, err2);
+        const auto extent = hn::Add(hn::Add(max_abs, hn::Sub(x1, x0)), hn::Sub(y1, y0));
+        auto spread =
+            hn::Mul(hn::Add(hn::Abs(gx), hn::Abs(gy)), hn::Add(extent, hn::Set(df, 4.0f)));
+        spread = hn::Add(hn::Add(one, spread), hn::Add(hn::Abs(e1z), hn::Abs(e2z)));
+        // Pixels up to a margin outside the triangle (interior edges) see the plane extended.
+        const auto reach = hn::Mul(hn::Add(hn::Abs(gx), hn::Abs(gy)), hn::Add(margin, margin));
+        const auto bias =
+            hn::Add(hn::Add(hn::Add(residual, residual), hn::Mul(slack, spread)), reach);
+        const auto sane = hn::And(hn::Lt(hn::Abs(gx), hn::Set(df, k::kHugeGradient)),
+                                  hn::Lt(hn::Abs(gy), hn::Set(df, k::kHugeGradient)));
+        const auto z_max = hn::Add(zmax, slack);
+        hn::Store(hn::IfThenElse(sane, Z[0], z_max), df, fields[k::kZOrigin]);
+        hn::Store(hn::IfThenElseZero(sane, gx), df, fields[k::kZDx]);
+        hn::Store(hn::IfThenElseZero(sane, gy), df, fields[k::kZDy]);
+        hn::Store(hn::IfThenElseZero(sane, hn::Sub(hn::Add(x0, half), X[0])), df, fields[k::kZKx]);
+        hn::Store(hn::IfThenElseZero(sane, hn::Sub(row0, Y[0])), df, fields[k::kZKy]);
+        hn::Store(hn::IfThenElseZero(sane, bias), df, fields[k::kZBias]);
+        hn::Store(z_max, df, fields[k::kZMax]);
+        hn::Store(hn::ConvertTo(di, x0), di, box[0]);
+        hn::Store(hn::ConvertTo(di, x1), di, box[1]);
+        hn::Store(hn::ConvertTo(di, y0), di, box[2]);
+        hn::Store(hn::ConvertTo(di, y1), di, box[3]);
+        hn::Store(hn::IfThenElseZero(keep, one), df, keep_lanes);
+        hn::Store(hn::IfThenElseZero(fast, one), df, fast_lanes);
+
+        for (std::size_t l = 0; l < m; ++l) {
+            if (!((valid >> l) & 1u)) continue;
+            if (fast_lanes[l] == 0.0f) {
+                const std::uint32_t* t = src.indices + 3 * (first + base + l);
+                const auto vertex = [&](std::uint32_t i) {
+                    const float* p = src.clip + 4 * std::size_t{i};
+                    return glm::vec4(p[0], p[1], p[2], p[3]);
+                };
+                n += setup_occluder(vertex(t[0]), vertex(t[1]), vertex(t[2]), src.width, src.height,
+                                    options, out + n);
+                continue;
+            }
+            if (keep_lanes[l] == 0.0f) continue;
+            OccluderTriangle& o = out[n++];
+            o.x0 = box[0][l];
+            o.x1 = box[1][l];
+            o.y0 = box[2][l];
+            o.y1 = box[3][l];
+            for (int e = 0; e < 3; ++e) {
+                o.left_x[e] = fields[k::kLeftX + e][l];
+                o.left_step[e] = fields[k::kLeftStep + e][l];
+                o.right_x[e] = fields[k::kRightX + e][l];
+                o.right_step[e] = fields[k::kRightStep + e][l];
+            }
+            o.z_origin = fields[k::kZOrigin][l];
+            o.z_dx = fields[k::kZDx][l];
+            o.z_dy = fields[k::kZDy][l];
+            o.z_kx = fields[k::kZKx][l];
+            o.z_ky = fields[k::kZKy][l];
+            o.z_bias = fields[k::kZBias][l];
+            o.z_max = fields[k::kZMax][l];
+            o.z_dx_positive = o.z_dx > 0.0f;
+        }
+    }
+    return n;
+}
+
+const char* OcclusionTargetName() {
+    return hwy::TargetName(HWY_TARGET);
+}
+
+}  // namespace zraster::detail::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace zraster::detail {
+
+HWY_EXPORT(RasterizeOccluders);
+HWY_EXPORT(SetupOccluders);
+HWY_EXPORT(RectOccluded);
+HWY_EXPORT(OcclusionTargetName);
+
+void rasterize_occluders(const OccluderTriangle* triangles, std::size_t count, TileGrid grid) {
+    HWY_DYNAMIC_DISPATCH(RasterizeOccluders)(triangles, count, grid);
+}
+
+std::size_t setup_occluders(const OccluderSource& source, std::size_t first, std::size_t count,
+                            OccluderTriangle* out) {
+    return HWY_DYNAMIC_DISPATCH(SetupOccluders)(source, first, count, out);
+}
+
+bool rect_occluded(const TileGrid& grid, int x0, int y0, int x1, int y1, float depth) {
+    return HWY_DYNAMIC_DISPATCH(RectOccluded)(grid, x0, y0, x1, y1, depth);
+}
+
+const char* occlusion_kernel_target() {
+    return HWY_DYNAMIC_DISPATCH(OcclusionTargetName)();
+}
+
+namespace {
+
+std::uint32_t low_bits_scalar(int n) {
+    return n >= 32 ? ~0u : ~(~0u << n);
+}
+
+}  // namespace
+
+// Lane by lane, the operations of RasterizeOccluders in the same order.
+void rasterize_occluders_scalar(const OccluderTriangle* triangles, std::size_t count,
+                                TileGrid grid) {
+    for (std::size_t i = 0; i < count; ++i) {
+        const OccluderTriangle& t = triangles[i];
+        const float span_lo = static_cast<float>(t.x0), span_hi = static_cast<float>(t.x1 + 1);
+        for (int ty = t.y0 / kOcclusionTileHeight; ty <= t.y1 / kOcclusionTileHeight; ++ty) {
+            OcclusionTile* row_tiles = grid.tiles + static_cast<std::size_t>(ty) * grid.tiles_x;
+            for (int r = 0; r < kOcclusionTileHeight; ++r) {
+                const int y = ty * kOcclusionTileHeight + r;
+                const bool row_valid = y > t.y0 - 1 && y < t.y1 + 1;
+                const float yf = static_cast<float>(y - t.y0);
+                const float l0 = t.left_x[0] + yf * t.left_step[0];
+                const float l1 = t.left_x[1] + yf * t.left_step[1];
+                const float l2 = t.left_x[2] + yf * t.left_step[2];
+                const float r0 = t.right_x[0] + yf * t.right_step[0];
+                const float r1 = t.right_x[1] + yf * t.right_step[1];
+                const float r2 = t.right_x[2] + yf * t.right_step[2];
+                float xl = l0 > l1 ? l0 : l1;
+                xl = xl > l2 ? xl : l2;
+                float xr = r0 < r1 ? r0 : r1;
+                xr = xr < r2 ? xr : r2;
+                float lo = xl + 0.5f;
+                lo = lo < span_lo ? span_lo : lo;
+                lo = lo > span_hi ? span_hi : lo;
+                float hi = xr - 0.5f;
+                hi = hi < span_lo ? span_lo : hi;
+                hi = hi > span_hi ? span_hi : hi;
+                const int first = static_cast<int>(std::floor(lo));
+                const int end = row_valid ? static_cast<int>(std::ceil(hi)) : first;
+                const float row_depth = (t.z_origin + t.z_dy * (yf + t.z_ky)) + t.z_bias;
+                const int row_extreme = t.z_dx_positive ? (end - 1) - t.x0 : first - t.x0;
+                float row_bound = row_depth + t.z_dx * (static_cast<float>(row_extreme) + t.z_kx);
+                row_bound = row_bound < t.z_max ? row_bound : t.z_max;
+                for (int tx = t.x0 / kOcclusionTileWidth; tx <= t.x1 / kOcclusionTileWidth; ++tx) {
+                    OcclusionTile& tile = row_tiles[tx];
+                    const int s = std::min(std::max(first - tx * kOcclusionTileWidth, 0),
+                                           kOcclusionTileWidth);
+                    const int e =
+                        std::min(std::max(end - tx * kOcclusionTileWidth, 0), kOcclusionTileWidth);
+                    const std::uint32_t coverage = ~low_bits_scalar(s) & low_bits_scalar(e);
+                    if (coverage == 0) continue;
+                    const float tile_bound = row_depth + tile_depth_step(t, tx);
+                    const float z = row_bound < tile_bound ? row_bound : tile_bound;
+
+                    const std::uint32_t mask = tile.mask[r];
+                    const float far_depth = tile.far_depth[r], near_depth = tile.near_depth[r];
+                    if (!(coverage != 0 && z < far_depth)) continue;
+                    const bool discard = near_depth - z > far_depth - near_depth;
+                    std::uint32_t merged_mask = discard ? 0u : mask;
+                    float merged_near = discard ? 0.0f : near_depth;
+                    merged_mask |= coverage;
+                    merged_near = merged_near < z ? z : merged_near;
+                    const bool full = merged_mask == kOcclusionFullMask;
+                    const bool covers_row = coverage == kOcclusionFullMask;
+                    tile.far_depth[r] = full ? (covers_row ? z : merged_near) : far_depth;
+                    tile.mask[r] = full ? 0u : merged_mask;
+                    tile.near_depth[r] = full ? 0.0f : merged_near;
+                }
+            }
+        }
+    }
+}
+
+// Lane by lane, the operations of SetupOccluders in the same order.
+std::size_t setup_occluders_scalar(const OccluderSource& src, std::size_t first, std::size_t count,
+                                   OccluderTriangle* out) {
+    namespace k = occluder_setup;
+    const float guard_x = 1.0f + 2.0f * k::kGuardPixels / static_cast<float>(src.width);
+    const float guard_y = 1.0f + 2.0f * k::kGuardPixels / static_cast<float>(src.height);
+    const float width = static_cast<float>(src.width), height = static_cast<float>(src.height);
+    const float max_x = static_cast<float>(src.width - 1);
+    const float max_y = static_cast<float>(src.height - 1);
+    const auto min_f = [](float a, float b) { return a < b ? a : b; };
+    const auto max_f = [](float a, float b) { return a > b ? a : b; };
+    OccluderOptions options;
+    options.cull = src.cull_back    ? OccluderCull::Back
+                   : src.cull_front ? OccluderCull::Front
+                                    : OccluderCull::None;
+    options.front_face_clockwise = src.front_face_clockwise;
+    options.subpixel_margin = src.subpixel_margin;
+    std::size_t n = 0;
+    for (std::size_t i = first; i < first + count; ++i) {
+        const std::uint32_t* t = src.indices + 3 * i;
+        if (t[0] >= src.vertex_count || t[1] >= src.vertex_count || t[2] >= src.vertex_count)
+            continue;
+        const std::uint32_t interior = interior_edges(src, i);
+        float X[3], Y[3], Z[3];
+        bool fast = true;
+        for (int v = 0; v < 3; ++v) {
+            const float* p = src.clip + 4 * std::size_t{t[v]};
+            const float x = p[0], y = p[1], z = p[2], w = p[3];
+            fast = fast && (w > 0.0f && w < k::kMaxW);
+            fast = fast && (z >= -w && z <= w);
+            fast = fast && std::fabs(x) <= guard_x * w;
+            fast = fast && std::fabs(y) <= guard_y * w;
+            const float inv_w = 1.0f / w;
+            X[v] = ((x * inv_w) * 0.5f + 0.5f) * width;
+            Y[v] = (0.5f - (y * inv_w) * 0.5f) * height;
+            Z[v] = (z * inv_w) * 0.5f + 0.5f;
+        }
+        if (!fast) {
+            const auto vertex = [&](std::uint32_t j) {
+                const float* p = src.clip + 4 * std::size_t{j};
+                return glm::vec4(p[0], p[1], p[2], p[3]);
+            };
+            n += setup_occluder(vertex(t[0]), vertex(t[1]), vertex(t[2]), src.width, src.height,
+                                options, out + n);
+            continue;
+        }
+        const float area2 = (X[1] - X[0]) * (Y[2] - Y[0]) - (Y[1] - Y[0]) * (X[2] - X[0]);
+        const bool counter_clockwise = area2 < 0.0f;
+        const bool front = src.front_face_clockwise ? !counter_clockwise : counter_clockwise;
+        bool keep = area2 != 0.0f;
+        if (src.cull_back) keep = keep && front;
+        if (src.cull_front) keep = keep && !front;
+        float max_abs = std::fabs(X[0]);
+        max_abs = max_f(max_abs, std::fabs(Y[0]));
+        float xmin = X[0], xmax = X[0], ymin = Y[0], ymax = Y[0], zmax = Z[0];
+        for (int v = 1; v < 3; ++v) {
+            max_abs = max_f(max_abs, std::fabs(X[v]));
+            max_abs = max_f(max_abs, std::fabs(Y[v]));
+            xmin = min_f(xmin, X[v]);
+            xmax = max_f(xmax, X[v]);
+            ymin = min_f(ymin, Y[v]);
+            ymax = max_f(ymax, Y[v]);
+            zmax = max_f(zmax, Z[v]);
+        }
+        const float float_margin = k::kMarginBase + max_abs * k::kMarginPerCoordinate;
+        const float margin =
+            (k::kMarginBase + src.subpixel_margin) + max_abs * k::kMarginPerCoordinate;
+        const float x0 = max_f(std::ceil(xmin - 0.5f), 0.0f);
+        const float x1 = min_f(std::floor(xmax - 0.5f), max_x);
+        const float y0 = max_f(std::ceil((ymin + margin) - 0.5f), 0.0f);
+        const float y1 = min_f(std::floor((ymax - margin) - 0.5f), max_y);
+        keep = keep && x0 <= x1 && y0 <= y1;
+        if (!keep) continue;
+        OccluderTriangle& o = out[n++];
+        const float row0 = y0 + 0.5f;
+        for (int e = 0; e < 3; ++e) {
+            const float ax = X[e], ay = Y[e], bx = X[(e + 1) % 3], by = Y[(e + 1) % 3];
+            const float dy = by - ay;
+            const bool slanted = std::fabs(dy) >= k::kHorizontal;
+            const float step = (bx - ax) / (slanted ? dy : 1.0f);
+            const float x = ax + (row0 - ay) * step;
+            const bool is_interior = (interior >> e) & 1u;
+            const float inset = (1.0f + std::fabs(step)) * (is_interior ? -float_margin : margin);
+            const bool left_side = counter_clockwise != (dy < 0.0f);
+            const bool is_left = slanted && left_side, is_right = slanted && !left_side;
+            o.left_x[e] = is_left ? x + inset : -kNoEdge;
+            o.left_step[e] = is_left ? step : 0.0f;
+            o.right_x[e] = is_right ? x - inset : kNoEdge;
+            o.right_step[e] = is_right ? step : 0.0f;
+        }
+        const float e1x = X[1] - X[0], e1y = Y[1] - Y[0], e1z = Z[1] - Z[0];
+        const float e2x = X[2] - X[0], e2y = Y[2] - Y[0], e2z = Z[2] - Z[0];
+        const float gx = (e1z * e2y - e2z * e1y) / area2;
+        const float gy = (e1x * e2z - e2x * e1z) / area2;
+        const float err1 = std::fabs((gx * e1x + gy * e1y) - e1z);
+        const float err2 = std::fabs((gx * e2x + gy * e2y) - e2z);
+        const float residual = max_f(err1, err2);
+        const float extent = (max_abs + (x1 - x0)) + (y1 - y0);
+        float spread = (std::fabs(gx) + std::fabs(gy)) * (extent + 4.0f);
+        spread = (1.0f + spread) + (std::fabs(e1z) + std::fabs(e2z));
+        const float reach = (std::fabs(gx) + std::fabs(gy)) * (margin + margin);
+        const float bias = ((residual + residual) + k::kDepthSlack * spread) + reach;
+        const bool sane = std::fabs(gx) < k::kHugeGradient && std::fabs(gy) < k::kHugeGradient;
+        const float z_max = zmax + k::kDepthSlack;
+        o.z_origin = sane ? Z[0] : z_max;
+        o.z_dx = sane ? gx : 0.0f;
+        o.z_dy = sane ? gy : 0.0f;
+        o.z_kx = sane ? (x0 + 0.5f) - X[0] : 0.0f;
+        o.z_ky = sane ? row0 - Y[0] : 0.0f;
+        o.z_bias = sane ? bias : 0.0f;
+        o.z_max = z_max;
+        o.x0 = static_cast<int>(x0);
+        o.x1 = static_cast<int>(x1);
+        o.y0 = static_cast<int>(y0);
+        o.y1 = static_cast<int>(y1);
+        o.z_dx_positive = o.z_dx > 0.0f;
+    }
+    return n;
+}
+
+bool rect_occluded_scalar(const TileGrid& grid, int x0, int y0, int x1, int y1, float depth) {
+    for (int y = y0; y <= y1; ++y) {
+        const int ty = y / kOcclusionTileHeight, r = y % kOcclusionTileHeight;
+        for (int tx = x0 / kOcclusionTileWidth; tx <= x1 / kOcclusionTileWidth; ++tx) {
+            const OcclusionTile& tile =
+                grid.tiles[static_cast<std::size_t>(ty) * grid.tiles_x + tx];
+            const int s = std::max(x0 - tx * kOcclusionTileWidth, 0);
+            const int e = std::min(x1 + 1 - tx * kOcclusionTileWidth, kOcclusionTileWidth);
+            const std::uint32_t rect_mask = ~low_bits_scalar(s) & low_bits_scalar(e);
+            const bool uncovered = (rect_mask & ~tile.mask[r]) != 0;
+            const float bound = uncovered ? tile.far_depth[r] : tile.near_depth[r];
+            if (!(bound < depth)) return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace zraster::detail
+#endif  // HWY_ONCE

@@ -1,0 +1,127 @@
+// The occlusion buffer's storage and its two kernels: rasterizing set-up occluder triangles into
+// the tiles, and testing a pixel rectangle against them. Each kernel has a SIMD version (Google
+// Highway, dispatched at run time) and a scalar reference twin with the same operations in the
+// same order; tests compare the two bit for bit.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+namespace zraster::detail {
+
+inline constexpr int kOcclusionTileWidth = 16;  // pixels: one bit each in a row mask
+inline constexpr std::uint32_t kOcclusionFullMask =
+    kOcclusionTileWidth == 32 ? ~0u : (1u << kOcclusionTileWidth) - 1u;
+inline constexpr int kOcclusionTileHeight = 16;  // pixel rows: one SIMD lane each
+inline constexpr float kEmptyNearDepth = 0.0f;   // identity of the working layer's max
+inline constexpr float kClearFarDepth = 1.0f;    // the far plane
+
+// One tile: for each of its 16 pixel rows, the coverage mask of the working (near) layer and the
+// two depth bounds. Invariants, for every pixel p of row r (true_depth = nearest occluder depth
+// at p's center, 1 where none):
+//   true_depth(p) <= far_depth[r]
+//   true_depth(p) <= near_depth[r]   when bit p of mask[r] is set
+//   mask[r] != kOcclusionFullMask (a full mask is folded into far_depth at once), near_depth[r] <=
+//   far_depth[r]
+struct alignas(64) OcclusionTile {
+    std::uint32_t mask[kOcclusionTileHeight];
+    float far_depth[kOcclusionTileHeight];
+    float near_depth[kOcclusionTileHeight];
+};
+
+// An occluder triangle ready for the tiles (made by the setup below or, for triangles that
+// need clipping, by setup_occluder in occluder_setup.cpp). Pixel row y (center y + 0.5) covers
+// the columns px with
+//   max_k(left_x[k] + (y - y0) * left_step[k]) < px + 0.5 < min_k(right_x[k] + (y - y0) *
+//   right_step[k])
+// where the edge lines are already moved inwards by their error margin; an edge on the other
+// side (or horizontal) is -kNoEdge (left) or +kNoEdge (right) with step 0. With
+//   d(y, xe) = ((z_origin + z_dy * ((y - y0) + z_ky)) + z_bias) + z_dx * ((xe - x0) + z_kx),
+// the depth bound of the covered pixels of row y within a tile is the smaller of
+// min(d(y, xe), z_max) for the extreme covered column xe of the row (the last one when
+// z_dx > 0, else the first) and d(y, xt) for the tile's extreme column xt in that direction.
+struct OccluderTriangle {
+    int x0 = 0, x1 = -1, y0 = 0, y1 = -1;  // pixel bounding box, inclusive, inside the viewport
+    float left_x[3], left_step[3];
+    float right_x[3], right_step[3];
+    float z_origin, z_dx, z_dy, z_kx, z_ky, z_bias, z_max;
+    bool z_dx_positive;  // the bound is at the span's right end (else its left end)
+};
+inline constexpr float kNoEdge = 1e30f;
+
+// Occluder triangles to set up: clip-space positions and three indices per triangle.
+struct OccluderSource {
+    const float* clip = nullptr;  // x, y, z, w per vertex
+    std::size_t vertex_count = 0;
+    const std::uint32_t* indices = nullptr;
+    std::size_t triangle_count = 0;
+    int width = 0, height = 0;
+    bool cull_back = true, cull_front = false;
+    bool front_face_clockwise = false;
+    float subpixel_margin = 0.0f;  // OccluderOptions::subpixel_margin
+};
+
+// Constants of the float setup (occluder_setup.cpp explains the margins).
+namespace occluder_setup {
+constexpr float kGuardPixels = 4096.0f;  // window coordinates stay within 4096 px of the screen
+constexpr float kMarginBase = 0x1p-14f, kMarginPerCoordinate = 0x1p-21f;
+constexpr float kHorizontal = 0x1p-10f;  // |dy| below this: the row range bounds the edge
+constexpr float kDepthSlack = 0x1p-20f, kHugeGradient = 1e30f, kMaxW = 1e30f;
+enum Field {
+    kLeftX,
+    kLeftStep = kLeftX + 3,
+    kRightX = kLeftStep + 3,
+    kRightStep = kRightX + 3,
+    kZOrigin = kRightStep + 3,
+    kZDx,
+    kZDy,
+    kZKx,
+    kZKy,
+    kZBias,
+    kZMax,
+    kFloatFields
+};
+}  // namespace occluder_setup
+
+// At most this many triangles per setup call; each may give up to 6 pieces (clipped).
+inline constexpr std::size_t kSetupGroup = 64;
+inline constexpr std::size_t kSetupOutput = kSetupGroup * 6;
+
+// Sets up triangles [first, first + count) (count <= kSetupGroup) into `out`, in order; returns
+// how many OccluderTriangles were written. Triangles inside the guard band and in front of the
+// near plane are set up in float, many at a time; the others go through setup_occluder.
+std::size_t setup_occluders(const OccluderSource& source, std::size_t first, std::size_t count,
+                            OccluderTriangle* out);
+std::size_t setup_occluders_scalar(const OccluderSource& source, std::size_t first,
+                                   std::size_t count, OccluderTriangle* out);
+
+// z_dx times the tile's extreme column in the direction the depth grows (relative to x0, plus
+// z_kx): added to a row's depth it bounds the plane over that row of the tile.
+inline float tile_depth_step(const OccluderTriangle& t, int tx) {
+    const int column = tx * kOcclusionTileWidth + (t.z_dx_positive ? kOcclusionTileWidth - 1 : 0);
+    return t.z_dx * (static_cast<float>(column - t.x0) + t.z_kx);
+}
+
+struct TileGrid {
+    OcclusionTile* tiles = nullptr;
+    // Per tile, the largest far_depth of its rows: a coarse level that lets a rectangle test
+    // settle a tile it covers entirely with one comparison (refreshed after each render call).
+    float* tile_max = nullptr;
+    // Per tile, the smallest depth bound of its pixels: a rectangle touching a tile whose
+    // smallest bound is not in front of it is visible at once.
+    float* tile_min = nullptr;
+    int tiles_x = 0, tiles_y = 0;
+};
+
+// Rasterizes triangles [0, count) in order.
+void rasterize_occluders(const OccluderTriangle* triangles, std::size_t count, TileGrid grid);
+void rasterize_occluders_scalar(const OccluderTriangle* triangles, std::size_t count,
+                                TileGrid grid);
+
+// True when every pixel of columns x0..x1, rows y0..y1 (inclusive, inside the grid) holds a
+// depth bound strictly less than `depth`.
+bool rect_occluded(const TileGrid& grid, int x0, int y0, int x1, int y1, float depth);
+bool rect_occluded_scalar(const TileGrid& grid, int x0, int y0, int x1, int y1, float depth);
+
+const char* occlusion_kernel_target();
+
+}  // namespace zraster::detail

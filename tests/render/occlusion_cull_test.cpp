@@ -1,0 +1,116 @@
+// RenderOptions::occlusion_cull: the image (color, depth, ids) is bit-identical with and without
+// it, while RenderStats counts the instances it skipped; it stays off where it could change the
+// image (reversed-Z, D24, wireframe).
+#include <zraster/render.hpp>
+#include <zraster/scenes.hpp>
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "occlusion/occlusion_test_util.hpp"
+
+namespace zraster {
+namespace {
+
+// A wall in front of a field of spheres; a few spheres beside the wall stay visible.
+Scene wall_scene() {
+    Scene scene;
+    scene.meshes.push_back(make_box(glm::vec3(7.0f, 4.5f, 0.5f)));
+    scene.meshes.push_back(make_uv_sphere(0.6f, 8, 12));
+    Instance wall;
+    wall.mesh = 0;
+    wall.transform = test::place({0.0f, 0.0f, -8.0f});
+    scene.instances.push_back(wall);
+    SplitMix64 rng(3);
+    for (int i = 0; i < 300; ++i) {
+        Instance s;
+        s.mesh = 1;
+        const float x = static_cast<float>(rng.uniform(-14.0, 14.0));
+        const float y = static_cast<float>(rng.uniform(-5.0, 5.0));
+        const float z = static_cast<float>(rng.uniform(-30.0, -10.0));
+        s.transform = test::place({x, y, z});
+        scene.instances.push_back(s);
+    }
+    return scene;
+}
+
+RenderOptions wall_options() {
+    RenderOptions o;
+    o.width = 320;
+    o.height = 180;
+    o.threads = 2;
+    o.id_targets = true;
+    Camera c;
+    c.eye = {0, 0, 4};
+    c.target = {0, 0, -10};
+    c.near = 0.5;
+    c.far = 100.0;
+    o.camera = c;
+    return o;
+}
+
+void expect_same_image(const RenderTargets& a, const RenderTargets& b) {
+    EXPECT_TRUE(a.color == b.color);
+    EXPECT_TRUE(a.depth == b.depth);
+    EXPECT_TRUE(a.instance_id == b.instance_id);
+    EXPECT_TRUE(a.primitive_id == b.primitive_id);
+}
+
+TEST(OcclusionCull, WallHidesInstancesAndTheImageIsUnchanged) {
+    const Scene scene = wall_scene();
+    RenderOptions options = wall_options();
+    const RenderResult plain = render(scene, options);
+    options.occlusion_cull = true;
+    const RenderResult culled = render(scene, options);
+    expect_same_image(plain.targets, culled.targets);
+    EXPECT_EQ(plain.stats.instances_occlusion_culled, 0u);
+    EXPECT_GT(culled.stats.instances_occlusion_culled, 50u);
+    EXPECT_LT(culled.stats.triangles_in, plain.stats.triangles_in);
+    // Some spheres are visible beside the wall, and were not culled.
+    std::set<std::int32_t> seen(plain.targets.instance_id.begin(), plain.targets.instance_id.end());
+    EXPECT_GT(seen.size(), 5u);
+    // The scalar path culls the same.
+    options.simd = false;
+    const RenderResult scalar = render(scene, options);
+    expect_same_image(plain.targets, scalar.targets);
+    EXPECT_EQ(scalar.stats.instances_occlusion_culled, culled.stats.instances_occlusion_culled);
+}
+
+TEST(OcclusionCull, CityScenesAreUnchanged) {
+    for (int seed = 1; seed <= 3; ++seed) {
+        const test::OcclusionScene s = test::city_scene(seed, 300);
+        std::vector<test::Placed> all = s.occluders;
+        all.insert(all.end(), s.boxes.begin(), s.boxes.end());
+        const Scene scene = test::boxes_scene(all);
+        RenderOptions options = test::exact_options(s);
+        options.color_target = true;
+        options.threads = 2;
+        const RenderResult plain = render(scene, options);
+        options.occlusion_cull = true;
+        Renderer renderer;
+        const RenderResult& culled = renderer.render(scene, options);
+        expect_same_image(plain.targets, culled.targets);
+        EXPECT_GT(culled.stats.instances_occlusion_culled, 50u) << "seed " << seed;
+        EXPECT_EQ(culled.stats.instances_frustum_culled, plain.stats.instances_frustum_culled);
+    }
+}
+
+TEST(OcclusionCull, OffWhereItCouldChangeTheImage) {
+    const Scene scene = wall_scene();
+    RenderOptions options = wall_options();
+    options.occlusion_cull = true;
+    options.depth_format = DepthFormat::D24;
+    EXPECT_EQ(render(scene, options).stats.instances_occlusion_culled, 0u);
+    options = wall_options();
+    options.occlusion_cull = true;
+    options.camera->reversed_z = true;
+    EXPECT_EQ(render(scene, options).stats.instances_occlusion_culled, 0u);
+    options = wall_options();
+    options.occlusion_cull = true;
+    options.edges = RenderOptions::Edges::Wireframe;
+    EXPECT_EQ(render(scene, options).stats.instances_occlusion_culled, 0u);
+}
+
+}  // namespace
+}  // namespace zraster
