@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The test suite under the sanitizers (clang):
 #   asan: every test with AddressSanitizer + UndefinedBehaviorSanitizer (-fno-sanitize-recover=all,
-#         LeakSanitizer on) in build-asan/;
+#         LeakSanitizer on) in build-asan/, the build the fuzzers share (configure-asan.sh);
 #   tsan: the render suite (the multithreaded paths; Determinism.* included) with ThreadSanitizer
 #         in build-tsan/.
 # Any report fails the run. Zero reports is the standard (RELIABILITY.md).
@@ -27,15 +27,21 @@ build() {
     ninja -C "$dir" -j "$jobs" "$@" >"$dir/build.log" 2>&1 || {
         tail -50 "$dir/build.log"
         echo "sanitize: build failed in $dir" >&2
-        return 1
+        exit 1
     }
 }
 
 status=0
 
 if [ "$which" = asan ] || [ "$which" = all ]; then
+    # The same build as the fuzzers' (scripts/configure-asan.sh): every library compiled once.
     dir=${ZRASTER_ASAN_BUILD_DIR:-$root/build-asan}
-    build "$dir" "-fsanitize=address,undefined -fno-sanitize-recover=all"
+    bash "$root/scripts/configure-asan.sh" "$dir"
+    ninja -C "$dir" -j "$jobs" >"$dir/build.log" 2>&1 || {
+        tail -50 "$dir/build.log"
+        echo "sanitize: build failed in $dir" >&2
+        exit 1
+    }
     mkdir -p "$dir/tmp"
     # Tests write their fixtures under $TMPDIR: one per build, so that concurrent suites
     # (another build's ctest) never share a directory.

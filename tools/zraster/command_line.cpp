@@ -59,9 +59,20 @@ glm::ivec2 parse_size(const std::string& option, const std::string& text, int li
     return {w, h};
 }
 
+namespace {
+bool g_load_in_process = false;
+}  // namespace
+
+void set_load_in_process(bool in_process) {
+    g_load_in_process = in_process;
+}
+
 Scene load_scene_or_procedural(const std::string& spec) {
     if (is_procedural_spec(spec)) return make_procedural_scene(spec);
-    return load_scene(spec);
+    LoadOptions options;
+    options.isolation =
+        g_load_in_process ? LoadIsolation::InProcess : LoadIsolation::WorkerProcess;
+    return load_scene(spec, options);
 }
 
 }  // namespace zraster::cli
