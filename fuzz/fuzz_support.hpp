@@ -140,9 +140,8 @@ inline void check_input_error(const InputError& e, const std::string& file) {
 inline LoadIsolation fuzz_load_isolation() {
     static const LoadIsolation isolation = [] {
         const char* mode = std::getenv("ZRASTER_FUZZ_LOAD_ISOLATION");
-        return mode != nullptr && std::string_view(mode) == "worker"
-                   ? LoadIsolation::WorkerProcess
-                   : LoadIsolation::InProcess;
+        return mode != nullptr && std::string_view(mode) == "worker" ? LoadIsolation::WorkerProcess
+                                                                     : LoadIsolation::InProcess;
     }();
     return isolation;
 }

@@ -91,7 +91,8 @@ void set_limit(int resource, std::uintmax_t value) {
 }
 
 // Runs in the forked child; never returns. Only this thread exists here.
-[[noreturn]] void child_main(int fd, const std::filesystem::path& path, const LoadOptions& options) {
+[[noreturn]] void child_main(int fd, const std::filesystem::path& path,
+                             const LoadOptions& options) {
     // A crash must end the child with its signal, whatever handlers the caller (or a fuzzer, or
     // a sanitizer runtime) installed; the parent reports it.
     for (const int sig : {SIGSEGV, SIGBUS, SIGILL, SIGFPE, SIGABRT, SIGPIPE, SIGXCPU, SIGTERM,
@@ -176,8 +177,8 @@ class Child {
                 pid_ = -1;
                 return 0;
             }
-            if (r < 0 && errno != EINTR) throw std::system_error(errno, std::generic_category(),
-                                                                 "waitpid");
+            if (r < 0 && errno != EINTR)
+                throw std::system_error(errno, std::generic_category(), "waitpid");
             if (std::chrono::steady_clock::now() >= deadline) return std::nullopt;
             std::this_thread::sleep_for(pause);
             pause = std::min(pause * 2, std::chrono::microseconds(20'000));
@@ -232,13 +233,12 @@ Scene load_in_worker(const std::filesystem::path& path, const LoadOptions& optio
     Child child(pid);
 
     const double timeout = std::clamp(options.worker_timeout_seconds, 0.0, 1e7);
-    const auto deadline =
-        std::chrono::steady_clock::now() +
-        std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-            std::chrono::duration<double>(timeout));
+    const auto deadline = std::chrono::steady_clock::now() +
+                          std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                              std::chrono::duration<double>(timeout));
     const auto timed_out = [&] {
-        return InputError(file, "the importer took longer than " + seconds_text(timeout) +
-                                    " s and was stopped");
+        return InputError(
+            file, "the importer took longer than " + seconds_text(timeout) + " s and was stopped");
     };
     const std::uint64_t max_payload = options.worker_memory_bytes != 0
                                           ? std::uint64_t(options.worker_memory_bytes)
@@ -274,8 +274,9 @@ Scene load_in_worker(const std::filesystem::path& path, const LoadOptions& optio
             message.reserve(std::size_t(expected));
         }
         if (expected != 0 && message.size() > expected)
-            throw InputError(file, "the importer process sent an invalid result: more bytes "
-                                   "than its header announced");
+            throw InputError(file,
+                             "the importer process sent an invalid result: more bytes "
+                             "than its header announced");
     }
 
     const std::optional<int> status = child.wait_until(deadline);
@@ -285,8 +286,8 @@ Scene load_in_worker(const std::filesystem::path& path, const LoadOptions& optio
         if (sig == SIGXCPU)
             throw InputError(file, "the importer exceeded its CPU time limit and was stopped");
         if (sig == SIGKILL)
-            throw InputError(file, "the importer was killed (" + signal_name(sig) +
-                                       "; out of memory?)");
+            throw InputError(file,
+                             "the importer was killed (" + signal_name(sig) + "; out of memory?)");
         throw InputError(file, "the importer crashed (" + signal_name(sig) + ")");
     }
     if (WIFEXITED(*status) && WEXITSTATUS(*status) == kChildOutOfMemory)
@@ -294,8 +295,8 @@ Scene load_in_worker(const std::filesystem::path& path, const LoadOptions& optio
                                    std::to_string(options.worker_memory_bytes >> 20) +
                                    " MiB beyond the caller's address space)");
     if (WIFEXITED(*status) && WEXITSTATUS(*status) != 0)
-        throw InputError(file, "the importer failed (exit status " +
-                                   std::to_string(WEXITSTATUS(*status)) + ")");
+        throw InputError(
+            file, "the importer failed (exit status " + std::to_string(WEXITSTATUS(*status)) + ")");
     if (message.empty()) throw InputError(file, "the importer exited without a result");
     return decode_worker_message(message, file, options);
 }

@@ -167,8 +167,8 @@ Scene decode_scene(Reader& in, const LoadOptions& options) {
               "material " + std::to_string(i) + " has non-finite values");
         const auto texture = in.get<std::uint32_t>();
         if (texture != kNoTexture) {
-            check(texture < textures.size(), "material " + std::to_string(i) +
-                                                 " names a missing texture");
+            check(texture < textures.size(),
+                  "material " + std::to_string(i) + " names a missing texture");
             m.base_color_texture = textures[texture];
         }
         scene.materials.push_back(std::move(m));
@@ -218,7 +218,7 @@ Scene decode_scene(Reader& in, const LoadOptions& options) {
             for (int r = 0; r < 4; ++r)
                 check(std::isfinite(instance.transform[c][r]), label + ": non-finite transform");
         const auto shading = in.get<std::uint8_t>();
-        check(shading == kNoShading || shading <= std::uint8_t(ShadingMode::Phong),
+        check(shading == kNoShading || shading <= std::uint8_t(ShadingMode::Unlit),
               label + ": unknown shading mode " + std::to_string(shading));
         if (shading != kNoShading) instance.shading = static_cast<ShadingMode>(shading);
         instance.name = in.get_string("an instance name");
@@ -338,7 +338,8 @@ Scene decode_worker_message(std::span<const std::uint8_t> message, const std::st
             case WorkerMessageKind::InternalError: {
                 const std::string what = in.get_string("the error message");
                 check(in.remaining() == 0, "bytes after the error message");
-                throw std::runtime_error("in the importer process: " + InputError("", what).cause());
+                throw std::runtime_error("in the importer process: " +
+                                         InputError("", what).cause());
             }
             case WorkerMessageKind::OutOfMemory:
                 check(in.remaining() == 0, "bytes after the out-of-memory message");

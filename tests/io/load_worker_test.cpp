@@ -237,9 +237,8 @@ TEST(LoadWorker, SmallFixturesLoadTheSame) {
     bin.append(reinterpret_cast<const char*>(data + 9), 6 * sizeof(float));  // uvs
     bin.append(reinterpret_cast<const char*>(indices), sizeof indices);
     test::write_bytes(dir / "t.bin", bin);
-    test::write_bytes(
-        dir / "scene.gltf",
-        R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0,1]}],
+    test::write_bytes(dir / "scene.gltf",
+                      R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0,1]}],
 "nodes":[{"mesh":0,"name":"a"},{"mesh":0,"name":"b","translation":[2,0,0]}],
 "meshes":[{"name":"tri","primitives":[{"attributes":{"POSITION":0,"TEXCOORD_0":1},"indices":2,"material":0}]}],
 "materials":[{"name":"tex","pbrMetallicRoughness":{"baseColorTexture":{"index":0},"baseColorFactor":[1,0.5,0.25,1]}}],
@@ -360,9 +359,8 @@ TEST(WorkerMessage, RefusesMalformedMessages) {
     expect_invalid(huge_count_message(), "positions: 1152921504606846976 elements do not fit");
     LoadOptions limit;
     limit.max_triangles = 1;
-    test::expect_input_error(
-        [&] { io::decode_worker_message(bytes_of(good), "m.ply", limit); }, "m.ply",
-        "more triangles than the limit (1)");
+    test::expect_input_error([&] { io::decode_worker_message(bytes_of(good), "m.ply", limit); },
+                             "m.ply", "more triangles than the limit (1)");
 }
 
 TEST(WorkerMessage, ErrorMessages) {
@@ -376,13 +374,13 @@ TEST(WorkerMessage, ErrorMessages) {
     test::expect_input_error(
         [&] {
             io::decode_worker_message(
-                bytes_of(io::encode_error_message(io::WorkerMessageKind::OutOfMemory, "")),
-                "m.ply", {});
+                bytes_of(io::encode_error_message(io::WorkerMessageKind::OutOfMemory, "")), "m.ply",
+                {});
         },
         "m.ply", "the importer ran out of memory");
-    EXPECT_THROW(io::decode_worker_message(bytes_of(io::encode_error_message(
-                                               io::WorkerMessageKind::InternalError, "x")),
-                                           "m.ply", {}),
+    EXPECT_THROW(io::decode_worker_message(
+                     bytes_of(io::encode_error_message(io::WorkerMessageKind::InternalError, "x")),
+                     "m.ply", {}),
                  std::runtime_error);
 }
 

@@ -11,17 +11,28 @@
 
 namespace zraster::test {
 
+// A point uniform in [lo, hi]^3, its coordinates drawn in the order x, y, z. Not
+// glm::dvec3(rng.uniform(..), rng.uniform(..), rng.uniform(..)): the order in which a call's
+// arguments are evaluated is unspecified (GCC evaluates them right to left, clang left to right),
+// so that gave each compiler's build a different scene under the same seed.
+inline glm::dvec3 uniform_point(SplitMix64& rng, double lo, double hi) {
+    const double x = rng.uniform(lo, hi);
+    const double y = rng.uniform(lo, hi);
+    const double z = rng.uniform(lo, hi);
+    return {x, y, z};
+}
+
 // n triangles with centers uniform in [-1, 1]^3 and corners up to `size` from the center on each
-// axis: at size 0.2 (ten times the benchmark soup's) many of them cross each other.
+// axis: at size 0.2 (ten times the benchmark soup's) many of them cross each other. The same
+// scene in every build (uniform_point).
 inline Mesh make_interpenetrating_soup(int n, double size, std::uint64_t seed) {
     SplitMix64 rng(seed);
     Mesh mesh;
     mesh.name = "test-soup";
     for (int i = 0; i < n; ++i) {
-        const glm::dvec3 c(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+        const glm::dvec3 c = uniform_point(rng, -1, 1);
         for (int k = 0; k < 3; ++k) {
-            const glm::dvec3 o(rng.uniform(-size, size), rng.uniform(-size, size),
-                               rng.uniform(-size, size));
+            const glm::dvec3 o = uniform_point(rng, -size, size);
             mesh.positions.push_back(glm::vec3(c + o));
             mesh.indices.push_back(static_cast<std::uint32_t>(mesh.indices.size()));
         }
