@@ -161,24 +161,29 @@ class Child {
             }
         }
     }
+    // The status if the child has ended, else nullopt.
+    std::optional<int> try_wait() {
+        if (pid_ < 0) return status_;
+        for (;;) {
+            int status = 0;
+            const pid_t r = ::waitpid(pid_, &status, WNOHANG);
+            if (r == pid_ || (r < 0 && errno == ECHILD)) {
+                status_ = r == pid_ ? status : 0;
+                pid_ = -1;
+                return status_;
+            }
+            if (r < 0 && errno == EINTR) continue;
+            if (r < 0) throw std::system_error(errno, std::generic_category(), "waitpid");
+            return std::nullopt;
+        }
+    }
     // Waits until the deadline; the status, or nullopt on timeout. A caller that set SIGCHLD to
     // SIG_IGN has its children reaped by the kernel: ECHILD, taken as a normal exit (the message
     // decides).
     std::optional<int> wait_until(std::chrono::steady_clock::time_point deadline) {
         auto pause = std::chrono::microseconds(200);
         for (;;) {
-            int status = 0;
-            const pid_t r = ::waitpid(pid_, &status, WNOHANG);
-            if (r == pid_) {
-                pid_ = -1;
-                return status;
-            }
-            if (r < 0 && errno == ECHILD) {
-                pid_ = -1;
-                return 0;
-            }
-            if (r < 0 && errno != EINTR)
-                throw std::system_error(errno, std::generic_category(), "waitpid");
+            if (const std::optional<int> status = try_wait()) return status;
             if (std::chrono::steady_clock::now() >= deadline) return std::nullopt;
             std::this_thread::sleep_for(pause);
             pause = std::min(pause * 2, std::chrono::microseconds(20'000));
@@ -187,6 +192,7 @@ class Child {
 
   private:
     pid_t pid_;
+    int status_ = 0;
 };
 
 class Fd {
@@ -246,23 +252,8 @@ Scene load_in_worker(const std::filesystem::path& path, const LoadOptions& optio
     std::vector<std::uint8_t> message;
     std::uint64_t expected = 0;  // total bytes, once the header is in
     std::vector<std::uint8_t> buffer(1 << 16);
-    for (;;) {
-        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-            deadline - std::chrono::steady_clock::now());
-        if (left.count() <= 0) throw timed_out();
-        pollfd p{read_end.get(), POLLIN, 0};
-        const int ready = ::poll(&p, 1, int(std::min<std::int64_t>(left.count() + 1, INT_MAX)));
-        if (ready < 0) {
-            if (errno == EINTR) continue;
-            throw std::system_error(errno, std::generic_category(), "poll");
-        }
-        if (ready == 0) continue;  // the deadline check above decides
-        const ssize_t n = ::read(read_end.get(), buffer.data(), buffer.size());
-        if (n < 0) {
-            if (errno == EINTR || errno == EAGAIN) continue;
-            throw std::system_error(errno, std::generic_category(), "read from the importer");
-        }
-        if (n == 0) break;
+    // Appends what read() gave; false at end of file.
+    const auto take = [&](ssize_t n) {
         message.insert(message.end(), buffer.begin(), buffer.begin() + n);
         if (expected == 0 && message.size() >= kWorkerHeaderBytes) {
             const std::uint64_t payload = worker_payload_bytes(message, file);
@@ -277,9 +268,44 @@ Scene load_in_worker(const std::filesystem::path& path, const LoadOptions& optio
             throw InputError(file,
                              "the importer process sent an invalid result: more bytes "
                              "than its header announced");
+    };
+    // Reading stops at end of file, at a complete message, or when the child has ended (a child
+    // another thread of the caller forked at the same moment may hold a copy of the write end, so
+    // end of file alone could come late): what is left in the pipe is then drained.
+    std::optional<int> status;
+    for (;;) {
+        if (expected != 0 && message.size() == expected) break;
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+            deadline - std::chrono::steady_clock::now());
+        if (left.count() <= 0) throw timed_out();
+        pollfd p{read_end.get(), POLLIN, 0};
+        const int ready = ::poll(&p, 1, int(std::min<std::int64_t>(left.count() + 1, 50)));
+        if (ready < 0) {
+            if (errno == EINTR) continue;
+            throw std::system_error(errno, std::generic_category(), "poll");
+        }
+        if (ready == 0) {
+            status = child.try_wait();
+            if (!status) continue;
+            (void)::fcntl(read_end.get(), F_SETFL, O_NONBLOCK);
+            for (;;) {
+                const ssize_t n = ::read(read_end.get(), buffer.data(), buffer.size());
+                if (n < 0 && errno == EINTR) continue;
+                if (n <= 0) break;
+                take(n);
+            }
+            break;
+        }
+        const ssize_t n = ::read(read_end.get(), buffer.data(), buffer.size());
+        if (n < 0) {
+            if (errno == EINTR || errno == EAGAIN) continue;
+            throw std::system_error(errno, std::generic_category(), "read from the importer");
+        }
+        if (n == 0) break;
+        take(n);
     }
 
-    const std::optional<int> status = child.wait_until(deadline);
+    if (!status) status = child.wait_until(deadline);
     if (!status) throw timed_out();
     if (WIFSIGNALED(*status)) {
         const int sig = WTERMSIG(*status);

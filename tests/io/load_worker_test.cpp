@@ -17,6 +17,8 @@
 #include <thread>
 #include <vector>
 
+#include <unistd.h>
+
 #if defined(__has_feature)
 #if __has_feature(address_sanitizer)
 #define ZRASTER_TEST_ASAN 1
@@ -137,6 +139,25 @@ TEST(LoadWorker, NonZeroExitIsAnInputError) {
     const Hook hook([] { std::_Exit(7); });
     test::expect_input_error([&] { load_scene(path, worker_options()); }, path,
                              "the importer failed (exit status 7)");
+}
+
+// A process the child forks (as another thread of a service could fork at the same moment) keeps
+// a copy of the pipe's write end: end of file comes late, yet the crash is seen at once.
+TEST(LoadWorker, CrashIsSeenWhileAnotherProcessHoldsThePipe) {
+    const auto path = ply_fixture("holder");
+    const Hook hook([] {
+        if (::fork() == 0) {
+            std::this_thread::sleep_for(std::chrono::seconds(10));
+            std::_Exit(0);
+        }
+        std::raise(SIGSEGV);
+    });
+    LoadOptions options = worker_options();
+    options.worker_timeout_seconds = 60;
+    const auto start = std::chrono::steady_clock::now();
+    test::expect_input_error([&] { load_scene(path, options); }, path,
+                             "the importer crashed (signal 11, SIGSEGV)");
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(8));
 }
 
 TEST(LoadWorker, HangIsStoppedAtTheTimeout) {
