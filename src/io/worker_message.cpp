@@ -187,8 +187,8 @@ Scene decode_scene(Reader& in, const LoadOptions& options) {
         mesh.indices = in.get_array<std::uint32_t>("indices");
         const std::size_t n = mesh.positions.size();
         check(n <= 0xffffffffu, label + " has more than 2^32 - 1 vertices");
-        check(mesh.normals.empty() || mesh.normals.size() == n,
-              label + ": normals not one per position");
+        // load_scene computes normals when a file has none: always one per position.
+        check(mesh.normals.size() == n, label + ": normals not one per position");
         check(mesh.uvs.empty() || mesh.uvs.size() == n, label + ": uvs not one per position");
         check(!mesh.indices.empty() && mesh.indices.size() % 3 == 0,
               label + ": index count not a positive multiple of 3");

@@ -1,8 +1,9 @@
 // The message a loader worker process sends back to its parent (src/io/load_worker.cpp): a
 // converted Scene or the reason there is none, in a small versioned binary format. The parent
 // trusts nothing in it: decode_worker_message checks every count against the bytes present and
-// the load limits before allocating, and every promise of load.hpp (indices in range, one normal
-// and uv per position, finite values, materials and meshes that exist) before returning.
+// the load limits before allocating, and every promise of load.hpp (indices in range, one unit
+// normal per position, no uvs or one per position, finite values, materials and meshes that
+// exist) before returning.
 //
 // Layout, all integers and floats little-endian (the host's; parent and child are the same
 // binary), no padding:

@@ -376,6 +376,13 @@ TEST(WorkerMessage, RefusesMalformedMessages) {
     std::string index = good;
     index[last_index] = 9;
     expect_invalid(index, "index 9 out of range");
+    // Normals are one per position, always (fuzz_worker_message found them accepted empty).
+    Mesh bare;
+    bare.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    bare.indices = {0, 1, 2};
+    update_bounds(bare);
+    expect_invalid(io::encode_scene_message(scene_from_meshes({bare})),
+                   "mesh 0: normals not one per position");
     // A count of 2^60 positions is refused before anything is allocated.
     expect_invalid(huge_count_message(), "positions: 1152921504606846976 elements do not fit");
     LoadOptions limit;
