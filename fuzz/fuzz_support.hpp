@@ -132,6 +132,20 @@ inline void check_input_error(const InputError& e, const std::string& file) {
     if (e.cause().empty()) fail("error without a cause");
 }
 
+// How the loader targets run Assimp: in this process (the default: the sanitizers see Assimp's
+// memory errors, as far as they can in an uninstrumented library) or, with
+// ZRASTER_FUZZ_LOAD_ISOLATION=worker, in the worker process the command uses (the product
+// configuration: a crash in Assimp is a refused file; our pre-checks, the worker protocol, the
+// parent's validation and the rendering stay in this process, instrumented).
+inline LoadIsolation fuzz_load_isolation() {
+    static const LoadIsolation isolation = [] {
+        const char* mode = std::getenv("ZRASTER_FUZZ_LOAD_ISOLATION");
+        return mode != nullptr && std::string_view(mode) == "worker" ? LoadIsolation::WorkerProcess
+                                                                     : LoadIsolation::InProcess;
+    }();
+    return isolation;
+}
+
 // Loads `bytes` as a file named input<extension> in the work directory, checks the result and
 // draws it small (the loaded geometry through the whole pipeline).
 inline void fuzz_load(const std::uint8_t* data, std::size_t size, const std::string& extension) {
@@ -139,6 +153,9 @@ inline void fuzz_load(const std::uint8_t* data, std::size_t size, const std::str
     write_file(path, std::string_view(reinterpret_cast<const char*>(data), size));
     LoadOptions options;
     options.max_triangles = 200'000;  // keeps each run short; the limit check itself is tested
+    options.isolation = fuzz_load_isolation();
+    options.worker_timeout_seconds = 15;  // under libFuzzer's -timeout=20
+    options.worker_memory_bytes = std::size_t{1} << 30;
     Scene scene;
     try {
         scene = load_scene(path, options);

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The test suite under the sanitizers (clang):
 #   asan: every test with AddressSanitizer + UndefinedBehaviorSanitizer (-fno-sanitize-recover=all,
-#         LeakSanitizer on) in build-asan/;
-#   tsan: the render suite (the multithreaded paths; Determinism.* included) with ThreadSanitizer
-#         in build-tsan/.
+#         LeakSanitizer on) in build-asan/, the build the fuzzers share (configure-asan.sh);
+#   tsan: the multithreaded paths with ThreadSanitizer in build-tsan/: the render suite
+#         (Determinism.* included) and the parallel OBJ reader (ObjParser.*).
 # Any report fails the run. Zero reports is the standard (RELIABILITY.md).
 #
 #   bash scripts/sanitize.sh [asan|tsan|all]     (default all)
@@ -27,15 +27,21 @@ build() {
     ninja -C "$dir" -j "$jobs" "$@" >"$dir/build.log" 2>&1 || {
         tail -50 "$dir/build.log"
         echo "sanitize: build failed in $dir" >&2
-        return 1
+        exit 1
     }
 }
 
 status=0
 
 if [ "$which" = asan ] || [ "$which" = all ]; then
+    # The same build as the fuzzers' (scripts/configure-asan.sh): every library compiled once.
     dir=${ZRASTER_ASAN_BUILD_DIR:-$root/build-asan}
-    build "$dir" "-fsanitize=address,undefined -fno-sanitize-recover=all"
+    bash "$root/scripts/configure-asan.sh" "$dir"
+    ninja -C "$dir" -j "$jobs" >"$dir/build.log" 2>&1 || {
+        tail -50 "$dir/build.log"
+        echo "sanitize: build failed in $dir" >&2
+        exit 1
+    }
     mkdir -p "$dir/tmp"
     # Tests write their fixtures under $TMPDIR: one per build, so that concurrent suites
     # (another build's ctest) never share a directory.
@@ -71,10 +77,10 @@ if [ "$which" = asan ] || [ "$which" = all ]; then
 fi
 
 if [ "$which" = tsan ] || [ "$which" = all ]; then
-    # The render suite holds the multithreaded paths (TBB tiles and chunks; Determinism.* renders
-    # the same frames with 1..4 threads).
+    # The multithreaded paths: the render suite (TBB tiles and chunks; Determinism.* renders the
+    # same frames with 1..5 threads) and the parallel OBJ reader (ObjParser.* of the io suite).
     dir=${ZRASTER_TSAN_BUILD_DIR:-$root/build-tsan}
-    build "$dir" "-fsanitize=thread" zraster_render_tests
+    build "$dir" "-fsanitize=thread" zraster_render_tests zraster_io_tests
     mkdir -p "$dir/tmp"
     # TBB hands tasks between threads inside libtbb.so; Debian's is not instrumented, so
     # ThreadSanitizer would see none of that synchronization and report every task's data as a
@@ -85,11 +91,19 @@ if [ "$which" = tsan ] || [ "$which" = all ]; then
         bash "$root/scripts/tsan-tbb.sh" "$tbb"
     fi
     tsan_status=0
-    (cd "$dir" &&
-        TMPDIR=$dir/tmp LD_LIBRARY_PATH=$tbb/lib \
-            TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$root/scripts/tsan.supp" \
-            ./zraster_render_tests --gtest_filter="${ZRASTER_TSAN_FILTER:-*}" >"$dir/tests.log" 2>&1) ||
+    : >"$dir/tests.log"
+    for run in "zraster_render_tests:${ZRASTER_TSAN_FILTER:-*}" "zraster_io_tests:ObjParser.*"; do
+        (cd "$dir" &&
+            TMPDIR=$dir/tmp LD_LIBRARY_PATH=$tbb/lib \
+                TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$root/scripts/tsan.supp" \
+                "./${run%%:*}" --gtest_filter="${run#*:}" >>"$dir/tests.log" 2>&1) ||
+            tsan_status=1
+    done
+    # The tests must have run against the instrumented oneTBB, not the system's.
+    if ! LD_LIBRARY_PATH=$tbb/lib ldd "$dir/zraster_render_tests" | grep -q "$tbb/lib/libtbb"; then
+        echo "tsan: the tests do not load $tbb/lib/libtbb.so.12"
         tsan_status=1
+    fi
     grep -E "^\[  (PASSED|FAILED)  \]" "$dir/tests.log" | sed 's/^/tsan: /' || true
     if grep -q "WARNING: ThreadSanitizer" "$dir/tests.log"; then
         echo "tsan: reports in $dir/tests.log:"

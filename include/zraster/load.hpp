@@ -9,10 +9,39 @@
 
 namespace zraster {
 
+// Where the Assimp importer runs. zraster's own OBJ reader always runs in the calling process
+// (it is fuzzed and sanitizer-clean); Assimp (every other format, and OBJ files the built-in
+// reader leaves to it) is not: Debian's libassimp 5.2.5 corrupts memory on some malformed PLY and
+// glTF files (RELIABILITY.md, findings 16 and 17).
+enum class LoadIsolation {
+    // Assimp runs in the calling process: fastest, but a crash in Assimp ends the process.
+    InProcess,
+    // Assimp runs in a child process (fork) with a memory limit (RLIMIT_AS), a CPU time limit
+    // (RLIMIT_CPU) and a wall-clock timeout; it sends the converted scene back over a pipe in a
+    // versioned binary format that this process validates fully (counts against the limits,
+    // indices in range, finite values) before using it. A crash, a signal, a timeout or running
+    // out of memory in the child becomes an InputError naming the file ("the importer crashed
+    // (signal 11, SIGSEGV)"). The pre-checks of the file (size, declared counts, glTF byte
+    // ranges) run in the calling process first. The command-line tool's default.
+    //
+    // fork() copies only the calling thread: the child runs Assimp and the conversion, which use
+    // no threads and no locks another thread of the caller could hold besides malloc's (glibc
+    // makes those fork-safe). Costs one fork per file (about a millisecond plus the copy of the
+    // scene through the pipe).
+    WorkerProcess,
+};
+
 struct LoadOptions {
     // Larger files are refused before their geometry is allocated.
     std::size_t max_triangles = 50'000'000;
     std::size_t max_file_bytes = std::size_t{4} << 30;
+
+    LoadIsolation isolation = LoadIsolation::InProcess;
+    // WorkerProcess only: wall-clock limit of the child (its CPU time limit is this, rounded up,
+    // plus one second), and the address space it may add to what it inherits (0: no limit). The
+    // scene it sends back may be at most worker_memory_bytes long.
+    double worker_timeout_seconds = 300.0;
+    std::size_t worker_memory_bytes = std::size_t{8} << 30;
 };
 
 // Loads every mesh with its material (base color, specular, shininess, opacity, base-color
@@ -20,7 +49,9 @@ struct LoadOptions {
 // angle-weighted normals when the file has none, and bounds.
 // Missing material libraries or textures become Scene::warnings (default material used).
 // Throws InputError (one line naming the file and the cause) for a missing or unreadable file,
-// an unknown format, malformed or truncated content, no triangles, or NaN/Inf coordinates.
+// an unknown format, malformed or truncated content, no triangles, or NaN/Inf coordinates, and
+// with LoadIsolation::WorkerProcess when the importer process crashes, times out or runs out of
+// memory.
 Scene load_scene(const std::filesystem::path& path, const LoadOptions& options = {});
 
 // A human-readable summary (for `zraster info`), one item per line, each line ending in '\n':

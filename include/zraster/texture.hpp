@@ -26,6 +26,9 @@ class Texture {
     int level_width(int level) const;
     int level_height(int level) const;
 
+    // The RGBA8 bytes of one level (level_width * level_height * 4, rows top to bottom).
+    std::span<const std::uint8_t> level_rgba(int level) const;
+
     // One texel of one level (x, y wrapped), as floats in [0, 1].
     glm::vec4 texel(int level, int x, int y) const;
 

@@ -8,6 +8,7 @@
 #include "io/assimp_nodes.hpp"
 #include "io/declared_counts_check.hpp"
 #include "io/input_file_check.hpp"
+#include "io/load_worker.hpp"
 #include "io/obj_material_libraries.hpp"
 #include "io/obj_parser.hpp"
 #include "io/text_util.hpp"
@@ -144,9 +145,21 @@ Scene load_scene(const std::filesystem::path& path, const LoadOptions& options) 
 }
 
 Scene io::load_scene_with_assimp(const std::filesystem::path& path, const LoadOptions& options) {
-    const std::string file = path.string();
+    if (options.isolation == LoadIsolation::WorkerProcess) return io::load_in_worker(path, options);
+    return io::import_with_assimp(path, options, false);
+}
+
+std::uintmax_t io::precheck_assimp_input(const std::filesystem::path& path,
+                                         const LoadOptions& options) {
     const std::uintmax_t size = io::check_input_file(path, options.max_file_bytes);
     io::check_declared_counts(path, size);
+    return size;
+}
+
+Scene io::import_with_assimp(const std::filesystem::path& path, const LoadOptions& options,
+                             bool prechecked) {
+    const std::string file = path.string();
+    if (!prechecked) io::precheck_assimp_input(path, options);
 
     Assimp::Importer importer;
     // Points and lines are not drawn: drop them while sorting primitives by type.

@@ -35,7 +35,17 @@ std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
                                           const LoadOptions& options);
 
 // load_scene through Assimp for any format (defined in load_scene.cpp): what read_obj falls back
-// to, and what the tests compare it with.
+// to, and what the tests compare it with. In this process or in a worker process, as
+// options.isolation says.
 Scene load_scene_with_assimp(const std::filesystem::path& path, const LoadOptions& options);
+
+// The checks made before Assimp sees a file (input_file_check, declared_counts_check with the
+// glTF byte ranges). Returns the file size. Throws InputError.
+std::uintmax_t precheck_assimp_input(const std::filesystem::path& path, const LoadOptions& options);
+
+// The import and conversion proper, always in this process; the pre-checks too unless
+// `prechecked` (the worker's parent made them).
+Scene import_with_assimp(const std::filesystem::path& path, const LoadOptions& options,
+                         bool prechecked);
 
 }  // namespace zraster::io

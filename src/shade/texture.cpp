@@ -101,6 +101,10 @@ int Texture::level_height(int level) const {
     return levels_.at(std::size_t(level)).height;
 }
 
+std::span<const std::uint8_t> Texture::level_rgba(int level) const {
+    return levels_.at(std::size_t(level)).rgba;
+}
+
 glm::vec4 Texture::texel(int level, int x, int y) const {
     const Level& l = levels_[std::size_t(std::clamp(level, 0, levels() - 1))];
     x %= l.width;

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "support/test_support.hpp"
@@ -47,6 +48,28 @@ TEST(Cli, MissingFileIsExitTwoWithTheFileNamed) {
     EXPECT_NE(r.output.find("/nonexistent/model.obj"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("not found"), std::string::npos) << r.output;
     EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+}
+
+// Assimp runs in a worker process by default (RELIABILITY.md); --load-in-process skips it. Both
+// give the same scene, and the flag is accepted after the subcommand and its arguments.
+TEST(Cli, WorkerAndInProcessLoadingAgree) {
+    const auto dir = temp_dir("cli-worker");
+    std::ofstream(dir / "quad.ply")
+        << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+           "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+           "end_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n";
+    const CommandResult worker = run("info quad.ply", dir);
+    const CommandResult in_process = run("info quad.ply --load-in-process", dir);
+    ASSERT_EQ(worker.exit_code, 0) << worker.output;
+    ASSERT_EQ(in_process.exit_code, 0) << in_process.output;
+    EXPECT_EQ(worker.output, in_process.output);
+    ASSERT_EQ(run("render quad.ply -o w.png --size 32x24", dir).exit_code, 0);
+    ASSERT_EQ(run("render quad.ply -o p.png --size 32x24 --load-in-process", dir).exit_code, 0);
+    std::ifstream w(dir / "w.png", std::ios::binary), p(dir / "p.png", std::ios::binary);
+    const std::string wb{std::istreambuf_iterator<char>(w), {}};
+    const std::string pb{std::istreambuf_iterator<char>(p), {}};
+    EXPECT_FALSE(wb.empty());
+    EXPECT_EQ(wb, pb);
 }
 
 TEST(Cli, MalformedFileIsExitTwo) {
@@ -90,9 +113,10 @@ TEST(Cli, BadOptionsAreExitTwoAndWriteNothing) {
 
 TEST(Cli, DepthNormalAndIdOutputs) {
     const auto dir = temp_dir("cli-outputs");
-    const CommandResult r = run("render builtin:sphere --size 64x48 -o c.png --depth-out d.npy "
-                      "--normal-out n.png --id-out i.npy",
-                      dir);
+    const CommandResult r =
+        run("render builtin:sphere --size 64x48 -o c.png --depth-out d.npy "
+            "--normal-out n.png --id-out i.npy",
+            dir);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     // float32 (48, 64): header then 64*48*4 bytes.
     std::ifstream npy(dir / "d.npy", std::ios::binary);

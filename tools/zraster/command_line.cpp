@@ -21,7 +21,8 @@ std::vector<double> parse_numbers(const std::string& option, const std::string& 
         const auto [end, ec] = std::from_chars(piece.data(), piece.data() + piece.size(), v);
         if (piece.empty() || ec != std::errc() || end != piece.data() + piece.size())
             throw InputError(option, "expected " + std::string(shape) + ", got '" + text + "'");
-        if (!std::isfinite(v)) throw InputError(option, "values must be finite, got '" + text + "'");
+        if (!std::isfinite(v))
+            throw InputError(option, "values must be finite, got '" + text + "'");
         values.push_back(v);
         start = comma + 1;
     }
@@ -54,14 +55,24 @@ glm::ivec2 parse_size(const std::string& option, const std::string& text, int li
     }
     if (!ok) throw InputError(option, "expected WIDTHxHEIGHT, got '" + text + "'");
     if (w < 1 || h < 1 || w > limit || h > limit)
-        throw InputError(option, "size " + text + " out of range (1.." + std::to_string(limit) +
-                                     " per side)");
+        throw InputError(
+            option, "size " + text + " out of range (1.." + std::to_string(limit) + " per side)");
     return {w, h};
+}
+
+namespace {
+bool g_load_in_process = false;
+}  // namespace
+
+void set_load_in_process(bool in_process) {
+    g_load_in_process = in_process;
 }
 
 Scene load_scene_or_procedural(const std::string& spec) {
     if (is_procedural_spec(spec)) return make_procedural_scene(spec);
-    return load_scene(spec);
+    LoadOptions options;
+    options.isolation = g_load_in_process ? LoadIsolation::InProcess : LoadIsolation::WorkerProcess;
+    return load_scene(spec, options);
 }
 
 }  // namespace zraster::cli

@@ -20,6 +20,9 @@ glm::dvec4 parse_vec4(const std::string& option, const std::string& text);
 glm::ivec2 parse_size(const std::string& option, const std::string& text, int limit);
 
 // A mesh file path, or a procedural spec (builtin:NAME, sphere:N, city:N[:SEED], soup:N[:SEED]).
+// Assimp runs in a worker process (LoadIsolation::WorkerProcess) unless set_load_in_process(true)
+// (the --load-in-process flag; run_zraster sets it for every run).
 Scene load_scene_or_procedural(const std::string& spec);
+void set_load_in_process(bool in_process);
 
 }  // namespace zraster::cli

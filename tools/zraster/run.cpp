@@ -29,6 +29,14 @@ int run_zraster(std::vector<std::string> args) {
     add_bench_command(app, bench_args);
     SvgArguments svg_args;
     add_svg_command(app, svg_args);
+    // Loading: Assimp (every format but the OBJ files zraster reads itself) runs in a worker
+    // process, so that a crash in it is a refused file (RELIABILITY.md). Accepted after the
+    // subcommand too.
+    bool load_in_process = false;
+    app.add_flag("--load-in-process", load_in_process,
+                 "Run the Assimp importer in this process instead of a worker process (faster "
+                 "for many small files; a crash in Assimp then ends zraster)");
+    for (CLI::App* sub : app.get_subcommands({})) sub->fallthrough();
 
     // `zraster -o x.png --size ...` means `zraster render -o x.png --size ...`.
     if (!args.empty() && args[0].starts_with("-") && args[0] != "-h" && args[0] != "--help")
@@ -45,6 +53,7 @@ int run_zraster(std::vector<std::string> args) {
         return kExitBadInput;
     }
 
+    set_load_in_process(load_in_process);
     try {
         if (app.got_subcommand("info")) return run_info(info_args);
         if (app.got_subcommand("bench")) return run_bench(bench_args);

@@ -1,0 +1,21 @@
+// Assimp in a child process (LoadIsolation::WorkerProcess, include/zraster/load.hpp): a crash,
+// hang or runaway allocation inside the importer ends the child, not the caller.
+#pragma once
+#include <zraster/load.hpp>
+#include <zraster/scene.hpp>
+
+#include <filesystem>
+
+namespace zraster::io {
+
+// Runs import_with_assimp(path, options) in a forked child under the limits of `options` and
+// returns the validated scene it sends back. Throws InputError naming the file for a bad file
+// and for a child that crashed, was killed, timed out or ran out of memory.
+Scene load_in_worker(const std::filesystem::path& path, const LoadOptions& options);
+
+// Tests only: a function the child calls before importing (to make it crash, hang or allocate
+// without bound); null (the default) for none. Not thread-safe; set it before loading.
+using WorkerTestHook = void (*)();
+void set_worker_test_hook(WorkerTestHook hook);
+
+}  // namespace zraster::io
