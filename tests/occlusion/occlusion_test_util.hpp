@@ -123,14 +123,19 @@ inline OcclusionScene city_scene(std::uint64_t seed, int objects) {
                                                     static_cast<float>(rng.uniform(-0.2, 0.2)))});
         }
     const double street = 6.0 + 12.0 * static_cast<int>(rng.uniform(-3.0, 3.0));
-    s.camera.eye = glm::dvec3(street + rng.uniform(-1.0, 1.0), rng.uniform(1.5, 4.0), 90.0);
+    // One draw per statement: the order of a call's arguments is unspecified, and GCC and clang
+    // differ, which would give each compiler a different scene.
+    const double eye_x = street + rng.uniform(-1.0, 1.0);
+    const double eye_y = rng.uniform(1.5, 4.0);
+    s.camera.eye = glm::dvec3(eye_x, eye_y, 90.0);
     s.camera.target = glm::dvec3(street + rng.uniform(-15.0, 15.0), 2.0, -20.0);
     s.camera.near = 0.5;
     s.camera.far = 400.0;
     for (int k = 0; k < objects; ++k) {
         const float e = static_cast<float>(rng.uniform(0.3, 1.5));
-        const glm::vec3 at(static_cast<float>(rng.uniform(-100.0, 100.0)), e,
-                           static_cast<float>(rng.uniform(-100.0, 80.0)));
+        const float at_x = static_cast<float>(rng.uniform(-100.0, 100.0));
+        const float at_z = static_cast<float>(rng.uniform(-100.0, 80.0));
+        const glm::vec3 at(at_x, e, at_z);
         s.boxes.push_back({glm::vec3(e), place(at, static_cast<float>(rng.uniform(0.0, 3.0)))});
     }
     return s;
@@ -153,17 +158,20 @@ inline OcclusionScene random_occluder_scene(std::uint64_t seed, int objects) {
     };
     for (int k = 0; k < 12; ++k) {
         const float z = static_cast<float>(rng.uniform(-40.0, -5.0));
-        const glm::vec3 at(static_cast<float>(rng.uniform(0.5, -0.5) * z),
-                           static_cast<float>(rng.uniform(0.3, -0.3) * z), z);
-        const glm::vec3 half(static_cast<float>(rng.uniform(2.0, 15.0)),
-                             static_cast<float>(rng.uniform(2.0, 15.0)),
-                             static_cast<float>(rng.uniform(0.2, 6.0)));
+        const float at_x = static_cast<float>(rng.uniform(0.5, -0.5) * z);
+        const float at_y = static_cast<float>(rng.uniform(0.3, -0.3) * z);
+        const glm::vec3 at(at_x, at_y, z);
+        const float half_x = static_cast<float>(rng.uniform(2.0, 15.0));
+        const float half_y = static_cast<float>(rng.uniform(2.0, 15.0));
+        const float half_z = static_cast<float>(rng.uniform(0.2, 6.0));
+        const glm::vec3 half(half_x, half_y, half_z);
         s.occluders.push_back({half, glm::translate(glm::mat4(1.0f), at) * rotation()});
     }
     for (int k = 0; k < objects; ++k) {
         const float z = static_cast<float>(rng.uniform(-80.0, -10.0));
-        const glm::vec3 at(static_cast<float>(rng.uniform(0.6, -0.6) * z),
-                           static_cast<float>(rng.uniform(0.35, -0.35) * z), z);
+        const float at_x = static_cast<float>(rng.uniform(0.6, -0.6) * z);
+        const float at_y = static_cast<float>(rng.uniform(0.35, -0.35) * z);
+        const glm::vec3 at(at_x, at_y, z);
         const float e = static_cast<float>(rng.uniform(0.2, 2.0));
         s.boxes.push_back({glm::vec3(e, e * static_cast<float>(rng.uniform(0.5, 2.0)), e),
                            glm::translate(glm::mat4(1.0f), at) * rotation()});
@@ -188,10 +196,12 @@ inline OcclusionScene peeking_scene(std::uint64_t seed, int objects) {
     std::vector<Wall> walls;
     for (int k = 0; k < 8; ++k) {
         const float z = static_cast<float>(rng.uniform(-40.0, -6.0));
-        const glm::vec3 at(static_cast<float>(rng.uniform(0.5, -0.5) * z),
-                           static_cast<float>(rng.uniform(0.2, -0.2) * z), z);
-        const glm::vec3 half(static_cast<float>(rng.uniform(1.0, 6.0)),
-                             static_cast<float>(rng.uniform(1.0, 5.0)), 0.25f);
+        const float at_x = static_cast<float>(rng.uniform(0.5, -0.5) * z);
+        const float at_y = static_cast<float>(rng.uniform(0.2, -0.2) * z);
+        const glm::vec3 at(at_x, at_y, z);
+        const float half_x = static_cast<float>(rng.uniform(1.0, 6.0));
+        const float half_y = static_cast<float>(rng.uniform(1.0, 5.0));
+        const glm::vec3 half(half_x, half_y, 0.25f);
         const float yaw = static_cast<float>(rng.uniform(-0.7, 0.7));
         walls.push_back({half, place(at, yaw)});
         s.occluders.push_back({half, place(at, yaw)});
@@ -199,8 +209,9 @@ inline OcclusionScene peeking_scene(std::uint64_t seed, int objects) {
     for (int k = 0; k < objects; ++k) {
         const Wall& w = walls[static_cast<std::size_t>(rng.uniform(0.0, 8.0))];
         // A point on the wall's back face near one of its edges, in the wall's frame.
-        glm::vec3 p(static_cast<float>(rng.uniform(-1.0, 1.0)) * w.half.x,
-                    static_cast<float>(rng.uniform(-1.0, 1.0)) * w.half.y, -w.half.z);
+        const float u = static_cast<float>(rng.uniform(-1.0, 1.0));
+        const float v = static_cast<float>(rng.uniform(-1.0, 1.0));
+        glm::vec3 p(u * w.half.x, v * w.half.y, -w.half.z);
         const float edge = static_cast<float>(rng.uniform(-0.6, 0.6));
         if (rng.unit() < 0.5)
             p.x = (p.x < 0 ? -w.half.x : w.half.x) + edge;
