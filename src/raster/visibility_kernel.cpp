@@ -95,8 +95,41 @@ int VisibilityBlock(const BlockJob& job, TileBuffers& tile) {
                 b1 = plane_at(df, t.l1, dx, dy);
                 b2 = plane_at(df, t.l2, dx, dy);
             }
-            hn::StoreU(hn::IfThenElse(pass, b1, hn::LoadU(df, tile.b1 + at)), df, tile.b1 + at);
-            hn::StoreU(hn::IfThenElse(pass, b2, hn::LoadU(df, tile.b2 + at)), df, tile.b2 + at);
+            const auto store = [&](auto v, auto* to) {
+                hn::StoreU(hn::IfThenElse(pass, v, hn::LoadU(df, to + at)), df, to + at);
+            };
+            const auto tag = hn::Set(du, job.corners ? job.corners->tag : 0u);
+            hn::StoreU(hn::IfThenElse(pass_u, tag, hn::LoadU(du, tile.shade_tag + at)), du,
+                       tile.shade_tag + at);
+            if (job.corners == nullptr) {
+                store(b1, tile.b1);
+                store(b2, tile.b2);
+                continue;
+            }
+            const CornerAttributes& a = *job.corners;
+            auto w0 = hn::Sub(hn::Sub(one_f, b1), b2), w1 = b1, w2 = b2;
+            if (a.piece != nullptr) {
+                const auto remap = [&](int c) {
+                    return hn::Add(hn::Add(hn::Mul(w0, hn::Set(df, a.piece[0][c])),
+                                           hn::Mul(w1, hn::Set(df, a.piece[1][c]))),
+                                   hn::Mul(w2, hn::Set(df, a.piece[2][c])));
+                };
+                const auto r0 = remap(0), r1 = remap(1), r2 = remap(2);
+                w0 = r0;
+                w1 = r1;
+                w2 = r2;
+            }
+            const auto interpolate = [&](const glm::vec3* corner, int c) {
+                return hn::Add(hn::Add(hn::Mul(hn::Set(df, corner[0][c]), w0),
+                                       hn::Mul(hn::Set(df, corner[1][c]), w1)),
+                               hn::Mul(hn::Set(df, corner[2][c]), w2));
+            };
+            store(interpolate(a.normal, 0), tile.nx);
+            store(interpolate(a.normal, 1), tile.ny);
+            store(interpolate(a.normal, 2), tile.nz);
+            store(interpolate(a.world, 0), tile.wx);
+            store(interpolate(a.world, 1), tile.wy);
+            store(interpolate(a.world, 2), tile.wz);
         }
     }
     return passed;
@@ -175,14 +208,30 @@ int visibility_block_scalar(const BlockJob& job, TileBuffers& tile) {
             if (!job.attributes) continue;
             tile.ref[at] = job.ref;
             if (!job.barycentrics) continue;
+            float b1, b2;
             if (job.perspective) {
                 const float q = t.q.at(dx, dy);
-                tile.b1[at] = t.p1.at(dx, dy) / q;
-                tile.b2[at] = t.p2.at(dx, dy) / q;
+                b1 = t.p1.at(dx, dy) / q;
+                b2 = t.p2.at(dx, dy) / q;
             } else {
-                tile.b1[at] = t.l1.at(dx, dy);
-                tile.b2[at] = t.l2.at(dx, dy);
+                b1 = t.l1.at(dx, dy);
+                b2 = t.l2.at(dx, dy);
             }
+            tile.shade_tag[at] = job.corners ? job.corners->tag : 0u;
+            if (job.corners == nullptr) {
+                tile.b1[at] = b1;
+                tile.b2[at] = b2;
+                continue;
+            }
+            const glm::vec3 w = interpolation_weights(*job.corners, b1, b2);
+            const glm::vec3 n = interpolate_corners(job.corners->normal, w);
+            const glm::vec3 p = interpolate_corners(job.corners->world, w);
+            tile.nx[at] = n.x;
+            tile.ny[at] = n.y;
+            tile.nz[at] = n.z;
+            tile.wx[at] = p.x;
+            tile.wy[at] = p.y;
+            tile.wz[at] = p.z;
         }
     return passed;
 }

@@ -1,6 +1,8 @@
 // The per-block visibility kernel of the tile rasterizer: coverage by edge functions, depth
 // test and write, and the triangle reference plus perspective-correct barycentrics of every
-// fragment that passes, into tile-local buffers (deferred shading reads them afterwards).
+// fragment that passes, into tile-local buffers (deferred shading reads them afterwards). For
+// triangles the SIMD Phong shader draws, the kernel interpolates the world position and normal
+// right away instead (the deferred pass then reads them without gathering the triangle's data).
 //
 // Two implementations with bit-identical results: a scalar reference and a SIMD one (Google
 // Highway, the instruction set picked at run time: AVX-512, AVX2, SSE4, NEON, scalar). The
@@ -25,11 +27,38 @@ struct TileBuffers {
     alignas(64) std::uint32_t ref[kPixels];
     alignas(64) float b1[kPixels];
     alignas(64) float b2[kPixels];
+    // Interpolated world normal (not yet unit) and world position, where shade_tag != 0.
+    alignas(64) float nx[kPixels], ny[kPixels], nz[kPixels];
+    alignas(64) float wx[kPixels], wy[kPixels], wz[kPixels];
+    // 0: shade from ref and barycentrics; else the SIMD Phong constants' index + 1 in the low
+    // bits and kShadeFlip where the normal is negated (a back face lit two-sided).
+    alignas(64) std::uint32_t shade_tag[kPixels];
     // Hierarchical z: per 8x8 block (row-major, kStride / 8 per row), the farthest depth stored
     // in it (render/hierarchical_z.hpp).
     static constexpr int kBlocksPerRow = kStride / 8;
     alignas(64) float farthest[kBlocksPerRow * kBlocksPerRow];
 };
+
+inline constexpr std::uint32_t kShadeFlip = 0x80000000u;
+
+// A triangle's corner attributes for interpolation in the kernel, as the deferred shader would
+// interpolate them: b = (1 - b1 - b2, b1, b2), remapped by a clipped piece's corner weights,
+// then attribute = (a0 b.x + a1 b.y) + a2 b.z.
+struct CornerAttributes {
+    glm::vec3 world[3], normal[3];
+    const glm::vec3* piece = nullptr;  // a clipped piece's corner weights, or null
+    std::uint32_t tag = 0;             // written to TileBuffers::shade_tag
+};
+
+// The scalar forms of that interpolation (the kernel does the same operations in lanes).
+inline glm::vec3 interpolation_weights(const CornerAttributes& a, float b1, float b2) {
+    glm::vec3 b{1.0f - b1 - b2, b1, b2};
+    if (a.piece != nullptr) b = b.x * a.piece[0] + b.y * a.piece[1] + b.z * a.piece[2];
+    return b;
+}
+inline glm::vec3 interpolate_corners(const glm::vec3 corner[3], const glm::vec3& b) {
+    return corner[0] * b.x + corner[1] * b.y + corner[2] * b.z;
+}
 
 // One block of at most 8 pixels wide (any height) of one triangle.
 struct BlockJob {
@@ -48,6 +77,9 @@ struct BlockJob {
     bool write_depth = true;
     bool attributes = true;    // store the triangle reference (off: depth only)
     bool barycentrics = true;  // ... and the barycentrics (needs the setup's q, p1, p2 planes)
+    // With barycentrics on: the shade tag (0 without corners), and with corners the
+    // interpolated attributes instead of the barycentrics.
+    const CornerAttributes* corners = nullptr;
     std::uint32_t ref = 0;
 };
 

@@ -199,6 +199,23 @@ void process_chunk(const Frame& frame, Chunk& chunk) {
     chunk.stats.triangles_in = chunk.end_triangle - chunk.first_triangle;
 }
 
+// The corners' world positions and normals of a triangle the SIMD Phong shader draws, for
+// interpolation in the visibility kernel: the same values shade_fragment() interpolates.
+CornerAttributes corner_attributes(const Frame& frame, const Chunk& chunk, const TriangleRef& ref) {
+    CornerAttributes corners;
+    const FrameInstance& fi = frame.instances[ref.instance];
+    if (fi.phong_kernel < 0) return corners;  // tag 0: the scalar shader's
+    corners.piece =
+        ref.piece == TriangleRef::kNotClipped ? nullptr : chunk.pieces[ref.piece].weights.data();
+    const bool flip = !ref.front_facing && frame.options->two_sided_lighting;
+    corners.tag = std::uint32_t(fi.phong_kernel + 1) | (flip ? kShadeFlip : 0u);
+    for (std::size_t k = 0; k < 3; ++k) {
+        corners.world[k] = frame.vertices.world[ref.vertex[k]];
+        corners.normal[k] = frame.vertices.normal[ref.vertex[k]];
+    }
+    return corners;
+}
+
 // Counting sort of the chunk's refs into tiles, keeping their order inside each tile.
 void bin_chunk(const Frame& frame, Chunk& chunk) {
     const std::size_t tiles = std::size_t(frame.tiles_x) * std::size_t(frame.tiles_y);
@@ -209,6 +226,7 @@ void bin_chunk(const Frame& frame, Chunk& chunk) {
                 ++chunk.bin_offsets[std::size_t(ty * frame.tiles_x + tx) + 1];
     for (std::size_t t = 0; t < tiles; ++t) chunk.bin_offsets[t + 1] += chunk.bin_offsets[t];
     chunk.bin_entries.resize(chunk.bin_offsets[tiles]);
+    chunk.bin_corners.resize(frame.tagged_shading ? chunk.bin_offsets[tiles] : 0);
     std::vector<std::uint32_t> cursor(chunk.bin_offsets.begin(), chunk.bin_offsets.end() - 1);
     for (std::uint32_t i = 0; i < chunk.refs.size(); ++i) {
         const TriangleRef& r = chunk.refs[i];
@@ -216,9 +234,14 @@ void bin_chunk(const Frame& frame, Chunk& chunk) {
             {frame.screen_vertex(chunk, r.screen[0]), frame.screen_vertex(chunk, r.screen[1]),
              frame.screen_vertex(chunk, r.screen[2])},
             i};
+        CornerAttributes corners;
+        if (frame.tagged_shading) corners = corner_attributes(frame, chunk, r);
         for (int ty = r.tile_y0; ty <= r.tile_y1; ++ty)
-            for (int tx = r.tile_x0; tx <= r.tile_x1; ++tx)
-                chunk.bin_entries[cursor[std::size_t(ty * frame.tiles_x + tx)]++] = entry;
+            for (int tx = r.tile_x0; tx <= r.tile_x1; ++tx) {
+                const std::uint32_t at = cursor[std::size_t(ty * frame.tiles_x + tx)]++;
+                chunk.bin_entries[at] = entry;
+                if (frame.tagged_shading) chunk.bin_corners[at] = corners;
+            }
     }
 }
 

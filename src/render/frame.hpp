@@ -8,6 +8,7 @@
 #include <zraster/clip.hpp>
 #include <zraster/render.hpp>
 
+#include "raster/visibility_kernel.hpp"
 #include "render/shade_kernel.hpp"
 
 #include <array>
@@ -33,22 +34,26 @@ struct FrameInstance {
     glm::mat3 normal_matrix{1.0f};  // object to world for normals (inverse transpose)
     bool textured = false;
     int phong_kernel = -1;  // index into Frame::phong_constants when the SIMD shader applies
-    // World positions and normals computed per visible triangle by the deferred SIMD shader
-    // (from the mesh) instead of per vertex by the vertex stage: a dense mesh has many more
-    // vertices than visible triangles, and the per-vertex arrays cost memory bandwidth.
-    bool lazy_attributes = false;
 };
 
 // A vertex's world position and unit world normal ((0, 1, 0) for a zero normal): the one
-// definition the vertex stage and the lazy path share, so both give the same bits.
-inline void world_attributes(const FrameInstance& fi, std::uint32_t local, glm::vec3& world,
-                             glm::vec3& normal) {
-    const Mesh& mesh = *fi.mesh;
-    world = glm::vec3(fi.model * glm::vec4(mesh.positions[local], 1.0f));
-    glm::vec3 n = mesh.normals.empty() ? glm::vec3(0, 1, 0) : mesh.normals[local];
-    n = fi.normal_matrix * n;
+// definition the vertex stage's SIMD and scalar paths share, operation for operation.
+inline void world_attributes(const glm::mat4& model, const glm::mat3& normal_matrix,
+                             const glm::vec3& position, const glm::vec3& object_normal,
+                             glm::vec3& world, glm::vec3& normal) {
+    world = glm::vec3(model * glm::vec4(position, 1.0f));
+    const glm::vec3 n = normal_matrix * object_normal;
     const float len = glm::length(n);
     normal = len > 0.0f ? n / len : glm::vec3(0, 1, 0);
+}
+
+// Whether the frame uses tagged shading: the visibility kernel interpolates the attributes of
+// SIMD Phong instances' triangles, and the deferred pass shades them a vector at a time.
+inline bool tagged_shading(const RenderOptions& options) {
+    return options.simd && options.color_target && !options.normal_target &&
+           options.strategy != ShadingStrategy::Forward &&
+           options.depth_format == DepthFormat::D32F && options.depth_test &&
+           !options.coverage_counts;
 }
 
 // Output of the vertex stage for every vertex of every visible instance.
@@ -99,6 +104,9 @@ struct Chunk {
     // Bins: refs touching tile t are bin_entries[bin_offsets[t] .. bin_offsets[t + 1]).
     std::vector<std::uint32_t> bin_offsets;
     std::vector<BinEntry> bin_entries;
+    // With tagged shading, the corner attributes of each bin entry's triangle (tag 0: not a
+    // SIMD Phong instance's), written by the front end so the back end reads them in order.
+    std::vector<CornerAttributes> bin_corners;
     RenderStats stats;
 };
 
@@ -110,6 +118,7 @@ struct Frame {
     ClipSettings clip_settings;
     SetupSettings setup_settings;
     bool needs_attributes = true;  // false for depth-only frames
+    bool tagged_shading = false;   // tagged_shading(options) and an instance uses it
     int tiles_x = 0, tiles_y = 0;
     std::vector<FrameInstance> instances;
     std::vector<std::size_t> instance_first_triangle;  // prefix sums, one more than instances

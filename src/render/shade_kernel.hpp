@@ -5,6 +5,8 @@
 #pragma once
 #include <zraster/lighting.hpp>
 
+#include "raster/visibility_kernel.hpp"
+
 #include <cstdint>
 
 namespace zraster::detail {
@@ -43,6 +45,15 @@ struct PhongBatch {
 // Writes r, g, b (0..255) for the first `count` pixels.
 void shade_phong_batch(const PhongConstants& constants, PhongBatch& batch);
 void shade_phong_batch_scalar(const PhongConstants& k, PhongBatch& batch);
+
+// Shades the pixels [at, at + count) of a tile row whose shade_tag is set (constants[tag - 1])
+// from the interpolated normals and positions there, and writes them as RGBA8 (R in the low
+// byte) to rgba[0, count); other pixels of rgba are left alone (rgba holds TileBuffers::kStride
+// values: vectors may run past count). Returns the number of pixels shaded.
+int shade_tagged_row(const PhongConstants* constants, const TileBuffers& tile, std::size_t at,
+                     int count, std::uint32_t* rgba);
+int shade_tagged_row_scalar(const PhongConstants* constants, const TileBuffers& tile,
+                            std::size_t at, int count, std::uint32_t* rgba);
 
 // The scalar unit normal used by both paths: n / |n|, or (0, 1, 0) for a zero vector.
 glm::vec3 unit_normal(const glm::vec3& n);

@@ -44,6 +44,7 @@ struct TileContext {
     HierarchicalZ hiz;             // per-block depth bounds in use (kernel path, depth writes on)
     std::uint64_t& blocks_hidden;  // this tile's count of blocks skipped by them
     bool shade;                    // color or normal target wanted
+    bool tagged_shading;           // SIMD Phong instances interpolate in the kernel (see below)
     int x0, y0, x1, y1;            // tile rectangle in the image, [x0, x1) x [y0, y1)
 };
 
@@ -66,8 +67,9 @@ void write_shaded(const TileContext& c, const ShadedFragment& f, int px, int py)
 // The scalar reference path for one triangle over [x0, x1) x [y0, y1) of a tile: any depth
 // format, the depth test off, coverage counts, forward shading.
 std::uint64_t rasterize_scalar(const TileContext& c, const Chunk& chunk, const TriangleRef& ref,
-                               const TriangleSetup& setup, std::uint32_t id, TileBuffers& tile,
-                               int x0, int y0, int x1, int y1) {
+                               const TriangleSetup& setup, std::uint32_t id,
+                               const CornerAttributes* corners, TileBuffers& tile, int x0, int y0,
+                               int x1, int y1) {
     const RenderOptions& options = *c.frame.options;
     ShadingTriangle shading;
     if (c.forward && c.shade) prepare_shading_triangle(c.frame, chunk, ref, shading);
@@ -90,6 +92,18 @@ std::uint64_t rasterize_scalar(const TileContext& c, const Chunk& chunk, const T
         tile.ref[at] = id;
         tile.b1[at] = b.y;
         tile.b2[at] = b.z;
+        tile.shade_tag[at] = corners ? corners->tag : 0;
+        if (corners) {  // as the visibility kernel interpolates
+            const glm::vec3 w = interpolation_weights(*corners, b.y, b.z);
+            const glm::vec3 n = interpolate_corners(corners->normal, w);
+            const glm::vec3 p = interpolate_corners(corners->world, w);
+            tile.nx[at] = n.x;
+            tile.ny[at] = n.y;
+            tile.nz[at] = n.z;
+            tile.wx[at] = p.x;
+            tile.wy[at] = p.y;
+            tile.wz[at] = p.z;
+        }
         if (c.forward && c.shade)
             write_shaded(
                 c, shade_fragment(c.frame, shading, b.y, b.z, px, py, !c.targets.normal.empty()),
@@ -110,7 +124,8 @@ bool fits_int32(std::int64_t v) {
 // Hierarchical traversal of one triangle in one tile: 8x8 blocks classified by their corners,
 // then the visibility kernel on the covered or partly covered ones.
 std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const TriangleRef& ref,
-                               const TriangleSetup& setup, std::uint32_t id, TileBuffers& tile) {
+                               const TriangleSetup& setup, std::uint32_t id,
+                               const CornerAttributes* corners, TileBuffers& tile) {
     const RenderOptions& options = *c.frame.options;
     const int rx0 = std::max(setup.min_x, c.x0), ry0 = std::max(setup.min_y, c.y0);
     const int rx1 = std::min(setup.max_x, c.x1 - 1), ry1 = std::min(setup.max_y, c.y1 - 1);
@@ -121,6 +136,7 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
     job.write_depth = options.depth_write;
     job.attributes = c.shade || !c.targets.instance_id.empty();
     job.barycentrics = c.shade;
+    job.corners = corners;
     job.ref = id;
     // Runs the kernel on pixels [x0, x1] x [y0, y1] of the triangle (edge values there fit 32
     // bits), unless hierarchical z shows them hidden; then refreshes the blocks' depth bounds.
@@ -200,7 +216,8 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
             }
             if (outside) continue;
             if (!fits && !full)  // edges too long for 32-bit lanes: the exact 64-bit scalar path
-                passed += rasterize_scalar(c, chunk, ref, setup, id, tile, x0, y0, x1 + 1, y1 + 1);
+                passed += rasterize_scalar(c, chunk, ref, setup, id, corners, tile, x0, y0, x1 + 1,
+                                           y1 + 1);
             else
                 passed += run_block(x0, y0, x1, y1, full);
         }
@@ -208,19 +225,15 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
     return passed;
 }
 
-// The targets of a tile where nothing was drawn.
-void clear_tile_targets(const TileContext& c, float clear, std::uint32_t background) {
+// The targets of a tile where nothing was drawn, from rows of the cleared values.
+void clear_tile_targets(const TileContext& c, const float* clear_row,
+                        const std::uint32_t* background_row) {
     RenderTargets& t = c.targets;
-    const float depth = c.codec.format() == DepthFormat::D32F
-                            ? clear
-                            : c.codec.decode(static_cast<std::uint32_t>(clear));
     const auto n = static_cast<std::size_t>(c.x1 - c.x0);
     for (int py = c.y0; py < c.y1; ++py) {
         const std::size_t row = std::size_t(py) * std::size_t(t.width) + std::size_t(c.x0);
-        std::fill_n(t.depth.data() + row, n, depth);
-        if (!t.color.empty())
-            for (std::size_t i = 0; i < n; ++i)
-                std::memcpy(&t.color[(row + i) * 4], &background, 4);
+        std::memcpy(t.depth.data() + row, clear_row, n * sizeof(float));
+        if (!t.color.empty()) std::memcpy(&t.color[row * 4], background_row, n * 4);
         if (!t.normal.empty()) std::fill_n(t.normal.data() + row, n, glm::vec3(0.0f));
         if (!t.instance_id.empty()) {
             std::fill_n(t.instance_id.data() + row, n, -1);
@@ -229,145 +242,90 @@ void clear_tile_targets(const TileContext& c, float clear, std::uint32_t backgro
     }
 }
 
-// Pixels waiting for the SIMD Phong shader, all of one instance.
-struct PendingPhong {
-    PhongBatch batch;
-    int kernel = -1;
-    int x[kShadeBatch];
-    int y = 0;
-
-    void flush(const TileContext& c) {
-        if (batch.count == 0) return;
-        shade_phong_batch(c.frame.phong_constants[std::size_t(kernel)], batch);
-        for (int i = 0; i < batch.count; ++i) {
-            const std::size_t p = std::size_t(y) * std::size_t(c.targets.width) + std::size_t(x[i]);
-            std::uint8_t* rgba = &c.targets.color[p * 4];
-            rgba[0] = static_cast<std::uint8_t>(batch.r[i]);
-            rgba[1] = static_cast<std::uint8_t>(batch.g[i]);
-            rgba[2] = static_cast<std::uint8_t>(batch.b[i]);
-            rgba[3] = 255;
-        }
-        batch.count = 0;
-    }
-};
-
 // What the deferred pass needs of the triangle of the last pixel: consecutive pixels mostly
-// share one, so the lookups (chunk, ref, instance: cache misses on dense meshes) and, for the
-// SIMD shader, its corners' world positions and normals are fetched once per run.
+// share one, so the lookups (chunk, ref, instance: cache misses on dense meshes) are done once
+// per run.
 struct TriangleRun {
     std::uint32_t id = kNoTriangle;
     const Chunk* chunk = nullptr;
     const TriangleRef* ref = nullptr;
     std::int32_t instance_id = -1, primitive_id = -1;
-    int kernel = -1;                   // SIMD shader constants, or -1: the scalar shader
-    const glm::vec3* piece = nullptr;  // a clipped piece's corner weights
-    std::uint32_t flip = 0;            // ~0 where the shader negates the normal
-    glm::vec3 world[3], normal[3];     // corners (kernel >= 0)
 
-    void load(const Frame& frame, std::uint32_t triangle, bool kernel_shading) {
+    void load(const Frame& frame, std::uint32_t triangle) {
         id = triangle;
         chunk = &frame.chunks[triangle >> kLocalBits];
         ref = &chunk->refs[triangle & ((1u << kLocalBits) - 1)];
-        const FrameInstance& fi = frame.instances[ref->instance];
-        instance_id = static_cast<std::int32_t>(fi.scene_instance);
+        instance_id = static_cast<std::int32_t>(frame.instances[ref->instance].scene_instance);
         primitive_id = static_cast<std::int32_t>(ref->primitive);
-        kernel = kernel_shading ? fi.phong_kernel : -1;
-        if (kernel < 0) return;
-        piece = ref->piece == TriangleRef::kNotClipped ? nullptr
-                                                       : chunk->pieces[ref->piece].weights.data();
-        flip = !ref->front_facing && frame.options->two_sided_lighting ? ~0u : 0u;
-        for (std::size_t k = 0; k < 3; ++k) {
-            // The same values interpolate() reads, or computes lazily: the same bits.
-            if (fi.lazy_attributes) {
-                world_attributes(fi, ref->vertex[k] - fi.first_vertex, world[k], normal[k]);
-            } else {
-                world[k] = frame.vertices.world[ref->vertex[k]];
-                normal[k] = frame.vertices.normal[ref->vertex[k]];
-            }
-        }
     }
 };
 
 // Finishes a tile: deferred shading of every pixel with a triangle (once each), background
-// elsewhere, and the depth and id targets. Returns the number of pixels shaded.
+// elsewhere, and the depth and id targets. With tagged shading, the SIMD shader colors the
+// tagged pixels a row at a time, and only the others (other materials) go pixel by pixel.
+// `untagged` says whether any triangle without a tag was drawn in the tile. Returns the number
+// of pixels shaded.
 std::uint64_t finish_tile(const TileContext& c, const TileBuffers& tile, std::uint32_t background,
-                          bool shade_now) {
+                          bool shade_now, bool untagged) {
     RenderTargets& t = c.targets;
     const bool d32 = c.codec.format() == DepthFormat::D32F;
     const bool want_normal = !t.normal.empty(), want_ids = !t.instance_id.empty();
     const bool want_color = !t.color.empty();
-    // The SIMD shader writes colors only; with a normal target everything goes the scalar way.
-    const bool kernel_shading = shade_now && want_color && !want_normal;
-    thread_local PendingPhong pending;
+    const bool tagged = shade_now && c.tagged_shading;
+    // Pixel by pixel only where something needs it.
+    const bool per_pixel =
+        want_ids || (shade_now && (!tagged || untagged)) || (want_color && !tagged) || want_normal;
     ShadingTriangle cache;
     std::uint32_t cached_id = kNoTriangle;
     TriangleRun run;
     std::uint64_t shaded = 0;
+    const int n = c.x1 - c.x0;
+    std::uint32_t row_rgba[TileBuffers::kStride];
     for (int py = c.y0; py < c.y1; ++py) {
         const std::size_t row = std::size_t(py) * std::size_t(t.width);
         const std::size_t at_row = tile_index(0, py - c.y0);
-        const int n = c.x1 - c.x0;
         if (d32) {
-            std::copy_n(tile.depth + at_row, n, t.depth.data() + row + std::size_t(c.x0));
+            std::memcpy(t.depth.data() + row + std::size_t(c.x0), tile.depth + at_row,
+                        std::size_t(n) * sizeof(float));
         } else {
             for (int i = 0; i < n; ++i)
                 t.depth[row + std::size_t(c.x0 + i)] =
                     c.codec.decode(static_cast<std::uint32_t>(tile.depth[at_row + std::size_t(i)]));
         }
-        pending.y = py;
+        if (tagged) {
+            std::fill_n(row_rgba, n, background);
+            shaded += std::uint64_t(
+                shade_tagged_row(c.frame.phong_constants.data(), tile, at_row, n, row_rgba));
+            std::memcpy(&t.color[(row + std::size_t(c.x0)) * 4], row_rgba,
+                        std::size_t(n) * sizeof(std::uint32_t));
+        }
+        if (!per_pixel) continue;
         for (int px = c.x0; px < c.x1; ++px) {
             const std::size_t at = at_row + std::size_t(px - c.x0);
             const std::size_t p = row + std::size_t(px);
             const std::uint32_t id = tile.ref[at];
             if (id == kNoTriangle) {
-                if (want_color) std::memcpy(&t.color[p * 4], &background, 4);
+                if (want_color && !tagged) std::memcpy(&t.color[p * 4], &background, 4);
                 if (want_normal) t.normal[p] = glm::vec3(0.0f);
                 if (want_ids) t.instance_id[p] = t.primitive_id[p] = -1;
                 continue;
             }
-            if (id != run.id) run.load(c.frame, id, kernel_shading);
+            if (tagged && tile.shade_tag[at] != 0 && !want_ids) continue;
+            if (id != run.id) run.load(c.frame, id);
             if (want_ids) {
                 t.instance_id[p] = run.instance_id;
                 t.primitive_id[p] = run.primitive_id;
             }
-            if (!shade_now) continue;
+            if (!shade_now || (tagged && tile.shade_tag[at] != 0)) continue;
             ++shaded;
-            if (run.kernel >= 0) {
-                if (pending.kernel != run.kernel || pending.batch.count == kShadeBatch) {
-                    pending.flush(c);
-                    pending.kernel = run.kernel;
-                }
-                const float b1 = tile.b1[at], b2 = tile.b2[at];
-                glm::vec3 b{1.0f - b1 - b2, b1, b2};
-                if (run.piece != nullptr)  // as original_barycentrics()
-                    b = b.x * run.piece[0] + b.y * run.piece[1] + b.z * run.piece[2];
-                const glm::vec3 normal =
-                    run.normal[0] * b.x + run.normal[1] * b.y + run.normal[2] * b.z;
-                const glm::vec3 position =
-                    run.world[0] * b.x + run.world[1] * b.y + run.world[2] * b.z;
-                PhongBatch& batch = pending.batch;
-                const int i = batch.count++;
-                batch.nx[i] = normal.x;
-                batch.ny[i] = normal.y;
-                batch.nz[i] = normal.z;
-                batch.px[i] = position.x;
-                batch.py[i] = position.y;
-                batch.pz[i] = position.z;
-                batch.flip[i] = run.flip;
-                pending.x[i] = px;
-                continue;
-            }
-            const Chunk& chunk = *run.chunk;
-            const TriangleRef& ref = *run.ref;
             if (id != cached_id) {
-                prepare_shading_triangle(c.frame, chunk, ref, cache);
+                prepare_shading_triangle(c.frame, *run.chunk, *run.ref, cache);
                 cached_id = id;
             }
             write_shaded(
                 c, shade_fragment(c.frame, cache, tile.b1[at], tile.b2[at], px, py, want_normal),
                 px, py);
         }
-        pending.flush(c);
     }
     return shaded;
 }
@@ -411,6 +369,19 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
     std::memcpy(&background, background_rgba, 4);
     stats.deferred = shade && !forward;
     stats.simd_target = options.simd ? visibility_kernel_target() : "scalar";
+    // Tagged shading: triangles of SIMD Phong instances interpolate their attributes in the
+    // visibility kernel, and the deferred pass shades them a vector at a time (the SIMD shader
+    // writes colors only: a normal target takes the scalar way).
+    const bool tagged = frame.tagged_shading;
+
+    // Rows of cleared values, copied into the targets of empty tiles.
+    float clear_row[kTileSize];
+    std::uint32_t background_row[kTileSize];
+    std::fill_n(clear_row, kTileSize,
+                options.depth_format == DepthFormat::D32F
+                    ? clear
+                    : codec.decode(static_cast<std::uint32_t>(clear)));
+    std::fill_n(background_row, kTileSize, background);
 
     const std::size_t tiles = std::size_t(frame.tiles_x) * std::size_t(frame.tiles_y);
     std::vector<std::uint64_t> passed_per_tile(tiles, 0), shaded_per_tile(tiles, 0),
@@ -431,6 +402,7 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
                             hiz,
                             hidden_per_tile[tile_number],
                             shade,
+                            tagged,
                             tx * kTileSize,
                             ty * kTileSize,
                             std::min(width, (tx + 1) * kTileSize),
@@ -440,17 +412,20 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
             empty &= chunk.bin_offsets[tile_number] == chunk.bin_offsets[tile_number + 1];
         if (empty) {
             // Nothing drawn here: write the cleared targets directly.
-            clear_tile_targets(c, clear, background);
+            clear_tile_targets(c, clear_row, background_row);
             return;
         }
+        const auto row_bytes = std::size_t(c.x1 - c.x0) * sizeof(float);
         for (int y = 0; y < c.y1 - c.y0; ++y) {
-            std::fill_n(tile.depth + tile_index(0, y), c.x1 - c.x0, clear);
-            std::fill_n(tile.ref + tile_index(0, y), c.x1 - c.x0, kNoTriangle);
+            std::memcpy(tile.depth + tile_index(0, y), clear_row, row_bytes);
+            std::memset(tile.ref + tile_index(0, y), 0xff, row_bytes);  // kNoTriangle
+            if (tagged) std::memset(tile.shade_tag + tile_index(0, y), 0, row_bytes);
         }
         // Blocks past the image edge are never drawn; their bound only has to be valid.
         std::fill_n(tile.farthest, std::size(tile.farthest), clear);
 
         std::uint64_t passed = 0;
+        bool untagged = false;  // a triangle without a shade tag was drawn
         TriangleSetup setup;
         for (std::size_t ci = 0; ci < frame.chunks.size(); ++ci) {
             const Chunk& chunk = frame.chunks[ci];
@@ -467,13 +442,25 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
                     continue;  // cannot happen: the front end made the same decision
                 const TriangleRef& ref = chunk.refs[local];
                 const std::uint32_t id = std::uint32_t(ci) << kLocalBits | local;
-                passed += kernel ? rasterize_blocks(c, chunk, ref, setup, id, tile)
-                                 : rasterize_scalar(c, chunk, ref, setup, id, tile, c.x0, c.y0,
-                                                    c.x1, c.y1);
+                if (!kernel) {
+                    passed += rasterize_scalar(c, chunk, ref, setup, id, nullptr, tile, c.x0, c.y0,
+                                               c.x1, c.y1);
+                    continue;
+                }
+                const CornerAttributes* with = nullptr;
+                if (tagged) {
+                    with = &chunk.bin_corners[e];
+                    if (with->tag == 0) {
+                        with = nullptr;
+                        untagged = true;
+                    }
+                }
+                passed += rasterize_blocks(c, chunk, ref, setup, id, with, tile);
             }
         }
         passed_per_tile[tile_number] = passed;
-        shaded_per_tile[tile_number] = finish_tile(c, tile, background, shade && !forward);
+        shaded_per_tile[tile_number] =
+            finish_tile(c, tile, background, shade && !forward, untagged);
         if (forward) shaded_per_tile[tile_number] = passed;
     });
     for (std::size_t t = 0; t < tiles; ++t) {

@@ -26,6 +26,17 @@ void TransformVertices(const VertexJob& job) {
                           hn::Set(df, m[3][r])};
     };
     const auto mx = row(0), my = row(1), mz = row(2), mw = row(3);
+    const auto model_row = [&](int r) {
+        const glm::mat4& w = job.model;
+        return std::array{hn::Set(df, w[0][r]), hn::Set(df, w[1][r]), hn::Set(df, w[2][r]),
+                          hn::Set(df, w[3][r])};
+    };
+    const auto wx = model_row(0), wy = model_row(1), wz = model_row(2);
+    const auto normal_row = [&](int r) {
+        const glm::mat3& n = job.normal_matrix;
+        return std::array{hn::Set(df, n[0][r]), hn::Set(df, n[1][r]), hn::Set(df, n[2][r])};
+    };
+    const std::array nr{normal_row(0), normal_row(1), normal_row(2)};
     const auto zero_f = hn::Zero(df);
     const auto guard_x = hn::Set(df, job.clip.guard_x), guard_y = hn::Set(df, job.clip.guard_y);
     const bool zero_to_one_clip = job.clip.depth_range == ClipDepthRange::ZeroToOne;
@@ -49,6 +60,26 @@ void TransformVertices(const VertexJob& job) {
         };
         const auto cx = apply(mx), cy = apply(my), cz = apply(mz), cw = apply(mw);
         hn::StoreInterleaved4(cx, cy, cz, cw, df, &job.clip_out[k].x);
+        if (job.world_out != nullptr) {
+            hn::StoreInterleaved3(apply(wx), apply(wy), apply(wz), df, &job.world_out[k].x);
+            if (job.normal_out != nullptr) {
+                auto nx = zero_f, ny = hn::Set(df, 1.0f), nz = zero_f;
+                if (job.normals != nullptr) hn::LoadInterleaved3(df, &job.normals[k].x, nx, ny, nz);
+                // (n0 x + n1 y) + n2 z per row, then n / |n| or (0, 1, 0), as world_attributes.
+                const auto rotate = [&](const auto& r) {
+                    return hn::Add(hn::Add(hn::Mul(r[0], nx), hn::Mul(r[1], ny)),
+                                   hn::Mul(r[2], nz));
+                };
+                const auto tx = rotate(nr[0]), ty = rotate(nr[1]), tz = rotate(nr[2]);
+                const auto len =
+                    hn::Sqrt(hn::Add(hn::Add(hn::Mul(tx, tx), hn::Mul(ty, ty)), hn::Mul(tz, tz)));
+                const auto has_length = hn::Gt(len, zero_f);
+                hn::StoreInterleaved3(
+                    hn::IfThenElse(has_length, hn::Div(tx, len), zero_f),
+                    hn::IfThenElse(has_length, hn::Div(ty, len), hn::Set(df, 1.0f)),
+                    hn::IfThenElse(has_length, hn::Div(tz, len), zero_f), df, &job.normal_out[k].x);
+            }
+        }
         const auto finite =
             hn::RebindMask(di, hn::And(hn::And(hn::IsFinite(cx), hn::IsFinite(cy)),
                                        hn::And(hn::IsFinite(cz), hn::IsFinite(cw))));
@@ -114,6 +145,9 @@ void TransformVertices(const VertexJob& job) {
         tail.clip_out += k;
         tail.screen_out += k;
         tail.outcode_out += k;
+        if (tail.normals != nullptr) tail.normals += k;
+        if (tail.world_out != nullptr) tail.world_out += k;
+        if (tail.normal_out != nullptr) tail.normal_out += k;
         transform_vertices_scalar(tail);
     }
 }
@@ -156,6 +190,12 @@ void transform_vertices_scalar(const VertexJob& job) {
                 code = kClipLeft;  // not representable: let the clipper handle it
         }
         job.outcode_out[k] = code;
+        if (job.world_out == nullptr) continue;
+        glm::vec3 normal;
+        world_attributes(job.model, job.normal_matrix, job.positions[k],
+                         job.normals ? job.normals[k] : glm::vec3(0, 1, 0), job.world_out[k],
+                         normal);
+        if (job.normal_out != nullptr) job.normal_out[k] = normal;
     }
 }
 

@@ -25,6 +25,14 @@ struct VertexJob {
     glm::vec4* clip_out = nullptr;
     ScreenVertex* screen_out = nullptr;
     std::uint32_t* outcode_out = nullptr;
+    // Optional world attributes, as world_attributes() computes them (frame.hpp): the world
+    // position (model) when world_out is set, and the unit world normal (normal_matrix) when
+    // normal_out is set too; normals null means (0, 1, 0) for every vertex.
+    glm::mat4 model{1.0f};
+    glm::mat3 normal_matrix{1.0f};
+    const glm::vec3* normals = nullptr;
+    glm::vec3* world_out = nullptr;
+    glm::vec3* normal_out = nullptr;
 };
 
 void transform_vertices(const VertexJob& job);

@@ -30,11 +30,9 @@ bool outside_frustum(const Bounds3f& box, const glm::mat4& mvp, ClipDepthRange r
     return true;
 }
 
-// Instances the SIMD Phong shader can draw get its constants; those it draws alone (deferred,
-// color only, no user clip planes) get their attributes lazily.
+// Instances the SIMD Phong shader can draw get its constants.
 void assign_phong_kernels(Frame& frame) {
     const RenderOptions& options = *frame.options;
-    const bool deferred = options.strategy != ShadingStrategy::Forward;
     frame.phong_constants.clear();
     for (FrameInstance& fi : frame.instances) {
         if (fi.shading != ShadingMode::Phong || fi.textured || !options.simd ||
@@ -43,8 +41,6 @@ void assign_phong_kernels(Frame& frame) {
         fi.phong_kernel = static_cast<int>(frame.phong_constants.size());
         frame.phong_constants.push_back(
             make_phong_constants(options.lighting, *fi.material, frame.eye, frame.view_axis));
-        fi.lazy_attributes = deferred && options.color_target && !options.normal_target &&
-                             options.clip_planes.empty();
     }
 }
 
@@ -88,30 +84,29 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
     }
 
     assign_phong_kernels(frame);
+    frame.tagged_shading = tagged_shading(options) && !frame.phong_constants.empty();
 
     FrameVertices& v = frame.vertices;
     const bool attributes = frame.needs_attributes;
     const bool world = attributes || !options.clip_planes.empty();
-    bool any_gouraud = false, any_textured = false, any_eager = false;
+    bool any_gouraud = false, any_textured = false;
     for (const FrameInstance& fi : frame.instances) {
         any_gouraud |= fi.shading == ShadingMode::Gouraud;
         any_textured |= fi.textured;
-        any_eager |= !fi.lazy_attributes;
     }
     v.clip.resize(vertex_count);
     v.screen.resize(vertex_count);
     v.outcode.resize(vertex_count);
     // Arrays no instance reads stay empty (a reused Renderer may still hold old ones: the stages
     // index them only for instances that need them).
-    if (world && any_eager) v.world.resize(vertex_count);
-    if (attributes && any_eager) v.normal.resize(vertex_count);
+    if (world) v.world.resize(vertex_count);
+    if (attributes) v.normal.resize(vertex_count);
     if (attributes && any_textured) v.uv.resize(vertex_count);
     if (any_gouraud && attributes) v.gouraud.resize(vertex_count);
 
     for (const FrameInstance& fi : frame.instances) {
         const Mesh& mesh = *fi.mesh;
         const bool lit_per_vertex = fi.shading == ShadingMode::Gouraud && attributes;
-        const bool eager = world && !fi.lazy_attributes;
         tbb::parallel_for(
             tbb::blocked_range<std::size_t>(0, mesh.positions.size(), 8192),
             [&](const tbb::blocked_range<std::size_t>& r) {
@@ -124,19 +119,22 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
                 job.clip_out = v.clip.data() + fi.first_vertex + r.begin();
                 job.screen_out = v.screen.data() + fi.first_vertex + r.begin();
                 job.outcode_out = v.outcode.data() + fi.first_vertex + r.begin();
+                if (world) {  // user clip planes need the world position, shading both
+                    job.model = fi.model;
+                    job.normal_matrix = fi.normal_matrix;
+                    job.world_out = v.world.data() + fi.first_vertex + r.begin();
+                    if (attributes) {
+                        job.normal_out = v.normal.data() + fi.first_vertex + r.begin();
+                        if (!mesh.normals.empty()) job.normals = mesh.normals.data() + r.begin();
+                    }
+                }
                 if (options.simd)
                     transform_vertices(job);
                 else
                     transform_vertices_scalar(job);
-                if (!eager) return;
+                if (!attributes || (!fi.textured && !lit_per_vertex)) return;
                 for (std::size_t k = r.begin(); k < r.end(); ++k) {
                     const std::size_t out = fi.first_vertex + k;
-                    if (!attributes) {  // user clip planes only need the world position
-                        v.world[out] = glm::vec3(fi.model * glm::vec4(mesh.positions[k], 1.0f));
-                        continue;
-                    }
-                    world_attributes(fi, static_cast<std::uint32_t>(k), v.world[out],
-                                     v.normal[out]);
                     if (fi.textured) v.uv[out] = mesh.uvs[k];
                     if (lit_per_vertex)
                         v.gouraud[out] =

@@ -1,6 +1,6 @@
 // Every SIMD kernel against its scalar reference, bit for bit: the visibility kernel on random
-// triangles and blocks, the Phong shading kernel on random inputs, and whole frames rendered
-// with options.simd on and off.
+// triangles and blocks (with and without attribute interpolation), the Phong shading kernels on
+// random inputs, and whole frames rendered with options.simd on and off.
 #include <zraster/scenes.hpp>
 
 #include <gtest/gtest.h>
@@ -34,7 +34,14 @@ void VisibilityBlockMatchesScalarOnRandomTriangles() {
         std::fill(std::begin(t->ref), std::end(t->ref), kNoTriangle);
         std::fill(std::begin(t->b1), std::end(t->b1), 0.0f);
         std::fill(std::begin(t->b2), std::end(t->b2), 0.0f);
+        for (float* a : {t->nx, t->ny, t->nz, t->wx, t->wy, t->wz})
+            std::fill_n(a, TileBuffers::kPixels, 0.0f);
+        std::fill(std::begin(t->shade_tag), std::end(t->shade_tag), 0u);
     }
+    // Corner attributes for a third of the triangles, a clipped piece's weights for some.
+    std::uniform_real_distribution<float> attribute(-3.0f, 3.0f);
+    const glm::vec3 piece[3] = {{0.7f, 0.2f, 0.1f}, {0.1f, 0.8f, 0.1f}, {0.3f, 0.3f, 0.4f}};
+    int interpolated = 0;
     SetupSettings settings;
     settings.viewport = {64, 64};
     settings.cull = CullMode::None;
@@ -59,6 +66,14 @@ void VisibilityBlockMatchesScalarOnRandomTriangles() {
         job.perspective = tri % 5 != 0;
         job.write_depth = tri % 7 != 0;
         job.ref = tri;
+        CornerAttributes corners;
+        for (int k = 0; k < 3; ++k) {
+            corners.world[k] = {attribute(rng), attribute(rng), attribute(rng)};
+            corners.normal[k] = {attribute(rng), attribute(rng), attribute(rng)};
+        }
+        corners.piece = tri % 2 ? piece : nullptr;
+        corners.tag = (1 + tri % 4) | (tri % 5 == 0 ? kShadeFlip : 0u);
+        job.corners = tri % 3 == 0 ? &corners : nullptr;
         // Blocks of the triangle's box on the 8x8 grid; edges straight from the setup.
         for (int by = setup.min_y / 8 * 8; by <= setup.max_y; by += 8)
             for (int bx = setup.min_x / 8 * 8; bx <= setup.max_x; bx += 8) {
@@ -81,6 +96,7 @@ void VisibilityBlockMatchesScalarOnRandomTriangles() {
                 const int b = visibility_block_scalar(job, *scalar_tile);
                 ASSERT_EQ(a, b) << "triangle " << tri;
                 passed += a;
+                if (job.corners) interpolated += a;
                 ++blocks;
             }
     }
@@ -90,6 +106,19 @@ void VisibilityBlockMatchesScalarOnRandomTriangles() {
     EXPECT_TRUE(same_bits(simd_tile->ref, scalar_tile->ref, TileBuffers::kPixels));
     EXPECT_TRUE(same_bits(simd_tile->b1, scalar_tile->b1, TileBuffers::kPixels));
     EXPECT_TRUE(same_bits(simd_tile->b2, scalar_tile->b2, TileBuffers::kPixels));
+    EXPECT_GT(interpolated, 3000);
+    EXPECT_TRUE(same_bits(simd_tile->shade_tag, scalar_tile->shade_tag, TileBuffers::kPixels));
+    EXPECT_TRUE(same_bits(simd_tile->nx, scalar_tile->nx, TileBuffers::kPixels));
+    EXPECT_TRUE(same_bits(simd_tile->ny, scalar_tile->ny, TileBuffers::kPixels));
+    EXPECT_TRUE(same_bits(simd_tile->nz, scalar_tile->nz, TileBuffers::kPixels));
+    EXPECT_TRUE(same_bits(simd_tile->wx, scalar_tile->wx, TileBuffers::kPixels));
+    EXPECT_TRUE(same_bits(simd_tile->wy, scalar_tile->wy, TileBuffers::kPixels));
+    EXPECT_TRUE(same_bits(simd_tile->wz, scalar_tile->wz, TileBuffers::kPixels));
+    // The interpolating triangles kept pixels to the end (their tags are there).
+    int tagged = 0;
+    for (int at = 0; at < TileBuffers::kStride * TileBuffers::kStride; ++at)
+        tagged += scalar_tile->shade_tag[at] != 0;
+    EXPECT_GT(tagged, 100);
     ::testing::Test::RecordProperty("target", visibility_kernel_target());
 }
 
@@ -134,6 +163,57 @@ void PhongShadingMatchesScalarOnRandomInputs() {
     }
 }
 
+// The row shader: tagged pixels of up to 4 materials mixed in a row (with flips, zero normals
+// and untagged pixels), against the scalar reference; untagged pixels keep what rgba held.
+void TaggedRowShadingMatchesScalar() {
+    std::mt19937 rng(8);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    PhongConstants constants[4];
+    for (int m = 0; m < 4; ++m) {
+        LightingModel model;
+        model.reflection = m % 2 ? ReflectionModel::Phong : ReflectionModel::BlinnPhong;
+        model.local_viewer = m != 3;
+        model.lights.resize(std::size_t(1 + m));
+        for (Light& l : model.lights) {
+            l.direction = {u(rng), u(rng), u(rng)};
+            l.color = glm::abs(glm::vec3(u(rng), u(rng), u(rng)));
+        }
+        Material material;
+        material.base_color = glm::abs(glm::vec3(u(rng), u(rng), u(rng)));
+        material.shininess = float(1 + 13 * m);
+        constants[m] = make_phong_constants(model, material, {u(rng), u(rng), 3.0f},
+                                            glm::normalize(glm::vec3(u(rng), u(rng), 1)));
+    }
+    auto tile = std::make_unique<TileBuffers>();
+    int shaded = 0;
+    for (int round = 0; round < 100; ++round) {
+        for (int i = 0; i < TileBuffers::kPixels; ++i) {
+            tile->nx[i] = u(rng);
+            tile->ny[i] = u(rng);
+            tile->nz[i] = i % 29 == 0 ? 0.0f : u(rng);
+            if (i % 31 == 0) tile->nx[i] = tile->ny[i] = tile->nz[i] = 0.0f;
+            tile->wx[i] = u(rng);
+            tile->wy[i] = u(rng);
+            tile->wz[i] = u(rng);
+            // Runs of one material, as triangles leave them, with gaps and other materials.
+            const std::uint32_t material = (i / (1 + round % 7)) % 5;  // 0: untagged
+            tile->shade_tag[i] = material | (i % 3 == 0 ? kShadeFlip : 0u);
+        }
+        const int row = round % 64, count = 1 + (round * 13) % 64;
+        const std::size_t at = std::size_t(row * TileBuffers::kStride);
+        std::uint32_t simd[TileBuffers::kStride], scalar[TileBuffers::kStride];
+        std::fill_n(simd, TileBuffers::kStride, 0x12345678u);
+        std::fill_n(scalar, TileBuffers::kStride, 0x12345678u);
+        const int a = shade_tagged_row(constants, *tile, at, count, simd);
+        const int b = shade_tagged_row_scalar(constants, *tile, at, count, scalar);
+        ASSERT_EQ(a, b) << "round " << round;
+        shaded += a;
+        for (int i = 0; i < count; ++i)
+            ASSERT_EQ(simd[i], scalar[i]) << "round " << round << " " << i;
+    }
+    EXPECT_GT(shaded, 1500);
+}
+
 void expect_simd_equals_scalar(const Scene& scene, RenderOptions o) {
     o.id_targets = true;
     o.simd = false;
@@ -159,8 +239,8 @@ void WholeFramesMatchTheScalarPath() {
     o.cull = CullMode::Back;
     o.depth_compare.reset();
     expect_simd_equals_scalar(make_procedural_scene("builtin:default"), o);
-    // Instances with rotation, non-uniform scale and translation: the SIMD shader computes their
-    // world attributes per triangle (lazily), the scalar path per vertex: the same bits.
+    // Instances with rotation, non-uniform scale and translation: the SIMD vertex stage computes
+    // their world attributes and the kernel interpolates them: the same bits as the scalar path.
     Scene scene = make_procedural_scene("sphere:20000");
     scene.instances[0].transform =
         glm::scale(glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(0.3f, -0.2f, 0.1f)), 0.7f,
@@ -193,6 +273,10 @@ TEST(SimdKernels, VisibilityBlockMatchesScalarOnRandomTriangles) {
 
 TEST(SimdKernels, PhongShadingMatchesScalarOnRandomInputs) {
     on_every_target(PhongShadingMatchesScalarOnRandomInputs);
+}
+
+TEST(SimdKernels, TaggedRowShadingMatchesScalar) {
+    on_every_target(TaggedRowShadingMatchesScalar);
 }
 
 TEST(SimdKernels, WholeFramesMatchTheScalarPath) {

@@ -1,7 +1,8 @@
 // The vertex stage's kernel (src/render/vertex_kernel.hpp): the SIMD version gives the scalar
 // reference's clip positions and outcodes bit for bit everywhere, and its screen vertices where
 // the outcode is 0, on every instruction set the machine runs; positions include NaN, infinity,
-// huge values, points behind the eye and on w = 0, and points beyond the guard band.
+// huge values, points behind the eye and on w = 0, and points beyond the guard band. The world
+// positions and unit normals it computes on request equal world_attributes() bit for bit.
 #include <zraster/camera.hpp>
 #include <zraster/scenes.hpp>
 
@@ -64,10 +65,33 @@ TEST(VertexKernel, SimdMatchesScalarOnEveryTarget) {
         std::vector<glm::vec4> clip_a(job.count), clip_b(job.count);
         std::vector<ScreenVertex> screen_a(job.count), screen_b(job.count);
         std::vector<std::uint32_t> code_a(job.count), code_b(job.count);
+        // World attributes (on most rounds; some meshes have no normals, some normals are 0).
+        std::vector<glm::vec3> normals(job.count), world_a(job.count), world_b(job.count),
+            normal_a(job.count), normal_b(job.count);
+        for (glm::vec3& n : normals)
+            n = rng.next() % 13 == 0
+                    ? glm::vec3(0.0f)
+                    : glm::vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+        const bool with_world = round % 5 != 0;
+        job.model = glm::mat4(glm::vec4(rng.uniform(-2, 2), rng.uniform(-2, 2), 0.3f, 0.0f),
+                              glm::vec4(0.1f, rng.uniform(-2, 2), rng.uniform(-2, 2), 0.0f),
+                              glm::vec4(rng.uniform(-2, 2), 0.2f, rng.uniform(0.1, 3), 0.0f),
+                              glm::vec4(rng.uniform(-5, 5), rng.uniform(-5, 5), 1.0f, 1.0f));
+        job.normal_matrix = glm::transpose(glm::inverse(glm::mat3(job.model)));
+        job.normals = round % 4 == 1 ? nullptr : normals.data();
         job.clip_out = clip_a.data();
         job.screen_out = screen_a.data();
         job.outcode_out = code_a.data();
+        job.world_out = with_world ? world_a.data() : nullptr;
+        job.normal_out = with_world ? normal_a.data() : nullptr;
         transform_vertices_scalar(job);
+        for (std::size_t k = 0; with_world && k < job.count; ++k) {
+            glm::vec3 world, normal;
+            world_attributes(job.model, job.normal_matrix, positions[k],
+                             job.normals ? normals[k] : glm::vec3(0, 1, 0), world, normal);
+            ASSERT_EQ(std::memcmp(&world, &world_a[k], sizeof world), 0);
+            ASSERT_EQ(std::memcmp(&normal, &normal_a[k], sizeof normal), 0);
+        }
         for (std::size_t k = 0; k < job.count; ++k) {
             inside += code_a[k] == 0;
             non_finite += code_a[k] == kNonFinite;
@@ -76,12 +100,16 @@ TEST(VertexKernel, SimdMatchesScalarOnEveryTarget) {
         job.clip_out = clip_b.data();
         job.screen_out = screen_b.data();
         job.outcode_out = code_b.data();
+        job.world_out = with_world ? world_b.data() : nullptr;
+        job.normal_out = with_world ? normal_b.data() : nullptr;
         for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
             hwy::SetSupportedTargetsForTest(target);
             SCOPED_TRACE(std::string(hwy::TargetName(target)) + " round " + std::to_string(round));
             transform_vertices(job);
             ASSERT_EQ(std::memcmp(clip_a.data(), clip_b.data(), job.count * sizeof(glm::vec4)), 0);
             ASSERT_EQ(code_a, code_b);
+            ASSERT_EQ(std::memcmp(world_a.data(), world_b.data(), job.count * 12), 0);
+            ASSERT_EQ(std::memcmp(normal_a.data(), normal_b.data(), job.count * 12), 0);
             for (std::size_t k = 0; k < job.count; ++k) {
                 if (code_a[k] != 0) continue;
                 ASSERT_EQ(std::memcmp(&screen_a[k], &screen_b[k], sizeof(ScreenVertex)), 0) << k;
