@@ -43,7 +43,8 @@ HWY_INLINE V plane_at(D d, const PlaneEquation& p, V dx, float dy) {
     return hn::Add(hn::Add(hn::Set(d, p.c), hn::Mul(hn::Set(d, p.a), dx)), hn::Set(d, p.b * dy));
 }
 
-int VisibilityBlock(const BlockJob& job, TileBuffers& tile) {
+// One row of up to 8 pixels per step.
+int VisibilityRows(const BlockJob& job, TileBuffers& tile) {
     const hn::CappedTag<float, 8> df;
     const hn::RebindToSigned<decltype(df)> di;
     const hn::RebindToUnsigned<decltype(df)> du;
@@ -133,6 +134,131 @@ int VisibilityBlock(const BlockJob& job, TileBuffers& tile) {
         }
     }
     return passed;
+}
+
+// Two rows of up to 8 pixels per step, in 16 lanes (AVX-512): small triangles span few rows, so
+// this halves the steps. Lanes 0-7 are row y, lanes 8-15 row y + 1; the same operations per
+// lane as VisibilityRows.
+#if HWY_MAX_BYTES >= 64 && HWY_TARGET != HWY_SCALAR
+template <class D16>
+int VisibilityRowPairs(D16 d, const BlockJob& job, TileBuffers& tile) {
+    const hn::RebindToSigned<D16> di;
+    const hn::RebindToUnsigned<D16> du;
+    const TriangleSetup& t = *job.setup;
+    const auto zero_i = hn::Zero(di);
+    const auto zero_f = hn::Zero(d);
+    const auto one_f = hn::Set(d, 1.0f);
+    const auto lane = hn::Iota(di, 0);
+    const auto column = hn::And(lane, hn::Set(di, 7));
+    const auto second_row = hn::ShiftRight<3>(lane);  // 0 or 1
+    const auto in_width = hn::Lt(column, hn::Set(di, job.width));
+    std::int32_t e_row[3];
+    hn::Vec<decltype(di)> off[3];
+    for (int k = 0; k < 3; ++k) {
+        off[k] = hn::Add(hn::Mul(column, hn::Set(di, job.step_x[k])),
+                         hn::Mul(second_row, hn::Set(di, job.step_y[k])));
+        e_row[k] = job.e[k];
+    }
+    const auto dx = hn::ConvertTo(d, hn::Add(column, hn::Set(di, job.plane_dx)));
+    const auto ref = hn::Set(du, job.ref);
+    int passed = 0;
+    constexpr std::size_t kNext = TileBuffers::kStride;  // the second row's offset
+    for (int y = 0; y < job.height; y += 2) {
+        auto covered = hn::And(in_width, hn::Lt(second_row, hn::Set(di, job.height - y)));
+        if (!job.full) {
+            const auto e0 = hn::Add(hn::Set(di, e_row[0]), off[0]);
+            const auto e1 = hn::Add(hn::Set(di, e_row[1]), off[1]);
+            const auto e2 = hn::Add(hn::Set(di, e_row[2]), off[2]);
+            covered = hn::AndNot(hn::Lt(hn::Or(e0, hn::Or(e1, e2)), zero_i), covered);
+        }
+        for (int k = 0; k < 3; ++k) e_row[k] += 2 * job.step_y[k];
+        if (hn::AllFalse(di, covered)) continue;
+        const auto dy = hn::ConvertTo(d, hn::Add(second_row, hn::Set(di, job.plane_dy + y)));
+        // plane_at with a per-lane dy: (c + a * dx) + (b * dy).
+        const auto plane = [&](const PlaneEquation& p) {
+            return hn::Add(hn::Add(hn::Set(d, p.c), hn::Mul(hn::Set(d, p.a), dx)),
+                           hn::Mul(hn::Set(d, p.b), dy));
+        };
+        auto z = plane(t.depth);
+        z = hn::Add(hn::Min(hn::Max(z, zero_f), one_f), zero_f);
+        const std::size_t at =
+            static_cast<std::size_t>((job.y0 + y) * TileBuffers::kStride + job.x0);
+        // Both rows' 8 values (the second may be past the block or the tile: then its lanes
+        // are not covered and the same values go back; TileBuffers has room for that).
+        const auto load_pair = [&](auto dtag, const auto* from) {
+            const hn::Half<decltype(dtag)> half;
+            return hn::Combine(dtag, hn::LoadU(half, from + at + kNext),
+                               hn::LoadU(half, from + at));
+        };
+        const auto store_pair = [&](auto dtag, auto v, auto* to) {
+            const hn::Half<decltype(dtag)> half;
+            hn::StoreU(hn::LowerHalf(half, v), half, to + at);
+            hn::StoreU(hn::UpperHalf(half, v), half, to + at + kNext);
+        };
+        const auto stored = load_pair(d, tile.depth);
+        const auto pass =
+            hn::And(hn::RebindMask(d, covered), depth_passes(d, z, stored, job.compare));
+        if (hn::AllFalse(d, pass)) continue;
+        passed += static_cast<int>(hn::CountTrue(d, pass));
+        if (job.write_depth) store_pair(d, hn::IfThenElse(pass, z, stored), tile.depth);
+        if (!job.attributes) continue;
+        const auto pass_u = hn::RebindMask(du, pass);
+        store_pair(du, hn::IfThenElse(pass_u, ref, load_pair(du, tile.ref)), tile.ref);
+        if (!job.barycentrics) continue;
+        hn::Vec<D16> b1, b2;
+        if (job.perspective) {
+            const auto q = plane(t.q);
+            b1 = hn::Div(plane(t.p1), q);
+            b2 = hn::Div(plane(t.p2), q);
+        } else {
+            b1 = plane(t.l1);
+            b2 = plane(t.l2);
+        }
+        const auto store = [&](auto v, auto* to) {
+            store_pair(d, hn::IfThenElse(pass, v, load_pair(d, to)), to);
+        };
+        const auto tag = hn::Set(du, job.corners ? job.corners->tag : 0u);
+        store_pair(du, hn::IfThenElse(pass_u, tag, load_pair(du, tile.shade_tag)), tile.shade_tag);
+        if (job.corners == nullptr) {
+            store(b1, tile.b1);
+            store(b2, tile.b2);
+            continue;
+        }
+        const CornerAttributes& a = *job.corners;
+        auto w0 = hn::Sub(hn::Sub(one_f, b1), b2), w1 = b1, w2 = b2;
+        if (a.piece != nullptr) {
+            const auto remap = [&](int c) {
+                return hn::Add(hn::Add(hn::Mul(w0, hn::Set(d, a.piece[0][c])),
+                                       hn::Mul(w1, hn::Set(d, a.piece[1][c]))),
+                               hn::Mul(w2, hn::Set(d, a.piece[2][c])));
+            };
+            const auto r0 = remap(0), r1 = remap(1), r2 = remap(2);
+            w0 = r0;
+            w1 = r1;
+            w2 = r2;
+        }
+        const auto interpolate = [&](const glm::vec3* corner, int c) {
+            return hn::Add(hn::Add(hn::Mul(hn::Set(d, corner[0][c]), w0),
+                                   hn::Mul(hn::Set(d, corner[1][c]), w1)),
+                           hn::Mul(hn::Set(d, corner[2][c]), w2));
+        };
+        store(interpolate(a.normal, 0), tile.nx);
+        store(interpolate(a.normal, 1), tile.ny);
+        store(interpolate(a.normal, 2), tile.nz);
+        store(interpolate(a.world, 0), tile.wx);
+        store(interpolate(a.world, 1), tile.wy);
+        store(interpolate(a.world, 2), tile.wz);
+    }
+    return passed;
+}
+#endif
+
+int VisibilityBlock(const BlockJob& job, TileBuffers& tile) {
+#if HWY_MAX_BYTES >= 64 && HWY_TARGET != HWY_SCALAR
+    const hn::CappedTag<float, 16> d16;
+    if (hn::Lanes(d16) == 16 && job.width <= 8) return VisibilityRowPairs(d16, job, tile);
+#endif
+    return VisibilityRows(job, tile);
 }
 
 float BlockFarthestDepth(const TileBuffers& tile, int block_x, int block_y, bool largest) {

@@ -187,11 +187,12 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
     };
     // Small triangles (vertices within 64 pixels each way, the common case) have edge values
     // that fit 32 bits anywhere near them (|E| <= 2^22 * 65 * 2 < 2^30), so a triangle whose
-    // pixels lie within one 8x8 block is a single partial block: no corner tests.
+    // pixels span at most 8 columns and 16 rows is one kernel job wherever it lies on the block
+    // grid: no corner tests, and one call instead of up to four.
     const auto [lo_x, hi_x] = std::minmax({setup.x[0], setup.x[1], setup.x[2]});
     const auto [lo_y, hi_y] = std::minmax({setup.y[0], setup.y[1], setup.y[2]});
     if (hi_x - lo_x < 64 * kSubpixelScale && hi_y - lo_y < 64 * kSubpixelScale &&
-        rx1 - rx0 < kBlockSize && ry1 - ry0 < kBlockSize)
+        rx1 - rx0 < kBlockSize && ry1 - ry0 < 2 * kBlockSize)
         return run_block(rx0, ry0, rx1, ry1, false);
 
     std::uint64_t passed = 0;
