@@ -152,43 +152,63 @@ void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, Ti
     }
 }
 
-bool RectOccluded(const TileGrid& grid, int x0, int y0, int x1, int y1, float depth) {
+// One tile of a rectangle test: true when the rectangle's pixels in it (columns x0..x1 and
+// rows y0..y1, clipped to the tile) all hold a bound in front of `depth`.
+HWY_INLINE bool TileOccluded(const TileGrid& grid, int tx, int ty, int x0, int y0, int x1, int y1,
+                             float depth) {
     const DF df;
     const DI di;
     const DU du;
     const int lanes = static_cast<int>(hn::Lanes(df));
+    const OcclusionTile& tile = grid.tiles[static_cast<std::size_t>(ty) * grid.tiles_x + tx];
+    const int s = std::max(x0 - tx * kOcclusionTileWidth, 0);
+    const int e = std::min(x1 + 1 - tx * kOcclusionTileWidth, kOcclusionTileWidth);
+    const std::uint32_t high = e >= 32 ? ~0u : (1u << e) - 1u;  // e <= tile width
+    const std::uint32_t rect_mask = high & ~((1u << s) - 1u);   // s <= 31 here
+    // A full mask never stays in a tile, so over whole rows the far layer decides, and the
+    // caller saw that one of them is not in front.
+    const bool all_rows = ty * kOcclusionTileHeight >= y0 &&
+                          ty * kOcclusionTileHeight + kOcclusionTileHeight - 1 <= y1;
+    if (all_rows && rect_mask == kOcclusionFullMask) return false;
     const auto d = hn::Set(df, depth);
-    const auto zero_u = hn::Zero(du);
+    const auto rect = hn::Set(du, rect_mask);
     const auto row_lo = hn::Set(di, y0 - 1), row_hi = hn::Set(di, y1 + 1);
+    for (int r = 0; r < kOcclusionTileHeight; r += lanes) {
+        const auto y = hn::Iota(di, ty * kOcclusionTileHeight + r);
+        const auto row_valid = hn::RebindMask(df, hn::And(hn::Gt(y, row_lo), hn::Lt(y, row_hi)));
+        const auto uncovered =
+            hn::RebindMask(df, hn::Ne(hn::AndNot(hn::Load(du, tile.mask + r), rect), hn::Zero(du)));
+        const auto bound = hn::IfThenElse(uncovered, hn::Load(df, tile.far_depth + r),
+                                          hn::Load(df, tile.near_depth + r));
+        if (!hn::AllTrue(df, hn::Or(hn::Lt(bound, d), hn::Not(row_valid)))) return false;
+    }
+    return true;
+}
+
+// The coarse levels settle most tiles: a row of tiles at a time, one lane per tile (the
+// arrays are padded for the whole vector loads); only tiles whose largest bound is not in front
+// but whose smallest is are read.
+bool RectOccluded(const TileGrid& grid, int x0, int y0, int x1, int y1, float depth) {
+    const DF df;
+    const int lanes = static_cast<int>(hn::Lanes(df));
+    const auto d = hn::Set(df, depth);
+    const int tx0 = x0 / kOcclusionTileWidth, tx1 = x1 / kOcclusionTileWidth;
     for (int ty = y0 / kOcclusionTileHeight; ty <= y1 / kOcclusionTileHeight; ++ty) {
-        const OcclusionTile* row_tiles = grid.tiles + static_cast<std::size_t>(ty) * grid.tiles_x;
-        const bool all_rows = ty * kOcclusionTileHeight >= y0 &&
-                              ty * kOcclusionTileHeight + kOcclusionTileHeight - 1 <= y1;
-        for (int tx = x0 / kOcclusionTileWidth; tx <= x1 / kOcclusionTileWidth; ++tx) {
-            const OcclusionTile& tile = row_tiles[tx];
-            const int s = std::max(x0 - tx * kOcclusionTileWidth, 0);
-            const int e = std::min(x1 + 1 - tx * kOcclusionTileWidth, kOcclusionTileWidth);
-            const std::uint32_t high = e >= 32 ? ~0u : (1u << e) - 1u;  // e <= tile width
-            const std::uint32_t rect_mask = high & ~((1u << s) - 1u);   // s <= 31 here
-            // Every row's far layer in front, or no pixel in front: settled without reading
-            // the tile.
-            if (grid.tile_max[&tile - grid.tiles] < depth) continue;
-            if (!(grid.tile_min[&tile - grid.tiles] < depth)) return false;
-            // A full mask never stays in a tile, so over whole rows the far layer decides: here
-            // one of them is not in front.
-            if (all_rows && rect_mask == kOcclusionFullMask) return false;
-            const auto rect = hn::Set(du, rect_mask);
-            for (int r = 0; r < kOcclusionTileHeight; r += lanes) {
-                const auto y = hn::Iota(di, ty * kOcclusionTileHeight + r);
-                const auto row_valid =
-                    hn::RebindMask(df, hn::And(hn::Gt(y, row_lo), hn::Lt(y, row_hi)));
-                const auto uncovered = hn::RebindMask(
-                    df, hn::Ne(hn::AndNot(hn::Load(du, tile.mask + r), rect), zero_u));
-                const auto bound = hn::IfThenElse(uncovered, hn::Load(df, tile.far_depth + r),
-                                                  hn::Load(df, tile.near_depth + r));
-                const auto hidden = hn::Lt(bound, d);
-                if (!hn::AllTrue(df, hn::Or(hidden, hn::Not(row_valid)))) return false;
-            }
+        const std::size_t row = static_cast<std::size_t>(ty) * grid.tiles_x;
+        for (int tx = tx0; tx <= tx1; tx += lanes) {
+            const auto in_rect = hn::FirstN(df, static_cast<std::size_t>(tx1 + 1 - tx));
+            // Lanes past tx1 read the next tiles or the padding; in_rect masks them out.
+            const auto lo = hn::LoadU(df, grid.tile_min + row + tx);
+            const auto hi = hn::LoadU(df, grid.tile_max + row + tx);
+            // A tile with no bound in front: the rectangle is seen there.
+            if (!hn::AllFalse(df, hn::AndNot(hn::Lt(lo, d), in_rect))) return false;
+            const auto open = hn::AndNot(hn::Lt(hi, d), in_rect);
+            if (hn::AllFalse(df, open)) continue;
+            std::uint8_t bits[8] = {};
+            hn::StoreMaskBits(df, open, bits);
+            for (int l = 0; l < lanes && tx + l <= tx1; ++l)
+                if ((bits[l / 8] >> (l % 8)) & 1u)
+                    if (!TileOccluded(grid, tx + l, ty, x0, y0, x1, y1, depth)) return false;
         }
     }
     return true;

@@ -111,6 +111,8 @@ struct TileGrid {
     float* tile_min = nullptr;
     int tiles_x = 0, tiles_y = 0;
 };
+// tile_max and tile_min hold this many floats past the last tile (one vector's worth).
+inline constexpr std::size_t kCoarsePadding = 16;
 
 // Rasterizes triangles [0, count) in order.
 void rasterize_occluders(const OccluderTriangle* triangles, std::size_t count, TileGrid grid);
