@@ -74,6 +74,7 @@ void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, Ti
         const auto z_dy = hn::Set(df, t.z_dy), z_kx = hn::Set(df, t.z_kx);
         const auto z_ky = hn::Set(df, t.z_ky), z_bias = hn::Set(df, t.z_bias);
         const auto z_max = hn::Set(df, t.z_max);
+        const auto z_dx_positive = hn::RebindMask(di, hn::Gt(z_dx, hn::Zero(df)));
         for (int ty = ty0; ty <= ty1; ++ty) {
             OcclusionTile* row_tiles = grid.tiles + static_cast<std::size_t>(ty) * grid.tiles_x;
             for (int r = 0; r < kOcclusionTileHeight; r += lanes) {
@@ -104,8 +105,9 @@ void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, Ti
                 // the covered pixels of the row inside the tile.
                 const auto row_depth =
                     hn::Add(hn::Add(z_origin, hn::Mul(z_dy, hn::Add(yf, z_ky))), z_bias);
-                const auto row_extreme = t.z_dx_positive ? hn::Sub(hn::Sub(end, one_i), origin_x)
-                                                         : hn::Sub(first, origin_x);
+                // A select, not a branch: the sign of z_dx is a coin toss per triangle.
+                const auto row_extreme =
+                    hn::Sub(hn::IfThenElse(z_dx_positive, hn::Sub(end, one_i), first), origin_x);
                 auto row_bound = hn::Add(
                     row_depth, hn::Mul(z_dx, hn::Add(hn::ConvertTo(df, row_extreme), z_kx)));
                 row_bound = hn::IfThenElse(hn::Lt(row_bound, z_max), row_bound, z_max);
@@ -118,7 +120,6 @@ void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, Ti
                     e = hn::Min(hn::Max(e, zero_i), width_i);
                     // Columns s..e-1: (~0 << s) & ~(~0 << e).
                     const auto coverage = hn::AndNot(ones_shifted_left(e), ones_shifted_left(s));
-                    if (hn::AllTrue(du, hn::Eq(coverage, zero_u))) continue;
                     const auto tile_bound = hn::Add(row_depth, hn::Set(df, tile_depth_step(t, tx)));
                     const auto z =
                         hn::IfThenElse(hn::Lt(row_bound, tile_bound), row_bound, tile_bound);
@@ -128,7 +129,6 @@ void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, Ti
                     const auto near_depth = hn::Load(df, tile.near_depth + r);
                     const auto live =
                         hn::And(hn::RebindMask(df, hn::Ne(coverage, zero_u)), hn::Lt(z, far_depth));
-                    if (hn::AllFalse(df, live)) continue;
                     const auto discard =
                         hn::Gt(hn::Sub(near_depth, z), hn::Sub(far_depth, near_depth));
                     auto merged_mask = hn::IfThenZeroElse(hn::RebindMask(du, discard), mask);
