@@ -60,19 +60,12 @@ struct OcclusionBuffer::Impl {
     int dirty_x0 = 1 << 30, dirty_y0 = 1 << 30, dirty_x1 = -1, dirty_y1 = -1;
 
     void refresh_coarse_levels() {
-        for (int ty = dirty_y0; ty <= dirty_y1; ++ty)
-            for (int tx = dirty_x0; tx <= dirty_x1; ++tx) {
-                const std::size_t i = static_cast<std::size_t>(ty) * grid.tiles_x + tx;
-                const OcclusionTile& t = tiles[i];
-                float hi = t.far_depth[0], lo = t.far_depth[0];
-                for (int r = 0; r < kTileHeight; ++r) {
-                    const float bound = t.mask[r] != 0 ? t.near_depth[r] : t.far_depth[r];
-                    hi = t.far_depth[r] > hi ? t.far_depth[r] : hi;
-                    lo = bound < lo ? bound : lo;
-                }
-                tile_max[i] = hi;
-                tile_min[i] = lo;
-            }
+        if (dirty_x0 <= dirty_x1) {
+            if (simd)
+                detail::refresh_coarse_levels(grid, dirty_x0, dirty_y0, dirty_x1, dirty_y1);
+            else
+                detail::refresh_coarse_levels_scalar(grid, dirty_x0, dirty_y0, dirty_x1, dirty_y1);
+        }
         dirty_x0 = dirty_y0 = 1 << 30;
         dirty_x1 = dirty_y1 = -1;
     }

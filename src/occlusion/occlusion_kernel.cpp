@@ -152,6 +152,33 @@ void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, Ti
     }
 }
 
+// Per tile of columns tx0..tx1 and rows ty0..ty1, the largest far layer and the smallest bound
+// (TileGrid::tile_max and tile_min): one tile per vector loop.
+void RefreshCoarseLevels(TileGrid grid, int tx0, int ty0, int tx1, int ty1) {
+    const DF df;
+    const DU du;
+    const int lanes = static_cast<int>(hn::Lanes(df));
+    for (int ty = ty0; ty <= ty1; ++ty)
+        for (int tx = tx0; tx <= tx1; ++tx) {
+            const std::size_t i = static_cast<std::size_t>(ty) * grid.tiles_x + tx;
+            const OcclusionTile& t = grid.tiles[i];
+            auto hi = hn::Load(df, t.far_depth);
+            auto lo = hn::IfThenElse(hn::RebindMask(df, hn::Ne(hn::Load(du, t.mask), hn::Zero(du))),
+                                     hn::Load(df, t.near_depth), hi);
+            for (int r = lanes; r < kOcclusionTileHeight; r += lanes) {
+                const auto far_depth = hn::Load(df, t.far_depth + r);
+                const auto masked =
+                    hn::RebindMask(df, hn::Ne(hn::Load(du, t.mask + r), hn::Zero(du)));
+                hi = hn::Max(hi, far_depth);
+                lo = hn::Min(lo, hn::IfThenElse(masked, hn::Load(df, t.near_depth + r), far_depth));
+            }
+            grid.tile_max[i] = hn::GetLane(hn::MaxOfLanes(df, hi));
+            // As the scalar twin: far_depth[0] takes part (near <= far makes it moot).
+            const float lo_lanes = hn::GetLane(hn::MinOfLanes(df, lo));
+            grid.tile_min[i] = lo_lanes < t.far_depth[0] ? lo_lanes : t.far_depth[0];
+        }
+}
+
 // One tile of a rectangle test: true when the rectangle's pixels in it (columns x0..x1 and
 // rows y0..y1, clipped to the tile) all hold a bound in front of `depth`.
 HWY_INLINE bool TileOccluded(const TileGrid& grid, int tx, int ty, int x0, int y0, int x1, int y1,
@@ -461,6 +488,7 @@ namespace zraster::detail {
 HWY_EXPORT(RasterizeOccluders);
 HWY_EXPORT(SetupOccluders);
 HWY_EXPORT(RectOccluded);
+HWY_EXPORT(RefreshCoarseLevels);
 HWY_EXPORT(OcclusionTargetName);
 
 void rasterize_occluders(const OccluderTriangle* triangles, std::size_t count, TileGrid grid) {
@@ -474,6 +502,26 @@ std::size_t setup_occluders(const OccluderSource& source, std::size_t first, std
 
 bool rect_occluded(const TileGrid& grid, int x0, int y0, int x1, int y1, float depth) {
     return HWY_DYNAMIC_DISPATCH(RectOccluded)(grid, x0, y0, x1, y1, depth);
+}
+
+void refresh_coarse_levels(TileGrid grid, int tx0, int ty0, int tx1, int ty1) {
+    HWY_DYNAMIC_DISPATCH(RefreshCoarseLevels)(grid, tx0, ty0, tx1, ty1);
+}
+
+void refresh_coarse_levels_scalar(TileGrid grid, int tx0, int ty0, int tx1, int ty1) {
+    for (int ty = ty0; ty <= ty1; ++ty)
+        for (int tx = tx0; tx <= tx1; ++tx) {
+            const std::size_t i = static_cast<std::size_t>(ty) * grid.tiles_x + tx;
+            const OcclusionTile& t = grid.tiles[i];
+            float hi = t.far_depth[0], lo = t.far_depth[0];
+            for (int r = 0; r < kOcclusionTileHeight; ++r) {
+                const float bound = t.mask[r] != 0 ? t.near_depth[r] : t.far_depth[r];
+                hi = t.far_depth[r] > hi ? t.far_depth[r] : hi;
+                lo = bound < lo ? bound : lo;
+            }
+            grid.tile_max[i] = hi;
+            grid.tile_min[i] = lo;
+        }
 }
 
 const char* occlusion_kernel_target() {

@@ -119,6 +119,10 @@ void rasterize_occluders(const OccluderTriangle* triangles, std::size_t count, T
 void rasterize_occluders_scalar(const OccluderTriangle* triangles, std::size_t count,
                                 TileGrid grid);
 
+// Recomputes tile_max and tile_min of tiles tx0..tx1, ty0..ty1 (inclusive).
+void refresh_coarse_levels(TileGrid grid, int tx0, int ty0, int tx1, int ty1);
+void refresh_coarse_levels_scalar(TileGrid grid, int tx0, int ty0, int tx1, int ty1);
+
 // True when every pixel of columns x0..x1, rows y0..y1 (inclusive, inside the grid) holds a
 // depth bound strictly less than `depth`.
 bool rect_occluded(const TileGrid& grid, int x0, int y0, int x1, int y1, float depth);
