@@ -289,26 +289,60 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
     for (std::size_t base = 0; base < count; base += lanes) {
         const std::size_t m = std::min(lanes, count - base);
         std::uint32_t valid = 0;
-        for (std::size_t l = 0; l < lanes; ++l) {
-            interior[l] = 0;
-            for (int v = 0; v < 3; ++v) {
-                own[v][l] = kNoTriangle;
-                previous[v][l] = next[v][l] = kNoNeighbour;
+        const std::size_t i0 = first + base;
+        if (m == lanes && i0 > 0 && i0 + lanes < src.triangle_count &&
+            src.vertex_count <= 0xffffffffu) {
+            // A whole vector with both neighbours in the list: the indices as vectors.
+            const std::uint32_t* t = src.indices + 3 * i0;
+            const auto limit = hn::Set(du, static_cast<std::uint32_t>(src.vertex_count));
+            hn::Vec<DU> a, b, c;
+            hn::LoadInterleaved3(du, t, a, b, c);
+            const auto ok = hn::And(hn::And(hn::Lt(a, limit), hn::Lt(b, limit)), hn::Lt(c, limit));
+            const hn::Vec<DU> corner[3] = {a, b, c};
+            for (auto* other : {&previous, &next}) {
+                hn::Vec<DU> d, e, f;
+                hn::LoadInterleaved3(du, other == &previous ? t - 3 : t + 3, d, e, f);
+                const auto filler = hn::Set(du, kNoNeighbour);
+                hn::Store(hn::IfThenElse(ok, d, filler), du, (*other)[0]);
+                hn::Store(hn::IfThenElse(ok, e, filler), du, (*other)[1]);
+                hn::Store(hn::IfThenElse(ok, f, filler), du, (*other)[2]);
             }
-            const std::size_t i = first + base + l;
-            const std::uint32_t* t = l < m ? src.indices + 3 * i : nullptr;
-            if (!t || t[0] >= src.vertex_count || t[1] >= src.vertex_count ||
-                t[2] >= src.vertex_count) {
-                for (int v = 0; v < 3; ++v) std::fill_n(corners[v] + 4 * l, 4, 0.0f);
-                continue;
-            }
-            valid |= 1u << l;
-            for (int v = 0; v < 3; ++v) {
-                std::memcpy(corners[v] + 4 * l, src.clip + 4 * std::size_t{t[v]},
-                            4 * sizeof(float));
-                own[v][l] = t[v];
-                if (i > 0) previous[v][l] = t[v - 3];
-                if (i + 1 < src.triangle_count) next[v][l] = t[v + 3];
+            for (int v = 0; v < 3; ++v)
+                hn::Store(hn::IfThenElse(ok, corner[v], hn::Set(du, kNoTriangle)), du, own[v]);
+            hn::Store(hn::Zero(di), di, interior);
+            alignas(64) std::uint8_t bits[8] = {};
+            hn::StoreMaskBits(du, ok, bits);
+            std::memcpy(&valid, bits, sizeof(valid));  // lanes <= 16: the low bytes, little endian
+            valid &= lanes >= 32 ? ~0u : (1u << lanes) - 1u;
+            // Lanes with a bad index read vertex 0 (there is one); their results are dropped.
+            alignas(64) std::uint32_t read[3][kMaxLanes];
+            for (int v = 0; v < 3; ++v) hn::Store(hn::IfThenElseZero(ok, corner[v]), du, read[v]);
+            for (std::size_t l = 0; l < lanes; ++l)
+                for (int v = 0; v < 3; ++v)
+                    std::memcpy(corners[v] + 4 * l, src.clip + 4 * std::size_t{read[v][l]},
+                                4 * sizeof(float));
+        } else {
+            for (std::size_t l = 0; l < lanes; ++l) {
+                interior[l] = 0;
+                for (int v = 0; v < 3; ++v) {
+                    own[v][l] = kNoTriangle;
+                    previous[v][l] = next[v][l] = kNoNeighbour;
+                }
+                const std::size_t i = first + base + l;
+                const std::uint32_t* t = l < m ? src.indices + 3 * i : nullptr;
+                if (!t || t[0] >= src.vertex_count || t[1] >= src.vertex_count ||
+                    t[2] >= src.vertex_count) {
+                    for (int v = 0; v < 3; ++v) std::fill_n(corners[v] + 4 * l, 4, 0.0f);
+                    continue;
+                }
+                valid |= 1u << l;
+                for (int v = 0; v < 3; ++v) {
+                    std::memcpy(corners[v] + 4 * l, src.clip + 4 * std::size_t{t[v]},
+                                4 * sizeof(float));
+                    own[v][l] = t[v];
+                    if (i > 0) previous[v][l] = t[v - 3];
+                    if (i + 1 < src.triangle_count) next[v][l] = t[v + 3];
+                }
             }
         }
         // Interior edges: a quick vector search for an edge shared (reversed) with either
