@@ -61,10 +61,8 @@ void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, Ti
         const int ty0 = t.y0 / kOcclusionTileHeight, ty1 = t.y1 / kOcclusionTileHeight;
         const auto left_x0 = hn::Set(df, t.left_x[0]), left_step0 = hn::Set(df, t.left_step[0]);
         const auto left_x1 = hn::Set(df, t.left_x[1]), left_step1 = hn::Set(df, t.left_step[1]);
-        const auto left_x2 = hn::Set(df, t.left_x[2]), left_step2 = hn::Set(df, t.left_step[2]);
         const auto right_x0 = hn::Set(df, t.right_x[0]), right_step0 = hn::Set(df, t.right_step[0]);
         const auto right_x1 = hn::Set(df, t.right_x[1]), right_step1 = hn::Set(df, t.right_step[1]);
-        const auto right_x2 = hn::Set(df, t.right_x[2]), right_step2 = hn::Set(df, t.right_step[2]);
         const auto span_lo = hn::Set(df, static_cast<float>(t.x0));
         const auto span_hi = hn::Set(df, static_cast<float>(t.x1 + 1));
         const auto row_lo = hn::Set(di, t.y0 - 1), row_hi = hn::Set(di, t.y1 + 1);
@@ -83,14 +81,10 @@ void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, Ti
                 const auto yf = hn::ConvertTo(df, hn::Sub(y, origin_y));
                 const auto l0 = hn::Add(left_x0, hn::Mul(yf, left_step0));
                 const auto l1 = hn::Add(left_x1, hn::Mul(yf, left_step1));
-                const auto l2 = hn::Add(left_x2, hn::Mul(yf, left_step2));
                 const auto r0 = hn::Add(right_x0, hn::Mul(yf, right_step0));
                 const auto r1 = hn::Add(right_x1, hn::Mul(yf, right_step1));
-                const auto r2 = hn::Add(right_x2, hn::Mul(yf, right_step2));
-                auto xl = hn::IfThenElse(hn::Gt(l0, l1), l0, l1);
-                xl = hn::IfThenElse(hn::Gt(xl, l2), xl, l2);
-                auto xr = hn::IfThenElse(hn::Lt(r0, r1), r0, r1);
-                xr = hn::IfThenElse(hn::Lt(xr, r2), xr, r2);
+                const auto xl = hn::IfThenElse(hn::Gt(l0, l1), l0, l1);
+                const auto xr = hn::IfThenElse(hn::Lt(r0, r1), r0, r1);
                 // First covered column and one past the last, clamped to the bounding box.
                 auto lo = hn::Add(xl, half);
                 lo = hn::IfThenElse(hn::Lt(lo, span_lo), span_lo, lo);
@@ -417,6 +411,8 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
         keep = hn::And(keep, hn::And(hn::Le(x0, x1), hn::Le(y0, y1)));
 
         const auto row0 = hn::Add(y0, half);
+        hn::Vec<DF> left_x[3], left_step[3], right_x[3], right_step[3];
+        hn::Mask<DF> left[3], right[3];
         for (int e = 0; e < 3; ++e) {
             const hn::Vec<DF>&ax = X[e], &ay = Y[e], &bx = X[(e + 1) % 3], &by = Y[(e + 1) % 3];
             const auto dy = hn::Sub(by, ay);
@@ -432,12 +428,24 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
             const auto left_side = hn::Xor(counter_clockwise, hn::Lt(dy, zero));
             const auto is_left = hn::And(slanted, left_side);
             const auto is_right = hn::AndNot(left_side, slanted);
-            hn::Store(hn::IfThenElse(is_left, hn::Add(x, inset), minus_no_edge), df,
-                      fields[k::kLeftX + e]);
-            hn::Store(hn::IfThenElseZero(is_left, step), df, fields[k::kLeftStep + e]);
-            hn::Store(hn::IfThenElse(is_right, hn::Sub(x, inset), no_edge), df,
-                      fields[k::kRightX + e]);
-            hn::Store(hn::IfThenElseZero(is_right, step), df, fields[k::kRightStep + e]);
+            left[e] = is_left;
+            right[e] = is_right;
+            left_x[e] = hn::IfThenElse(is_left, hn::Add(x, inset), minus_no_edge);
+            left_step[e] = hn::IfThenElseZero(is_left, step);
+            right_x[e] = hn::IfThenElse(is_right, hn::Sub(x, inset), no_edge);
+            right_step[e] = hn::IfThenElseZero(is_right, step);
+        }
+        // At most two edges per side (their dy share a sign): two slots each (see kEdgeSlots).
+        // Slot 0 takes the first edge of the side, slot 1 the second (or the last edge again).
+        const auto pack = [&](const hn::Vec<DF>* v, const hn::Mask<DF>* is, int slot) {
+            return slot == 0 ? hn::IfThenElse(is[0], v[0], hn::IfThenElse(is[1], v[1], v[2]))
+                             : hn::IfThenElse(hn::And(is[0], is[1]), v[1], v[2]);
+        };
+        for (int slot = 0; slot < kEdgeSlots; ++slot) {
+            hn::Store(pack(left_x, left, slot), df, fields[k::kLeftX + slot]);
+            hn::Store(pack(left_step, left, slot), df, fields[k::kLeftStep + slot]);
+            hn::Store(pack(right_x, right, slot), df, fields[k::kRightX + slot]);
+            hn::Store(pack(right_step, right, slot), df, fields[k::kRightStep + slot]);
         }
 
         const auto e1x = hn::Sub(X[1], X[0]), e1y = hn::Sub(Y[1], Y[0]), e1z = hn::Sub(Z[1], Z[0]);
@@ -490,7 +498,7 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
             o.x1 = box[1][l];
             o.y0 = box[2][l];
             o.y1 = box[3][l];
-            for (int e = 0; e < 3; ++e) {
+            for (int e = 0; e < kEdgeSlots; ++e) {
                 o.left_x[e] = fields[k::kLeftX + e][l];
                 o.left_step[e] = fields[k::kLeftStep + e][l];
                 o.right_x[e] = fields[k::kRightX + e][l];
@@ -584,14 +592,10 @@ void rasterize_occluders_scalar(const OccluderTriangle* triangles, std::size_t c
                 const float yf = static_cast<float>(y - t.y0);
                 const float l0 = t.left_x[0] + yf * t.left_step[0];
                 const float l1 = t.left_x[1] + yf * t.left_step[1];
-                const float l2 = t.left_x[2] + yf * t.left_step[2];
                 const float r0 = t.right_x[0] + yf * t.right_step[0];
                 const float r1 = t.right_x[1] + yf * t.right_step[1];
-                const float r2 = t.right_x[2] + yf * t.right_step[2];
-                float xl = l0 > l1 ? l0 : l1;
-                xl = xl > l2 ? xl : l2;
-                float xr = r0 < r1 ? r0 : r1;
-                xr = xr < r2 ? xr : r2;
+                const float xl = l0 > l1 ? l0 : l1;
+                const float xr = r0 < r1 ? r0 : r1;
                 float lo = xl + 0.5f;
                 lo = lo < span_lo ? span_lo : lo;
                 lo = lo > span_hi ? span_hi : lo;
@@ -709,6 +713,8 @@ std::size_t setup_occluders_scalar(const OccluderSource& src, std::size_t first,
         if (!keep) continue;
         OccluderTriangle& o = out[n++];
         const float row0 = y0 + 0.5f;
+        float left_x[3], left_step[3], right_x[3], right_step[3];
+        bool left[3], right[3];
         for (int e = 0; e < 3; ++e) {
             const float ax = X[e], ay = Y[e], bx = X[(e + 1) % 3], by = Y[(e + 1) % 3];
             const float dy = by - ay;
@@ -719,10 +725,22 @@ std::size_t setup_occluders_scalar(const OccluderSource& src, std::size_t first,
             const float inset = (1.0f + std::fabs(step)) * (is_interior ? -float_margin : margin);
             const bool left_side = counter_clockwise != (dy < 0.0f);
             const bool is_left = slanted && left_side, is_right = slanted && !left_side;
-            o.left_x[e] = is_left ? x + inset : -kNoEdge;
-            o.left_step[e] = is_left ? step : 0.0f;
-            o.right_x[e] = is_right ? x - inset : kNoEdge;
-            o.right_step[e] = is_right ? step : 0.0f;
+            left[e] = is_left;
+            right[e] = is_right;
+            left_x[e] = is_left ? x + inset : -kNoEdge;
+            left_step[e] = is_left ? step : 0.0f;
+            right_x[e] = is_right ? x - inset : kNoEdge;
+            right_step[e] = is_right ? step : 0.0f;
+        }
+        const auto pack = [](const float* v, const bool* is, int slot) {
+            return slot == 0 ? (is[0] ? v[0] : (is[1] ? v[1] : v[2]))
+                             : (is[0] && is[1] ? v[1] : v[2]);
+        };
+        for (int slot = 0; slot < kEdgeSlots; ++slot) {
+            o.left_x[slot] = pack(left_x, left, slot);
+            o.left_step[slot] = pack(left_step, left, slot);
+            o.right_x[slot] = pack(right_x, right, slot);
+            o.right_step[slot] = pack(right_step, right, slot);
         }
         const float e1x = X[1] - X[0], e1y = Y[1] - Y[0], e1z = Z[1] - Z[0];
         const float e2x = X[2] - X[0], e2y = Y[2] - Y[0], e2z = Z[2] - Z[0];
