@@ -136,6 +136,8 @@ bool setup_projected(const std::array<WindowVertex, 3>& v, double area2, int wid
         const double step = (b.x - a.x) / dy;
         const double x = a.x + (row0 - a.y) * step;
         const double inset = (1.0 + std::abs(step)) * margin;
+        // Two per side at most (their dy share a sign); a third would mean a broken triangle.
+        if ((area2 * dy < 0.0 ? lefts : rights) == kEdgeSlots) return false;
         if (area2 * dy < 0.0) {  // the inside is to the right of this edge
             t.left_x[lefts] = static_cast<float>(x + inset);
             t.left_step[lefts++] = static_cast<float>(step);
@@ -145,11 +147,11 @@ bool setup_projected(const std::array<WindowVertex, 3>& v, double area2, int wid
         }
     }
     if (lefts == 0 || rights == 0) return false;  // degenerate
-    for (; lefts < 3; ++lefts) {
+    for (; lefts < kEdgeSlots; ++lefts) {
         t.left_x[lefts] = -kNoEdge;
         t.left_step[lefts] = 0.0f;
     }
-    for (; rights < 3; ++rights) {
+    for (; rights < kEdgeSlots; ++rights) {
         t.right_x[rights] = kNoEdge;
         t.right_step[rights] = 0.0f;
     }

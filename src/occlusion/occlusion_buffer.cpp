@@ -60,19 +60,12 @@ struct OcclusionBuffer::Impl {
     int dirty_x0 = 1 << 30, dirty_y0 = 1 << 30, dirty_x1 = -1, dirty_y1 = -1;
 
     void refresh_coarse_levels() {
-        for (int ty = dirty_y0; ty <= dirty_y1; ++ty)
-            for (int tx = dirty_x0; tx <= dirty_x1; ++tx) {
-                const std::size_t i = static_cast<std::size_t>(ty) * grid.tiles_x + tx;
-                const OcclusionTile& t = tiles[i];
-                float hi = t.far_depth[0], lo = t.far_depth[0];
-                for (int r = 0; r < kTileHeight; ++r) {
-                    const float bound = t.mask[r] != 0 ? t.near_depth[r] : t.far_depth[r];
-                    hi = t.far_depth[r] > hi ? t.far_depth[r] : hi;
-                    lo = bound < lo ? bound : lo;
-                }
-                tile_max[i] = hi;
-                tile_min[i] = lo;
-            }
+        if (dirty_x0 <= dirty_x1) {
+            if (simd)
+                detail::refresh_coarse_levels(grid, dirty_x0, dirty_y0, dirty_x1, dirty_y1);
+            else
+                detail::refresh_coarse_levels_scalar(grid, dirty_x0, dirty_y0, dirty_x1, dirty_y1);
+        }
         dirty_x0 = dirty_y0 = 1 << 30;
         dirty_x1 = dirty_y1 = -1;
     }
@@ -127,8 +120,9 @@ void OcclusionBuffer::set_resolution(int width, int height) {
     m.grid.tiles_x = (width + kTileWidth - 1) / kTileWidth;
     m.grid.tiles_y = (height + kTileHeight - 1) / kTileHeight;
     m.tiles.resize(static_cast<std::size_t>(m.grid.tiles_x) * m.grid.tiles_y);
-    m.tile_max.resize(m.tiles.size());
-    m.tile_min.resize(m.tiles.size());
+    // Padded: the rectangle test loads whole vectors of them.
+    m.tile_max.resize(m.tiles.size() + detail::kCoarsePadding);
+    m.tile_min.resize(m.tiles.size() + detail::kCoarsePadding);
     m.grid.tiles = m.tiles.data();
     m.grid.tile_max = m.tile_max.data();
     m.grid.tile_min = m.tile_min.data();
@@ -239,16 +233,16 @@ OcclusionResult OcclusionBuffer::Impl::test_points(const glm::vec4* points, int 
 OcclusionResult OcclusionBuffer::Impl::test_window_rect(float xmin, float xmax, float ymin,
                                                         float ymax, float nearest) const {
     const float w = static_cast<float>(width), h = static_cast<float>(height);
-    const float max_abs = std::max(std::max(std::abs(xmin), std::abs(xmax)),
-                                   std::max(std::abs(ymin), std::abs(ymax)));
+    // Values, not references (std::max): branch-free minss/maxss.
+    const auto max_f = [](float a, float b) { return a > b ? a : b; };
+    const auto min_f = [](float a, float b) { return a < b ? a : b; };
+    const float max_abs =
+        max_f(max_f(std::abs(xmin), std::abs(xmax)), max_f(std::abs(ymin), std::abs(ymax)));
     // Grow by more than the snapping of an exact rasterizer and the float error of the corners.
     const float margin = 0x1p-6f + max_abs * 0x1p-17f;
     // Pixels whose center may be inside [min - margin, max + margin]; clamped first so that the
     // conversions stay in range (floor and ceil by hand: no libm call per test).
-    const auto clamped = [](float v, float limit) {
-        v -= 0.5f;
-        return v < -2.0f ? -2.0f : (v > limit ? limit : v);
-    };
+    const auto clamped = [&](float v, float limit) { return min_f(max_f(v - 0.5f, -2.0f), limit); };
     const auto floor_int = [](float v) {
         const int i = static_cast<int>(v);
         return i - (v < static_cast<float>(i));

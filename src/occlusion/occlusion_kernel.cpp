@@ -61,10 +61,8 @@ void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, Ti
         const int ty0 = t.y0 / kOcclusionTileHeight, ty1 = t.y1 / kOcclusionTileHeight;
         const auto left_x0 = hn::Set(df, t.left_x[0]), left_step0 = hn::Set(df, t.left_step[0]);
         const auto left_x1 = hn::Set(df, t.left_x[1]), left_step1 = hn::Set(df, t.left_step[1]);
-        const auto left_x2 = hn::Set(df, t.left_x[2]), left_step2 = hn::Set(df, t.left_step[2]);
         const auto right_x0 = hn::Set(df, t.right_x[0]), right_step0 = hn::Set(df, t.right_step[0]);
         const auto right_x1 = hn::Set(df, t.right_x[1]), right_step1 = hn::Set(df, t.right_step[1]);
-        const auto right_x2 = hn::Set(df, t.right_x[2]), right_step2 = hn::Set(df, t.right_step[2]);
         const auto span_lo = hn::Set(df, static_cast<float>(t.x0));
         const auto span_hi = hn::Set(df, static_cast<float>(t.x1 + 1));
         const auto row_lo = hn::Set(di, t.y0 - 1), row_hi = hn::Set(di, t.y1 + 1);
@@ -74,6 +72,7 @@ void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, Ti
         const auto z_dy = hn::Set(df, t.z_dy), z_kx = hn::Set(df, t.z_kx);
         const auto z_ky = hn::Set(df, t.z_ky), z_bias = hn::Set(df, t.z_bias);
         const auto z_max = hn::Set(df, t.z_max);
+        const auto z_dx_positive = hn::RebindMask(di, hn::Gt(z_dx, hn::Zero(df)));
         for (int ty = ty0; ty <= ty1; ++ty) {
             OcclusionTile* row_tiles = grid.tiles + static_cast<std::size_t>(ty) * grid.tiles_x;
             for (int r = 0; r < kOcclusionTileHeight; r += lanes) {
@@ -82,14 +81,10 @@ void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, Ti
                 const auto yf = hn::ConvertTo(df, hn::Sub(y, origin_y));
                 const auto l0 = hn::Add(left_x0, hn::Mul(yf, left_step0));
                 const auto l1 = hn::Add(left_x1, hn::Mul(yf, left_step1));
-                const auto l2 = hn::Add(left_x2, hn::Mul(yf, left_step2));
                 const auto r0 = hn::Add(right_x0, hn::Mul(yf, right_step0));
                 const auto r1 = hn::Add(right_x1, hn::Mul(yf, right_step1));
-                const auto r2 = hn::Add(right_x2, hn::Mul(yf, right_step2));
-                auto xl = hn::IfThenElse(hn::Gt(l0, l1), l0, l1);
-                xl = hn::IfThenElse(hn::Gt(xl, l2), xl, l2);
-                auto xr = hn::IfThenElse(hn::Lt(r0, r1), r0, r1);
-                xr = hn::IfThenElse(hn::Lt(xr, r2), xr, r2);
+                const auto xl = hn::IfThenElse(hn::Gt(l0, l1), l0, l1);
+                const auto xr = hn::IfThenElse(hn::Lt(r0, r1), r0, r1);
                 // First covered column and one past the last, clamped to the bounding box.
                 auto lo = hn::Add(xl, half);
                 lo = hn::IfThenElse(hn::Lt(lo, span_lo), span_lo, lo);
@@ -104,8 +99,9 @@ void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, Ti
                 // the covered pixels of the row inside the tile.
                 const auto row_depth =
                     hn::Add(hn::Add(z_origin, hn::Mul(z_dy, hn::Add(yf, z_ky))), z_bias);
-                const auto row_extreme = t.z_dx_positive ? hn::Sub(hn::Sub(end, one_i), origin_x)
-                                                         : hn::Sub(first, origin_x);
+                // A select, not a branch: the sign of z_dx is a coin toss per triangle.
+                const auto row_extreme =
+                    hn::Sub(hn::IfThenElse(z_dx_positive, hn::Sub(end, one_i), first), origin_x);
                 auto row_bound = hn::Add(
                     row_depth, hn::Mul(z_dx, hn::Add(hn::ConvertTo(df, row_extreme), z_kx)));
                 row_bound = hn::IfThenElse(hn::Lt(row_bound, z_max), row_bound, z_max);
@@ -118,7 +114,6 @@ void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, Ti
                     e = hn::Min(hn::Max(e, zero_i), width_i);
                     // Columns s..e-1: (~0 << s) & ~(~0 << e).
                     const auto coverage = hn::AndNot(ones_shifted_left(e), ones_shifted_left(s));
-                    if (hn::AllTrue(du, hn::Eq(coverage, zero_u))) continue;
                     const auto tile_bound = hn::Add(row_depth, hn::Set(df, tile_depth_step(t, tx)));
                     const auto z =
                         hn::IfThenElse(hn::Lt(row_bound, tile_bound), row_bound, tile_bound);
@@ -128,7 +123,6 @@ void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, Ti
                     const auto near_depth = hn::Load(df, tile.near_depth + r);
                     const auto live =
                         hn::And(hn::RebindMask(df, hn::Ne(coverage, zero_u)), hn::Lt(z, far_depth));
-                    if (hn::AllFalse(df, live)) continue;
                     const auto discard =
                         hn::Gt(hn::Sub(near_depth, z), hn::Sub(far_depth, near_depth));
                     auto merged_mask = hn::IfThenZeroElse(hn::RebindMask(du, discard), mask);
@@ -152,43 +146,90 @@ void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, Ti
     }
 }
 
-bool RectOccluded(const TileGrid& grid, int x0, int y0, int x1, int y1, float depth) {
+// Per tile of columns tx0..tx1 and rows ty0..ty1, the largest far layer and the smallest bound
+// (TileGrid::tile_max and tile_min): one tile per vector loop.
+void RefreshCoarseLevels(TileGrid grid, int tx0, int ty0, int tx1, int ty1) {
+    const DF df;
+    const DU du;
+    const int lanes = static_cast<int>(hn::Lanes(df));
+    for (int ty = ty0; ty <= ty1; ++ty)
+        for (int tx = tx0; tx <= tx1; ++tx) {
+            const std::size_t i = static_cast<std::size_t>(ty) * grid.tiles_x + tx;
+            const OcclusionTile& t = grid.tiles[i];
+            auto hi = hn::Load(df, t.far_depth);
+            auto lo = hn::IfThenElse(hn::RebindMask(df, hn::Ne(hn::Load(du, t.mask), hn::Zero(du))),
+                                     hn::Load(df, t.near_depth), hi);
+            for (int r = lanes; r < kOcclusionTileHeight; r += lanes) {
+                const auto far_depth = hn::Load(df, t.far_depth + r);
+                const auto masked =
+                    hn::RebindMask(df, hn::Ne(hn::Load(du, t.mask + r), hn::Zero(du)));
+                hi = hn::Max(hi, far_depth);
+                lo = hn::Min(lo, hn::IfThenElse(masked, hn::Load(df, t.near_depth + r), far_depth));
+            }
+            grid.tile_max[i] = hn::GetLane(hn::MaxOfLanes(df, hi));
+            // As the scalar twin: far_depth[0] takes part (near <= far makes it moot).
+            const float lo_lanes = hn::GetLane(hn::MinOfLanes(df, lo));
+            grid.tile_min[i] = lo_lanes < t.far_depth[0] ? lo_lanes : t.far_depth[0];
+        }
+}
+
+// One tile of a rectangle test: true when the rectangle's pixels in it (columns x0..x1 and
+// rows y0..y1, clipped to the tile) all hold a bound in front of `depth`.
+HWY_INLINE bool TileOccluded(const TileGrid& grid, int tx, int ty, int x0, int y0, int x1, int y1,
+                             float depth) {
     const DF df;
     const DI di;
     const DU du;
     const int lanes = static_cast<int>(hn::Lanes(df));
+    const OcclusionTile& tile = grid.tiles[static_cast<std::size_t>(ty) * grid.tiles_x + tx];
+    const int s = std::max(x0 - tx * kOcclusionTileWidth, 0);
+    const int e = std::min(x1 + 1 - tx * kOcclusionTileWidth, kOcclusionTileWidth);
+    const std::uint32_t high = e >= 32 ? ~0u : (1u << e) - 1u;  // e <= tile width
+    const std::uint32_t rect_mask = high & ~((1u << s) - 1u);   // s <= 31 here
+    // A full mask never stays in a tile, so over whole rows the far layer decides, and the
+    // caller saw that one of them is not in front.
+    const bool all_rows = ty * kOcclusionTileHeight >= y0 &&
+                          ty * kOcclusionTileHeight + kOcclusionTileHeight - 1 <= y1;
+    if (all_rows && rect_mask == kOcclusionFullMask) return false;
     const auto d = hn::Set(df, depth);
-    const auto zero_u = hn::Zero(du);
+    const auto rect = hn::Set(du, rect_mask);
     const auto row_lo = hn::Set(di, y0 - 1), row_hi = hn::Set(di, y1 + 1);
+    for (int r = 0; r < kOcclusionTileHeight; r += lanes) {
+        const auto y = hn::Iota(di, ty * kOcclusionTileHeight + r);
+        const auto row_valid = hn::RebindMask(df, hn::And(hn::Gt(y, row_lo), hn::Lt(y, row_hi)));
+        const auto uncovered =
+            hn::RebindMask(df, hn::Ne(hn::AndNot(hn::Load(du, tile.mask + r), rect), hn::Zero(du)));
+        const auto bound = hn::IfThenElse(uncovered, hn::Load(df, tile.far_depth + r),
+                                          hn::Load(df, tile.near_depth + r));
+        if (!hn::AllTrue(df, hn::Or(hn::Lt(bound, d), hn::Not(row_valid)))) return false;
+    }
+    return true;
+}
+
+// The coarse levels settle most tiles: a row of tiles at a time, one lane per tile (the
+// arrays are padded for the whole vector loads); only tiles whose largest bound is not in front
+// but whose smallest is are read.
+bool RectOccluded(const TileGrid& grid, int x0, int y0, int x1, int y1, float depth) {
+    const DF df;
+    const int lanes = static_cast<int>(hn::Lanes(df));
+    const auto d = hn::Set(df, depth);
+    const int tx0 = x0 / kOcclusionTileWidth, tx1 = x1 / kOcclusionTileWidth;
     for (int ty = y0 / kOcclusionTileHeight; ty <= y1 / kOcclusionTileHeight; ++ty) {
-        const OcclusionTile* row_tiles = grid.tiles + static_cast<std::size_t>(ty) * grid.tiles_x;
-        const bool all_rows = ty * kOcclusionTileHeight >= y0 &&
-                              ty * kOcclusionTileHeight + kOcclusionTileHeight - 1 <= y1;
-        for (int tx = x0 / kOcclusionTileWidth; tx <= x1 / kOcclusionTileWidth; ++tx) {
-            const OcclusionTile& tile = row_tiles[tx];
-            const int s = std::max(x0 - tx * kOcclusionTileWidth, 0);
-            const int e = std::min(x1 + 1 - tx * kOcclusionTileWidth, kOcclusionTileWidth);
-            const std::uint32_t high = e >= 32 ? ~0u : (1u << e) - 1u;  // e <= tile width
-            const std::uint32_t rect_mask = high & ~((1u << s) - 1u);   // s <= 31 here
-            // Every row's far layer in front, or no pixel in front: settled without reading
-            // the tile.
-            if (grid.tile_max[&tile - grid.tiles] < depth) continue;
-            if (!(grid.tile_min[&tile - grid.tiles] < depth)) return false;
-            // A full mask never stays in a tile, so over whole rows the far layer decides: here
-            // one of them is not in front.
-            if (all_rows && rect_mask == kOcclusionFullMask) return false;
-            const auto rect = hn::Set(du, rect_mask);
-            for (int r = 0; r < kOcclusionTileHeight; r += lanes) {
-                const auto y = hn::Iota(di, ty * kOcclusionTileHeight + r);
-                const auto row_valid =
-                    hn::RebindMask(df, hn::And(hn::Gt(y, row_lo), hn::Lt(y, row_hi)));
-                const auto uncovered = hn::RebindMask(
-                    df, hn::Ne(hn::AndNot(hn::Load(du, tile.mask + r), rect), zero_u));
-                const auto bound = hn::IfThenElse(uncovered, hn::Load(df, tile.far_depth + r),
-                                                  hn::Load(df, tile.near_depth + r));
-                const auto hidden = hn::Lt(bound, d);
-                if (!hn::AllTrue(df, hn::Or(hidden, hn::Not(row_valid)))) return false;
-            }
+        const std::size_t row = static_cast<std::size_t>(ty) * grid.tiles_x;
+        for (int tx = tx0; tx <= tx1; tx += lanes) {
+            const auto in_rect = hn::FirstN(df, static_cast<std::size_t>(tx1 + 1 - tx));
+            // Lanes past tx1 read the next tiles or the padding; in_rect masks them out.
+            const auto lo = hn::LoadU(df, grid.tile_min + row + tx);
+            const auto hi = hn::LoadU(df, grid.tile_max + row + tx);
+            // A tile with no bound in front: the rectangle is seen there.
+            if (!hn::AllFalse(df, hn::AndNot(hn::Lt(lo, d), in_rect))) return false;
+            const auto open = hn::AndNot(hn::Lt(hi, d), in_rect);
+            if (hn::AllFalse(df, open)) continue;
+            std::uint8_t bits[8] = {};
+            hn::StoreMaskBits(df, open, bits);
+            for (int l = 0; l < lanes && tx + l <= tx1; ++l)
+                if ((bits[l / 8] >> (l % 8)) & 1u)
+                    if (!TileOccluded(grid, tx + l, ty, x0, y0, x1, y1, depth)) return false;
         }
     }
     return true;
@@ -242,26 +283,60 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
     for (std::size_t base = 0; base < count; base += lanes) {
         const std::size_t m = std::min(lanes, count - base);
         std::uint32_t valid = 0;
-        for (std::size_t l = 0; l < lanes; ++l) {
-            interior[l] = 0;
-            for (int v = 0; v < 3; ++v) {
-                own[v][l] = kNoTriangle;
-                previous[v][l] = next[v][l] = kNoNeighbour;
+        const std::size_t i0 = first + base;
+        if (m == lanes && i0 > 0 && i0 + lanes < src.triangle_count &&
+            src.vertex_count <= 0xffffffffu) {
+            // A whole vector with both neighbours in the list: the indices as vectors.
+            const std::uint32_t* t = src.indices + 3 * i0;
+            const auto limit = hn::Set(du, static_cast<std::uint32_t>(src.vertex_count));
+            hn::Vec<DU> a, b, c;
+            hn::LoadInterleaved3(du, t, a, b, c);
+            const auto ok = hn::And(hn::And(hn::Lt(a, limit), hn::Lt(b, limit)), hn::Lt(c, limit));
+            const hn::Vec<DU> corner[3] = {a, b, c};
+            for (auto* other : {&previous, &next}) {
+                hn::Vec<DU> d, e, f;
+                hn::LoadInterleaved3(du, other == &previous ? t - 3 : t + 3, d, e, f);
+                const auto filler = hn::Set(du, kNoNeighbour);
+                hn::Store(hn::IfThenElse(ok, d, filler), du, (*other)[0]);
+                hn::Store(hn::IfThenElse(ok, e, filler), du, (*other)[1]);
+                hn::Store(hn::IfThenElse(ok, f, filler), du, (*other)[2]);
             }
-            const std::size_t i = first + base + l;
-            const std::uint32_t* t = l < m ? src.indices + 3 * i : nullptr;
-            if (!t || t[0] >= src.vertex_count || t[1] >= src.vertex_count ||
-                t[2] >= src.vertex_count) {
-                for (int v = 0; v < 3; ++v) std::fill_n(corners[v] + 4 * l, 4, 0.0f);
-                continue;
-            }
-            valid |= 1u << l;
-            for (int v = 0; v < 3; ++v) {
-                std::memcpy(corners[v] + 4 * l, src.clip + 4 * std::size_t{t[v]},
-                            4 * sizeof(float));
-                own[v][l] = t[v];
-                if (i > 0) previous[v][l] = t[v - 3];
-                if (i + 1 < src.triangle_count) next[v][l] = t[v + 3];
+            for (int v = 0; v < 3; ++v)
+                hn::Store(hn::IfThenElse(ok, corner[v], hn::Set(du, kNoTriangle)), du, own[v]);
+            hn::Store(hn::Zero(di), di, interior);
+            alignas(64) std::uint8_t bits[8] = {};
+            hn::StoreMaskBits(du, ok, bits);
+            std::memcpy(&valid, bits, sizeof(valid));  // lanes <= 16: the low bytes, little endian
+            valid &= lanes >= 32 ? ~0u : (1u << lanes) - 1u;
+            // Lanes with a bad index read vertex 0 (there is one); their results are dropped.
+            alignas(64) std::uint32_t read[3][kMaxLanes];
+            for (int v = 0; v < 3; ++v) hn::Store(hn::IfThenElseZero(ok, corner[v]), du, read[v]);
+            for (std::size_t l = 0; l < lanes; ++l)
+                for (int v = 0; v < 3; ++v)
+                    std::memcpy(corners[v] + 4 * l, src.clip + 4 * std::size_t{read[v][l]},
+                                4 * sizeof(float));
+        } else {
+            for (std::size_t l = 0; l < lanes; ++l) {
+                interior[l] = 0;
+                for (int v = 0; v < 3; ++v) {
+                    own[v][l] = kNoTriangle;
+                    previous[v][l] = next[v][l] = kNoNeighbour;
+                }
+                const std::size_t i = first + base + l;
+                const std::uint32_t* t = l < m ? src.indices + 3 * i : nullptr;
+                if (!t || t[0] >= src.vertex_count || t[1] >= src.vertex_count ||
+                    t[2] >= src.vertex_count) {
+                    for (int v = 0; v < 3; ++v) std::fill_n(corners[v] + 4 * l, 4, 0.0f);
+                    continue;
+                }
+                valid |= 1u << l;
+                for (int v = 0; v < 3; ++v) {
+                    std::memcpy(corners[v] + 4 * l, src.clip + 4 * std::size_t{t[v]},
+                                4 * sizeof(float));
+                    own[v][l] = t[v];
+                    if (i > 0) previous[v][l] = t[v - 3];
+                    if (i + 1 < src.triangle_count) next[v][l] = t[v + 3];
+                }
             }
         }
         // Interior edges: a quick vector search for an edge shared (reversed) with either
@@ -336,6 +411,8 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
         keep = hn::And(keep, hn::And(hn::Le(x0, x1), hn::Le(y0, y1)));
 
         const auto row0 = hn::Add(y0, half);
+        hn::Vec<DF> left_x[3], left_step[3], right_x[3], right_step[3];
+        hn::Mask<DF> left[3], right[3];
         for (int e = 0; e < 3; ++e) {
             const hn::Vec<DF>&ax = X[e], &ay = Y[e], &bx = X[(e + 1) % 3], &by = Y[(e + 1) % 3];
             const auto dy = hn::Sub(by, ay);
@@ -351,12 +428,24 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
             const auto left_side = hn::Xor(counter_clockwise, hn::Lt(dy, zero));
             const auto is_left = hn::And(slanted, left_side);
             const auto is_right = hn::AndNot(left_side, slanted);
-            hn::Store(hn::IfThenElse(is_left, hn::Add(x, inset), minus_no_edge), df,
-                      fields[k::kLeftX + e]);
-            hn::Store(hn::IfThenElseZero(is_left, step), df, fields[k::kLeftStep + e]);
-            hn::Store(hn::IfThenElse(is_right, hn::Sub(x, inset), no_edge), df,
-                      fields[k::kRightX + e]);
-            hn::Store(hn::IfThenElseZero(is_right, step), df, fields[k::kRightStep + e]);
+            left[e] = is_left;
+            right[e] = is_right;
+            left_x[e] = hn::IfThenElse(is_left, hn::Add(x, inset), minus_no_edge);
+            left_step[e] = hn::IfThenElseZero(is_left, step);
+            right_x[e] = hn::IfThenElse(is_right, hn::Sub(x, inset), no_edge);
+            right_step[e] = hn::IfThenElseZero(is_right, step);
+        }
+        // At most two edges per side (their dy share a sign): two slots each (see kEdgeSlots).
+        // Slot 0 takes the first edge of the side, slot 1 the second (or the last edge again).
+        const auto pack = [&](const hn::Vec<DF>* v, const hn::Mask<DF>* is, int slot) {
+            return slot == 0 ? hn::IfThenElse(is[0], v[0], hn::IfThenElse(is[1], v[1], v[2]))
+                             : hn::IfThenElse(hn::And(is[0], is[1]), v[1], v[2]);
+        };
+        for (int slot = 0; slot < kEdgeSlots; ++slot) {
+            hn::Store(pack(left_x, left, slot), df, fields[k::kLeftX + slot]);
+            hn::Store(pack(left_step, left, slot), df, fields[k::kLeftStep + slot]);
+            hn::Store(pack(right_x, right, slot), df, fields[k::kRightX + slot]);
+            hn::Store(pack(right_step, right, slot), df, fields[k::kRightStep + slot]);
         }
 
         const auto e1x = hn::Sub(X[1], X[0]), e1y = hn::Sub(Y[1], Y[0]), e1z = hn::Sub(Z[1], Z[0]);
@@ -409,7 +498,7 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
             o.x1 = box[1][l];
             o.y0 = box[2][l];
             o.y1 = box[3][l];
-            for (int e = 0; e < 3; ++e) {
+            for (int e = 0; e < kEdgeSlots; ++e) {
                 o.left_x[e] = fields[k::kLeftX + e][l];
                 o.left_step[e] = fields[k::kLeftStep + e][l];
                 o.right_x[e] = fields[k::kRightX + e][l];
@@ -441,6 +530,7 @@ namespace zraster::detail {
 HWY_EXPORT(RasterizeOccluders);
 HWY_EXPORT(SetupOccluders);
 HWY_EXPORT(RectOccluded);
+HWY_EXPORT(RefreshCoarseLevels);
 HWY_EXPORT(OcclusionTargetName);
 
 void rasterize_occluders(const OccluderTriangle* triangles, std::size_t count, TileGrid grid) {
@@ -454,6 +544,26 @@ std::size_t setup_occluders(const OccluderSource& source, std::size_t first, std
 
 bool rect_occluded(const TileGrid& grid, int x0, int y0, int x1, int y1, float depth) {
     return HWY_DYNAMIC_DISPATCH(RectOccluded)(grid, x0, y0, x1, y1, depth);
+}
+
+void refresh_coarse_levels(TileGrid grid, int tx0, int ty0, int tx1, int ty1) {
+    HWY_DYNAMIC_DISPATCH(RefreshCoarseLevels)(grid, tx0, ty0, tx1, ty1);
+}
+
+void refresh_coarse_levels_scalar(TileGrid grid, int tx0, int ty0, int tx1, int ty1) {
+    for (int ty = ty0; ty <= ty1; ++ty)
+        for (int tx = tx0; tx <= tx1; ++tx) {
+            const std::size_t i = static_cast<std::size_t>(ty) * grid.tiles_x + tx;
+            const OcclusionTile& t = grid.tiles[i];
+            float hi = t.far_depth[0], lo = t.far_depth[0];
+            for (int r = 0; r < kOcclusionTileHeight; ++r) {
+                const float bound = t.mask[r] != 0 ? t.near_depth[r] : t.far_depth[r];
+                hi = t.far_depth[r] > hi ? t.far_depth[r] : hi;
+                lo = bound < lo ? bound : lo;
+            }
+            grid.tile_max[i] = hi;
+            grid.tile_min[i] = lo;
+        }
 }
 
 const char* occlusion_kernel_target() {
@@ -482,14 +592,10 @@ void rasterize_occluders_scalar(const OccluderTriangle* triangles, std::size_t c
                 const float yf = static_cast<float>(y - t.y0);
                 const float l0 = t.left_x[0] + yf * t.left_step[0];
                 const float l1 = t.left_x[1] + yf * t.left_step[1];
-                const float l2 = t.left_x[2] + yf * t.left_step[2];
                 const float r0 = t.right_x[0] + yf * t.right_step[0];
                 const float r1 = t.right_x[1] + yf * t.right_step[1];
-                const float r2 = t.right_x[2] + yf * t.right_step[2];
-                float xl = l0 > l1 ? l0 : l1;
-                xl = xl > l2 ? xl : l2;
-                float xr = r0 < r1 ? r0 : r1;
-                xr = xr < r2 ? xr : r2;
+                const float xl = l0 > l1 ? l0 : l1;
+                const float xr = r0 < r1 ? r0 : r1;
                 float lo = xl + 0.5f;
                 lo = lo < span_lo ? span_lo : lo;
                 lo = lo > span_hi ? span_hi : lo;
@@ -607,6 +713,8 @@ std::size_t setup_occluders_scalar(const OccluderSource& src, std::size_t first,
         if (!keep) continue;
         OccluderTriangle& o = out[n++];
         const float row0 = y0 + 0.5f;
+        float left_x[3], left_step[3], right_x[3], right_step[3];
+        bool left[3], right[3];
         for (int e = 0; e < 3; ++e) {
             const float ax = X[e], ay = Y[e], bx = X[(e + 1) % 3], by = Y[(e + 1) % 3];
             const float dy = by - ay;
@@ -617,10 +725,22 @@ std::size_t setup_occluders_scalar(const OccluderSource& src, std::size_t first,
             const float inset = (1.0f + std::fabs(step)) * (is_interior ? -float_margin : margin);
             const bool left_side = counter_clockwise != (dy < 0.0f);
             const bool is_left = slanted && left_side, is_right = slanted && !left_side;
-            o.left_x[e] = is_left ? x + inset : -kNoEdge;
-            o.left_step[e] = is_left ? step : 0.0f;
-            o.right_x[e] = is_right ? x - inset : kNoEdge;
-            o.right_step[e] = is_right ? step : 0.0f;
+            left[e] = is_left;
+            right[e] = is_right;
+            left_x[e] = is_left ? x + inset : -kNoEdge;
+            left_step[e] = is_left ? step : 0.0f;
+            right_x[e] = is_right ? x - inset : kNoEdge;
+            right_step[e] = is_right ? step : 0.0f;
+        }
+        const auto pack = [](const float* v, const bool* is, int slot) {
+            return slot == 0 ? (is[0] ? v[0] : (is[1] ? v[1] : v[2]))
+                             : (is[0] && is[1] ? v[1] : v[2]);
+        };
+        for (int slot = 0; slot < kEdgeSlots; ++slot) {
+            o.left_x[slot] = pack(left_x, left, slot);
+            o.left_step[slot] = pack(left_step, left, slot);
+            o.right_x[slot] = pack(right_x, right, slot);
+            o.right_step[slot] = pack(right_step, right, slot);
         }
         const float e1x = X[1] - X[0], e1y = Y[1] - Y[0], e1z = Z[1] - Z[0];
         const float e2x = X[2] - X[0], e2y = Y[2] - Y[0], e2z = Z[2] - Z[0];

@@ -39,10 +39,14 @@ struct alignas(64) OcclusionTile {
 // the depth bound of the covered pixels of row y within a tile is the smaller of
 // min(d(y, xe), z_max) for the extreme covered column xe of the row (the last one when
 // z_dx > 0, else the first) and d(y, xt) for the tile's extreme column xt in that direction.
+// Edges per side: a triangle's edges going down are on one side and those going up on the
+// other, so a side has at most two (horizontal edges are left to the row range). An unused
+// slot holds -kNoEdge (left) or +kNoEdge (right), or repeats the side's other edge.
+inline constexpr int kEdgeSlots = 2;
 struct OccluderTriangle {
     int x0 = 0, x1 = -1, y0 = 0, y1 = -1;  // pixel bounding box, inclusive, inside the viewport
-    float left_x[3], left_step[3];
-    float right_x[3], right_step[3];
+    float left_x[kEdgeSlots], left_step[kEdgeSlots];
+    float right_x[kEdgeSlots], right_step[kEdgeSlots];
     float z_origin, z_dx, z_dy, z_kx, z_ky, z_bias, z_max;
     bool z_dx_positive;  // the bound is at the span's right end (else its left end)
 };
@@ -68,10 +72,10 @@ constexpr float kHorizontal = 0x1p-10f;  // |dy| below this: the row range bound
 constexpr float kDepthSlack = 0x1p-20f, kHugeGradient = 1e30f, kMaxW = 1e30f;
 enum Field {
     kLeftX,
-    kLeftStep = kLeftX + 3,
-    kRightX = kLeftStep + 3,
-    kRightStep = kRightX + 3,
-    kZOrigin = kRightStep + 3,
+    kLeftStep = kLeftX + kEdgeSlots,
+    kRightX = kLeftStep + kEdgeSlots,
+    kRightStep = kRightX + kEdgeSlots,
+    kZOrigin = kRightStep + kEdgeSlots,
     kZDx,
     kZDy,
     kZKx,
@@ -111,11 +115,17 @@ struct TileGrid {
     float* tile_min = nullptr;
     int tiles_x = 0, tiles_y = 0;
 };
+// tile_max and tile_min hold this many floats past the last tile (one vector's worth).
+inline constexpr std::size_t kCoarsePadding = 16;
 
 // Rasterizes triangles [0, count) in order.
 void rasterize_occluders(const OccluderTriangle* triangles, std::size_t count, TileGrid grid);
 void rasterize_occluders_scalar(const OccluderTriangle* triangles, std::size_t count,
                                 TileGrid grid);
+
+// Recomputes tile_max and tile_min of tiles tx0..tx1, ty0..ty1 (inclusive).
+void refresh_coarse_levels(TileGrid grid, int tx0, int ty0, int tx1, int ty1);
+void refresh_coarse_levels_scalar(TileGrid grid, int tx0, int ty0, int tx1, int ty1);
 
 // True when every pixel of columns x0..x1, rows y0..y1 (inclusive, inside the grid) holds a
 // depth bound strictly less than `depth`.

@@ -5,6 +5,7 @@
 #include <zraster/scenes.hpp>
 
 #include <gtest/gtest.h>
+#include <hwy/targets.h>
 
 #include <algorithm>
 #include <cstring>
@@ -14,7 +15,16 @@
 namespace zraster {
 namespace {
 
-TEST(OcclusionSimd, BuffersAndAnswersMatchTheScalarPath) {
+// Every instruction set this machine runs and the library was built for, not only the best.
+class TargetScope {
+  public:
+    explicit TargetScope(std::int64_t target) { hwy::SetSupportedTargetsForTest(target); }
+    ~TargetScope() { hwy::SetSupportedTargetsForTest(0); }
+    TargetScope(const TargetScope&) = delete;
+    TargetScope& operator=(const TargetScope&) = delete;
+};
+
+void buffers_and_answers_match() {
     std::printf("SIMD target: %s\n", OcclusionBuffer::simd_target());
     for (const auto& [width, height] : {std::pair{320, 200}, std::pair{97, 61}}) {
         OcclusionBuffer simd(width, height), scalar(width, height);
@@ -66,9 +76,22 @@ TEST(OcclusionSimd, BuffersAndAnswersMatchTheScalarPath) {
     }
 }
 
+TEST(OcclusionSimd, BuffersAndAnswersMatchTheScalarPath) {
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        const TargetScope scope(target);
+        SCOPED_TRACE(hwy::TargetName(target));
+        buffers_and_answers_match();
+        if (HasFatalFailure()) return;
+    }
+}
+
 TEST(OcclusionSimd, SceneAnswersMatchTheScalarPath) {
     const test::OcclusionScene scene = test::city_scene(3, 400);
-    EXPECT_EQ(test::buffer_answers(scene, true), test::buffer_answers(scene, false));
+    const auto scalar = test::buffer_answers(scene, false);
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        const TargetScope scope(target);
+        EXPECT_EQ(test::buffer_answers(scene, true), scalar) << hwy::TargetName(target);
+    }
 }
 
 }  // namespace
