@@ -166,19 +166,20 @@ void process_instance_range(const Frame& frame, std::uint32_t instance, std::siz
                 assemble_triangle(frame, instance, out.triangle[k], chunk);
                 continue;
             }
-            TriangleRef ref;
+            // Written in place: a ref built on the stack in narrow stores and copied out in
+            // wide loads stalls on store forwarding, twice per triangle.
+            TriangleRef& ref = chunk.refs.emplace_back();
             ref.instance = instance;
             ref.primitive = out.triangle[k];
             const std::uint32_t* corner = in.indices + 3 * std::size_t{out.triangle[k]};
-            ref.vertex = ref.screen = {fi.first_vertex + corner[0], fi.first_vertex + corner[1],
-                                       fi.first_vertex + corner[2]};
+            for (std::size_t c = 0; c < 3; ++c)
+                ref.vertex[c] = ref.screen[c] = fi.first_vertex + corner[c];
             ref.front_facing = (out.flags[k] & ClassifyOutput::kFront) != 0;
             ref.tile_x0 = static_cast<std::uint16_t>(out.min_x[k] / kTileSize);
             ref.tile_y0 = static_cast<std::uint16_t>(out.min_y[k] / kTileSize);
             ref.tile_x1 = static_cast<std::uint16_t>(out.max_x[k] / kTileSize);
             ref.tile_y1 = static_cast<std::uint16_t>(out.max_y[k] / kTileSize);
             ++chunk.stats.triangles_rasterized;
-            chunk.refs.push_back(ref);
         }
     }
     chunk.stats.triangles_degenerate += out.degenerate;
@@ -201,10 +202,11 @@ void process_chunk(const Frame& frame, Chunk& chunk) {
 
 // The corners' world positions and normals of a triangle the SIMD Phong shader draws, for
 // interpolation in the visibility kernel: the same values shade_fragment() interpolates.
-CornerAttributes corner_attributes(const Frame& frame, const Chunk& chunk, const TriangleRef& ref) {
-    CornerAttributes corners;
+void corner_attributes(const Frame& frame, const Chunk& chunk, const TriangleRef& ref,
+                       CornerAttributes& corners) {
     const FrameInstance& fi = frame.instances[ref.instance];
-    if (fi.phong_kernel < 0) return corners;  // tag 0: the scalar shader's
+    corners.tag = 0;  // the scalar shader's
+    if (fi.phong_kernel < 0) return;
     corners.piece =
         ref.piece == TriangleRef::kNotClipped ? nullptr : chunk.pieces[ref.piece].weights.data();
     const bool flip = !ref.front_facing && frame.options->two_sided_lighting;
@@ -213,7 +215,6 @@ CornerAttributes corner_attributes(const Frame& frame, const Chunk& chunk, const
         corners.world[k] = frame.vertices.world[ref.vertex[k]];
         corners.normal[k] = frame.vertices.normal[ref.vertex[k]];
     }
-    return corners;
 }
 
 // Counting sort of the chunk's refs into tiles, keeping their order inside each tile.
@@ -230,17 +231,23 @@ void bin_chunk(const Frame& frame, Chunk& chunk) {
     std::vector<std::uint32_t> cursor(chunk.bin_offsets.begin(), chunk.bin_offsets.end() - 1);
     for (std::uint32_t i = 0; i < chunk.refs.size(); ++i) {
         const TriangleRef& r = chunk.refs[i];
-        const BinEntry entry{
-            {frame.screen_vertex(chunk, r.screen[0]), frame.screen_vertex(chunk, r.screen[1]),
-             frame.screen_vertex(chunk, r.screen[2])},
-            i};
-        CornerAttributes corners;
-        if (frame.tagged_shading) corners = corner_attributes(frame, chunk, r);
+        // The first bin's entry is written in place, the others copy it (a struct built on the
+        // stack and copied out stalls on store forwarding).
+        std::uint32_t first = ~0u;
         for (int ty = r.tile_y0; ty <= r.tile_y1; ++ty)
             for (int tx = r.tile_x0; tx <= r.tile_x1; ++tx) {
                 const std::uint32_t at = cursor[std::size_t(ty * frame.tiles_x + tx)]++;
-                chunk.bin_entries[at] = entry;
-                if (frame.tagged_shading) chunk.bin_corners[at] = corners;
+                BinEntry& entry = chunk.bin_entries[at];
+                if (first != ~0u) {
+                    entry = chunk.bin_entries[first];
+                    if (frame.tagged_shading) chunk.bin_corners[at] = chunk.bin_corners[first];
+                    continue;
+                }
+                first = at;
+                for (std::size_t k = 0; k < 3; ++k)
+                    entry.vertices[k] = frame.screen_vertex(chunk, r.screen[k]);
+                entry.ref = i;
+                if (frame.tagged_shading) corner_attributes(frame, chunk, r, chunk.bin_corners[at]);
             }
     }
 }
@@ -259,7 +266,7 @@ void assemble_and_bin(Frame& frame, RenderStats& stats) {
     // at most kMaxClippedVertices - 2 pieces, so 2^20 refs hold 16k * 13 pieces and more).
     if (total > std::size_t{4000} * 65536)
         throw InputError("", "more than 262,144,000 triangles in one frame");
-    const std::size_t chunk_triangles = std::max<std::size_t>(16384, total / 4000 + 1);
+    const std::size_t chunk_triangles = std::max<std::size_t>(4096, total / 4000 + 1);
     // Chunk objects are reused from frame to frame (their arrays keep their capacity).
     frame.chunks.resize((total + chunk_triangles - 1) / chunk_triangles);
     for (std::size_t c = 0; c < frame.chunks.size(); ++c) {

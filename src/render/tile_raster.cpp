@@ -204,12 +204,15 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
             const int x0 = std::max(bx, rx0), x1 = std::min(bx + kBlockSize - 1, rx1);
             bool outside = false, full = true, fits = true;
             for (std::size_t k = 0; k < 3 && !outside; ++k) {
+                // The extremes over the block's corners, from its first corner and the steps
+                // across it (a linear function: each step's sign picks the corner).
                 const std::int64_t e00 = edge_at(setup, k, x0, y0);
-                const std::int64_t e10 = edge_at(setup, k, x1, y0);
-                const std::int64_t e01 = edge_at(setup, k, x0, y1);
-                const std::int64_t e11 = edge_at(setup, k, x1, y1);
-                const std::int64_t lo = std::min({e00, e10, e01, e11});
-                const std::int64_t hi = std::max({e00, e10, e01, e11});
+                const std::int64_t across_x = setup.edge_a[k] * (x1 - x0);
+                const std::int64_t across_y = setup.edge_b[k] * (y1 - y0);
+                const std::int64_t lo =
+                    e00 + std::min<std::int64_t>(across_x, 0) + std::min<std::int64_t>(across_y, 0);
+                const std::int64_t hi =
+                    e00 + std::max<std::int64_t>(across_x, 0) + std::max<std::int64_t>(across_y, 0);
                 outside = hi < 0;  // linear: negative at all corners means negative everywhere
                 full &= lo >= 0;
                 fits &= fits_int32(lo) && fits_int32(hi) && fits_int32(setup.edge_a[k]) &&
