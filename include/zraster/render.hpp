@@ -26,6 +26,16 @@ enum class ShadingStrategy {
     Deferred,  // resolve visibility per tile first, then shade each visible pixel once
 };
 
+// The order instances are drawn in.
+enum class InstanceOrder {
+    Submission,  // as in Scene::instances
+    // Nearest first, by the distance from the eye to the instance's world bounding box (ties
+    // in submission order): later instances then fail hierarchical z where earlier ones hide
+    // them. The image differs from submission order only where two instances' surfaces meet
+    // at exactly the same depth (the first drawn keeps the pixel under LESS).
+    FrontToBack,
+};
+
 // Requests past these are refused by render() with an InputError before anything is allocated:
 // they are mistakes or hostile input, not frames (see RELIABILITY.md). Raise them deliberately.
 struct RenderLimits {
@@ -61,6 +71,7 @@ struct RenderOptions {
     // Hierarchical z: skip 8x8 blocks whose stored depths already hide the triangle there. The
     // test is conservative, so the image is the same with it off (for comparisons).
     bool hierarchical_z = true;
+    InstanceOrder instance_order = InstanceOrder::Submission;
 
     CullMode cull = CullMode::Back;
     FrontFace front_face = FrontFace::CounterClockwise;

@@ -33,7 +33,7 @@ SetupResult classify_triangle(const std::array<ScreenVertex, 3>& v, const SetupS
 SetupResult setup_triangle(const std::array<ScreenVertex, 3>& v, const SetupSettings& settings,
                            TriangleSetup& t, bool planes) {
     TriangleBounds bounds;
-    const SetupResult result = classify_triangle(v, settings, bounds);
+    const SetupResult result = classify_triangle(v[0], v[1], v[2], settings, bounds);
     if (result != SetupResult::Visible) return result;
     t.min_x = bounds.min_x;
     t.min_y = bounds.min_y;

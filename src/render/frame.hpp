@@ -34,6 +34,7 @@ struct FrameInstance {
     glm::mat3 normal_matrix{1.0f};  // object to world for normals (inverse transpose)
     bool textured = false;
     int phong_kernel = -1;  // index into Frame::phong_constants when the SIMD shader applies
+    float distance = 0.0f;  // eye to the world bounding box (InstanceOrder::FrontToBack)
 };
 
 // A vertex's world position and unit world normal ((0, 1, 0) for a zero normal): the one

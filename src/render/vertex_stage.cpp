@@ -4,6 +4,7 @@
 // lighting for Gouraud, only where a later stage needs them.
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -28,6 +29,13 @@ bool outside_frustum(const Bounds3f& box, const glm::mat4& mvp, ClipDepthRange r
         if (all == 0) return false;
     }
     return true;
+}
+
+// Distance from p to the box (0 inside it): the front-to-back key. NaN bounds sort last.
+float distance_to_box(const Bounds3f& box, const glm::vec3& p) {
+    const glm::vec3 outside = glm::max(glm::max(box.lo - p, p - box.hi), glm::vec3(0.0f));
+    const float d = glm::length(outside);
+    return std::isnan(d) ? HUGE_VALF : d;
 }
 
 // Instances the SIMD Phong shader can draw get its constants.
@@ -70,17 +78,26 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
         }
         FrameInstance fi;
         fi.scene_instance = i;
+        if (options.instance_order == InstanceOrder::FrontToBack)
+            fi.distance = distance_to_box(mesh.bounds.transformed(instance.transform), frame.eye);
         fi.mesh = &mesh;
         fi.material =
             &scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
         fi.shading = instance.shading.value_or(options.shading);
-        fi.first_vertex = vertex_count;
+
         fi.mvp = mvp;
         fi.model = instance.transform;
         fi.normal_matrix = normal_matrix(instance.transform);
         fi.textured = options.textures && fi.material->base_color_texture && !mesh.uvs.empty();
         frame.instances.push_back(fi);
-        vertex_count += static_cast<std::uint32_t>(mesh.positions.size());
+    }
+    if (options.instance_order == InstanceOrder::FrontToBack)
+        std::stable_sort(
+            frame.instances.begin(), frame.instances.end(),
+            [](const FrameInstance& a, const FrameInstance& b) { return a.distance < b.distance; });
+    for (FrameInstance& fi : frame.instances) {
+        fi.first_vertex = vertex_count;
+        vertex_count += static_cast<std::uint32_t>(fi.mesh->positions.size());
     }
 
     assign_phong_kernels(frame);

@@ -86,6 +86,7 @@ void add_bench_command(CLI::App& app, BenchArguments& a) {
     cmd->add_flag("--no-cull", a.no_cull, "Disable back-face culling");
     cmd->add_flag("--no-hierarchical-z", a.no_hierarchical_z,
                   "Disable hierarchical z (same image, to measure what it saves)");
+    cmd->add_flag("--front-to-back", a.front_to_back, "Draw instances nearest first");
     cmd->add_flag("--verbose", a.verbose, "Print every frame's time and the pipeline statistics");
     cmd->add_option("--out", a.out,
                     "Save the last frame as PNG (color; 16-bit depth, 65535 = far, in depth mode)");
@@ -140,6 +141,7 @@ int run_bench(const BenchArguments& a) {
     apply_bench_shading(scene, mode);
     RenderOptions options = bench_render_options(mode, size.x, size.y, a.threads, !a.no_cull);
     options.hierarchical_z = !a.no_hierarchical_z;
+    if (a.front_to_back) options.instance_order = InstanceOrder::FrontToBack;
     // The same fit_camera framing render() does for an unset camera, computed once: refitting
     // every frame would time a scan over all vertices that glbench does not do per frame.
     options.camera = fit_camera(scene.world_positions());

@@ -19,6 +19,7 @@ struct BenchArguments {
     int threads = 0;
     bool no_cull = false;
     bool no_hierarchical_z = false;
+    bool front_to_back = false;
     bool verbose = false;
     std::string out;
 };

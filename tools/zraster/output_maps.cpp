@@ -28,7 +28,8 @@ void write_depth_map(const std::string& path, const RenderTargets& t) {
     if (ext != ".png") throw InputError(path, "depth output must end in .npy or .png");
     std::vector<std::uint16_t> gray(t.depth.size());
     for (std::size_t i = 0; i < gray.size(); ++i)
-        gray[i] = static_cast<std::uint16_t>(std::lround(std::clamp(t.depth[i], 0.0f, 1.0f) * 65535.0f));
+        gray[i] =
+            static_cast<std::uint16_t>(std::lround(std::clamp(t.depth[i], 0.0f, 1.0f) * 65535.0f));
     write_png16_gray(path, t.width, t.height, gray);
 }
 
@@ -38,7 +39,8 @@ void write_normal_map(const std::string& path, const RenderTargets& t) {
     for (std::size_t i = 0; i < t.normal.size(); ++i) {
         const glm::vec3 n = t.normal[i];
         const bool empty = n == glm::vec3(0.0f);
-        for (int c = 0; c < 3; ++c) rgb[i * 3 + std::size_t(c)] = empty ? 0 : unorm8(n[c] * 0.5f + 0.5f);
+        for (int c = 0; c < 3; ++c)
+            rgb[i * 3 + std::size_t(c)] = empty ? 0 : unorm8(n[c] * 0.5f + 0.5f);
     }
     write_png8(path, t.width, t.height, 3, rgb);
 }
@@ -46,7 +48,8 @@ void write_normal_map(const std::string& path, const RenderTargets& t) {
 void write_id_map(const std::string& path, const RenderTargets& t,
                   const std::vector<std::int64_t>& instance_first_triangle) {
     const std::string ext = extension(path);
-    if (ext != ".npy" && ext != ".png") throw InputError(path, "id output must end in .npy or .png");
+    if (ext != ".npy" && ext != ".png")
+        throw InputError(path, "id output must end in .npy or .png");
     std::vector<std::int32_t> ids(t.primitive_id.size(), -1);
     for (std::size_t i = 0; i < ids.size(); ++i) {
         if (t.instance_id[i] < 0) continue;
@@ -54,7 +57,8 @@ void write_id_map(const std::string& path, const RenderTargets& t,
             instance_first_triangle[std::size_t(t.instance_id[i])] + t.primitive_id[i];
         ids[i] = static_cast<std::int32_t>(std::min<std::int64_t>(id, INT32_MAX));
     }
-    if (ext == ".npy") return write_npy(path, t.width, t.height, std::span<const std::int32_t>(ids));
+    if (ext == ".npy")
+        return write_npy(path, t.width, t.height, std::span<const std::int32_t>(ids));
     std::vector<std::uint8_t> rgb(ids.size() * 3, 0);
     for (std::size_t i = 0; i < ids.size(); ++i) {
         if (ids[i] < 0) continue;

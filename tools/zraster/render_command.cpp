@@ -22,7 +22,8 @@
 namespace zraster::cli {
 
 void add_render_command(CLI::App& app, RenderArguments& a) {
-    CLI::App* cmd = app.add_subcommand("render", "Render a mesh file or a procedural scene to a PNG");
+    CLI::App* cmd =
+        app.add_subcommand("render", "Render a mesh file or a procedural scene to a PNG");
     add_render_arguments(*cmd, a);
     cmd->add_option("-o,--output", a.output, "Output PNG (color)")->capture_default_str();
     cmd->add_option("--depth-out", a.depth_out,
@@ -101,6 +102,9 @@ void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
     cmd.add_flag("--no-cull", a.no_cull, "Same as --cull none");
     cmd.add_flag("--occlusion-cull", a.occlusion_cull,
                  "Skip instances hidden behind the largest ones (occlusion buffer; same image)");
+    cmd.add_flag("--front-to-back", a.front_to_back,
+                 "Draw instances nearest first (hierarchical z then skips more; the image "
+                 "changes only where instances meet at exactly equal depth)");
     cmd.add_option("--front-face", a.front_face, "Front-face winding ccw|cw")
         ->check(CLI::IsMember({"ccw", "cw"}))
         ->capture_default_str();
@@ -137,8 +141,10 @@ namespace {
 
 Camera make_camera(const RenderArguments& a, const Scene& scene, double aspect) {
     Camera camera;
-    if (auto builtin = builtin_camera(a.scene)) camera = *builtin;
-    else camera = fit_camera(scene.world_positions());
+    if (auto builtin = builtin_camera(a.scene))
+        camera = *builtin;
+    else
+        camera = fit_camera(scene.world_positions());
     const BoundingSphere sphere = bounding_sphere(scene.world_positions());
     const double radius = sphere.radius > 0.0 ? sphere.radius : 1.0;
     if (!a.orbit.empty()) {
@@ -187,11 +193,10 @@ RenderOptions make_render_options(const RenderArguments& a, const Scene& scene) 
     if (a.threads < 0) throw InputError("--threads", "must be >= 0");
     o.threads = a.threads;
     o.camera = make_camera(a, scene, double(o.width) / double(o.height));
-    const std::map<std::string, ShadingMode> shading{
-        {"flat", ShadingMode::Flat},
-        {"gouraud", ShadingMode::Gouraud},
-        {"phong", ShadingMode::Phong},
-        {"unlit", ShadingMode::Unlit}};
+    const std::map<std::string, ShadingMode> shading{{"flat", ShadingMode::Flat},
+                                                     {"gouraud", ShadingMode::Gouraud},
+                                                     {"phong", ShadingMode::Phong},
+                                                     {"unlit", ShadingMode::Unlit}};
     o.shading = shading.at(a.shading);
     o.lighting.reflection =
         a.reflection == "phong" ? ReflectionModel::Phong : ReflectionModel::BlinnPhong;
@@ -215,6 +220,7 @@ RenderOptions make_render_options(const RenderArguments& a, const Scene& scene) 
                                            : CullMode::Back;
     o.front_face = a.front_face == "cw" ? FrontFace::Clockwise : FrontFace::CounterClockwise;
     o.occlusion_cull = a.occlusion_cull;
+    if (a.front_to_back) o.instance_order = InstanceOrder::FrontToBack;
     parse_depth_format(a.depth_format, o.depth_format);
     if (!a.depth_compare.empty()) {
         CompareFunc f{};
@@ -232,7 +238,8 @@ RenderOptions make_render_options(const RenderArguments& a, const Scene& scene) 
     for (const std::string& text : a.clip_planes)
         o.clip_planes.push_back(glm::vec4(parse_vec4("--clip-plane", text)));
     const glm::dvec3 bg = parse_vec3("--background", a.background);
-    if (glm::any(glm::lessThan(bg, glm::dvec3(0.0))) || glm::any(glm::greaterThan(bg, glm::dvec3(255.0))))
+    if (glm::any(glm::lessThan(bg, glm::dvec3(0.0))) ||
+        glm::any(glm::greaterThan(bg, glm::dvec3(255.0))))
         throw InputError("--background", "components must be in 0..255");
     o.background = glm::vec3(bg / 255.0);
     if (a.wireframe && a.hidden_line)
@@ -370,10 +377,11 @@ int run_render(const RenderArguments& a) {
         std::uint64_t regions = 0;
         for (const std::uint64_t n : v.warnock.regions_per_level) regions += n;
         if (a.visibility == "painter")
-            fmt::print("painter: {} polygons, {} comparisons, {} swaps, {} splits ({} forced by "
-                       "cycles)\n",
-                       v.polygons, v.painter.comparisons, v.painter.swaps, v.painter.splits,
-                       v.painter.cycle_splits);
+            fmt::print(
+                "painter: {} polygons, {} comparisons, {} swaps, {} splits ({} forced by "
+                "cycles)\n",
+                v.polygons, v.painter.comparisons, v.painter.swaps, v.painter.splits,
+                v.painter.cycle_splits);
         else if (a.visibility == "bsp")
             fmt::print("bsp: {} input polygons, {} nodes, depth {}, {} splits\n",
                        v.bsp.input_polygons, v.bsp.nodes, v.bsp.depth, v.bsp.splits);
@@ -388,17 +396,19 @@ int run_render(const RenderArguments& a) {
             "in\n",
             a.scene, s.instances, s.instances_frustum_culled, s.instances_occlusion_culled,
             s.triangles_in);
-        fmt::print("  trivially rejected {}, clipped {}, back-face culled {}, degenerate {}, "
-                   "no pixel covered {}, non-finite {}, rasterized {}\n",
-                   s.triangles_trivially_rejected, s.triangles_clipped,
-                   s.triangles_backface_culled, s.triangles_degenerate, s.triangles_no_coverage,
-                   s.triangles_non_finite, s.triangles_rasterized);
+        fmt::print(
+            "  trivially rejected {}, clipped {}, back-face culled {}, degenerate {}, "
+            "no pixel covered {}, non-finite {}, rasterized {}\n",
+            s.triangles_trivially_rejected, s.triangles_clipped, s.triangles_backface_culled,
+            s.triangles_degenerate, s.triangles_no_coverage, s.triangles_non_finite,
+            s.triangles_rasterized);
         fmt::print("  fragments shaded {}; setup {:.1f} ms, raster {:.1f} ms, total {:.1f} ms\n",
                    s.fragments_shaded, s.setup_ms, s.raster_ms, s.total_ms);
-        fmt::print("  camera eye ({:.6g}, {:.6g}, {:.6g}) target ({:.6g}, {:.6g}, {:.6g}) near "
-                   "{:.6g} far {:.6g}\n",
-                   s.camera.eye.x, s.camera.eye.y, s.camera.eye.z, s.camera.target.x,
-                   s.camera.target.y, s.camera.target.z, s.camera.near, s.camera.far);
+        fmt::print(
+            "  camera eye ({:.6g}, {:.6g}, {:.6g}) target ({:.6g}, {:.6g}, {:.6g}) near "
+            "{:.6g} far {:.6g}\n",
+            s.camera.eye.x, s.camera.eye.y, s.camera.eye.z, s.camera.target.x, s.camera.target.y,
+            s.camera.target.z, s.camera.near, s.camera.far);
         fmt::print("  wall time: load {:.1f} ms, camera and render {:.1f} ms, write {:.1f} ms\n",
                    load_ms, render_ms, write_ms);
     }
