@@ -270,7 +270,7 @@ struct TriangleRun {
 // `untagged` says whether any triangle without a tag was drawn in the tile. Returns the number
 // of pixels shaded.
 std::uint64_t finish_tile(const TileContext& c, const TileBuffers& tile, std::uint32_t background,
-                          bool shade_now, bool untagged) {
+                          const std::uint32_t* background_row, bool shade_now, bool untagged) {
     RenderTargets& t = c.targets;
     const bool d32 = c.codec.format() == DepthFormat::D32F;
     const bool want_normal = !t.normal.empty(), want_ids = !t.instance_id.empty();
@@ -297,7 +297,8 @@ std::uint64_t finish_tile(const TileContext& c, const TileBuffers& tile, std::ui
                     c.codec.decode(static_cast<std::uint32_t>(tile.depth[at_row + std::size_t(i)]));
         }
         if (tagged) {
-            std::fill_n(row_rgba, n, background);
+            // (A copy, not a fill: GCC at -O2 fills element by element.)
+            std::memcpy(row_rgba, background_row, std::size_t(n) * sizeof(std::uint32_t));
             shaded += std::uint64_t(
                 shade_tagged_row(c.frame.phong_constants.data(), tile, at_row, n, row_rgba));
             std::memcpy(&t.color[(row + std::size_t(c.x0)) * 4], row_rgba,
@@ -422,7 +423,9 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
         const auto row_bytes = std::size_t(c.x1 - c.x0) * sizeof(float);
         for (int y = 0; y < c.y1 - c.y0; ++y) {
             std::memcpy(tile.depth + tile_index(0, y), clear_row, row_bytes);
-            std::memset(tile.ref + tile_index(0, y), 0xff, row_bytes);  // kNoTriangle
+            // Depth-only frames never read the refs.
+            if (shade || options.id_targets)
+                std::memset(tile.ref + tile_index(0, y), 0xff, row_bytes);  // kNoTriangle
             if (tagged) std::memset(tile.shade_tag + tile_index(0, y), 0, row_bytes);
         }
         // Blocks past the image edge are never drawn; their bound only has to be valid.
@@ -464,7 +467,7 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
         }
         passed_per_tile[tile_number] = passed;
         shaded_per_tile[tile_number] =
-            finish_tile(c, tile, background, shade && !forward, untagged);
+            finish_tile(c, tile, background, background_row, shade && !forward, untagged);
         if (forward) shaded_per_tile[tile_number] = passed;
     });
     for (std::size_t t = 0; t < tiles; ++t) {
