@@ -150,9 +150,13 @@ void for_each_covered_pixel(const TriangleSetup& t, int x0, int y0, int x1, int 
     }
 }
 
-inline SetupResult classify_triangle(const ScreenVertex& v0, const ScreenVertex& v1,
-                                     const ScreenVertex& v2, const SetupSettings& settings,
-                                     TriangleBounds& out) {
+// (Always inlined: as a call, its results come back through memory, and triangle setup stalls
+// on them.)
+[[gnu::always_inline]] inline SetupResult classify_triangle(const ScreenVertex& v0,
+                                                            const ScreenVertex& v1,
+                                                            const ScreenVertex& v2,
+                                                            const SetupSettings& settings,
+                                                            TriangleBounds& out) {
     // Twice the signed area in y-down window space; negative means counter-clockwise as seen with
     // y up, i.e. OpenGL's default front face.
     const std::int64_t x0 = v0.x, y0 = v0.y;
