@@ -43,6 +43,36 @@ HWY_INLINE V plane_at(D d, const PlaneEquation& p, V dx, float dy) {
     return hn::Add(hn::Add(hn::Set(d, p.c), hn::Mul(hn::Set(d, p.a), dx)), hn::Set(d, p.b * dy));
 }
 
+// The corner attributes interpolated at barycentrics (b1, b2), as interpolation_weights and
+// interpolate_corners do it, operation for operation; store(value, array) writes each.
+template <class D, class V, class Store>
+HWY_INLINE void interpolate_attributes(D d, const CornerAttributes& a, V b1, V b2,
+                                       TileBuffers& tile, const Store& store) {
+    auto w0 = hn::Sub(hn::Sub(hn::Set(d, 1.0f), b1), b2), w1 = b1, w2 = b2;
+    if (a.piece != nullptr) {
+        const auto remap = [&](int c) {
+            return hn::Add(hn::Add(hn::Mul(w0, hn::Set(d, a.piece[0][c])),
+                                   hn::Mul(w1, hn::Set(d, a.piece[1][c]))),
+                           hn::Mul(w2, hn::Set(d, a.piece[2][c])));
+        };
+        const auto r0 = remap(0), r1 = remap(1), r2 = remap(2);
+        w0 = r0;
+        w1 = r1;
+        w2 = r2;
+    }
+    const auto interpolate = [&](const glm::vec3* corner, int c) {
+        return hn::Add(
+            hn::Add(hn::Mul(hn::Set(d, corner[0][c]), w0), hn::Mul(hn::Set(d, corner[1][c]), w1)),
+            hn::Mul(hn::Set(d, corner[2][c]), w2));
+    };
+    store(interpolate(a.normal, 0), tile.nx);
+    store(interpolate(a.normal, 1), tile.ny);
+    store(interpolate(a.normal, 2), tile.nz);
+    store(interpolate(a.world, 0), tile.wx);
+    store(interpolate(a.world, 1), tile.wy);
+    store(interpolate(a.world, 2), tile.wz);
+}
+
 // One row of up to 8 pixels per step.
 int VisibilityRows(const BlockJob& job, TileBuffers& tile) {
     const hn::CappedTag<float, 8> df;
@@ -107,30 +137,7 @@ int VisibilityRows(const BlockJob& job, TileBuffers& tile) {
                 store(b2, tile.b2);
                 continue;
             }
-            const CornerAttributes& a = *job.corners;
-            auto w0 = hn::Sub(hn::Sub(one_f, b1), b2), w1 = b1, w2 = b2;
-            if (a.piece != nullptr) {
-                const auto remap = [&](int c) {
-                    return hn::Add(hn::Add(hn::Mul(w0, hn::Set(df, a.piece[0][c])),
-                                           hn::Mul(w1, hn::Set(df, a.piece[1][c]))),
-                                   hn::Mul(w2, hn::Set(df, a.piece[2][c])));
-                };
-                const auto r0 = remap(0), r1 = remap(1), r2 = remap(2);
-                w0 = r0;
-                w1 = r1;
-                w2 = r2;
-            }
-            const auto interpolate = [&](const glm::vec3* corner, int c) {
-                return hn::Add(hn::Add(hn::Mul(hn::Set(df, corner[0][c]), w0),
-                                       hn::Mul(hn::Set(df, corner[1][c]), w1)),
-                               hn::Mul(hn::Set(df, corner[2][c]), w2));
-            };
-            store(interpolate(a.normal, 0), tile.nx);
-            store(interpolate(a.normal, 1), tile.ny);
-            store(interpolate(a.normal, 2), tile.nz);
-            store(interpolate(a.world, 0), tile.wx);
-            store(interpolate(a.world, 1), tile.wy);
-            store(interpolate(a.world, 2), tile.wz);
+            interpolate_attributes(df, *job.corners, b1, b2, tile, store);
         }
     }
     return passed;
@@ -224,30 +231,7 @@ int VisibilityRowPairs(D16 d, const BlockJob& job, TileBuffers& tile) {
             store(b2, tile.b2);
             continue;
         }
-        const CornerAttributes& a = *job.corners;
-        auto w0 = hn::Sub(hn::Sub(one_f, b1), b2), w1 = b1, w2 = b2;
-        if (a.piece != nullptr) {
-            const auto remap = [&](int c) {
-                return hn::Add(hn::Add(hn::Mul(w0, hn::Set(d, a.piece[0][c])),
-                                       hn::Mul(w1, hn::Set(d, a.piece[1][c]))),
-                               hn::Mul(w2, hn::Set(d, a.piece[2][c])));
-            };
-            const auto r0 = remap(0), r1 = remap(1), r2 = remap(2);
-            w0 = r0;
-            w1 = r1;
-            w2 = r2;
-        }
-        const auto interpolate = [&](const glm::vec3* corner, int c) {
-            return hn::Add(hn::Add(hn::Mul(hn::Set(d, corner[0][c]), w0),
-                                   hn::Mul(hn::Set(d, corner[1][c]), w1)),
-                           hn::Mul(hn::Set(d, corner[2][c]), w2));
-        };
-        store(interpolate(a.normal, 0), tile.nx);
-        store(interpolate(a.normal, 1), tile.ny);
-        store(interpolate(a.normal, 2), tile.nz);
-        store(interpolate(a.world, 0), tile.wx);
-        store(interpolate(a.world, 1), tile.wy);
-        store(interpolate(a.world, 2), tile.wz);
+        interpolate_attributes(d, *job.corners, b1, b2, tile, store);
     }
     return passed;
 }
@@ -349,15 +333,7 @@ int visibility_block_scalar(const BlockJob& job, TileBuffers& tile) {
                 tile.b2[at] = b2;
                 continue;
             }
-            const glm::vec3 w = interpolation_weights(*job.corners, b1, b2);
-            const glm::vec3 n = interpolate_corners(job.corners->normal, w);
-            const glm::vec3 p = interpolate_corners(job.corners->world, w);
-            tile.nx[at] = n.x;
-            tile.ny[at] = n.y;
-            tile.nz[at] = n.z;
-            tile.wx[at] = p.x;
-            tile.wy[at] = p.y;
-            tile.wz[at] = p.z;
+            store_interpolated(*job.corners, b1, b2, tile, at);
         }
     return passed;
 }

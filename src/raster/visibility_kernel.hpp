@@ -60,6 +60,19 @@ inline glm::vec3 interpolation_weights(const CornerAttributes& a, float b1, floa
 inline glm::vec3 interpolate_corners(const glm::vec3 corner[3], const glm::vec3& b) {
     return corner[0] * b.x + corner[1] * b.y + corner[2] * b.z;
 }
+// Stores a pixel's interpolated normal and position (the scalar paths).
+inline void store_interpolated(const CornerAttributes& a, float b1, float b2, TileBuffers& tile,
+                               std::size_t at) {
+    const glm::vec3 w = interpolation_weights(a, b1, b2);
+    const glm::vec3 n = interpolate_corners(a.normal, w);
+    const glm::vec3 p = interpolate_corners(a.world, w);
+    tile.nx[at] = n.x;
+    tile.ny[at] = n.y;
+    tile.nz[at] = n.z;
+    tile.wx[at] = p.x;
+    tile.wy[at] = p.y;
+    tile.wz[at] = p.z;
+}
 
 // One block of at most 8 pixels wide (any height) of one triangle.
 struct BlockJob {

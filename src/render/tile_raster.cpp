@@ -93,17 +93,7 @@ std::uint64_t rasterize_scalar(const TileContext& c, const Chunk& chunk, const T
         tile.b1[at] = b.y;
         tile.b2[at] = b.z;
         tile.shade_tag[at] = corners ? corners->tag : 0;
-        if (corners) {  // as the visibility kernel interpolates
-            const glm::vec3 w = interpolation_weights(*corners, b.y, b.z);
-            const glm::vec3 n = interpolate_corners(corners->normal, w);
-            const glm::vec3 p = interpolate_corners(corners->world, w);
-            tile.nx[at] = n.x;
-            tile.ny[at] = n.y;
-            tile.nz[at] = n.z;
-            tile.wx[at] = p.x;
-            tile.wy[at] = p.y;
-            tile.wz[at] = p.z;
-        }
+        if (corners) store_interpolated(*corners, b.y, b.z, tile, at);
         if (c.forward && c.shade)
             write_shaded(
                 c, shade_fragment(c.frame, shading, b.y, b.z, px, py, !c.targets.normal.empty()),
