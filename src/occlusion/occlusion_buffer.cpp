@@ -13,7 +13,6 @@
 
 namespace zraster {
 
-using detail::OccluderTriangle;
 using detail::OcclusionTile;
 
 namespace {
@@ -49,7 +48,7 @@ struct OcclusionBuffer::Impl {
     detail::TileGrid grid;
     std::vector<OcclusionTile> tiles;
     std::vector<float> tile_max, tile_min;  // see TileGrid
-    std::vector<OccluderTriangle> batch;    // kSetupOutput slots
+    std::unique_ptr<detail::OccluderBatch> batch = std::make_unique<detail::OccluderBatch>();
     std::size_t batch_size = 0;
     std::vector<glm::vec4> transformed;  // scratch for render_occluders with a matrix
     bool simd = true;
@@ -72,16 +71,23 @@ struct OcclusionBuffer::Impl {
 
     void flush() {
         if (batch_size == 0) return;
+        // Pixel bounds first (a loop the compiler vectorizes), tiles once.
+        int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;
+        const detail::OccluderBatch& b = *batch;
         for (std::size_t i = 0; i < batch_size; ++i) {
-            dirty_x0 = std::min(dirty_x0, batch[i].x0 / kTileWidth);
-            dirty_x1 = std::max(dirty_x1, batch[i].x1 / kTileWidth);
-            dirty_y0 = std::min(dirty_y0, batch[i].y0 / kTileHeight);
-            dirty_y1 = std::max(dirty_y1, batch[i].y1 / kTileHeight);
+            x0 = std::min(x0, b.x0[i]);
+            x1 = std::max(x1, b.x1[i]);
+            y0 = std::min(y0, b.y0[i]);
+            y1 = std::max(y1, b.y1[i]);
         }
+        dirty_x0 = std::min(dirty_x0, x0 / kTileWidth);
+        dirty_y0 = std::min(dirty_y0, y0 / kTileHeight);
+        dirty_x1 = std::max(dirty_x1, x1 / kTileWidth);
+        dirty_y1 = std::max(dirty_y1, y1 / kTileHeight);
         if (simd)
-            detail::rasterize_occluders(batch.data(), batch_size, grid);
+            detail::rasterize_occluders(b, batch_size, grid);
         else
-            detail::rasterize_occluders_scalar(batch.data(), batch_size, grid);
+            detail::rasterize_occluders_scalar(b, batch_size, grid);
         rasterized += batch_size;
         batch_size = 0;
     }
@@ -126,7 +132,6 @@ void OcclusionBuffer::set_resolution(int width, int height) {
     m.grid.tiles = m.tiles.data();
     m.grid.tile_max = m.tile_max.data();
     m.grid.tile_min = m.tile_min.data();
-    m.batch.resize(detail::kSetupOutput);
     clear();
 }
 
@@ -176,9 +181,8 @@ void OcclusionBuffer::render_occluders(std::span<const glm::vec4> clip_positions
     // Set up a group, rasterize it while it is in L1, next group.
     for (std::size_t first = 0; first < triangles; first += detail::kSetupGroup) {
         const std::size_t count = std::min(detail::kSetupGroup, triangles - first);
-        m.batch_size = m.simd
-                           ? detail::setup_occluders(source, first, count, m.batch.data())
-                           : detail::setup_occluders_scalar(source, first, count, m.batch.data());
+        m.batch_size = m.simd ? detail::setup_occluders(source, first, count, *m.batch)
+                              : detail::setup_occluders_scalar(source, first, count, *m.batch);
         m.flush();
     }
     m.refresh_coarse_levels();

@@ -44,7 +44,8 @@ HWY_INLINE hn::Vec<DU> ones_shifted_left(hn::Vec<DI> n) {
 #endif
 }
 
-void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, TileGrid grid) {
+void RasterizeOccluders(const OccluderBatch& b, std::size_t count, TileGrid grid) {
+    namespace k = occluder_setup;
     const DF df;
     const DI di;
     const DU du;
@@ -56,22 +57,24 @@ void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, Ti
     const auto one_i = hn::Set(di, 1);
     const auto half = hn::Set(df, 0.5f);
     for (std::size_t i = 0; i < count; ++i) {
-        const OccluderTriangle& t = triangles[i];
-        const int tx0 = t.x0 / kOcclusionTileWidth, tx1 = t.x1 / kOcclusionTileWidth;
-        const int ty0 = t.y0 / kOcclusionTileHeight, ty1 = t.y1 / kOcclusionTileHeight;
-        const auto left_x0 = hn::Set(df, t.left_x[0]), left_step0 = hn::Set(df, t.left_step[0]);
-        const auto left_x1 = hn::Set(df, t.left_x[1]), left_step1 = hn::Set(df, t.left_step[1]);
-        const auto right_x0 = hn::Set(df, t.right_x[0]), right_step0 = hn::Set(df, t.right_step[0]);
-        const auto right_x1 = hn::Set(df, t.right_x[1]), right_step1 = hn::Set(df, t.right_step[1]);
-        const auto span_lo = hn::Set(df, static_cast<float>(t.x0));
-        const auto span_hi = hn::Set(df, static_cast<float>(t.x1 + 1));
-        const auto row_lo = hn::Set(di, t.y0 - 1), row_hi = hn::Set(di, t.y1 + 1);
-        const auto origin_y = hn::Set(di, t.y0);
-        const auto origin_x = hn::Set(di, t.x0);
-        const auto z_origin = hn::Set(df, t.z_origin), z_dx = hn::Set(df, t.z_dx);
-        const auto z_dy = hn::Set(df, t.z_dy), z_kx = hn::Set(df, t.z_kx);
-        const auto z_ky = hn::Set(df, t.z_ky), z_bias = hn::Set(df, t.z_bias);
-        const auto z_max = hn::Set(df, t.z_max);
+        const int x0 = b.x0[i], x1 = b.x1[i], y0 = b.y0[i], y1 = b.y1[i];
+        const auto field = [&](int f) { return hn::Set(df, b.field[f][i]); };
+        const int tx0 = x0 / kOcclusionTileWidth, tx1 = x1 / kOcclusionTileWidth;
+        const int ty0 = y0 / kOcclusionTileHeight, ty1 = y1 / kOcclusionTileHeight;
+        const auto left_x0 = field(k::kLeftX), left_step0 = field(k::kLeftStep);
+        const auto left_x1 = field(k::kLeftX + 1), left_step1 = field(k::kLeftStep + 1);
+        const auto right_x0 = field(k::kRightX), right_step0 = field(k::kRightStep);
+        const auto right_x1 = field(k::kRightX + 1), right_step1 = field(k::kRightStep + 1);
+        const auto span_lo = hn::Set(df, static_cast<float>(x0));
+        const auto span_hi = hn::Set(df, static_cast<float>(x1 + 1));
+        const auto row_lo = hn::Set(di, y0 - 1), row_hi = hn::Set(di, y1 + 1);
+        const auto origin_y = hn::Set(di, y0);
+        const auto origin_x = hn::Set(di, x0);
+        const float dx = b.field[k::kZDx][i], kx = b.field[k::kZKx][i];
+        const auto z_origin = field(k::kZOrigin), z_dx = hn::Set(df, dx);
+        const auto z_dy = field(k::kZDy), z_kx = hn::Set(df, kx);
+        const auto z_ky = field(k::kZKy), z_bias = field(k::kZBias);
+        const auto z_max = field(k::kZMax);
         const auto z_dx_positive = hn::RebindMask(di, hn::Gt(z_dx, hn::Zero(df)));
         for (int ty = ty0; ty <= ty1; ++ty) {
             OcclusionTile* row_tiles = grid.tiles + static_cast<std::size_t>(ty) * grid.tiles_x;
@@ -114,7 +117,8 @@ void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, Ti
                     e = hn::Min(hn::Max(e, zero_i), width_i);
                     // Columns s..e-1: (~0 << s) & ~(~0 << e).
                     const auto coverage = hn::AndNot(ones_shifted_left(e), ones_shifted_left(s));
-                    const auto tile_bound = hn::Add(row_depth, hn::Set(df, tile_depth_step(t, tx)));
+                    const auto tile_bound =
+                        hn::Add(row_depth, hn::Set(df, tile_depth_step(dx, kx, x0, tx)));
                     const auto z =
                         hn::IfThenElse(hn::Lt(row_bound, tile_bound), row_bound, tile_bound);
 
@@ -242,7 +246,7 @@ bool RectOccluded(const TileGrid& grid, int x0, int y0, int x1, int y1, float de
 // Lanes that need clipping (or hold NaN/Inf) go through setup_occluder in submission order.
 
 std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::size_t count,
-                           OccluderTriangle* out) {
+                           OccluderBatch& out) {
     namespace k = occluder_setup;
     if (src.vertex_count == 0) return 0;
     const DF df;
@@ -252,7 +256,7 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
     const std::size_t lanes = hn::Lanes(df);
     alignas(64) float corners[3][kMaxLanes * 4];  // x, y, z, w of each lane's corner v
     alignas(64) std::int32_t box[4][kMaxLanes];
-    alignas(64) float fields[k::kFloatFields][kMaxLanes];
+    alignas(64) float fields[k::kFloatFields][kMaxLanes];  // for vectors with a clipped lane
     alignas(64) float keep_lanes[kMaxLanes], fast_lanes[kMaxLanes];
     alignas(64) std::int32_t interior[kMaxLanes];
     // Corner indices of each lane's triangle and of its neighbours in the index list; the two
@@ -441,11 +445,12 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
             return slot == 0 ? hn::IfThenElse(is[0], v[0], hn::IfThenElse(is[1], v[1], v[2]))
                              : hn::IfThenElse(hn::And(is[0], is[1]), v[1], v[2]);
         };
+        hn::Vec<DF> f[k::kFloatFields];
         for (int slot = 0; slot < kEdgeSlots; ++slot) {
-            hn::Store(pack(left_x, left, slot), df, fields[k::kLeftX + slot]);
-            hn::Store(pack(left_step, left, slot), df, fields[k::kLeftStep + slot]);
-            hn::Store(pack(right_x, right, slot), df, fields[k::kRightX + slot]);
-            hn::Store(pack(right_step, right, slot), df, fields[k::kRightStep + slot]);
+            f[k::kLeftX + slot] = pack(left_x, left, slot);
+            f[k::kLeftStep + slot] = pack(left_step, left, slot);
+            f[k::kRightX + slot] = pack(right_x, right, slot);
+            f[k::kRightStep + slot] = pack(right_step, right, slot);
         }
 
         const auto e1x = hn::Sub(X[1], X[0]), e1y = hn::Sub(Y[1], Y[0]), e1z = hn::Sub(Z[1], Z[0]);
@@ -466,20 +471,38 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
         const auto sane = hn::And(hn::Lt(hn::Abs(gx), hn::Set(df, k::kHugeGradient)),
                                   hn::Lt(hn::Abs(gy), hn::Set(df, k::kHugeGradient)));
         const auto z_max = hn::Add(zmax, slack);
-        hn::Store(hn::IfThenElse(sane, Z[0], z_max), df, fields[k::kZOrigin]);
-        hn::Store(hn::IfThenElseZero(sane, gx), df, fields[k::kZDx]);
-        hn::Store(hn::IfThenElseZero(sane, gy), df, fields[k::kZDy]);
-        hn::Store(hn::IfThenElseZero(sane, hn::Sub(hn::Add(x0, half), X[0])), df, fields[k::kZKx]);
-        hn::Store(hn::IfThenElseZero(sane, hn::Sub(row0, Y[0])), df, fields[k::kZKy]);
-        hn::Store(hn::IfThenElseZero(sane, bias), df, fields[k::kZBias]);
-        hn::Store(z_max, df, fields[k::kZMax]);
-        hn::Store(hn::ConvertTo(di, x0), di, box[0]);
-        hn::Store(hn::ConvertTo(di, x1), di, box[1]);
-        hn::Store(hn::ConvertTo(di, y0), di, box[2]);
-        hn::Store(hn::ConvertTo(di, y1), di, box[3]);
+        f[k::kZOrigin] = hn::IfThenElse(sane, Z[0], z_max);
+        f[k::kZDx] = hn::IfThenElseZero(sane, gx);
+        f[k::kZDy] = hn::IfThenElseZero(sane, gy);
+        f[k::kZKx] = hn::IfThenElseZero(sane, hn::Sub(hn::Add(x0, half), X[0]));
+        f[k::kZKy] = hn::IfThenElseZero(sane, hn::Sub(row0, Y[0]));
+        f[k::kZBias] = hn::IfThenElseZero(sane, bias);
+        f[k::kZMax] = z_max;
+        const hn::Vec<DI> bounds[4] = {hn::ConvertTo(di, x0), hn::ConvertTo(di, x1),
+                                       hn::ConvertTo(di, y0), hn::ConvertTo(di, y1)};
+        std::int32_t* const out_bounds[4] = {out.x0, out.x1, out.y0, out.y1};
+
+        alignas(8) std::uint8_t valid_bytes[8] = {};
+        std::memcpy(valid_bytes, &valid, sizeof(valid));  // little endian, as StoreMaskBits
+        const auto valid_lanes = hn::LoadMaskBits(df, valid_bytes);
+        if (hn::AllFalse(df, hn::AndNot(fast, valid_lanes))) {
+            // No lane to clip (the usual case): the kept lanes go out in order, straight into
+            // the batch, one register compress and store per field.
+            const auto take = hn::And(keep, valid_lanes);
+            const auto take_i = hn::RebindMask(di, take);
+            for (int field = 0; field < k::kFloatFields; ++field)
+                hn::StoreU(hn::Compress(f[field], take), df, out.field[field] + n);
+            for (int b = 0; b < 4; ++b)
+                hn::StoreU(hn::Compress(bounds[b], take_i), di, out_bounds[b] + n);
+            n += hn::CountTrue(df, take);
+            continue;
+        }
+        // Some lane needs clipping: lane by lane, in submission order.
+        for (int field = 0; field < k::kFloatFields; ++field)
+            hn::Store(f[field], df, fields[field]);
+        for (int b = 0; b < 4; ++b) hn::Store(bounds[b], di, box[b]);
         hn::Store(hn::IfThenElseZero(keep, one), df, keep_lanes);
         hn::Store(hn::IfThenElseZero(fast, one), df, fast_lanes);
-
         for (std::size_t l = 0; l < m; ++l) {
             if (!((valid >> l) & 1u)) continue;
             if (fast_lanes[l] == 0.0f) {
@@ -488,30 +511,17 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
                     const float* p = src.clip + 4 * std::size_t{i};
                     return glm::vec4(p[0], p[1], p[2], p[3]);
                 };
-                n += setup_occluder(vertex(t[0]), vertex(t[1]), vertex(t[2]), src.width, src.height,
-                                    options, out + n);
+                OccluderTriangle pieces[kMaxOccluderPieces];
+                const int made = setup_occluder(vertex(t[0]), vertex(t[1]), vertex(t[2]), src.width,
+                                                src.height, options, pieces);
+                for (int p = 0; p < made; ++p) out.set(n++, pieces[p]);
                 continue;
             }
             if (keep_lanes[l] == 0.0f) continue;
-            OccluderTriangle& o = out[n++];
-            o.x0 = box[0][l];
-            o.x1 = box[1][l];
-            o.y0 = box[2][l];
-            o.y1 = box[3][l];
-            for (int e = 0; e < kEdgeSlots; ++e) {
-                o.left_x[e] = fields[k::kLeftX + e][l];
-                o.left_step[e] = fields[k::kLeftStep + e][l];
-                o.right_x[e] = fields[k::kRightX + e][l];
-                o.right_step[e] = fields[k::kRightStep + e][l];
-            }
-            o.z_origin = fields[k::kZOrigin][l];
-            o.z_dx = fields[k::kZDx][l];
-            o.z_dy = fields[k::kZDy][l];
-            o.z_kx = fields[k::kZKx][l];
-            o.z_ky = fields[k::kZKy][l];
-            o.z_bias = fields[k::kZBias][l];
-            o.z_max = fields[k::kZMax][l];
-            o.z_dx_positive = o.z_dx > 0.0f;
+            for (int b = 0; b < 4; ++b) out_bounds[b][n] = box[b][l];
+            for (int field = 0; field < k::kFloatFields; ++field)
+                out.field[field][n] = fields[field][l];
+            ++n;
         }
     }
     return n;
@@ -533,12 +543,12 @@ HWY_EXPORT(RectOccluded);
 HWY_EXPORT(RefreshCoarseLevels);
 HWY_EXPORT(OcclusionTargetName);
 
-void rasterize_occluders(const OccluderTriangle* triangles, std::size_t count, TileGrid grid) {
+void rasterize_occluders(const OccluderBatch& triangles, std::size_t count, TileGrid grid) {
     HWY_DYNAMIC_DISPATCH(RasterizeOccluders)(triangles, count, grid);
 }
 
 std::size_t setup_occluders(const OccluderSource& source, std::size_t first, std::size_t count,
-                            OccluderTriangle* out) {
+                            OccluderBatch& out) {
     return HWY_DYNAMIC_DISPATCH(SetupOccluders)(source, first, count, out);
 }
 
@@ -579,10 +589,27 @@ std::uint32_t low_bits_scalar(int n) {
 }  // namespace
 
 // Lane by lane, the operations of RasterizeOccluders in the same order.
-void rasterize_occluders_scalar(const OccluderTriangle* triangles, std::size_t count,
-                                TileGrid grid) {
+void rasterize_occluders_scalar(const OccluderBatch& b, std::size_t count, TileGrid grid) {
+    namespace k = occluder_setup;
     for (std::size_t i = 0; i < count; ++i) {
-        const OccluderTriangle& t = triangles[i];
+        OccluderTriangle t;
+        t.x0 = b.x0[i];
+        t.x1 = b.x1[i];
+        t.y0 = b.y0[i];
+        t.y1 = b.y1[i];
+        for (int e = 0; e < kEdgeSlots; ++e) {
+            t.left_x[e] = b.field[k::kLeftX + e][i];
+            t.left_step[e] = b.field[k::kLeftStep + e][i];
+            t.right_x[e] = b.field[k::kRightX + e][i];
+            t.right_step[e] = b.field[k::kRightStep + e][i];
+        }
+        t.z_origin = b.field[k::kZOrigin][i];
+        t.z_dx = b.field[k::kZDx][i];
+        t.z_dy = b.field[k::kZDy][i];
+        t.z_kx = b.field[k::kZKx][i];
+        t.z_ky = b.field[k::kZKy][i];
+        t.z_bias = b.field[k::kZBias][i];
+        t.z_max = b.field[k::kZMax][i];
         const float span_lo = static_cast<float>(t.x0), span_hi = static_cast<float>(t.x1 + 1);
         for (int ty = t.y0 / kOcclusionTileHeight; ty <= t.y1 / kOcclusionTileHeight; ++ty) {
             OcclusionTile* row_tiles = grid.tiles + static_cast<std::size_t>(ty) * grid.tiles_x;
@@ -605,7 +632,7 @@ void rasterize_occluders_scalar(const OccluderTriangle* triangles, std::size_t c
                 const int first = static_cast<int>(std::floor(lo));
                 const int end = row_valid ? static_cast<int>(std::ceil(hi)) : first;
                 const float row_depth = (t.z_origin + t.z_dy * (yf + t.z_ky)) + t.z_bias;
-                const int row_extreme = t.z_dx_positive ? (end - 1) - t.x0 : first - t.x0;
+                const int row_extreme = t.z_dx > 0.0f ? (end - 1) - t.x0 : first - t.x0;
                 float row_bound = row_depth + t.z_dx * (static_cast<float>(row_extreme) + t.z_kx);
                 row_bound = row_bound < t.z_max ? row_bound : t.z_max;
                 for (int tx = t.x0 / kOcclusionTileWidth; tx <= t.x1 / kOcclusionTileWidth; ++tx) {
@@ -616,7 +643,7 @@ void rasterize_occluders_scalar(const OccluderTriangle* triangles, std::size_t c
                         std::min(std::max(end - tx * kOcclusionTileWidth, 0), kOcclusionTileWidth);
                     const std::uint32_t coverage = ~low_bits_scalar(s) & low_bits_scalar(e);
                     if (coverage == 0) continue;
-                    const float tile_bound = row_depth + tile_depth_step(t, tx);
+                    const float tile_bound = row_depth + tile_depth_step(t.z_dx, t.z_kx, t.x0, tx);
                     const float z = row_bound < tile_bound ? row_bound : tile_bound;
 
                     const std::uint32_t mask = tile.mask[r];
@@ -640,7 +667,7 @@ void rasterize_occluders_scalar(const OccluderTriangle* triangles, std::size_t c
 
 // Lane by lane, the operations of SetupOccluders in the same order.
 std::size_t setup_occluders_scalar(const OccluderSource& src, std::size_t first, std::size_t count,
-                                   OccluderTriangle* out) {
+                                   OccluderBatch& batch) {
     namespace k = occluder_setup;
     const float guard_x = 1.0f + 2.0f * k::kGuardPixels / static_cast<float>(src.width);
     const float guard_y = 1.0f + 2.0f * k::kGuardPixels / static_cast<float>(src.height);
@@ -680,8 +707,10 @@ std::size_t setup_occluders_scalar(const OccluderSource& src, std::size_t first,
                 const float* p = src.clip + 4 * std::size_t{j};
                 return glm::vec4(p[0], p[1], p[2], p[3]);
             };
-            n += setup_occluder(vertex(t[0]), vertex(t[1]), vertex(t[2]), src.width, src.height,
-                                options, out + n);
+            OccluderTriangle pieces[kMaxOccluderPieces];
+            const int made = setup_occluder(vertex(t[0]), vertex(t[1]), vertex(t[2]), src.width,
+                                            src.height, options, pieces);
+            for (int p = 0; p < made; ++p) batch.set(n++, pieces[p]);
             continue;
         }
         const float area2 = (X[1] - X[0]) * (Y[2] - Y[0]) - (Y[1] - Y[0]) * (X[2] - X[0]);
@@ -711,7 +740,7 @@ std::size_t setup_occluders_scalar(const OccluderSource& src, std::size_t first,
         const float y1 = min_f(std::floor((ymax - margin) - 0.5f), max_y);
         keep = keep && x0 <= x1 && y0 <= y1;
         if (!keep) continue;
-        OccluderTriangle& o = out[n++];
+        OccluderTriangle o;
         const float row0 = y0 + 0.5f;
         float left_x[3], left_step[3], right_x[3], right_step[3];
         bool left[3], right[3];
@@ -767,7 +796,7 @@ std::size_t setup_occluders_scalar(const OccluderSource& src, std::size_t first,
         o.x1 = static_cast<int>(x1);
         o.y0 = static_cast<int>(y0);
         o.y1 = static_cast<int>(y1);
-        o.z_dx_positive = o.z_dx > 0.0f;
+        batch.set(n++, o);
     }
     return n;
 }
