@@ -168,8 +168,8 @@ void RasterizeOccluders(const OccluderBatch& b, std::size_t count, TileGrid grid
     }
 }
 
-// Per tile of columns tx0..tx1 and rows ty0..ty1, the largest far layer and the smallest bound
-// (TileGrid::tile_max and tile_min): one tile per vector loop.
+// Per tile of columns tx0..tx1 and rows ty0..ty1, the smallest bound and the largest far layer
+// (TileGrid::coarse): one tile per vector loop.
 void RefreshCoarseLevels(TileGrid grid, int tx0, int ty0, int tx1, int ty1) {
     const DF df;
     const DU du;
@@ -188,10 +188,10 @@ void RefreshCoarseLevels(TileGrid grid, int tx0, int ty0, int tx1, int ty1) {
                 hi = hn::Max(hi, far_depth);
                 lo = hn::Min(lo, hn::IfThenElse(masked, hn::Load(df, t.near_depth + r), far_depth));
             }
-            grid.tile_max[i] = hn::GetLane(hn::MaxOfLanes(df, hi));
             // As the scalar twin: far_depth[0] takes part (near <= far makes it moot).
             const float lo_lanes = hn::GetLane(hn::MinOfLanes(df, lo));
-            grid.tile_min[i] = lo_lanes < t.far_depth[0] ? lo_lanes : t.far_depth[0];
+            grid.coarse[2 * i] = lo_lanes < t.far_depth[0] ? lo_lanes : t.far_depth[0];
+            grid.coarse[2 * i + 1] = hn::GetLane(hn::MaxOfLanes(df, hi));
         }
 }
 
@@ -228,33 +228,100 @@ HWY_INLINE bool TileOccluded(const TileGrid& grid, int tx, int ty, int x0, int y
     return true;
 }
 
-// The coarse levels settle most tiles: a row of tiles at a time, one lane per tile (the
-// arrays are padded for the whole vector loads); only tiles whose largest bound is not in front
-// but whose smallest is are read.
-bool RectOccluded(const TileGrid& grid, int x0, int y0, int x1, int y1, float depth) {
+// The coarse levels settle most tiles: a row of tiles at a time, a tile's smallest and largest
+// bound in two neighbouring lanes (the array is padded for the whole vector loads); only tiles
+// whose largest bound is not in front but whose smallest is are read.
+#if HWY_TARGET != HWY_SCALAR
+HWY_INLINE bool RectOccludedImpl(const TileGrid& grid, int x0, int y0, int x1, int y1,
+                                 float depth) {
     const DF df;
-    const int lanes = static_cast<int>(hn::Lanes(df));
+    const DU du;
+    const int tiles_per_vector = static_cast<int>(hn::Lanes(df)) / 2;
     const auto d = hn::Set(df, depth);
+    const auto largest = hn::RebindMask(df, hn::Ne(hn::And(hn::Iota(du, 0), hn::Set(du, 1u)),
+                                                   hn::Zero(du)));  // odd lanes
     const int tx0 = x0 / kOcclusionTileWidth, tx1 = x1 / kOcclusionTileWidth;
-    for (int ty = y0 / kOcclusionTileHeight; ty <= y1 / kOcclusionTileHeight; ++ty) {
-        const std::size_t row = static_cast<std::size_t>(ty) * grid.tiles_x;
-        for (int tx = tx0; tx <= tx1; tx += lanes) {
-            const auto in_rect = hn::FirstN(df, static_cast<std::size_t>(tx1 + 1 - tx));
+    const int ty0 = y0 / kOcclusionTileHeight, ty1 = y1 / kOcclusionTileHeight;
+    for (int ty = ty0; ty <= ty1; ++ty) {
+        const float* row = grid.coarse + 2 * (static_cast<std::size_t>(ty) * grid.tiles_x);
+        for (int tx = tx0; tx <= tx1; tx += tiles_per_vector) {
+            const auto in_rect = hn::FirstN(df, 2 * static_cast<std::size_t>(tx1 + 1 - tx));
             // Lanes past tx1 read the next tiles or the padding; in_rect masks them out.
-            const auto lo = hn::LoadU(df, grid.tile_min + row + tx);
-            const auto hi = hn::LoadU(df, grid.tile_max + row + tx);
+            const auto levels = hn::LoadU(df, row + 2 * tx);
+            const auto not_in_front = hn::AndNot(hn::Lt(levels, d), in_rect);
+            if (hn::AllFalse(df, not_in_front)) continue;
             // A tile with no bound in front: the rectangle is seen there.
-            if (!hn::AllFalse(df, hn::AndNot(hn::Lt(lo, d), in_rect))) return false;
-            const auto open = hn::AndNot(hn::Lt(hi, d), in_rect);
-            if (hn::AllFalse(df, open)) continue;
-            std::uint8_t bits[8] = {};
-            hn::StoreMaskBits(df, open, bits);
-            for (int l = 0; l < lanes && tx + l <= tx1; ++l)
-                if ((bits[l / 8] >> (l % 8)) & 1u)
-                    if (!TileOccluded(grid, tx + l, ty, x0, y0, x1, y1, depth)) return false;
+            if (!hn::AllFalse(df, hn::AndNot(largest, not_in_front))) return false;
+            auto open = not_in_front;  // odd lanes only
+            do {
+                const auto lane = hn::FindFirstTrue(df, open);
+                if (!TileOccluded(grid, tx + static_cast<int>(lane / 2), ty, x0, y0, x1, y1, depth))
+                    return false;
+                open = hn::AndNot(hn::FirstN(df, static_cast<std::size_t>(lane) + 1), open);
+            } while (!hn::AllFalse(df, open));
         }
     }
     return true;
+}
+#endif
+
+bool RectOccluded(const TileGrid& grid, int x0, int y0, int x1, int y1, float depth) {
+#if HWY_TARGET == HWY_SCALAR
+    return rect_occluded_scalar(grid, x0, y0, x1, y1, depth);  // one lane: no tile pairs
+#else
+    return RectOccludedImpl(grid, x0, y0, x1, y1, depth);
+#endif
+}
+
+// Float to int, rounding toward zero, for values known to be in int range (see TruncInRange).
+template <class D4>
+HWY_INLINE hn::Vec<hn::RebindToSigned<D4>> TruncInRange4(D4 d4, hn::Vec<D4> v) {
+#if HWY_ARCH_X86 && HWY_TARGET <= HWY_SSSE3
+    (void)d4;
+    return hn::Vec<hn::RebindToSigned<D4>>{_mm_cvttps_epi32(v.raw)};
+#else
+    return hn::ConvertTo(hn::RebindToSigned<D4>(), v);
+#endif
+}
+
+// The window-to-pixel conversion of window_rect_test_scalar, four coordinates in one vector
+// (xmin, ymin, xmax, ymax), the same operations on each.
+WindowRectResult WindowRectTest(const TileGrid& grid, float xmin, float xmax, float ymin,
+                                float ymax, float nearest) {
+#if HWY_TARGET == HWY_SCALAR
+    return window_rect_test_scalar(grid, xmin, xmax, ymin, ymax, nearest);  // no 4-lane vectors
+#else
+    const hn::Full128<float> d4;
+    const hn::RebindToSigned<decltype(d4)> i4;
+    const auto v =
+        hn::ConcatLowerLower(d4, hn::InterleaveLower(d4, hn::Set(d4, xmax), hn::Set(d4, ymax)),
+                             hn::InterleaveLower(d4, hn::Set(d4, xmin), hn::Set(d4, ymin)));
+    const auto a = hn::Abs(v);
+    const auto a2 = hn::Max(a, hn::Shuffle1032(a));
+    const auto max_abs = hn::Max(a2, hn::Shuffle2301(a2));
+    const auto margin = hn::Add(hn::Set(d4, 0x1p-6f), hn::Mul(max_abs, hn::Set(d4, 0x1p-17f)));
+    // Minima move down, maxima up; then the pixel centers, clamped as in the scalar twin.
+    const auto grown = hn::Add(v, hn::ConcatUpperLower(d4, margin, hn::Neg(margin)));
+    const auto limit = hn::InterleaveLower(d4, hn::Set(d4, static_cast<float>(grid.width) + 1.0f),
+                                           hn::Set(d4, static_cast<float>(grid.height) + 1.0f));
+    const auto centers =
+        hn::Min(hn::Max(hn::Sub(grown, hn::Set(d4, 0.5f)), hn::Set(d4, -2.0f)), limit);
+    const auto p =
+        TruncInRange4(d4, hn::ConcatUpperLower(d4, hn::Floor(centers), hn::Ceil(centers)));
+    // Between pixel centers: test the neighbours instead of calling it hidden (a swap).
+    const auto swapped = hn::Shuffle1032(p);
+    auto q = hn::ConcatUpperLower(i4, hn::Max(p, swapped), hn::Min(p, swapped));
+    const auto last =
+        hn::InterleaveLower(i4, hn::Set(i4, grid.width - 1), hn::Set(i4, grid.height - 1));
+    q = hn::Max(q, hn::ConcatUpperLower(i4, hn::Set(i4, -(1 << 30)), hn::Zero(i4)));
+    q = hn::Min(q, hn::ConcatUpperLower(i4, last, hn::Set(i4, 1 << 30)));
+    const auto empty = hn::And(hn::Gt(q, hn::Shuffle1032(q)), hn::FirstN(i4, 2));
+    if (!hn::AllFalse(i4, empty)) return WindowRectResult::kOutsideView;
+    const int x0 = hn::GetLane(q), y0 = hn::ExtractLane(q, 1);
+    const int x1 = hn::ExtractLane(q, 2), y1 = hn::ExtractLane(q, 3);
+    return RectOccludedImpl(grid, x0, y0, x1, y1, nearest - 0x1p-20f) ? WindowRectResult::kOccluded
+                                                                      : WindowRectResult::kVisible;
+#endif
 }
 
 // Triangle setup, many triangles at once (one per lane), in float. The error margins are those
@@ -559,6 +626,7 @@ namespace zraster::detail {
 HWY_EXPORT(RasterizeOccluders);
 HWY_EXPORT(SetupOccluders);
 HWY_EXPORT(RectOccluded);
+HWY_EXPORT(WindowRectTest);
 HWY_EXPORT(RefreshCoarseLevels);
 HWY_EXPORT(OcclusionTargetName);
 
@@ -573,6 +641,11 @@ std::size_t setup_occluders(const OccluderSource& source, std::size_t first, std
 
 bool rect_occluded(const TileGrid& grid, int x0, int y0, int x1, int y1, float depth) {
     return HWY_DYNAMIC_DISPATCH(RectOccluded)(grid, x0, y0, x1, y1, depth);
+}
+
+WindowRectResult window_rect_test(const TileGrid& grid, float xmin, float xmax, float ymin,
+                                  float ymax, float nearest) {
+    return HWY_DYNAMIC_DISPATCH(WindowRectTest)(grid, xmin, xmax, ymin, ymax, nearest);
 }
 
 void refresh_coarse_levels(TileGrid grid, int tx0, int ty0, int tx1, int ty1) {
@@ -590,8 +663,8 @@ void refresh_coarse_levels_scalar(TileGrid grid, int tx0, int ty0, int tx1, int 
                 hi = t.far_depth[r] > hi ? t.far_depth[r] : hi;
                 lo = bound < lo ? bound : lo;
             }
-            grid.tile_max[i] = hi;
-            grid.tile_min[i] = lo;
+            grid.coarse[2 * i] = lo;
+            grid.coarse[2 * i + 1] = hi;
         }
 }
 
@@ -835,6 +908,44 @@ bool rect_occluded_scalar(const TileGrid& grid, int x0, int y0, int x1, int y1, 
         }
     }
     return true;
+}
+
+WindowRectResult window_rect_test_scalar(const TileGrid& grid, float xmin, float xmax, float ymin,
+                                         float ymax, float nearest) {
+    const float w = static_cast<float>(grid.width), h = static_cast<float>(grid.height);
+    // Values, not references (std::max): branch-free minss/maxss.
+    const auto max_f = [](float a, float b) { return a > b ? a : b; };
+    const auto min_f = [](float a, float b) { return a < b ? a : b; };
+    const float max_abs =
+        max_f(max_f(std::abs(xmin), std::abs(xmax)), max_f(std::abs(ymin), std::abs(ymax)));
+    // Grow by more than the snapping of an exact rasterizer and the float error of the corners.
+    const float margin = 0x1p-6f + max_abs * 0x1p-17f;
+    // Pixels whose center may be inside [min - margin, max + margin]; clamped first so that the
+    // conversions stay in range (floor and ceil by hand: no libm call per test).
+    const auto clamped = [&](float v, float limit) { return min_f(max_f(v - 0.5f, -2.0f), limit); };
+    const auto floor_int = [](float v) {
+        const int i = static_cast<int>(v);
+        return i - (v < static_cast<float>(i));
+    };
+    const auto ceil_int = [](float v) {
+        const int i = static_cast<int>(v);
+        return i + (v > static_cast<float>(i));
+    };
+    int x0 = ceil_int(clamped(xmin - margin, w + 1.0f));
+    int x1 = floor_int(clamped(xmax + margin, w + 1.0f));
+    int y0 = ceil_int(clamped(ymin - margin, h + 1.0f));
+    int y1 = floor_int(clamped(ymax + margin, h + 1.0f));
+    // Between pixel centers: test the neighbours instead of calling it hidden.
+    if (x0 > x1) std::swap(x0, x1);
+    if (y0 > y1) std::swap(y0, y1);
+    x0 = std::max(x0, 0);
+    y0 = std::max(y0, 0);
+    x1 = std::min(x1, grid.width - 1);
+    y1 = std::min(y1, grid.height - 1);
+    if (x0 > x1 || y0 > y1) return WindowRectResult::kOutsideView;
+    return rect_occluded_scalar(grid, x0, y0, x1, y1, nearest - 0x1p-20f)
+               ? WindowRectResult::kOccluded
+               : WindowRectResult::kVisible;
 }
 
 }  // namespace zraster::detail

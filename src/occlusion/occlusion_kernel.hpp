@@ -138,22 +138,24 @@ inline float tile_depth_step(float z_dx, float z_kx, int x0, int tx) {
 
 struct TileGrid {
     OcclusionTile* tiles = nullptr;
-    // Per tile, the largest far_depth of its rows: a coarse level that lets a rectangle test
-    // settle a tile it covers entirely with one comparison (refreshed after each render call).
-    float* tile_max = nullptr;
-    // Per tile, the smallest depth bound of its pixels: a rectangle touching a tile whose
-    // smallest bound is not in front of it is visible at once.
-    float* tile_min = nullptr;
+    // Two coarse levels per tile, side by side (coarse[2 i] and coarse[2 i + 1] for tile i: a
+    // rectangle test reads both from one cache line), refreshed after each render call:
+    //  - the smallest depth bound of its pixels: a rectangle touching a tile whose smallest
+    //    bound is not in front of it is visible at once;
+    //  - the largest far_depth of its rows: a tile the rectangle covers entirely is settled by
+    //    one comparison when it is in front.
+    float* coarse = nullptr;
     int tiles_x = 0, tiles_y = 0;
+    int width = 0, height = 0;  // pixels
 };
-// tile_max and tile_min hold this many floats past the last tile (one vector's worth).
+// coarse holds this many floats past the last tile (one vector's worth).
 inline constexpr std::size_t kCoarsePadding = 16;
 
 // Rasterizes triangles [0, count) in order.
 void rasterize_occluders(const OccluderBatch& triangles, std::size_t count, TileGrid grid);
 void rasterize_occluders_scalar(const OccluderBatch& triangles, std::size_t count, TileGrid grid);
 
-// Recomputes tile_max and tile_min of tiles tx0..tx1, ty0..ty1 (inclusive).
+// Recomputes the coarse levels of tiles tx0..tx1, ty0..ty1 (inclusive).
 void refresh_coarse_levels(TileGrid grid, int tx0, int ty0, int tx1, int ty1);
 void refresh_coarse_levels_scalar(TileGrid grid, int tx0, int ty0, int tx1, int ty1);
 
@@ -161,6 +163,17 @@ void refresh_coarse_levels_scalar(TileGrid grid, int tx0, int ty0, int tx1, int 
 // depth bound strictly less than `depth`.
 bool rect_occluded(const TileGrid& grid, int x0, int y0, int x1, int y1, float depth);
 bool rect_occluded_scalar(const TileGrid& grid, int x0, int y0, int x1, int y1, float depth);
+
+// A rectangle in window coordinates (x right, y down, in pixels; finite) whose nearest point has
+// window depth `nearest` (finite, in front of the near plane): grown by a margin for the
+// snapping of an exact rasterizer and the float error of its corners, converted to the pixels
+// whose centers it may cover, and tested (`nearest` moved nearer by 2^-20). The conversion
+// happens inside the kernel: one dispatch per test.
+enum class WindowRectResult { kVisible, kOccluded, kOutsideView };
+WindowRectResult window_rect_test(const TileGrid& grid, float xmin, float xmax, float ymin,
+                                  float ymax, float nearest);
+WindowRectResult window_rect_test_scalar(const TileGrid& grid, float xmin, float xmax, float ymin,
+                                         float ymax, float nearest);
 
 const char* occlusion_kernel_target();
 
