@@ -11,6 +11,7 @@
 // and the dispatchers are compiled once (HWY_ONCE).
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "occlusion/occlusion_kernel.cpp"
+#include <hwy/cache_control.h>
 #include <hwy/foreach_target.h>  // must come before highway.h
 #include <hwy/highway.h>
 
@@ -232,33 +233,55 @@ HWY_INLINE bool TileOccluded(const TileGrid& grid, int tx, int ty, int x0, int y
 // bound in two neighbouring lanes (the array is padded for the whole vector loads); only tiles
 // whose largest bound is not in front but whose smallest is are read.
 #if HWY_TARGET != HWY_SCALAR
+// Tiles tx.. of row ty whose coarse levels are not in front (the lanes of not_in_front, a
+// tile's smallest bound in an even lane, its largest in the next): false when the rectangle is
+// seen there.
+HWY_INLINE bool SettleTiles(const TileGrid& grid, hn::Mask<DF> not_in_front, int tx, int ty, int x0,
+                            int y0, int x1, int y1, float depth) {
+    const DF df;
+    const DU du;
+    const auto largest = hn::RebindMask(df, hn::Ne(hn::And(hn::Iota(du, 0), hn::Set(du, 1u)),
+                                                   hn::Zero(du)));  // odd lanes
+    // A tile with no bound in front: the rectangle is seen there.
+    if (!hn::AllFalse(df, hn::AndNot(largest, not_in_front))) return false;
+    auto open = not_in_front;  // odd lanes only
+    do {
+        const auto lane = hn::FindFirstTrue(df, open);
+        if (!TileOccluded(grid, tx + static_cast<int>(lane / 2), ty, x0, y0, x1, y1, depth))
+            return false;
+        open = hn::AndNot(hn::FirstN(df, static_cast<std::size_t>(lane) + 1), open);
+    } while (!hn::AllFalse(df, open));
+    return true;
+}
+
 HWY_INLINE bool RectOccludedImpl(const TileGrid& grid, int x0, int y0, int x1, int y1,
                                  float depth) {
     const DF df;
-    const DU du;
     const int tiles_per_vector = static_cast<int>(hn::Lanes(df)) / 2;
     const auto d = hn::Set(df, depth);
-    const auto largest = hn::RebindMask(df, hn::Ne(hn::And(hn::Iota(du, 0), hn::Set(du, 1u)),
-                                                   hn::Zero(du)));  // odd lanes
     const int tx0 = x0 / kOcclusionTileWidth, tx1 = x1 / kOcclusionTileWidth;
     const int ty0 = y0 / kOcclusionTileHeight, ty1 = y1 / kOcclusionTileHeight;
-    for (int ty = ty0; ty <= ty1; ++ty) {
-        const float* row = grid.coarse + 2 * (static_cast<std::size_t>(ty) * grid.tiles_x);
+    const std::size_t row_stride = 2 * static_cast<std::size_t>(grid.tiles_x);
+    const float* levels = grid.coarse + static_cast<std::size_t>(ty0) * row_stride + 2 * tx0;
+    if (tx1 - tx0 < tiles_per_vector) {  // one vector per row of tiles (the usual case)
+        // Lanes past tx1 read the next tiles or the padding; in_rect masks them out.
+        const auto in_rect = hn::FirstN(df, 2 * static_cast<std::size_t>(tx1 + 1 - tx0));
+        for (int ty = ty0; ty <= ty1; ++ty, levels += row_stride) {
+            const auto not_in_front = hn::AndNot(hn::Lt(hn::LoadU(df, levels), d), in_rect);
+            if (!hn::AllFalse(df, not_in_front) &&
+                !SettleTiles(grid, not_in_front, tx0, ty, x0, y0, x1, y1, depth))
+                return false;
+        }
+        return true;
+    }
+    for (int ty = ty0; ty <= ty1; ++ty, levels += row_stride) {
         for (int tx = tx0; tx <= tx1; tx += tiles_per_vector) {
             const auto in_rect = hn::FirstN(df, 2 * static_cast<std::size_t>(tx1 + 1 - tx));
-            // Lanes past tx1 read the next tiles or the padding; in_rect masks them out.
-            const auto levels = hn::LoadU(df, row + 2 * tx);
-            const auto not_in_front = hn::AndNot(hn::Lt(levels, d), in_rect);
-            if (hn::AllFalse(df, not_in_front)) continue;
-            // A tile with no bound in front: the rectangle is seen there.
-            if (!hn::AllFalse(df, hn::AndNot(largest, not_in_front))) return false;
-            auto open = not_in_front;  // odd lanes only
-            do {
-                const auto lane = hn::FindFirstTrue(df, open);
-                if (!TileOccluded(grid, tx + static_cast<int>(lane / 2), ty, x0, y0, x1, y1, depth))
-                    return false;
-                open = hn::AndNot(hn::FirstN(df, static_cast<std::size_t>(lane) + 1), open);
-            } while (!hn::AllFalse(df, open));
+            const auto not_in_front =
+                hn::AndNot(hn::Lt(hn::LoadU(df, levels + 2 * (tx - tx0)), d), in_rect);
+            if (!hn::AllFalse(df, not_in_front) &&
+                !SettleTiles(grid, not_in_front, tx, ty, x0, y0, x1, y1, depth))
+                return false;
         }
     }
     return true;
