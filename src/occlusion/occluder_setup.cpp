@@ -170,7 +170,6 @@ bool setup_projected(const std::array<WindowVertex, 3>& v, double area2, int wid
     const double bias = 0x1p-20 * (1.0 + (std::abs(gx) + std::abs(gy)) * (max_abs + bw + bh));
     t.z_bias = static_cast<float>(std::min(bias, 4.0));
     t.z_max = static_cast<float>(zmax + 0x1p-20);
-    t.z_dx_positive = t.z_dx > 0.0f;
     if (!std::isfinite(t.z_dx) || !std::isfinite(t.z_dy) || !std::isfinite(t.z_kx) ||
         !std::isfinite(t.z_ky)) {
         // Extreme gradients (a sliver seen edge-on): the furthest vertex bounds every pixel.

@@ -13,7 +13,6 @@
 
 namespace zraster {
 
-using detail::OccluderTriangle;
 using detail::OcclusionTile;
 
 namespace {
@@ -48,15 +47,14 @@ struct OcclusionBuffer::Impl {
     int width = 0, height = 0;
     detail::TileGrid grid;
     std::vector<OcclusionTile> tiles;
-    std::vector<float> tile_max, tile_min;  // see TileGrid
-    std::vector<OccluderTriangle> batch;    // kSetupOutput slots
+    std::vector<float> coarse;  // see TileGrid
+    std::unique_ptr<detail::OccluderBatch> batch = std::make_unique<detail::OccluderBatch>();
     std::size_t batch_size = 0;
     std::vector<glm::vec4> transformed;  // scratch for render_occluders with a matrix
     bool simd = true;
     std::uint64_t rasterized = 0;
 
-    // Tiles touched since the last refresh of tile_max and tile_min (inclusive; empty when x0 >
-    // x1).
+    // Tiles touched since the last refresh of the coarse levels (inclusive; empty when x0 > x1).
     int dirty_x0 = 1 << 30, dirty_y0 = 1 << 30, dirty_x1 = -1, dirty_y1 = -1;
 
     void refresh_coarse_levels() {
@@ -72,16 +70,23 @@ struct OcclusionBuffer::Impl {
 
     void flush() {
         if (batch_size == 0) return;
+        // Pixel bounds first (a loop the compiler vectorizes), tiles once.
+        int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;
+        const detail::OccluderBatch& b = *batch;
         for (std::size_t i = 0; i < batch_size; ++i) {
-            dirty_x0 = std::min(dirty_x0, batch[i].x0 / kTileWidth);
-            dirty_x1 = std::max(dirty_x1, batch[i].x1 / kTileWidth);
-            dirty_y0 = std::min(dirty_y0, batch[i].y0 / kTileHeight);
-            dirty_y1 = std::max(dirty_y1, batch[i].y1 / kTileHeight);
+            x0 = std::min(x0, b.x0[i]);
+            x1 = std::max(x1, b.x1[i]);
+            y0 = std::min(y0, b.y0[i]);
+            y1 = std::max(y1, b.y1[i]);
         }
+        dirty_x0 = std::min(dirty_x0, x0 / kTileWidth);
+        dirty_y0 = std::min(dirty_y0, y0 / kTileHeight);
+        dirty_x1 = std::max(dirty_x1, x1 / kTileWidth);
+        dirty_y1 = std::max(dirty_y1, y1 / kTileHeight);
         if (simd)
-            detail::rasterize_occluders(batch.data(), batch_size, grid);
+            detail::rasterize_occluders(b, batch_size, grid);
         else
-            detail::rasterize_occluders_scalar(batch.data(), batch_size, grid);
+            detail::rasterize_occluders_scalar(b, batch_size, grid);
         rasterized += batch_size;
         batch_size = 0;
     }
@@ -121,12 +126,11 @@ void OcclusionBuffer::set_resolution(int width, int height) {
     m.grid.tiles_y = (height + kTileHeight - 1) / kTileHeight;
     m.tiles.resize(static_cast<std::size_t>(m.grid.tiles_x) * m.grid.tiles_y);
     // Padded: the rectangle test loads whole vectors of them.
-    m.tile_max.resize(m.tiles.size() + detail::kCoarsePadding);
-    m.tile_min.resize(m.tiles.size() + detail::kCoarsePadding);
+    m.coarse.resize(2 * m.tiles.size() + detail::kCoarsePadding);
+    m.grid.width = width;
+    m.grid.height = height;
     m.grid.tiles = m.tiles.data();
-    m.grid.tile_max = m.tile_max.data();
-    m.grid.tile_min = m.tile_min.data();
-    m.batch.resize(detail::kSetupOutput);
+    m.grid.coarse = m.coarse.data();
     clear();
 }
 
@@ -149,8 +153,7 @@ void OcclusionBuffer::clear() {
     std::fill(std::begin(empty.far_depth), std::end(empty.far_depth), detail::kClearFarDepth);
     std::fill(std::begin(empty.near_depth), std::end(empty.near_depth), detail::kEmptyNearDepth);
     std::fill(impl_->tiles.begin(), impl_->tiles.end(), empty);
-    std::fill(impl_->tile_max.begin(), impl_->tile_max.end(), detail::kClearFarDepth);
-    std::fill(impl_->tile_min.begin(), impl_->tile_min.end(), detail::kClearFarDepth);
+    std::fill(impl_->coarse.begin(), impl_->coarse.end(), detail::kClearFarDepth);
     impl_->rasterized = 0;
 }
 
@@ -176,9 +179,8 @@ void OcclusionBuffer::render_occluders(std::span<const glm::vec4> clip_positions
     // Set up a group, rasterize it while it is in L1, next group.
     for (std::size_t first = 0; first < triangles; first += detail::kSetupGroup) {
         const std::size_t count = std::min(detail::kSetupGroup, triangles - first);
-        m.batch_size = m.simd
-                           ? detail::setup_occluders(source, first, count, m.batch.data())
-                           : detail::setup_occluders_scalar(source, first, count, m.batch.data());
+        m.batch_size = m.simd ? detail::setup_occluders(source, first, count, *m.batch)
+                              : detail::setup_occluders_scalar(source, first, count, *m.batch);
         m.flush();
     }
     m.refresh_coarse_levels();
@@ -232,39 +234,13 @@ OcclusionResult OcclusionBuffer::Impl::test_points(const glm::vec4* points, int 
 
 OcclusionResult OcclusionBuffer::Impl::test_window_rect(float xmin, float xmax, float ymin,
                                                         float ymax, float nearest) const {
-    const float w = static_cast<float>(width), h = static_cast<float>(height);
-    // Values, not references (std::max): branch-free minss/maxss.
-    const auto max_f = [](float a, float b) { return a > b ? a : b; };
-    const auto min_f = [](float a, float b) { return a < b ? a : b; };
-    const float max_abs =
-        max_f(max_f(std::abs(xmin), std::abs(xmax)), max_f(std::abs(ymin), std::abs(ymax)));
-    // Grow by more than the snapping of an exact rasterizer and the float error of the corners.
-    const float margin = 0x1p-6f + max_abs * 0x1p-17f;
-    // Pixels whose center may be inside [min - margin, max + margin]; clamped first so that the
-    // conversions stay in range (floor and ceil by hand: no libm call per test).
-    const auto clamped = [&](float v, float limit) { return min_f(max_f(v - 0.5f, -2.0f), limit); };
-    const auto floor_int = [](float v) {
-        const int i = static_cast<int>(v);
-        return i - (v < static_cast<float>(i));
-    };
-    const auto ceil_int = [](float v) {
-        const int i = static_cast<int>(v);
-        return i + (v > static_cast<float>(i));
-    };
-    int x0 = ceil_int(clamped(xmin - margin, w + 1.0f));
-    int x1 = floor_int(clamped(xmax + margin, w + 1.0f));
-    int y0 = ceil_int(clamped(ymin - margin, h + 1.0f));
-    int y1 = floor_int(clamped(ymax + margin, h + 1.0f));
-    // Between pixel centers: test the neighbours instead of calling it hidden.
-    if (x0 > x1) std::swap(x0, x1);
-    if (y0 > y1) std::swap(y0, y1);
-    x0 = std::max(x0, 0);
-    y0 = std::max(y0, 0);
-    x1 = std::min(x1, width - 1);
-    y1 = std::min(y1, height - 1);
-    if (x0 > x1 || y0 > y1) return OcclusionResult::OutsideView;
-    const float depth = nearest - 0x1p-20f;
-    return occluded(x0, y0, x1, y1, depth) ? OcclusionResult::Occluded : OcclusionResult::Visible;
+    using detail::WindowRectResult;
+    const WindowRectResult r =
+        simd ? detail::window_rect_test(grid, xmin, xmax, ymin, ymax, nearest)
+             : detail::window_rect_test_scalar(grid, xmin, xmax, ymin, ymax, nearest);
+    return r == WindowRectResult::kOccluded      ? OcclusionResult::Occluded
+           : r == WindowRectResult::kOutsideView ? OcclusionResult::OutsideView
+                                                 : OcclusionResult::Visible;
 }
 
 OcclusionResult OcclusionBuffer::test_rect(glm::vec2 ndc_min, glm::vec2 ndc_max,

@@ -11,6 +11,7 @@
 // and the dispatchers are compiled once (HWY_ONCE).
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "occlusion/occlusion_kernel.cpp"
+#include <hwy/cache_control.h>
 #include <hwy/foreach_target.h>  // must come before highway.h
 #include <hwy/highway.h>
 
@@ -44,7 +45,25 @@ HWY_INLINE hn::Vec<DU> ones_shifted_left(hn::Vec<DI> n) {
 #endif
 }
 
-void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, TileGrid grid) {
+// Float to int, rounding toward zero, for lanes known to be in int range: Highway's ConvertTo
+// spends four more instructions per vector on saturating out-of-range lanes.
+HWY_INLINE hn::Vec<DI> TruncInRange(hn::Vec<DF> v) {
+#if HWY_ARCH_X86 && HWY_TARGET <= HWY_AVX3
+    static_assert(hn::MaxLanes(DF()) == 16);
+    return hn::Vec<DI>{_mm512_cvttps_epi32(v.raw)};
+#elif HWY_ARCH_X86 && HWY_TARGET == HWY_AVX2
+    static_assert(hn::MaxLanes(DF()) == 8);
+    return hn::Vec<DI>{_mm256_cvttps_epi32(v.raw)};
+#elif HWY_ARCH_X86 && (HWY_TARGET == HWY_SSE4 || HWY_TARGET == HWY_SSSE3)
+    static_assert(hn::MaxLanes(DF()) == 4);
+    return hn::Vec<DI>{_mm_cvttps_epi32(v.raw)};
+#else
+    return hn::ConvertTo(DI(), v);
+#endif
+}
+
+void RasterizeOccluders(const OccluderBatch& b, std::size_t count, TileGrid grid) {
+    namespace k = occluder_setup;
     const DF df;
     const DI di;
     const DU du;
@@ -56,22 +75,24 @@ void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, Ti
     const auto one_i = hn::Set(di, 1);
     const auto half = hn::Set(df, 0.5f);
     for (std::size_t i = 0; i < count; ++i) {
-        const OccluderTriangle& t = triangles[i];
-        const int tx0 = t.x0 / kOcclusionTileWidth, tx1 = t.x1 / kOcclusionTileWidth;
-        const int ty0 = t.y0 / kOcclusionTileHeight, ty1 = t.y1 / kOcclusionTileHeight;
-        const auto left_x0 = hn::Set(df, t.left_x[0]), left_step0 = hn::Set(df, t.left_step[0]);
-        const auto left_x1 = hn::Set(df, t.left_x[1]), left_step1 = hn::Set(df, t.left_step[1]);
-        const auto right_x0 = hn::Set(df, t.right_x[0]), right_step0 = hn::Set(df, t.right_step[0]);
-        const auto right_x1 = hn::Set(df, t.right_x[1]), right_step1 = hn::Set(df, t.right_step[1]);
-        const auto span_lo = hn::Set(df, static_cast<float>(t.x0));
-        const auto span_hi = hn::Set(df, static_cast<float>(t.x1 + 1));
-        const auto row_lo = hn::Set(di, t.y0 - 1), row_hi = hn::Set(di, t.y1 + 1);
-        const auto origin_y = hn::Set(di, t.y0);
-        const auto origin_x = hn::Set(di, t.x0);
-        const auto z_origin = hn::Set(df, t.z_origin), z_dx = hn::Set(df, t.z_dx);
-        const auto z_dy = hn::Set(df, t.z_dy), z_kx = hn::Set(df, t.z_kx);
-        const auto z_ky = hn::Set(df, t.z_ky), z_bias = hn::Set(df, t.z_bias);
-        const auto z_max = hn::Set(df, t.z_max);
+        const int x0 = b.x0[i], x1 = b.x1[i], y0 = b.y0[i], y1 = b.y1[i];
+        const auto field = [&](int f) { return hn::Set(df, b.field[f][i]); };
+        const int tx0 = x0 / kOcclusionTileWidth, tx1 = x1 / kOcclusionTileWidth;
+        const int ty0 = y0 / kOcclusionTileHeight, ty1 = y1 / kOcclusionTileHeight;
+        const auto left_x0 = field(k::kLeftX), left_step0 = field(k::kLeftStep);
+        const auto left_x1 = field(k::kLeftX + 1), left_step1 = field(k::kLeftStep + 1);
+        const auto right_x0 = field(k::kRightX), right_step0 = field(k::kRightStep);
+        const auto right_x1 = field(k::kRightX + 1), right_step1 = field(k::kRightStep + 1);
+        const auto span_lo = hn::Set(df, static_cast<float>(x0));
+        const auto span_hi = hn::Set(df, static_cast<float>(x1 + 1));
+        const auto row_lo = hn::Set(di, y0 - 1), row_hi = hn::Set(di, y1 + 1);
+        const auto origin_y = hn::Set(di, y0);
+        const auto origin_x = hn::Set(di, x0);
+        const float dx = b.field[k::kZDx][i], kx = b.field[k::kZKx][i];
+        const auto z_origin = field(k::kZOrigin), z_dx = hn::Set(df, dx);
+        const auto z_dy = field(k::kZDy), z_kx = hn::Set(df, kx);
+        const auto z_ky = field(k::kZKy), z_bias = field(k::kZBias);
+        const auto z_max = field(k::kZMax);
         const auto z_dx_positive = hn::RebindMask(di, hn::Gt(z_dx, hn::Zero(df)));
         for (int ty = ty0; ty <= ty1; ++ty) {
             OcclusionTile* row_tiles = grid.tiles + static_cast<std::size_t>(ty) * grid.tiles_x;
@@ -92,8 +113,9 @@ void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, Ti
                 auto hi = hn::Sub(xr, half);
                 hi = hn::IfThenElse(hn::Lt(hi, span_lo), span_lo, hi);
                 hi = hn::IfThenElse(hn::Gt(hi, span_hi), span_hi, hi);
-                const auto first = hn::ConvertTo(di, hn::Floor(lo));
-                const auto end = hn::IfThenElse(row_valid, hn::ConvertTo(di, hn::Ceil(hi)), first);
+                // lo >= 0: truncation is its floor.
+                const auto first = TruncInRange(lo);
+                const auto end = hn::IfThenElse(row_valid, TruncInRange(hn::Ceil(hi)), first);
                 // The bound is taken at the extreme covered column of the whole row and at the
                 // tile's extreme column; the plane being affine, the smaller of the two bounds
                 // the covered pixels of the row inside the tile.
@@ -114,7 +136,8 @@ void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, Ti
                     e = hn::Min(hn::Max(e, zero_i), width_i);
                     // Columns s..e-1: (~0 << s) & ~(~0 << e).
                     const auto coverage = hn::AndNot(ones_shifted_left(e), ones_shifted_left(s));
-                    const auto tile_bound = hn::Add(row_depth, hn::Set(df, tile_depth_step(t, tx)));
+                    const auto tile_bound =
+                        hn::Add(row_depth, hn::Set(df, tile_depth_step(dx, kx, x0, tx)));
                     const auto z =
                         hn::IfThenElse(hn::Lt(row_bound, tile_bound), row_bound, tile_bound);
 
@@ -146,8 +169,8 @@ void RasterizeOccluders(const OccluderTriangle* triangles, std::size_t count, Ti
     }
 }
 
-// Per tile of columns tx0..tx1 and rows ty0..ty1, the largest far layer and the smallest bound
-// (TileGrid::tile_max and tile_min): one tile per vector loop.
+// Per tile of columns tx0..tx1 and rows ty0..ty1, the smallest bound and the largest far layer
+// (TileGrid::coarse): one tile per vector loop.
 void RefreshCoarseLevels(TileGrid grid, int tx0, int ty0, int tx1, int ty1) {
     const DF df;
     const DU du;
@@ -166,10 +189,10 @@ void RefreshCoarseLevels(TileGrid grid, int tx0, int ty0, int tx1, int ty1) {
                 hi = hn::Max(hi, far_depth);
                 lo = hn::Min(lo, hn::IfThenElse(masked, hn::Load(df, t.near_depth + r), far_depth));
             }
-            grid.tile_max[i] = hn::GetLane(hn::MaxOfLanes(df, hi));
             // As the scalar twin: far_depth[0] takes part (near <= far makes it moot).
             const float lo_lanes = hn::GetLane(hn::MinOfLanes(df, lo));
-            grid.tile_min[i] = lo_lanes < t.far_depth[0] ? lo_lanes : t.far_depth[0];
+            grid.coarse[2 * i] = lo_lanes < t.far_depth[0] ? lo_lanes : t.far_depth[0];
+            grid.coarse[2 * i + 1] = hn::GetLane(hn::MaxOfLanes(df, hi));
         }
 }
 
@@ -206,33 +229,122 @@ HWY_INLINE bool TileOccluded(const TileGrid& grid, int tx, int ty, int x0, int y
     return true;
 }
 
-// The coarse levels settle most tiles: a row of tiles at a time, one lane per tile (the
-// arrays are padded for the whole vector loads); only tiles whose largest bound is not in front
-// but whose smallest is are read.
-bool RectOccluded(const TileGrid& grid, int x0, int y0, int x1, int y1, float depth) {
+// The coarse levels settle most tiles: a row of tiles at a time, a tile's smallest and largest
+// bound in two neighbouring lanes (the array is padded for the whole vector loads); only tiles
+// whose largest bound is not in front but whose smallest is are read.
+#if HWY_TARGET != HWY_SCALAR
+// Tiles tx.. of row ty whose coarse levels are not in front (the lanes of not_in_front, a
+// tile's smallest bound in an even lane, its largest in the next): false when the rectangle is
+// seen there.
+HWY_INLINE bool SettleTiles(const TileGrid& grid, hn::Mask<DF> not_in_front, int tx, int ty, int x0,
+                            int y0, int x1, int y1, float depth) {
     const DF df;
-    const int lanes = static_cast<int>(hn::Lanes(df));
+    const DU du;
+    const auto largest = hn::RebindMask(df, hn::Ne(hn::And(hn::Iota(du, 0), hn::Set(du, 1u)),
+                                                   hn::Zero(du)));  // odd lanes
+    // A tile with no bound in front: the rectangle is seen there.
+    if (!hn::AllFalse(df, hn::AndNot(largest, not_in_front))) return false;
+    auto open = not_in_front;  // odd lanes only
+    do {
+        const auto lane = hn::FindFirstTrue(df, open);
+        if (!TileOccluded(grid, tx + static_cast<int>(lane / 2), ty, x0, y0, x1, y1, depth))
+            return false;
+        open = hn::AndNot(hn::FirstN(df, static_cast<std::size_t>(lane) + 1), open);
+    } while (!hn::AllFalse(df, open));
+    return true;
+}
+
+HWY_INLINE bool RectOccludedImpl(const TileGrid& grid, int x0, int y0, int x1, int y1,
+                                 float depth) {
+    const DF df;
+    const int tiles_per_vector = static_cast<int>(hn::Lanes(df)) / 2;
     const auto d = hn::Set(df, depth);
     const int tx0 = x0 / kOcclusionTileWidth, tx1 = x1 / kOcclusionTileWidth;
-    for (int ty = y0 / kOcclusionTileHeight; ty <= y1 / kOcclusionTileHeight; ++ty) {
-        const std::size_t row = static_cast<std::size_t>(ty) * grid.tiles_x;
-        for (int tx = tx0; tx <= tx1; tx += lanes) {
-            const auto in_rect = hn::FirstN(df, static_cast<std::size_t>(tx1 + 1 - tx));
-            // Lanes past tx1 read the next tiles or the padding; in_rect masks them out.
-            const auto lo = hn::LoadU(df, grid.tile_min + row + tx);
-            const auto hi = hn::LoadU(df, grid.tile_max + row + tx);
-            // A tile with no bound in front: the rectangle is seen there.
-            if (!hn::AllFalse(df, hn::AndNot(hn::Lt(lo, d), in_rect))) return false;
-            const auto open = hn::AndNot(hn::Lt(hi, d), in_rect);
-            if (hn::AllFalse(df, open)) continue;
-            std::uint8_t bits[8] = {};
-            hn::StoreMaskBits(df, open, bits);
-            for (int l = 0; l < lanes && tx + l <= tx1; ++l)
-                if ((bits[l / 8] >> (l % 8)) & 1u)
-                    if (!TileOccluded(grid, tx + l, ty, x0, y0, x1, y1, depth)) return false;
+    const int ty0 = y0 / kOcclusionTileHeight, ty1 = y1 / kOcclusionTileHeight;
+    const std::size_t row_stride = 2 * static_cast<std::size_t>(grid.tiles_x);
+    const float* levels = grid.coarse + static_cast<std::size_t>(ty0) * row_stride + 2 * tx0;
+    if (tx1 - tx0 < tiles_per_vector) {  // one vector per row of tiles (the usual case)
+        // Lanes past tx1 read the next tiles or the padding; in_rect masks them out.
+        const auto in_rect = hn::FirstN(df, 2 * static_cast<std::size_t>(tx1 + 1 - tx0));
+        for (int ty = ty0; ty <= ty1; ++ty, levels += row_stride) {
+            const auto not_in_front = hn::AndNot(hn::Lt(hn::LoadU(df, levels), d), in_rect);
+            if (!hn::AllFalse(df, not_in_front) &&
+                !SettleTiles(grid, not_in_front, tx0, ty, x0, y0, x1, y1, depth))
+                return false;
+        }
+        return true;
+    }
+    for (int ty = ty0; ty <= ty1; ++ty, levels += row_stride) {
+        for (int tx = tx0; tx <= tx1; tx += tiles_per_vector) {
+            const auto in_rect = hn::FirstN(df, 2 * static_cast<std::size_t>(tx1 + 1 - tx));
+            const auto not_in_front =
+                hn::AndNot(hn::Lt(hn::LoadU(df, levels + 2 * (tx - tx0)), d), in_rect);
+            if (!hn::AllFalse(df, not_in_front) &&
+                !SettleTiles(grid, not_in_front, tx, ty, x0, y0, x1, y1, depth))
+                return false;
         }
     }
     return true;
+}
+#endif
+
+bool RectOccluded(const TileGrid& grid, int x0, int y0, int x1, int y1, float depth) {
+#if HWY_TARGET == HWY_SCALAR
+    return rect_occluded_scalar(grid, x0, y0, x1, y1, depth);  // one lane: no tile pairs
+#else
+    return RectOccludedImpl(grid, x0, y0, x1, y1, depth);
+#endif
+}
+
+// Float to int, rounding toward zero, for values known to be in int range (see TruncInRange).
+template <class D4>
+HWY_INLINE hn::Vec<hn::RebindToSigned<D4>> TruncInRange4(D4 d4, hn::Vec<D4> v) {
+#if HWY_ARCH_X86 && HWY_TARGET <= HWY_SSSE3
+    (void)d4;
+    return hn::Vec<hn::RebindToSigned<D4>>{_mm_cvttps_epi32(v.raw)};
+#else
+    return hn::ConvertTo(hn::RebindToSigned<D4>(), v);
+#endif
+}
+
+// The window-to-pixel conversion of window_rect_test_scalar, four coordinates in one vector
+// (xmin, ymin, xmax, ymax), the same operations on each.
+WindowRectResult WindowRectTest(const TileGrid& grid, float xmin, float xmax, float ymin,
+                                float ymax, float nearest) {
+#if HWY_TARGET == HWY_SCALAR
+    return window_rect_test_scalar(grid, xmin, xmax, ymin, ymax, nearest);  // no 4-lane vectors
+#else
+    const hn::Full128<float> d4;
+    const hn::RebindToSigned<decltype(d4)> i4;
+    const auto v =
+        hn::ConcatLowerLower(d4, hn::InterleaveLower(d4, hn::Set(d4, xmax), hn::Set(d4, ymax)),
+                             hn::InterleaveLower(d4, hn::Set(d4, xmin), hn::Set(d4, ymin)));
+    const auto a = hn::Abs(v);
+    const auto a2 = hn::Max(a, hn::Shuffle1032(a));
+    const auto max_abs = hn::Max(a2, hn::Shuffle2301(a2));
+    const auto margin = hn::Add(hn::Set(d4, 0x1p-6f), hn::Mul(max_abs, hn::Set(d4, 0x1p-17f)));
+    // Minima move down, maxima up; then the pixel centers, clamped as in the scalar twin.
+    const auto grown = hn::Add(v, hn::ConcatUpperLower(d4, margin, hn::Neg(margin)));
+    const auto limit = hn::InterleaveLower(d4, hn::Set(d4, static_cast<float>(grid.width) + 1.0f),
+                                           hn::Set(d4, static_cast<float>(grid.height) + 1.0f));
+    const auto centers =
+        hn::Min(hn::Max(hn::Sub(grown, hn::Set(d4, 0.5f)), hn::Set(d4, -2.0f)), limit);
+    const auto p =
+        TruncInRange4(d4, hn::ConcatUpperLower(d4, hn::Floor(centers), hn::Ceil(centers)));
+    // Between pixel centers: test the neighbours instead of calling it hidden (a swap).
+    const auto swapped = hn::Shuffle1032(p);
+    auto q = hn::ConcatUpperLower(i4, hn::Max(p, swapped), hn::Min(p, swapped));
+    const auto last =
+        hn::InterleaveLower(i4, hn::Set(i4, grid.width - 1), hn::Set(i4, grid.height - 1));
+    q = hn::Max(q, hn::ConcatUpperLower(i4, hn::Set(i4, -(1 << 30)), hn::Zero(i4)));
+    q = hn::Min(q, hn::ConcatUpperLower(i4, last, hn::Set(i4, 1 << 30)));
+    const auto empty = hn::And(hn::Gt(q, hn::Shuffle1032(q)), hn::FirstN(i4, 2));
+    if (!hn::AllFalse(i4, empty)) return WindowRectResult::kOutsideView;
+    const int x0 = hn::GetLane(q), y0 = hn::ExtractLane(q, 1);
+    const int x1 = hn::ExtractLane(q, 2), y1 = hn::ExtractLane(q, 3);
+    return RectOccludedImpl(grid, x0, y0, x1, y1, nearest - 0x1p-20f) ? WindowRectResult::kOccluded
+                                                                      : WindowRectResult::kVisible;
+#endif
 }
 
 // Triangle setup, many triangles at once (one per lane), in float. The error margins are those
@@ -242,7 +354,7 @@ bool RectOccluded(const TileGrid& grid, int x0, int y0, int x1, int y1, float de
 // Lanes that need clipping (or hold NaN/Inf) go through setup_occluder in submission order.
 
 std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::size_t count,
-                           OccluderTriangle* out) {
+                           OccluderBatch& out) {
     namespace k = occluder_setup;
     if (src.vertex_count == 0) return 0;
     const DF df;
@@ -252,7 +364,7 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
     const std::size_t lanes = hn::Lanes(df);
     alignas(64) float corners[3][kMaxLanes * 4];  // x, y, z, w of each lane's corner v
     alignas(64) std::int32_t box[4][kMaxLanes];
-    alignas(64) float fields[k::kFloatFields][kMaxLanes];
+    alignas(64) float fields[k::kFloatFields][kMaxLanes];  // for vectors with a clipped lane
     alignas(64) float keep_lanes[kMaxLanes], fast_lanes[kMaxLanes];
     alignas(64) std::int32_t interior[kMaxLanes];
     // Corner indices of each lane's triangle and of its neighbours in the index list; the two
@@ -441,11 +553,12 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
             return slot == 0 ? hn::IfThenElse(is[0], v[0], hn::IfThenElse(is[1], v[1], v[2]))
                              : hn::IfThenElse(hn::And(is[0], is[1]), v[1], v[2]);
         };
+        hn::Vec<DF> f[k::kFloatFields];
         for (int slot = 0; slot < kEdgeSlots; ++slot) {
-            hn::Store(pack(left_x, left, slot), df, fields[k::kLeftX + slot]);
-            hn::Store(pack(left_step, left, slot), df, fields[k::kLeftStep + slot]);
-            hn::Store(pack(right_x, right, slot), df, fields[k::kRightX + slot]);
-            hn::Store(pack(right_step, right, slot), df, fields[k::kRightStep + slot]);
+            f[k::kLeftX + slot] = pack(left_x, left, slot);
+            f[k::kLeftStep + slot] = pack(left_step, left, slot);
+            f[k::kRightX + slot] = pack(right_x, right, slot);
+            f[k::kRightStep + slot] = pack(right_step, right, slot);
         }
 
         const auto e1x = hn::Sub(X[1], X[0]), e1y = hn::Sub(Y[1], Y[0]), e1z = hn::Sub(Z[1], Z[0]);
@@ -466,20 +579,39 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
         const auto sane = hn::And(hn::Lt(hn::Abs(gx), hn::Set(df, k::kHugeGradient)),
                                   hn::Lt(hn::Abs(gy), hn::Set(df, k::kHugeGradient)));
         const auto z_max = hn::Add(zmax, slack);
-        hn::Store(hn::IfThenElse(sane, Z[0], z_max), df, fields[k::kZOrigin]);
-        hn::Store(hn::IfThenElseZero(sane, gx), df, fields[k::kZDx]);
-        hn::Store(hn::IfThenElseZero(sane, gy), df, fields[k::kZDy]);
-        hn::Store(hn::IfThenElseZero(sane, hn::Sub(hn::Add(x0, half), X[0])), df, fields[k::kZKx]);
-        hn::Store(hn::IfThenElseZero(sane, hn::Sub(row0, Y[0])), df, fields[k::kZKy]);
-        hn::Store(hn::IfThenElseZero(sane, bias), df, fields[k::kZBias]);
-        hn::Store(z_max, df, fields[k::kZMax]);
-        hn::Store(hn::ConvertTo(di, x0), di, box[0]);
-        hn::Store(hn::ConvertTo(di, x1), di, box[1]);
-        hn::Store(hn::ConvertTo(di, y0), di, box[2]);
-        hn::Store(hn::ConvertTo(di, y1), di, box[3]);
+        f[k::kZOrigin] = hn::IfThenElse(sane, Z[0], z_max);
+        f[k::kZDx] = hn::IfThenElseZero(sane, gx);
+        f[k::kZDy] = hn::IfThenElseZero(sane, gy);
+        f[k::kZKx] = hn::IfThenElseZero(sane, hn::Sub(hn::Add(x0, half), X[0]));
+        f[k::kZKy] = hn::IfThenElseZero(sane, hn::Sub(row0, Y[0]));
+        f[k::kZBias] = hn::IfThenElseZero(sane, bias);
+        f[k::kZMax] = z_max;
+        // Integral and inside the guard band in kept lanes (the others are dropped).
+        const hn::Vec<DI> bounds[4] = {TruncInRange(x0), TruncInRange(x1), TruncInRange(y0),
+                                       TruncInRange(y1)};
+        std::int32_t* const out_bounds[4] = {out.x0, out.x1, out.y0, out.y1};
+
+        alignas(8) std::uint8_t valid_bytes[8] = {};
+        std::memcpy(valid_bytes, &valid, sizeof(valid));  // little endian, as StoreMaskBits
+        const auto valid_lanes = hn::LoadMaskBits(df, valid_bytes);
+        if (hn::AllFalse(df, hn::AndNot(fast, valid_lanes))) {
+            // No lane to clip (the usual case): the kept lanes go out in order, straight into
+            // the batch, one register compress and store per field.
+            const auto take = hn::And(keep, valid_lanes);
+            const auto take_i = hn::RebindMask(di, take);
+            for (int field = 0; field < k::kFloatFields; ++field)
+                hn::StoreU(hn::Compress(f[field], take), df, out.field[field] + n);
+            for (int b = 0; b < 4; ++b)
+                hn::StoreU(hn::Compress(bounds[b], take_i), di, out_bounds[b] + n);
+            n += hn::CountTrue(df, take);
+            continue;
+        }
+        // Some lane needs clipping: lane by lane, in submission order.
+        for (int field = 0; field < k::kFloatFields; ++field)
+            hn::Store(f[field], df, fields[field]);
+        for (int b = 0; b < 4; ++b) hn::Store(bounds[b], di, box[b]);
         hn::Store(hn::IfThenElseZero(keep, one), df, keep_lanes);
         hn::Store(hn::IfThenElseZero(fast, one), df, fast_lanes);
-
         for (std::size_t l = 0; l < m; ++l) {
             if (!((valid >> l) & 1u)) continue;
             if (fast_lanes[l] == 0.0f) {
@@ -488,30 +620,17 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
                     const float* p = src.clip + 4 * std::size_t{i};
                     return glm::vec4(p[0], p[1], p[2], p[3]);
                 };
-                n += setup_occluder(vertex(t[0]), vertex(t[1]), vertex(t[2]), src.width, src.height,
-                                    options, out + n);
+                OccluderTriangle pieces[kMaxOccluderPieces];
+                const int made = setup_occluder(vertex(t[0]), vertex(t[1]), vertex(t[2]), src.width,
+                                                src.height, options, pieces);
+                for (int p = 0; p < made; ++p) out.set(n++, pieces[p]);
                 continue;
             }
             if (keep_lanes[l] == 0.0f) continue;
-            OccluderTriangle& o = out[n++];
-            o.x0 = box[0][l];
-            o.x1 = box[1][l];
-            o.y0 = box[2][l];
-            o.y1 = box[3][l];
-            for (int e = 0; e < kEdgeSlots; ++e) {
-                o.left_x[e] = fields[k::kLeftX + e][l];
-                o.left_step[e] = fields[k::kLeftStep + e][l];
-                o.right_x[e] = fields[k::kRightX + e][l];
-                o.right_step[e] = fields[k::kRightStep + e][l];
-            }
-            o.z_origin = fields[k::kZOrigin][l];
-            o.z_dx = fields[k::kZDx][l];
-            o.z_dy = fields[k::kZDy][l];
-            o.z_kx = fields[k::kZKx][l];
-            o.z_ky = fields[k::kZKy][l];
-            o.z_bias = fields[k::kZBias][l];
-            o.z_max = fields[k::kZMax][l];
-            o.z_dx_positive = o.z_dx > 0.0f;
+            for (int b = 0; b < 4; ++b) out_bounds[b][n] = box[b][l];
+            for (int field = 0; field < k::kFloatFields; ++field)
+                out.field[field][n] = fields[field][l];
+            ++n;
         }
     }
     return n;
@@ -530,20 +649,26 @@ namespace zraster::detail {
 HWY_EXPORT(RasterizeOccluders);
 HWY_EXPORT(SetupOccluders);
 HWY_EXPORT(RectOccluded);
+HWY_EXPORT(WindowRectTest);
 HWY_EXPORT(RefreshCoarseLevels);
 HWY_EXPORT(OcclusionTargetName);
 
-void rasterize_occluders(const OccluderTriangle* triangles, std::size_t count, TileGrid grid) {
+void rasterize_occluders(const OccluderBatch& triangles, std::size_t count, TileGrid grid) {
     HWY_DYNAMIC_DISPATCH(RasterizeOccluders)(triangles, count, grid);
 }
 
 std::size_t setup_occluders(const OccluderSource& source, std::size_t first, std::size_t count,
-                            OccluderTriangle* out) {
+                            OccluderBatch& out) {
     return HWY_DYNAMIC_DISPATCH(SetupOccluders)(source, first, count, out);
 }
 
 bool rect_occluded(const TileGrid& grid, int x0, int y0, int x1, int y1, float depth) {
     return HWY_DYNAMIC_DISPATCH(RectOccluded)(grid, x0, y0, x1, y1, depth);
+}
+
+WindowRectResult window_rect_test(const TileGrid& grid, float xmin, float xmax, float ymin,
+                                  float ymax, float nearest) {
+    return HWY_DYNAMIC_DISPATCH(WindowRectTest)(grid, xmin, xmax, ymin, ymax, nearest);
 }
 
 void refresh_coarse_levels(TileGrid grid, int tx0, int ty0, int tx1, int ty1) {
@@ -561,8 +686,8 @@ void refresh_coarse_levels_scalar(TileGrid grid, int tx0, int ty0, int tx1, int 
                 hi = t.far_depth[r] > hi ? t.far_depth[r] : hi;
                 lo = bound < lo ? bound : lo;
             }
-            grid.tile_max[i] = hi;
-            grid.tile_min[i] = lo;
+            grid.coarse[2 * i] = lo;
+            grid.coarse[2 * i + 1] = hi;
         }
 }
 
@@ -579,10 +704,27 @@ std::uint32_t low_bits_scalar(int n) {
 }  // namespace
 
 // Lane by lane, the operations of RasterizeOccluders in the same order.
-void rasterize_occluders_scalar(const OccluderTriangle* triangles, std::size_t count,
-                                TileGrid grid) {
+void rasterize_occluders_scalar(const OccluderBatch& b, std::size_t count, TileGrid grid) {
+    namespace k = occluder_setup;
     for (std::size_t i = 0; i < count; ++i) {
-        const OccluderTriangle& t = triangles[i];
+        OccluderTriangle t;
+        t.x0 = b.x0[i];
+        t.x1 = b.x1[i];
+        t.y0 = b.y0[i];
+        t.y1 = b.y1[i];
+        for (int e = 0; e < kEdgeSlots; ++e) {
+            t.left_x[e] = b.field[k::kLeftX + e][i];
+            t.left_step[e] = b.field[k::kLeftStep + e][i];
+            t.right_x[e] = b.field[k::kRightX + e][i];
+            t.right_step[e] = b.field[k::kRightStep + e][i];
+        }
+        t.z_origin = b.field[k::kZOrigin][i];
+        t.z_dx = b.field[k::kZDx][i];
+        t.z_dy = b.field[k::kZDy][i];
+        t.z_kx = b.field[k::kZKx][i];
+        t.z_ky = b.field[k::kZKy][i];
+        t.z_bias = b.field[k::kZBias][i];
+        t.z_max = b.field[k::kZMax][i];
         const float span_lo = static_cast<float>(t.x0), span_hi = static_cast<float>(t.x1 + 1);
         for (int ty = t.y0 / kOcclusionTileHeight; ty <= t.y1 / kOcclusionTileHeight; ++ty) {
             OcclusionTile* row_tiles = grid.tiles + static_cast<std::size_t>(ty) * grid.tiles_x;
@@ -605,7 +747,7 @@ void rasterize_occluders_scalar(const OccluderTriangle* triangles, std::size_t c
                 const int first = static_cast<int>(std::floor(lo));
                 const int end = row_valid ? static_cast<int>(std::ceil(hi)) : first;
                 const float row_depth = (t.z_origin + t.z_dy * (yf + t.z_ky)) + t.z_bias;
-                const int row_extreme = t.z_dx_positive ? (end - 1) - t.x0 : first - t.x0;
+                const int row_extreme = t.z_dx > 0.0f ? (end - 1) - t.x0 : first - t.x0;
                 float row_bound = row_depth + t.z_dx * (static_cast<float>(row_extreme) + t.z_kx);
                 row_bound = row_bound < t.z_max ? row_bound : t.z_max;
                 for (int tx = t.x0 / kOcclusionTileWidth; tx <= t.x1 / kOcclusionTileWidth; ++tx) {
@@ -616,7 +758,7 @@ void rasterize_occluders_scalar(const OccluderTriangle* triangles, std::size_t c
                         std::min(std::max(end - tx * kOcclusionTileWidth, 0), kOcclusionTileWidth);
                     const std::uint32_t coverage = ~low_bits_scalar(s) & low_bits_scalar(e);
                     if (coverage == 0) continue;
-                    const float tile_bound = row_depth + tile_depth_step(t, tx);
+                    const float tile_bound = row_depth + tile_depth_step(t.z_dx, t.z_kx, t.x0, tx);
                     const float z = row_bound < tile_bound ? row_bound : tile_bound;
 
                     const std::uint32_t mask = tile.mask[r];
@@ -640,7 +782,7 @@ void rasterize_occluders_scalar(const OccluderTriangle* triangles, std::size_t c
 
 // Lane by lane, the operations of SetupOccluders in the same order.
 std::size_t setup_occluders_scalar(const OccluderSource& src, std::size_t first, std::size_t count,
-                                   OccluderTriangle* out) {
+                                   OccluderBatch& batch) {
     namespace k = occluder_setup;
     const float guard_x = 1.0f + 2.0f * k::kGuardPixels / static_cast<float>(src.width);
     const float guard_y = 1.0f + 2.0f * k::kGuardPixels / static_cast<float>(src.height);
@@ -680,8 +822,10 @@ std::size_t setup_occluders_scalar(const OccluderSource& src, std::size_t first,
                 const float* p = src.clip + 4 * std::size_t{j};
                 return glm::vec4(p[0], p[1], p[2], p[3]);
             };
-            n += setup_occluder(vertex(t[0]), vertex(t[1]), vertex(t[2]), src.width, src.height,
-                                options, out + n);
+            OccluderTriangle pieces[kMaxOccluderPieces];
+            const int made = setup_occluder(vertex(t[0]), vertex(t[1]), vertex(t[2]), src.width,
+                                            src.height, options, pieces);
+            for (int p = 0; p < made; ++p) batch.set(n++, pieces[p]);
             continue;
         }
         const float area2 = (X[1] - X[0]) * (Y[2] - Y[0]) - (Y[1] - Y[0]) * (X[2] - X[0]);
@@ -711,7 +855,7 @@ std::size_t setup_occluders_scalar(const OccluderSource& src, std::size_t first,
         const float y1 = min_f(std::floor((ymax - margin) - 0.5f), max_y);
         keep = keep && x0 <= x1 && y0 <= y1;
         if (!keep) continue;
-        OccluderTriangle& o = out[n++];
+        OccluderTriangle o;
         const float row0 = y0 + 0.5f;
         float left_x[3], left_step[3], right_x[3], right_step[3];
         bool left[3], right[3];
@@ -767,7 +911,7 @@ std::size_t setup_occluders_scalar(const OccluderSource& src, std::size_t first,
         o.x1 = static_cast<int>(x1);
         o.y0 = static_cast<int>(y0);
         o.y1 = static_cast<int>(y1);
-        o.z_dx_positive = o.z_dx > 0.0f;
+        batch.set(n++, o);
     }
     return n;
 }
@@ -787,6 +931,44 @@ bool rect_occluded_scalar(const TileGrid& grid, int x0, int y0, int x1, int y1, 
         }
     }
     return true;
+}
+
+WindowRectResult window_rect_test_scalar(const TileGrid& grid, float xmin, float xmax, float ymin,
+                                         float ymax, float nearest) {
+    const float w = static_cast<float>(grid.width), h = static_cast<float>(grid.height);
+    // Values, not references (std::max): branch-free minss/maxss.
+    const auto max_f = [](float a, float b) { return a > b ? a : b; };
+    const auto min_f = [](float a, float b) { return a < b ? a : b; };
+    const float max_abs =
+        max_f(max_f(std::abs(xmin), std::abs(xmax)), max_f(std::abs(ymin), std::abs(ymax)));
+    // Grow by more than the snapping of an exact rasterizer and the float error of the corners.
+    const float margin = 0x1p-6f + max_abs * 0x1p-17f;
+    // Pixels whose center may be inside [min - margin, max + margin]; clamped first so that the
+    // conversions stay in range (floor and ceil by hand: no libm call per test).
+    const auto clamped = [&](float v, float limit) { return min_f(max_f(v - 0.5f, -2.0f), limit); };
+    const auto floor_int = [](float v) {
+        const int i = static_cast<int>(v);
+        return i - (v < static_cast<float>(i));
+    };
+    const auto ceil_int = [](float v) {
+        const int i = static_cast<int>(v);
+        return i + (v > static_cast<float>(i));
+    };
+    int x0 = ceil_int(clamped(xmin - margin, w + 1.0f));
+    int x1 = floor_int(clamped(xmax + margin, w + 1.0f));
+    int y0 = ceil_int(clamped(ymin - margin, h + 1.0f));
+    int y1 = floor_int(clamped(ymax + margin, h + 1.0f));
+    // Between pixel centers: test the neighbours instead of calling it hidden.
+    if (x0 > x1) std::swap(x0, x1);
+    if (y0 > y1) std::swap(y0, y1);
+    x0 = std::max(x0, 0);
+    y0 = std::max(y0, 0);
+    x1 = std::min(x1, grid.width - 1);
+    y1 = std::min(y1, grid.height - 1);
+    if (x0 > x1 || y0 > y1) return WindowRectResult::kOutsideView;
+    return rect_occluded_scalar(grid, x0, y0, x1, y1, nearest - 0x1p-20f)
+               ? WindowRectResult::kOccluded
+               : WindowRectResult::kVisible;
 }
 
 }  // namespace zraster::detail

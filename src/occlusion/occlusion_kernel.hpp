@@ -28,8 +28,9 @@ struct alignas(64) OcclusionTile {
     float near_depth[kOcclusionTileHeight];
 };
 
-// An occluder triangle ready for the tiles (made by the setup below or, for triangles that
-// need clipping, by setup_occluder in occluder_setup.cpp). Pixel row y (center y + 0.5) covers
+// An occluder triangle ready for the tiles (made by setup_occluder in occluder_setup.cpp for
+// triangles that need clipping; the rasterizer reads them from an OccluderBatch, below). Pixel
+// row y (center y + 0.5) covers
 // the columns px with
 //   max_k(left_x[k] + (y - y0) * left_step[k]) < px + 0.5 < min_k(right_x[k] + (y - y0) *
 //   right_step[k])
@@ -48,7 +49,6 @@ struct OccluderTriangle {
     float left_x[kEdgeSlots], left_step[kEdgeSlots];
     float right_x[kEdgeSlots], right_step[kEdgeSlots];
     float z_origin, z_dx, z_dy, z_kx, z_ky, z_bias, z_max;
-    bool z_dx_positive;  // the bound is at the span's right end (else its left end)
 };
 inline constexpr float kNoEdge = 1e30f;
 
@@ -90,40 +90,72 @@ enum Field {
 inline constexpr std::size_t kSetupGroup = 64;
 inline constexpr std::size_t kSetupOutput = kSetupGroup * 6;
 
+// Set-up triangles as the rasterizer reads them: one array per field (the fields of
+// OccluderTriangle, float ones indexed by occluder_setup::Field), so that the SIMD setup
+// writes a whole vector of triangles per field with one compress and store. Room for one
+// vector past kSetupOutput: the stores write whole vectors.
+struct OccluderBatch {
+    static constexpr std::size_t kCapacity = kSetupOutput + 16;
+    alignas(64) std::int32_t x0[kCapacity], x1[kCapacity], y0[kCapacity], y1[kCapacity];
+    alignas(64) float field[occluder_setup::kFloatFields][kCapacity];
+
+    void set(std::size_t i, const OccluderTriangle& t) {
+        namespace k = occluder_setup;
+        x0[i] = t.x0;
+        x1[i] = t.x1;
+        y0[i] = t.y0;
+        y1[i] = t.y1;
+        for (int e = 0; e < kEdgeSlots; ++e) {
+            field[k::kLeftX + e][i] = t.left_x[e];
+            field[k::kLeftStep + e][i] = t.left_step[e];
+            field[k::kRightX + e][i] = t.right_x[e];
+            field[k::kRightStep + e][i] = t.right_step[e];
+        }
+        field[k::kZOrigin][i] = t.z_origin;
+        field[k::kZDx][i] = t.z_dx;
+        field[k::kZDy][i] = t.z_dy;
+        field[k::kZKx][i] = t.z_kx;
+        field[k::kZKy][i] = t.z_ky;
+        field[k::kZBias][i] = t.z_bias;
+        field[k::kZMax][i] = t.z_max;
+    }
+};
+
 // Sets up triangles [first, first + count) (count <= kSetupGroup) into `out`, in order; returns
-// how many OccluderTriangles were written. Triangles inside the guard band and in front of the
+// how many triangles were written. Triangles inside the guard band and in front of the
 // near plane are set up in float, many at a time; the others go through setup_occluder.
 std::size_t setup_occluders(const OccluderSource& source, std::size_t first, std::size_t count,
-                            OccluderTriangle* out);
+                            OccluderBatch& out);
 std::size_t setup_occluders_scalar(const OccluderSource& source, std::size_t first,
-                                   std::size_t count, OccluderTriangle* out);
+                                   std::size_t count, OccluderBatch& out);
 
 // z_dx times the tile's extreme column in the direction the depth grows (relative to x0, plus
 // z_kx): added to a row's depth it bounds the plane over that row of the tile.
-inline float tile_depth_step(const OccluderTriangle& t, int tx) {
-    const int column = tx * kOcclusionTileWidth + (t.z_dx_positive ? kOcclusionTileWidth - 1 : 0);
-    return t.z_dx * (static_cast<float>(column - t.x0) + t.z_kx);
+inline float tile_depth_step(float z_dx, float z_kx, int x0, int tx) {
+    const int column = tx * kOcclusionTileWidth + (z_dx > 0.0f ? kOcclusionTileWidth - 1 : 0);
+    return z_dx * (static_cast<float>(column - x0) + z_kx);
 }
 
 struct TileGrid {
     OcclusionTile* tiles = nullptr;
-    // Per tile, the largest far_depth of its rows: a coarse level that lets a rectangle test
-    // settle a tile it covers entirely with one comparison (refreshed after each render call).
-    float* tile_max = nullptr;
-    // Per tile, the smallest depth bound of its pixels: a rectangle touching a tile whose
-    // smallest bound is not in front of it is visible at once.
-    float* tile_min = nullptr;
+    // Two coarse levels per tile, side by side (coarse[2 i] and coarse[2 i + 1] for tile i: a
+    // rectangle test reads both from one cache line), refreshed after each render call:
+    //  - the smallest depth bound of its pixels: a rectangle touching a tile whose smallest
+    //    bound is not in front of it is visible at once;
+    //  - the largest far_depth of its rows: a tile the rectangle covers entirely is settled by
+    //    one comparison when it is in front.
+    float* coarse = nullptr;
     int tiles_x = 0, tiles_y = 0;
+    int width = 0, height = 0;  // pixels
 };
-// tile_max and tile_min hold this many floats past the last tile (one vector's worth).
+// coarse holds this many floats past the last tile (one vector's worth).
 inline constexpr std::size_t kCoarsePadding = 16;
 
 // Rasterizes triangles [0, count) in order.
-void rasterize_occluders(const OccluderTriangle* triangles, std::size_t count, TileGrid grid);
-void rasterize_occluders_scalar(const OccluderTriangle* triangles, std::size_t count,
-                                TileGrid grid);
+void rasterize_occluders(const OccluderBatch& triangles, std::size_t count, TileGrid grid);
+void rasterize_occluders_scalar(const OccluderBatch& triangles, std::size_t count, TileGrid grid);
 
-// Recomputes tile_max and tile_min of tiles tx0..tx1, ty0..ty1 (inclusive).
+// Recomputes the coarse levels of tiles tx0..tx1, ty0..ty1 (inclusive).
 void refresh_coarse_levels(TileGrid grid, int tx0, int ty0, int tx1, int ty1);
 void refresh_coarse_levels_scalar(TileGrid grid, int tx0, int ty0, int tx1, int ty1);
 
@@ -131,6 +163,17 @@ void refresh_coarse_levels_scalar(TileGrid grid, int tx0, int ty0, int tx1, int 
 // depth bound strictly less than `depth`.
 bool rect_occluded(const TileGrid& grid, int x0, int y0, int x1, int y1, float depth);
 bool rect_occluded_scalar(const TileGrid& grid, int x0, int y0, int x1, int y1, float depth);
+
+// A rectangle in window coordinates (x right, y down, in pixels; finite) whose nearest point has
+// window depth `nearest` (finite, in front of the near plane): grown by a margin for the
+// snapping of an exact rasterizer and the float error of its corners, converted to the pixels
+// whose centers it may cover, and tested (`nearest` moved nearer by 2^-20). The conversion
+// happens inside the kernel: one dispatch per test.
+enum class WindowRectResult { kVisible, kOccluded, kOutsideView };
+WindowRectResult window_rect_test(const TileGrid& grid, float xmin, float xmax, float ymin,
+                                  float ymax, float nearest);
+WindowRectResult window_rect_test_scalar(const TileGrid& grid, float xmin, float xmax, float ymin,
+                                         float ymax, float nearest);
 
 const char* occlusion_kernel_target();
 
