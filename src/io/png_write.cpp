@@ -17,6 +17,7 @@
 
 #include "io/atomic_write.hpp"
 #include "io/image_size_check.hpp"
+#include "memory/huge_pages.hpp"
 
 #include <libdeflate.h>
 
@@ -66,14 +67,16 @@ void write_png(const std::filesystem::path& path, int width, int height, std::ui
     std::unique_ptr<libdeflate_compressor, CompressorDeleter> compressor(
         libdeflate_alloc_compressor(kCompressionLevel));
     if (!compressor) throw std::bad_alloc();
-    std::vector<std::uint8_t> zlib(
-        libdeflate_zlib_compress_bound(compressor.get(), filtered.size()));
+    std::vector<std::uint8_t> zlib;
+    memory::resize_on_huge_pages(zlib,
+                                 libdeflate_zlib_compress_bound(compressor.get(), filtered.size()));
     const std::size_t zlib_size = libdeflate_zlib_compress(
         compressor.get(), filtered.data(), filtered.size(), zlib.data(), zlib.size());
     if (zlib_size == 0) throw InputError(path.string(), "cannot write: PNG compression failed");
 
-    std::vector<std::uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-    png.reserve(zlib_size + 64 + 12 * (zlib_size / kMaxIdatBytes));
+    std::vector<std::uint8_t> png;
+    memory::reserve_on_huge_pages(png, zlib_size + 64 + 12 * (zlib_size / kMaxIdatBytes));
+    png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
     std::uint8_t header[13];
     put_u32_be(header, static_cast<std::uint32_t>(width));
     put_u32_be(header + 4, static_cast<std::uint32_t>(height));
@@ -115,7 +118,8 @@ void write_png8(const std::filesystem::path& path, int width, int height, int ch
     static constexpr std::uint8_t kColorType[5] = {0, 0, 4, 2, 6};
 
     const std::size_t row_bytes = static_cast<std::size_t>(width) * channels;
-    std::vector<std::uint8_t> filtered((row_bytes + 1) * static_cast<std::size_t>(height));
+    std::vector<std::uint8_t> filtered;
+    memory::resize_on_huge_pages(filtered, (row_bytes + 1) * static_cast<std::size_t>(height));
     for (std::size_t y = 0; y < static_cast<std::size_t>(height); ++y) {
         const std::uint8_t* row = pixels.data() + y * row_bytes;
         filter_up(filtered.data() + y * (row_bytes + 1), row, y > 0 ? row - row_bytes : nullptr,
@@ -130,7 +134,8 @@ void write_png16_gray(const std::filesystem::path& path, int width, int height,
     const std::size_t row_bytes = static_cast<std::size_t>(width) * 2;
 
     // Samples are big-endian in the file; "Up" works on those bytes.
-    std::vector<std::uint8_t> filtered((row_bytes + 1) * static_cast<std::size_t>(height));
+    std::vector<std::uint8_t> filtered;
+    memory::resize_on_huge_pages(filtered, (row_bytes + 1) * static_cast<std::size_t>(height));
     std::vector<std::uint8_t> previous(row_bytes), current(row_bytes);
     for (std::size_t y = 0; y < static_cast<std::size_t>(height); ++y) {
         const std::uint16_t* row = pixels.data() + y * static_cast<std::size_t>(width);

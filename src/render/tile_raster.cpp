@@ -14,6 +14,7 @@
 #include <limits>
 #include <memory>
 
+#include "memory/huge_pages.hpp"
 #include "raster/visibility_kernel.hpp"
 #include "render/frame.hpp"
 #include "render/hierarchical_z.hpp"
@@ -335,11 +336,11 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
     targets.height = height;
     // A reused Renderer's targets may hold an earlier frame of another size: targets this frame
     // does not produce are emptied (the stages test emptiness), the others sized to it.
-    targets.depth.resize(pixels);
-    targets.color.resize(options.color_target ? pixels * 4 : 0);
-    targets.normal.resize(options.normal_target ? pixels : 0);
-    targets.instance_id.resize(options.id_targets ? pixels : 0);
-    targets.primitive_id.resize(options.id_targets ? pixels : 0);
+    memory::resize_on_huge_pages(targets.depth, pixels);
+    memory::resize_on_huge_pages(targets.color, options.color_target ? pixels * 4 : 0);
+    memory::resize_on_huge_pages(targets.normal, options.normal_target ? pixels : 0);
+    memory::resize_on_huge_pages(targets.instance_id, options.id_targets ? pixels : 0);
+    memory::resize_on_huge_pages(targets.primitive_id, options.id_targets ? pixels : 0);
     targets.front_hits.assign(options.coverage_counts ? pixels : 0, 0);
     targets.back_hits.assign(options.coverage_counts ? pixels : 0, 0);
 

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 
+#include "memory/huge_pages.hpp"
 #include "render/frame.hpp"
 #include "render/occlusion_cull.hpp"
 #include "render/shade_kernel.hpp"
@@ -111,15 +112,15 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
         any_gouraud |= fi.shading == ShadingMode::Gouraud;
         any_textured |= fi.textured;
     }
-    v.clip.resize(vertex_count);
-    v.screen.resize(vertex_count);
-    v.outcode.resize(vertex_count);
+    memory::resize_on_huge_pages(v.clip, vertex_count);
+    memory::resize_on_huge_pages(v.screen, vertex_count);
+    memory::resize_on_huge_pages(v.outcode, vertex_count);
     // Arrays no instance reads stay empty (a reused Renderer may still hold old ones: the stages
     // index them only for instances that need them).
-    if (world) v.world.resize(vertex_count);
-    if (attributes) v.normal.resize(vertex_count);
-    if (attributes && any_textured) v.uv.resize(vertex_count);
-    if (any_gouraud && attributes) v.gouraud.resize(vertex_count);
+    if (world) memory::resize_on_huge_pages(v.world, vertex_count);
+    if (attributes) memory::resize_on_huge_pages(v.normal, vertex_count);
+    if (attributes && any_textured) memory::resize_on_huge_pages(v.uv, vertex_count);
+    if (any_gouraud && attributes) memory::resize_on_huge_pages(v.gouraud, vertex_count);
 
     for (const FrameInstance& fi : frame.instances) {
         const Mesh& mesh = *fi.mesh;
