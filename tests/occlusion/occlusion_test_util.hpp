@@ -107,6 +107,23 @@ inline glm::mat4 place(glm::vec3 at, float yaw_radians = 0.0f) {
     return glm::rotate(glm::translate(glm::mat4(1.0f), at), yaw_radians, glm::vec3(0, 1, 0));
 }
 
+// 320x180 (or the given size), 2 threads, id targets, the camera at (0, 0, 4) looking down -z:
+// the renderer-level scenes of walls and objects in front of it.
+inline RenderOptions wall_view_options(int width = 320, int height = 180) {
+    RenderOptions o;
+    o.width = width;
+    o.height = height;
+    o.threads = 2;
+    o.id_targets = true;
+    Camera c;
+    c.eye = {0, 0, 4};
+    c.target = {0, 0, -10};
+    c.near = 0.5;
+    c.far = 100.0;
+    o.camera = c;
+    return o;
+}
+
 // A city: a grid of buildings on a ground slab, the camera in a street at head height looking
 // along it, and small objects (boxes of 0.3 to 1.5 units) strewn over the blocks and streets.
 inline OcclusionScene city_scene(std::uint64_t seed, int objects) {

@@ -32,17 +32,7 @@ Scene layered_scene(int layers) {
 }
 
 RenderOptions layered_options(InstanceOrder order) {
-    RenderOptions o;
-    o.width = 320;
-    o.height = 200;
-    o.threads = 2;
-    o.id_targets = true;
-    Camera c;
-    c.eye = {0, 0, 4};
-    c.target = {0, 0, -10};
-    c.near = 0.5;
-    c.far = 100.0;
-    o.camera = c;
+    RenderOptions o = test::wall_view_options(320, 200);
     o.instance_order = order;
     return o;
 }

@@ -36,18 +36,7 @@ Scene wall_scene() {
 }
 
 RenderOptions wall_options() {
-    RenderOptions o;
-    o.width = 320;
-    o.height = 180;
-    o.threads = 2;
-    o.id_targets = true;
-    Camera c;
-    c.eye = {0, 0, 4};
-    c.target = {0, 0, -10};
-    c.near = 0.5;
-    c.far = 100.0;
-    o.camera = c;
-    return o;
+    return test::wall_view_options();
 }
 
 void expect_same_image(const RenderTargets& a, const RenderTargets& b) {
