@@ -299,8 +299,8 @@ bool RectOccluded(const TileGrid& grid, int x0, int y0, int x1, int y1, float de
 // Float to int, rounding toward zero, for values known to be in int range (see TruncInRange).
 template <class D4>
 HWY_INLINE hn::Vec<hn::RebindToSigned<D4>> TruncInRange4(D4 d4, hn::Vec<D4> v) {
+    (void)d4;  // only the vector's type matters
 #if HWY_ARCH_X86 && HWY_TARGET <= HWY_SSSE3
-    (void)d4;
     return hn::Vec<hn::RebindToSigned<D4>>{_mm_cvttps_epi32(v.raw)};
 #else
     return hn::ConvertTo(hn::RebindToSigned<D4>(), v);
