@@ -37,6 +37,12 @@ HWY_INLINE auto depth_passes(D d, V z, V stored, CompareFunc compare) {
     return hn::Eq(z, z);  // all lanes (z is never NaN)
 }
 
+// Edge k at the block's first pixel of row y (inside the block, so it fits 32 bits; the
+// product alone need not).
+inline std::int32_t edge_at_row(const BlockJob& job, int k, int y) {
+    return static_cast<std::int32_t>(std::int64_t{job.e[k]} + std::int64_t{job.step_y[k]} * y);
+}
+
 // (c + a * dx) + (b * dy): the same operations, in the same order, as PlaneEquation::at.
 template <class D, class V>
 HWY_INLINE V plane_at(D d, const PlaneEquation& p, V dx, float dy) {
@@ -95,9 +101,9 @@ int VisibilityRows(const BlockJob& job, TileBuffers& tile) {
         for (int y = 0; y < job.height; ++y) {
             auto covered = valid;
             if (!job.full) {
-                const auto e0 = hn::Add(hn::Set(di, job.e[0] + job.step_y[0] * y), off0);
-                const auto e1 = hn::Add(hn::Set(di, job.e[1] + job.step_y[1] * y), off1);
-                const auto e2 = hn::Add(hn::Set(di, job.e[2] + job.step_y[2] * y), off2);
+                const auto e0 = hn::Add(hn::Set(di, edge_at_row(job, 0, y)), off0);
+                const auto e1 = hn::Add(hn::Set(di, edge_at_row(job, 1, y)), off1);
+                const auto e2 = hn::Add(hn::Set(di, edge_at_row(job, 2, y)), off2);
                 covered = hn::AndNot(hn::Lt(hn::Or(e0, hn::Or(e1, e2)), zero_i), valid);
             }
             if (hn::AllFalse(di, covered)) continue;
@@ -159,13 +165,10 @@ int VisibilityRowPairs(D16 d, const BlockJob& job, TileBuffers& tile) {
     const auto column = hn::And(lane, hn::Set(di, 7));
     const auto second_row = hn::ShiftRight<3>(lane);  // 0 or 1
     const auto in_width = hn::Lt(column, hn::Set(di, job.width));
-    std::int32_t e_row[3];
     hn::Vec<decltype(di)> off[3];
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < 3; ++k)
         off[k] = hn::Add(hn::Mul(column, hn::Set(di, job.step_x[k])),
                          hn::Mul(second_row, hn::Set(di, job.step_y[k])));
-        e_row[k] = job.e[k];
-    }
     const auto dx = hn::ConvertTo(d, hn::Add(column, hn::Set(di, job.plane_dx)));
     const auto ref = hn::Set(du, job.ref);
     int passed = 0;
@@ -173,12 +176,14 @@ int VisibilityRowPairs(D16 d, const BlockJob& job, TileBuffers& tile) {
     for (int y = 0; y < job.height; y += 2) {
         auto covered = hn::And(in_width, hn::Lt(second_row, hn::Set(di, job.height - y)));
         if (!job.full) {
-            const auto e0 = hn::Add(hn::Set(di, e_row[0]), off[0]);
-            const auto e1 = hn::Add(hn::Set(di, e_row[1]), off[1]);
-            const auto e2 = hn::Add(hn::Set(di, e_row[2]), off[2]);
+            // Row y's edge values fit 32 bits (it is inside the block); a running sum would
+            // step past the block's last row, where they need not.
+            const auto row = [&](int k) { return hn::Set(di, edge_at_row(job, k, y)); };
+            const auto e0 = hn::Add(row(0), off[0]);
+            const auto e1 = hn::Add(row(1), off[1]);
+            const auto e2 = hn::Add(row(2), off[2]);
             covered = hn::AndNot(hn::Lt(hn::Or(e0, hn::Or(e1, e2)), zero_i), covered);
         }
-        for (int k = 0; k < 3; ++k) e_row[k] += 2 * job.step_y[k];
         if (hn::AllFalse(di, covered)) continue;
         const auto dy = hn::ConvertTo(d, hn::Add(second_row, hn::Set(di, job.plane_dy + y)));
         // plane_at with a per-lane dy: (c + a * dx) + (b * dy).
