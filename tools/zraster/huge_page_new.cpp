@@ -8,6 +8,18 @@
 
 #include "memory/huge_pages.hpp"
 
+// Sanitizer runtimes bring their own operator new (to track every block): keep theirs.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define ZRASTER_SANITIZER_ALLOCATOR 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || \
+    __has_feature(memory_sanitizer)
+#define ZRASTER_SANITIZER_ALLOCATOR 1
+#endif
+#endif
+
+#if !defined(ZRASTER_SANITIZER_ALLOCATOR)
+
 namespace {
 
 constexpr std::size_t kLargeBlock = std::size_t{4} << 20;
@@ -58,3 +70,5 @@ void operator delete(void* p, const std::nothrow_t&) noexcept {
 void operator delete[](void* p, const std::nothrow_t&) noexcept {
     std::free(p);
 }
+
+#endif  // !ZRASTER_SANITIZER_ALLOCATOR
