@@ -85,7 +85,6 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
         fi.material =
             &scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
         fi.shading = instance.shading.value_or(options.shading);
-
         fi.mvp = mvp;
         fi.model = instance.transform;
         fi.normal_matrix = normal_matrix(instance.transform);
