@@ -146,6 +146,20 @@ inline LoadIsolation fuzz_load_isolation() {
     return isolation;
 }
 
+// A scene that loaded (or decoded) must render: 24x16, one thread, a color target of that size.
+inline void check_renders(const Scene& scene, const std::string& what) {
+    RenderOptions render_options;
+    render_options.width = 24;
+    render_options.height = 16;
+    render_options.threads = 1;
+    try {
+        const RenderResult result = render(scene, render_options);
+        if (result.targets.color.size() != 24u * 16u * 4u) fail("color target size");
+    } catch (const InputError& e) {
+        fail("render refused " + what + ": " + e.what());
+    }
+}
+
 // Loads `bytes` as a file named input<extension> in the work directory, checks the result and
 // draws it small (the loaded geometry through the whole pipeline).
 inline void fuzz_load(const std::uint8_t* data, std::size_t size, const std::string& extension) {
@@ -165,16 +179,7 @@ inline void fuzz_load(const std::uint8_t* data, std::size_t size, const std::str
     }
     check_loaded_scene(scene);
     (void)describe_scene(scene);
-    RenderOptions render_options;
-    render_options.width = 24;
-    render_options.height = 16;
-    render_options.threads = 1;
-    try {
-        const RenderResult result = render(scene, render_options);
-        if (result.targets.color.size() != 24u * 16u * 4u) fail("color target size");
-    } catch (const InputError& e) {
-        fail(std::string("render refused a loaded scene: ") + e.what());
-    }
+    check_renders(scene, "a loaded scene");
 }
 
 }  // namespace zraster::fuzz

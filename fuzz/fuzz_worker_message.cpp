@@ -33,15 +33,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         std::span(reinterpret_cast<const std::uint8_t*>(encoded.data()), encoded.size()), file,
         options);
     if (io::encode_scene_message(again) != encoded) fuzz::fail("encode/decode round trip differs");
-    RenderOptions render_options;
-    render_options.width = 24;
-    render_options.height = 16;
-    render_options.threads = 1;
-    try {
-        const RenderResult result = render(scene, render_options);
-        if (result.targets.color.size() != 24u * 16u * 4u) fuzz::fail("color target size");
-    } catch (const InputError& e) {
-        fuzz::fail(std::string("render refused a decoded scene: ") + e.what());
-    }
+    fuzz::check_renders(scene, "a decoded scene");
     return 0;
 }
