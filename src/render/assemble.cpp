@@ -101,13 +101,17 @@ void assemble_triangle(const Frame& frame, std::uint32_t instance, std::size_t t
     bool valid = true, finite = true;
     for (std::size_t k = 0; k < 3; ++k) {
         const std::uint32_t local = indices[3 * t + k];
-        valid &= local < vertex_total;  // the renderer refuses such scenes; be safe
+        valid &= local < vertex_total;
         const std::uint32_t global = fi.first_vertex + (local < vertex_total ? local : 0);
         ref.vertex[k] = ref.screen[k] = global;
         code[k] = vertices.outcode[global];
         finite &= code[k] != kNonFinite;
     }
-    if (!valid || !finite) {  // a NaN/Inf vertex: nothing sensible to draw
+    if (!valid) {  // the renderer refuses the scene after this stage (check_indices)
+        chunk.bad_index_instance = std::min(chunk.bad_index_instance, instance);
+        return;
+    }
+    if (!finite) {  // a NaN/Inf vertex: nothing sensible to draw
         ++chunk.stats.triangles_non_finite;
         return;
     }
@@ -150,7 +154,6 @@ void process_instance_range(const Frame& frame, std::uint32_t instance, std::siz
     in.indices = mesh.indices.data();
     in.vertex_total = static_cast<std::uint32_t>(mesh.positions.size());
     in.first_vertex = fi.first_vertex;
-    in.outcode = vertices.outcode.data();
     in.screen = vertices.screen.data();
     in.settings = frame.setup_settings;
     thread_local ClassifyOutput out;

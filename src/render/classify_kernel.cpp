@@ -50,10 +50,6 @@ void ClassifyTriangles(const ClassifyInput& in, std::size_t first, std::size_t c
         const auto g0 = hn::BitCast(di, hn::Add(base, hn::IfThenElse(in_range, i0, zero_u)));
         const auto g1 = hn::BitCast(di, hn::Add(base, hn::IfThenElse(in_range, i1, zero_u)));
         const auto g2 = hn::BitCast(di, hn::Add(base, hn::IfThenElse(in_range, i2, zero_u)));
-        const auto* codes = reinterpret_cast<const std::int32_t*>(in.outcode);
-        const auto code =
-            hn::Or(hn::Or(hn::GatherIndex(di, codes, g0), hn::GatherIndex(di, codes, g1)),
-                   hn::GatherIndex(di, codes, g2));
         const auto six = hn::Set(di, 6);
         const auto w0 = hn::Mul(g0, six), w1 = hn::Mul(g1, six), w2 = hn::Mul(g2, six);
         const auto one = hn::Set(di, 1);
@@ -67,8 +63,8 @@ void ClassifyTriangles(const ClassifyInput& in, std::size_t first, std::size_t c
         const auto lo_y = hn::Min(hn::Min(y0, y1), y2), hi_y = hn::Max(hn::Max(y0, y1), y2);
         const auto small = hn::And(hn::And(hn::Gt(lo_x, neg_limit), hn::Lt(hi_x, limit)),
                                    hn::And(hn::Gt(lo_y, neg_limit), hn::Lt(hi_y, limit)));
-        const auto fast_i =
-            hn::And(hn::And(hn::RebindMask(di, in_range), hn::Eq(code, zero_i)), small);
+        // (Vertices outside the view volume have x = kOutsideScreenX: not small.)
+        const auto fast_i = hn::And(hn::RebindMask(di, in_range), small);
         // Twice the signed area, exact in double for these coordinates.
         const auto dx1 = hn::PromoteTo(dd, hn::Sub(x1, x0)),
                    dy1 = hn::PromoteTo(dd, hn::Sub(y1, y0));
@@ -161,7 +157,7 @@ void classify_triangles_scalar(const ClassifyInput& in, std::size_t first, std::
             const std::uint32_t g0 = in.first_vertex + i0, g1 = in.first_vertex + i1,
                                 g2 = in.first_vertex + i2;
             const ScreenVertex &a = in.screen[g0], &b = in.screen[g1], &c = in.screen[g2];
-            fast = (in.outcode[g0] | in.outcode[g1] | in.outcode[g2]) == 0;
+            // (Vertices outside the view volume have x = kOutsideScreenX: not small.)
             for (const ScreenVertex* v : {&a, &b, &c})
                 fast &= v->x > -kClassifyCoordinateLimit && v->x < kClassifyCoordinateLimit &&
                         v->y > -kClassifyCoordinateLimit && v->y < kClassifyCoordinateLimit;

@@ -1,7 +1,7 @@
 // Front-end triangle classification, many triangles at a time: for the common case (indices in
-// range, all three vertices inside the view volume, snapped positions small enough for exact
-// double arithmetic) it makes classify_triangle's decisions (degenerate, culled, no pixel
-// center covered, or the pixel box) without a branch per triangle. Every other triangle is
+// range, all three vertices inside the view volume (x != kOutsideScreenX), snapped positions small
+// enough for exact double arithmetic) it makes classify_triangle's decisions (degenerate, culled,
+// no pixel center covered, or the pixel box) without a branch per triangle. Every other triangle is
 // handed back as "slow" for the scalar path (clipping, bad indices, huge coordinates).
 //
 // Two implementations with identical output: a scalar reference and a SIMD one (Highway,
@@ -11,14 +11,20 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 namespace zraster::detail {
+
+// The x of a frame screen vertex whose outcode is not 0 (the vertex stage writes it there): far
+// outside the coordinate limit below, so the classifier sends its triangles the slow way without
+// reading the outcodes.
+inline constexpr std::int32_t kOutsideScreenX = std::numeric_limits<std::int32_t>::min();
 
 struct ClassifyInput {
     const std::uint32_t* indices = nullptr;  // the mesh's, 3 per triangle
     std::uint32_t vertex_total = 0;          // the mesh's vertex count (indices must be below)
     std::uint32_t first_vertex = 0;          // frame index of the mesh's vertex 0
-    const std::uint32_t* outcode = nullptr;  // frame arrays (FrameVertices)
+    // Frame screen vertices (FrameVertices::screen), x = kOutsideScreenX where outside.
     const ScreenVertex* screen = nullptr;
     SetupSettings settings;
 };

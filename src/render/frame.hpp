@@ -109,6 +109,10 @@ struct Chunk {
     // SIMD Phong instance's), written by the front end so the back end reads them in order.
     std::vector<CornerAttributes> bin_corners;
     RenderStats stats;
+    // The frame instance of the chunk's first triangle with a vertex index out of range
+    // (kNoBadIndex: none). The renderer then refuses the scene (check_indices).
+    std::uint32_t bad_index_instance = kNoBadIndex;
+    static constexpr std::uint32_t kNoBadIndex = 0xffffffffu;
 };
 
 struct Frame {

@@ -53,6 +53,45 @@ std::uint32_t largest_index(std::span<const std::uint32_t> indices) {
         [](std::uint32_t a, std::uint32_t b) { return std::max(a, b); });
 }
 
+// Throws for the first of the scene's meshes (in mesh order) with a vertex index out of range;
+// `check[m]` says which meshes to scan.
+void refuse_bad_indices(const Scene& scene, const std::vector<bool>& check) {
+    for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+        if (!check[m]) continue;
+        const Mesh& mesh = scene.meshes[m];
+        const std::size_t used = mesh.triangle_count() * 3;  // a partial last triple is ignored
+        const std::uint32_t largest = largest_index(std::span(mesh.indices.data(), used));
+        if (used > 0 && largest >= mesh.positions.size())
+            throw InputError(scene.source,
+                             "mesh " + std::to_string(m) + " '" + mesh.name + "': vertex index " +
+                                 std::to_string(largest) + " out of range (" +
+                                 std::to_string(mesh.positions.size()) + " positions)");
+    }
+}
+
+// Vertex indices out of range make the scene invalid. Scanning every index each frame costs as
+// much as a tenth of a million-triangle frame, so the front end checks the indices of the
+// triangles it assembles (it loads them anyway) and this scans only what it did not see: meshes
+// whose instances were all culled. On a find, every used mesh is scanned, so the message names
+// the same mesh whichever instances the camera sees.
+void check_indices(const detail::Frame& frame) {
+    const Scene& scene = *frame.scene;
+    std::vector<bool> drawn(scene.meshes.size(), false), culled_only(scene.meshes.size(), false);
+    for (const detail::FrameInstance& fi : frame.instances)
+        drawn[scene.instances[fi.scene_instance].mesh] = true;
+    bool bad = false;
+    for (const detail::Chunk& c : frame.chunks) bad |= c.bad_index_instance != c.kNoBadIndex;
+    for (const Instance& instance : scene.instances)
+        culled_only[instance.mesh] = !drawn[instance.mesh];
+    if (!bad) {
+        refuse_bad_indices(scene, culled_only);
+        return;
+    }
+    std::vector<bool> used(scene.meshes.size(), false);
+    for (const Instance& instance : scene.instances) used[instance.mesh] = true;
+    refuse_bad_indices(scene, used);
+}
+
 // Options and scene are checked before anything is allocated: a frame that would need absurd
 // memory, or a scene whose arrays disagree (read out of bounds later), is an InputError here.
 void validate(const Scene& scene, const RenderOptions& options) {
@@ -104,11 +143,6 @@ void validate(const Scene& scene, const RenderOptions& options) {
         if (!mesh.uvs.empty() && mesh.uvs.size() != n)
             throw InputError(source, label + ": " + std::to_string(mesh.uvs.size()) + " uvs for " +
                                          std::to_string(n) + " positions");
-        const std::size_t used = mesh.triangle_count() * 3;  // a partial last triple is ignored
-        const std::uint32_t largest = largest_index(std::span(mesh.indices.data(), used));
-        if (used > 0 && largest >= n)
-            throw InputError(source, label + ": vertex index " + std::to_string(largest) +
-                                         " out of range (" + std::to_string(n) + " positions)");
     }
     if (options.clip_planes.size() > std::size_t(kMaxUserClipPlanes))
         throw InputError("", "at most " + std::to_string(kMaxUserClipPlanes) +
@@ -144,6 +178,7 @@ void reset(detail::Frame& frame) {
         c.extra_vertices.clear();
         c.pieces.clear();
         c.stats = RenderStats{};
+        c.bad_index_instance = detail::Chunk::kNoBadIndex;
     }
 }
 
@@ -191,6 +226,7 @@ void render_frame_in_arena(detail::Frame& frame, const Scene& scene, const Rende
 
     detail::run_vertex_stage(frame, result.stats);
     detail::assemble_and_bin(frame, result.stats);
+    check_indices(frame);
     const auto setup_done = std::chrono::steady_clock::now();
     result.stats.setup_ms = std::chrono::duration<double, std::milli>(setup_done - start).count();
     detail::rasterize_tiles(frame, result.targets, result.stats);

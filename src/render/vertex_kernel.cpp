@@ -115,7 +115,10 @@ void TransformVertices(const VertexJob& job) {
         code = hn::IfThenElse(finite, code, hn::Set(di, static_cast<std::int32_t>(kNonFinite)));
         hn::StoreU(hn::BitCast(hn::Rebind<std::uint32_t, decltype(dd)>(), code),
                    hn::Rebind<std::uint32_t, decltype(dd)>(), job.outcode_out + k);
-        if (hn::AllFalse(di, hn::Eq(code, zero_i))) continue;
+        if (hn::AllFalse(di, hn::Eq(code, zero_i))) {
+            for (std::size_t i = 0; i < lanes; ++i) job.screen_out[k + i].x = kOutsideScreenX;
+            continue;
+        }
         // Values outside the representable range are not converted (their lanes are unused).
         const auto safe_x = hn::IfThenElseZero(representable, wx);
         const auto safe_y = hn::IfThenElseZero(representable, wy);
@@ -128,8 +131,11 @@ void TransformVertices(const VertexJob& job) {
         hn::Store(hn::DemoteTo(df, wx), df, wx_out);
         hn::Store(hn::DemoteTo(df, wy), df, wy_out);
         for (std::size_t i = 0; i < lanes; ++i) {
-            if (job.outcode_out[k + i] != 0) continue;
             ScreenVertex& s = job.screen_out[k + i];
+            if (job.outcode_out[k + i] != 0) {
+                s.x = kOutsideScreenX;
+                continue;
+            }
             s.x = sx[i];
             s.y = sy[i];
             s.z = sz[i];
@@ -190,6 +196,7 @@ void transform_vertices_scalar(const VertexJob& job) {
                 code = kClipLeft;  // not representable: let the clipper handle it
         }
         job.outcode_out[k] = code;
+        if (code != 0) job.screen_out[k].x = kOutsideScreenX;
         if (job.world_out == nullptr) continue;
         glm::vec3 normal;
         world_attributes(job.model, job.normal_matrix, job.positions[k],

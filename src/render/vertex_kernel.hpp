@@ -5,11 +5,14 @@
 //
 // Two implementations with identical output: a scalar reference and a SIMD one (Highway,
 // instruction set picked at run time; 8 vertices per AVX-512 step, the snap in double lanes).
-// Screen vertices are only defined where the outcode is 0; a test compares both there and the
-// clip positions and outcodes everywhere.
+// Screen vertices are only defined where the outcode is 0; elsewhere their x is
+// kOutsideScreenX (the classifier's sign of "outside"). A test compares both there, and the clip
+// positions, outcodes and that x everywhere.
 #pragma once
 #include <zraster/clip.hpp>
 #include <zraster/raster.hpp>
+
+#include "render/classify_kernel.hpp"
 
 #include <cstddef>
 #include <cstdint>

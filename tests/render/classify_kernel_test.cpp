@@ -50,8 +50,12 @@ TEST(ClassifyKernel, SimdMatchesScalarAndClassifyTriangle) {
             if (rng.next() % 50 == 0) v.x = std::int32_t(rng.next() % 2 ? 1 << 26 : -(1 << 25));
             if (rng.next() % 50 == 0) v.y = kClassifyCoordinateLimit;
         }
-        for (std::uint32_t& c : outcode)
-            if (rng.next() % 30 == 0) c = std::uint32_t(1) << (rng.next() % 6);
+        // Outside vertices as the vertex stage leaves them (x = kOutsideScreenX).
+        for (std::size_t v = 0; v < outcode.size(); ++v)
+            if (rng.next() % 30 == 0) {
+                outcode[v] = std::uint32_t(1) << (rng.next() % 6);
+                screen[v].x = kOutsideScreenX;
+            }
         const std::uint32_t first_vertex = 7;
         const std::uint32_t vertex_total = std::uint32_t(vertices);
         const std::size_t triangles = 1 + rng.next() % 256;
@@ -65,7 +69,6 @@ TEST(ClassifyKernel, SimdMatchesScalarAndClassifyTriangle) {
         in.indices = indices.data();
         in.vertex_total = vertex_total;
         in.first_vertex = first_vertex;
-        in.outcode = outcode.data();
         in.screen = screen.data();
         in.settings = settings;
         ClassifyOutput simd, scalar;

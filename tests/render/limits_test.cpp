@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <chrono>
 #include <string>
 
@@ -124,6 +126,55 @@ TEST(Limits, InconsistentScenes) {
         scene.meshes[0].indices.push_back(99);
         EXPECT_NO_THROW(render(scene, o));
     }
+}
+
+// The front end checks the indices of the triangles it assembles, and the renderer scans the
+// meshes it did not draw: a bad index is refused, naming the first bad mesh, whatever the camera
+// sees and whichever path (SIMD batches, scalar, per-triangle with user planes) assembles it.
+TEST(Limits, BadIndicesAreRefusedWhateverTheCameraSees) {
+    // Two spheres of ~2000 triangles (several classifier batches), side by side at x = -2, 2.
+    const auto sphere_scene = [] {
+        std::vector<Mesh> meshes;
+        meshes.push_back(make_uv_sphere(1.0f, 24, 48));
+        meshes.push_back(make_uv_sphere(1.0f, 24, 48));
+        Scene scene = scene_from_meshes(std::move(meshes));
+        scene.source = "spheres";
+        scene.instances[0].transform = glm::translate(glm::mat4(1.0f), glm::vec3(-2, 0, 0));
+        scene.instances[1].transform = glm::translate(glm::mat4(1.0f), glm::vec3(2, 0, 0));
+        return scene;
+    };
+    const auto options_looking_at = [](float x) {
+        RenderOptions o;
+        o.width = 64;
+        o.height = 64;
+        Camera camera;
+        camera.eye = {x, 0, 4};
+        camera.target = {x, 0, 0};
+        o.camera = camera;
+        return o;
+    };
+    const auto break_index = [](Mesh& mesh, std::size_t triangle) {
+        mesh.indices[3 * triangle + 1] = static_cast<std::uint32_t>(mesh.positions.size()) + 5;
+        return "vertex index " + std::to_string(mesh.positions.size() + 5) + " out of range";
+    };
+    ASSERT_GT(sphere_scene().meshes[0].triangle_count(), 1500u);
+    for (const bool simd : {true, false})
+        for (const bool user_planes : {false, true})
+            for (const float look_x : {-2.0f, 2.0f}) {
+                SCOPED_TRACE(::testing::Message() << "simd " << simd << ", user planes "
+                                                  << user_planes << ", looking at x " << look_x);
+                RenderOptions o = options_looking_at(look_x);
+                o.simd = simd;
+                if (user_planes) o.clip_planes = {{0, 0, 1, 10}};
+                Scene scene = sphere_scene();
+                EXPECT_NO_THROW(render(scene, o));
+                // Mesh 0, seen or not (looking at x = 2 frustum-culls its instance).
+                const std::string cause = break_index(scene.meshes[0], 1234);
+                expect_refused(scene, o, "mesh 0 'uv_sphere': " + cause);
+                // Both bad: mesh 0 is named, even when only mesh 1 is in view.
+                break_index(scene.meshes[1], 7);
+                expect_refused(scene, o, "mesh 0 'uv_sphere': " + cause);
+            }
 }
 
 }  // namespace
