@@ -12,6 +12,7 @@
 
 #include "render/classify_kernel.hpp"
 #include "render/frame.hpp"
+#include "render/vertex_kernel.hpp"
 
 namespace zraster::detail {
 namespace {
@@ -97,12 +98,12 @@ void assemble_triangle(const Frame& frame, std::uint32_t instance, std::size_t t
     TriangleRef ref;
     ref.instance = instance;
     ref.primitive = static_cast<std::uint32_t>(t);
-    std::array<std::uint32_t, 3> code{};
+    std::array<std::uint32_t, 3> code{}, local{};
     bool valid = true, finite = true;
     for (std::size_t k = 0; k < 3; ++k) {
-        const std::uint32_t local = indices[3 * t + k];
-        valid &= local < vertex_total;
-        const std::uint32_t global = fi.first_vertex + (local < vertex_total ? local : 0);
+        local[k] = indices[3 * t + k];
+        valid &= local[k] < vertex_total;
+        const std::uint32_t global = fi.first_vertex + (local[k] < vertex_total ? local[k] : 0);
         ref.vertex[k] = ref.screen[k] = global;
         code[k] = vertices.outcode[global];
         finite &= code[k] != kNonFinite;
@@ -132,10 +133,11 @@ void assemble_triangle(const Frame& frame, std::uint32_t instance, std::size_t t
         return;
     }
     ++chunk.stats.triangles_clipped;
-    clip_and_emit(
-        frame, ref,
-        {vertices.clip[ref.vertex[0]], vertices.clip[ref.vertex[1]], vertices.clip[ref.vertex[2]]},
-        crossing, chunk);
+    // The clip positions the vertex stage computed (and did not keep), bit for bit.
+    const auto clip = [&](std::size_t k) {
+        return clip_position(fi.mvp, mesh.positions[local[k]]);
+    };
+    clip_and_emit(frame, ref, {clip(0), clip(1), clip(2)}, crossing, chunk);
 }
 
 void process_instance_range(const Frame& frame, std::uint32_t instance, std::size_t first,

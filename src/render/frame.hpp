@@ -59,7 +59,6 @@ inline bool tagged_shading(const RenderOptions& options) {
 
 // Output of the vertex stage for every vertex of every visible instance.
 struct FrameVertices {
-    std::vector<glm::vec4> clip;
     std::vector<ScreenVertex> screen;    // valid where outcode == 0
     std::vector<std::uint32_t> outcode;  // ClipPlaneBit mask; kNonFinite for NaN/Inf
     std::vector<glm::vec3> world;        // when shading or user clip planes need them

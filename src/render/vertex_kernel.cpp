@@ -53,13 +53,12 @@ void TransformVertices(const VertexJob& job) {
     for (; k + lanes <= job.count; k += lanes) {
         hn::Vec<decltype(df)> x, y, z;
         hn::LoadInterleaved3(df, &job.positions[k].x, x, y, z);
-        // (m0 x + m1 y) + (m2 z + m3), as transform() in the scalar twin.
+        // (m0 x + m1 y) + (m2 z + m3), as clip_position().
         const auto apply = [&](const auto& r) {
             return hn::Add(hn::Add(hn::Mul(r[0], x), hn::Mul(r[1], y)),
                            hn::Add(hn::Mul(r[2], z), r[3]));
         };
         const auto cx = apply(mx), cy = apply(my), cz = apply(mz), cw = apply(mw);
-        hn::StoreInterleaved4(cx, cy, cz, cw, df, &job.clip_out[k].x);
         if (job.world_out != nullptr) {
             hn::StoreInterleaved3(apply(wx), apply(wy), apply(wz), df, &job.world_out[k].x);
             if (job.normal_out != nullptr) {
@@ -148,7 +147,6 @@ void TransformVertices(const VertexJob& job) {
         VertexJob tail = job;
         tail.positions += k;
         tail.count -= k;
-        tail.clip_out += k;
         tail.screen_out += k;
         tail.outcode_out += k;
         if (tail.normals != nullptr) tail.normals += k;
@@ -165,14 +163,6 @@ HWY_AFTER_NAMESPACE();
 namespace zraster::detail {
 namespace {
 
-// m * (p, 1), written out in the order the SIMD version uses; equal to glm's m * vec4(p, 1).
-inline glm::vec4 transform(const glm::mat4& m, const glm::vec3& p) {
-    return glm::vec4((m[0].x * p.x + m[1].x * p.y) + (m[2].x * p.z + m[3].x),
-                     (m[0].y * p.x + m[1].y * p.y) + (m[2].y * p.z + m[3].y),
-                     (m[0].z * p.x + m[1].z * p.y) + (m[2].z * p.z + m[3].z),
-                     (m[0].w * p.x + m[1].w * p.y) + (m[2].w * p.z + m[3].w));
-}
-
 bool finite(const glm::vec4& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
 }
@@ -187,8 +177,7 @@ void transform_vertices(const VertexJob& job) {
 
 void transform_vertices_scalar(const VertexJob& job) {
     for (std::size_t k = 0; k < job.count; ++k) {
-        const glm::vec4 clip = transform(job.mvp, job.positions[k]);
-        job.clip_out[k] = clip;
+        const glm::vec4 clip = clip_position(job.mvp, job.positions[k]);
         std::uint32_t code = kNonFinite;
         if (finite(clip)) {
             code = frustum_outcode(clip, job.clip);

@@ -111,7 +111,6 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
         any_gouraud |= fi.shading == ShadingMode::Gouraud;
         any_textured |= fi.textured;
     }
-    memory::resize_on_huge_pages(v.clip, vertex_count);
     memory::resize_on_huge_pages(v.screen, vertex_count);
     memory::resize_on_huge_pages(v.outcode, vertex_count);
     // Arrays no instance reads stay empty (a reused Renderer may still hold old ones: the stages
@@ -133,7 +132,6 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
                 job.mvp = fi.mvp;
                 job.clip = frame.clip_settings;
                 job.setup = frame.setup_settings;
-                job.clip_out = v.clip.data() + fi.first_vertex + r.begin();
                 job.screen_out = v.screen.data() + fi.first_vertex + r.begin();
                 job.outcode_out = v.outcode.data() + fi.first_vertex + r.begin();
                 if (world) {  // user clip planes need the world position, shading both
