@@ -61,13 +61,11 @@ void BM_ClassifyTriangles(benchmark::State& state) {
     const bool simd = state.range(0) != 0;
     const std::size_t triangles = 1 << 16;
     const auto screen = random_vertices(3 * triangles, 1.0, 2);
-    const std::vector<std::uint32_t> outcode(screen.size(), 0);
     std::vector<std::uint32_t> indices(screen.size());
     for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = std::uint32_t(i);
     detail::ClassifyInput in;
     in.indices = indices.data();
     in.vertex_total = std::uint32_t(screen.size());
-    in.outcode = outcode.data();
     in.screen = screen.data();
     in.settings.viewport = {1920, 1080};
     auto out = std::make_unique<detail::ClassifyOutput>();
