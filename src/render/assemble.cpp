@@ -10,12 +10,21 @@
 
 #include <zraster/error.hpp>
 
+#include "memory/huge_pages.hpp"
 #include "render/classify_kernel.hpp"
 #include "render/frame.hpp"
 #include "render/vertex_kernel.hpp"
 
 namespace zraster::detail {
 namespace {
+
+// Counts a new ref in the bins of the tiles it touches (binning's first pass, done as refs are
+// made: they are still in cache).
+void count_in_bins(const Frame& frame, const TriangleRef& r, Chunk& chunk) {
+    for (int ty = r.tile_y0; ty <= r.tile_y1; ++ty)
+        for (int tx = r.tile_x0; tx <= r.tile_x1; ++tx)
+            ++chunk.bin_counts[std::size_t(ty * frame.tiles_x + tx)];
+}
 
 // Tests a triangle of snapped vertices and, if it covers a pixel center, appends its ref.
 void emit(const Frame& frame, TriangleRef ref, const ScreenVertex& v0, const ScreenVertex& v1,
@@ -40,6 +49,7 @@ void emit(const Frame& frame, TriangleRef ref, const ScreenVertex& v0, const Scr
     ref.tile_x1 = static_cast<std::uint16_t>(setup.max_x / kTileSize);
     ref.tile_y1 = static_cast<std::uint16_t>(setup.max_y / kTileSize);
     ++chunk.stats.triangles_rasterized;
+    count_in_bins(frame, ref, chunk);
     chunk.refs.push_back(ref);
 }
 
@@ -185,6 +195,7 @@ void process_instance_range(const Frame& frame, std::uint32_t instance, std::siz
             ref.tile_x1 = static_cast<std::uint16_t>(out.max_x[k] / kTileSize);
             ref.tile_y1 = static_cast<std::uint16_t>(out.max_y[k] / kTileSize);
             ++chunk.stats.triangles_rasterized;
+            count_in_bins(frame, ref, chunk);
         }
     }
     chunk.stats.triangles_degenerate += out.degenerate;
@@ -195,6 +206,7 @@ void process_instance_range(const Frame& frame, std::uint32_t instance, std::siz
 void process_chunk(const Frame& frame, Chunk& chunk) {
     const std::vector<std::size_t>& prefix = frame.instance_first_triangle;
     chunk.refs.reserve((chunk.end_triangle - chunk.first_triangle) / 2);
+    chunk.bin_counts.assign(std::size_t(frame.tiles_x) * std::size_t(frame.tiles_y), 0);
     auto i = static_cast<std::uint32_t>(
         std::upper_bound(prefix.begin(), prefix.end(), chunk.first_triangle) - prefix.begin() - 1);
     for (std::size_t g = chunk.first_triangle; g < chunk.end_triangle; ++i) {
@@ -222,39 +234,72 @@ void corner_attributes(const Frame& frame, const Chunk& chunk, const TriangleRef
     }
 }
 
-// Counting sort of the chunk's refs into tiles, keeping their order inside each tile.
-void bin_chunk(const Frame& frame, Chunk& chunk) {
+// Binning is a counting sort of all chunks' refs into tiles, in two passes around a prefix sum
+// over (tile, chunk): the front end counts a chunk's refs per tile as it makes them
+// (count_in_bins), write_bins writes its entries at their final places.
+void write_bins(Frame& frame, std::size_t chunk_index) {
+    const Chunk& chunk = frame.chunks[chunk_index];
     const std::size_t tiles = std::size_t(frame.tiles_x) * std::size_t(frame.tiles_y);
-    chunk.bin_offsets.assign(tiles + 1, 0);
-    for (const TriangleRef& r : chunk.refs)
-        for (int ty = r.tile_y0; ty <= r.tile_y1; ++ty)
-            for (int tx = r.tile_x0; tx <= r.tile_x1; ++tx)
-                ++chunk.bin_offsets[std::size_t(ty * frame.tiles_x + tx) + 1];
-    for (std::size_t t = 0; t < tiles; ++t) chunk.bin_offsets[t + 1] += chunk.bin_offsets[t];
-    chunk.bin_entries.resize(chunk.bin_offsets[tiles]);
-    chunk.bin_corners.resize(frame.tagged_shading ? chunk.bin_offsets[tiles] : 0);
-    std::vector<std::uint32_t> cursor(chunk.bin_offsets.begin(), chunk.bin_offsets.end() - 1);
+    const std::size_t chunks = frame.chunks.size();
+    thread_local std::vector<std::size_t> cursor;
+    cursor.resize(tiles);
+    for (std::size_t t = 0; t < tiles; ++t) cursor[t] = frame.bin_offsets[t * chunks + chunk_index];
+    BinEntry* entries = frame.bin_entries.data();
+    CornerAttributes* corners = frame.bin_corners.data();
     for (std::uint32_t i = 0; i < chunk.refs.size(); ++i) {
         const TriangleRef& r = chunk.refs[i];
         // The first bin's entry is written in place, the others copy it (a struct built on the
         // stack and copied out stalls on store forwarding).
-        std::uint32_t first = ~0u;
+        std::size_t first = ~std::size_t{0};
         for (int ty = r.tile_y0; ty <= r.tile_y1; ++ty)
             for (int tx = r.tile_x0; tx <= r.tile_x1; ++tx) {
-                const std::uint32_t at = cursor[std::size_t(ty * frame.tiles_x + tx)]++;
-                BinEntry& entry = chunk.bin_entries[at];
-                if (first != ~0u) {
-                    entry = chunk.bin_entries[first];
-                    if (frame.tagged_shading) chunk.bin_corners[at] = chunk.bin_corners[first];
+                const std::size_t at = cursor[std::size_t(ty * frame.tiles_x + tx)]++;
+                BinEntry& entry = entries[at];
+                if (first != ~std::size_t{0}) {
+                    entry = entries[first];
+                    if (frame.tagged_shading) corners[at] = corners[first];
                     continue;
                 }
                 first = at;
                 for (std::size_t k = 0; k < 3; ++k)
                     entry.vertices[k] = frame.screen_vertex(chunk, r.screen[k]);
                 entry.ref = i;
-                if (frame.tagged_shading) corner_attributes(frame, chunk, r, chunk.bin_corners[at]);
+                if (frame.tagged_shading) corner_attributes(frame, chunk, r, corners[at]);
             }
     }
+}
+
+// bin_offsets from the chunks' counts: tile-major, chunks in order inside a tile.
+void bin_offsets(Frame& frame) {
+    const std::size_t tiles = std::size_t(frame.tiles_x) * std::size_t(frame.tiles_y);
+    const std::size_t chunks = frame.chunks.size();
+    frame.bin_offsets.resize(tiles * chunks + 1);
+    if (tiles * chunks < (std::size_t{1} << 15)) {  // small: not worth two parallel loops
+        std::size_t sum = 0;
+        for (std::size_t t = 0; t < tiles; ++t)
+            for (std::size_t c = 0; c < chunks; ++c) {
+                frame.bin_offsets[t * chunks + c] = sum;
+                sum += frame.chunks[c].bin_counts[t];
+            }
+        frame.bin_offsets[tiles * chunks] = sum;
+        return;
+    }
+    // Per tile first (in parallel over tiles: each writes its own slots), then the tiles' bases.
+    std::vector<std::size_t> tile_total(tiles);
+    tbb::parallel_for(std::size_t{0}, tiles, [&](std::size_t t) {
+        std::size_t sum = 0;
+        for (std::size_t c = 0; c < chunks; ++c) {
+            frame.bin_offsets[t * chunks + c] = sum;
+            sum += frame.chunks[c].bin_counts[t];
+        }
+        tile_total[t] = sum;
+    });
+    std::vector<std::size_t> tile_base(tiles + 1, 0);
+    for (std::size_t t = 0; t < tiles; ++t) tile_base[t + 1] = tile_base[t] + tile_total[t];
+    tbb::parallel_for(std::size_t{0}, tiles, [&](std::size_t t) {
+        for (std::size_t c = 0; c < chunks; ++c) frame.bin_offsets[t * chunks + c] += tile_base[t];
+    });
+    frame.bin_offsets[tiles * chunks] = tile_base[tiles];
 }
 
 }  // namespace
@@ -278,10 +323,14 @@ void assemble_and_bin(Frame& frame, RenderStats& stats) {
         frame.chunks[c].first_triangle = c * chunk_triangles;
         frame.chunks[c].end_triangle = std::min(total, (c + 1) * chunk_triangles);
     }
-    tbb::parallel_for(std::size_t{0}, frame.chunks.size(), [&](std::size_t c) {
-        process_chunk(frame, frame.chunks[c]);
-        bin_chunk(frame, frame.chunks[c]);
-    });
+    tbb::parallel_for(std::size_t{0}, frame.chunks.size(),
+                      [&](std::size_t c) { process_chunk(frame, frame.chunks[c]); });
+    bin_offsets(frame);
+    const std::size_t entries = frame.bin_offsets.back();
+    memory::resize_on_huge_pages(frame.bin_entries, entries);
+    memory::resize_on_huge_pages(frame.bin_corners, frame.tagged_shading ? entries : 0);
+    tbb::parallel_for(std::size_t{0}, frame.chunks.size(),
+                      [&](std::size_t c) { write_bins(frame, c); });
     for (const Chunk& c : frame.chunks) {
         stats.triangles_in += c.stats.triangles_in;
         stats.triangles_non_finite += c.stats.triangles_non_finite;

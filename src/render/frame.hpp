@@ -101,12 +101,8 @@ struct Chunk {
     std::vector<TriangleRef> refs;
     std::vector<ScreenVertex> extra_vertices;
     std::vector<ClippedPiece> pieces;
-    // Bins: refs touching tile t are bin_entries[bin_offsets[t] .. bin_offsets[t + 1]).
-    std::vector<std::uint32_t> bin_offsets;
-    std::vector<BinEntry> bin_entries;
-    // With tagged shading, the corner attributes of each bin entry's triangle (tag 0: not a
-    // SIMD Phong instance's), written by the front end so the back end reads them in order.
-    std::vector<CornerAttributes> bin_corners;
+    // How many of the chunk's refs touch each tile (binning's first pass).
+    std::vector<std::uint32_t> bin_counts;
     RenderStats stats;
     // The frame instance of the chunk's first triangle with a vertex index out of range
     // (kNoBadIndex: none). The renderer then refuses the scene (check_indices).
@@ -128,6 +124,15 @@ struct Frame {
     std::vector<std::size_t> instance_first_triangle;  // prefix sums, one more than instances
     FrameVertices vertices;
     std::vector<Chunk> chunks;
+    // Bins, tile-major: the entries of chunk c in tile t are
+    // bin_entries[bin_offsets[t * chunks.size() + c] .. bin_offsets[t * chunks.size() + c + 1]),
+    // so a tile's triangles of all chunks, in order, are one run of memory: the back end
+    // streams it (bins per chunk cost a cache and TLB miss per chunk in every tile).
+    std::vector<std::size_t> bin_offsets;
+    std::vector<BinEntry> bin_entries;
+    // With tagged shading, the corner attributes of each bin entry's triangle (tag 0: not a
+    // SIMD Phong instance's), written by the front end so the back end reads them in order.
+    std::vector<CornerAttributes> bin_corners;
     std::vector<PhongConstants> phong_constants;
 
     const ScreenVertex& screen_vertex(const Chunk& chunk, std::uint32_t index) const {

@@ -403,9 +403,9 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
                             ty * kTileSize,
                             std::min(width, (tx + 1) * kTileSize),
                             std::min(height, (ty + 1) * kTileSize)};
-        bool empty = true;
-        for (const Chunk& chunk : frame.chunks)
-            empty &= chunk.bin_offsets[tile_number] == chunk.bin_offsets[tile_number + 1];
+        const std::size_t chunks = frame.chunks.size();
+        const std::size_t* bins = frame.bin_offsets.data() + tile_number * chunks;
+        const bool empty = bins[0] == bins[chunks];
         if (empty) {
             // Nothing drawn here: write the cleared targets directly.
             clear_tile_targets(c, clear_row, background_row);
@@ -425,16 +425,11 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
         std::uint64_t passed = 0;
         bool untagged = false;  // a triangle without a shade tag was drawn
         TriangleSetup setup;
-        for (std::size_t ci = 0; ci < frame.chunks.size(); ++ci) {
+        for (std::size_t ci = 0; ci < chunks; ++ci) {
             const Chunk& chunk = frame.chunks[ci];
-            for (std::uint32_t e = chunk.bin_offsets[tile_number];
-                 e < chunk.bin_offsets[tile_number + 1]; ++e) {
-                const BinEntry& entry = chunk.bin_entries[e];
+            for (std::size_t e = bins[ci]; e < bins[ci + 1]; ++e) {
+                const BinEntry& entry = frame.bin_entries[e];
                 const std::uint32_t local = entry.ref;
-                // The deferred pass reads this ref for every pixel the triangle keeps; fetching
-                // it now, while the tile rasterizes, saves a cache miss there (refs are read in
-                // bin order here but in pixel order there).
-                if (shade) __builtin_prefetch(&chunk.refs[local]);
                 if (setup_triangle(entry.vertices, frame.setup_settings, setup) !=
                     SetupResult::Visible)
                     continue;  // cannot happen: the front end made the same decision
@@ -447,12 +442,16 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
                 }
                 const CornerAttributes* with = nullptr;
                 if (tagged) {
-                    with = &chunk.bin_corners[e];
+                    with = &frame.bin_corners[e];
                     if (with->tag == 0) {
                         with = nullptr;
                         untagged = true;
                     }
                 }
+                // The deferred pass reads the ref of every pixel the triangle keeps (unless
+                // tagged); fetching it now, while the tile rasterizes, saves a cache miss there
+                // (refs are read in bin order here but in pixel order there).
+                if (shade && with == nullptr) __builtin_prefetch(&ref);
                 passed += rasterize_blocks(c, chunk, ref, setup, id, with, tile);
             }
         }
