@@ -21,7 +21,7 @@
 namespace zraster {
 
 enum class ShadingStrategy {
-    Auto,      // deferred whenever there is something to shade
+    Auto,      // deferred: measured faster at any overdraw (docs/architecture.md)
     Forward,   // shade every fragment that passes the depth test, as it is drawn
     Deferred,  // resolve visibility per tile first, then shade each visible pixel once
 };
@@ -139,7 +139,7 @@ struct RenderStats {
     std::uint64_t blocks_hidden = 0;          // skipped by hierarchical z (triangle x block)
     std::uint64_t fragments_passed = 0;       // passed the depth test
     std::uint64_t fragments_shaded = 0;
-    bool deferred = false;         // which shading strategy ran
+    bool deferred = false;         // some pixels were shaded deferred (resolved first, then shaded)
     const char* simd_target = "";  // instruction set of the SIMD kernels
     Camera camera;                 // the camera actually used
     double setup_ms = 0, raster_ms = 0, total_ms = 0;

@@ -9,6 +9,10 @@
 #include <cstdint>
 
 #include "raster/visibility_kernel.hpp"
+#include "render/shade_kernel.hpp"
+
+// Per target, like this file.
+#include "render/phong_lanes-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace zraster::detail::HWY_NAMESPACE {
@@ -50,10 +54,13 @@ HWY_INLINE V plane_at(D d, const PlaneEquation& p, V dx, float dy) {
 }
 
 // The corner attributes interpolated at barycentrics (b1, b2), as interpolation_weights and
-// interpolate_corners do it, operation for operation; store(value, array) writes each.
+// interpolate_corners do it, operation for operation. With forward shading the fragments are
+// lit and store(color, TileBuffers::color) writes them; otherwise store(value, array) writes
+// each attribute.
 template <class D, class V, class Store>
-HWY_INLINE void interpolate_attributes(D d, const CornerAttributes& a, V b1, V b2,
-                                       TileBuffers& tile, const Store& store) {
+HWY_INLINE void interpolate_attributes(D d, const BlockJob& job, V b1, V b2, TileBuffers& tile,
+                                       const Store& store) {
+    const CornerAttributes& a = *job.corners;
     auto w0 = hn::Sub(hn::Sub(hn::Set(d, 1.0f), b1), b2), w1 = b1, w2 = b2;
     if (a.piece != nullptr) {
         const auto remap = [&](int c) {
@@ -71,6 +78,18 @@ HWY_INLINE void interpolate_attributes(D d, const CornerAttributes& a, V b1, V b
             hn::Add(hn::Mul(hn::Set(d, corner[0][c]), w0), hn::Mul(hn::Set(d, corner[1][c]), w1)),
             hn::Mul(hn::Set(d, corner[2][c]), w2));
     };
+    if (job.shade_constants != nullptr) {
+        const auto flip =
+            (a.tag & kShadeFlip) != 0 ? hn::FirstN(d, hn::Lanes(d)) : hn::FirstN(d, 0);
+        const hn::RebindToUnsigned<D> du;
+        const auto color =
+            pack_rgba(du, shade_lanes(d, *job.shade_constants, interpolate(a.normal, 0),
+                                      interpolate(a.normal, 1), interpolate(a.normal, 2),
+                                      interpolate(a.world, 0), interpolate(a.world, 1),
+                                      interpolate(a.world, 2), flip));
+        store(hn::BitCast(d, color), reinterpret_cast<float*>(tile.color));
+        return;
+    }
     store(interpolate(a.normal, 0), tile.nx);
     store(interpolate(a.normal, 1), tile.ny);
     store(interpolate(a.normal, 2), tile.nz);
@@ -143,7 +162,7 @@ int VisibilityRows(const BlockJob& job, TileBuffers& tile) {
                 store(b2, tile.b2);
                 continue;
             }
-            interpolate_attributes(df, *job.corners, b1, b2, tile, store);
+            interpolate_attributes(df, job, b1, b2, tile, store);
         }
     }
     return passed;
@@ -236,7 +255,7 @@ int VisibilityRowPairs(D16 d, const BlockJob& job, TileBuffers& tile) {
             store(b2, tile.b2);
             continue;
         }
-        interpolate_attributes(d, *job.corners, b1, b2, tile, store);
+        interpolate_attributes(d, job, b1, b2, tile, store);
     }
     return passed;
 }
@@ -336,6 +355,11 @@ int visibility_block_scalar(const BlockJob& job, TileBuffers& tile) {
             if (job.corners == nullptr) {
                 tile.b1[at] = b1;
                 tile.b2[at] = b2;
+                continue;
+            }
+            if (job.shade_constants != nullptr) {
+                tile.color[at] =
+                    shade_interpolated_scalar(*job.shade_constants, *job.corners, b1, b2);
                 continue;
             }
             store_interpolated(*job.corners, b1, b2, tile, at);

@@ -2,7 +2,8 @@
 // test and write, and the triangle reference plus perspective-correct barycentrics of every
 // fragment that passes, into tile-local buffers (deferred shading reads them afterwards). For
 // triangles the SIMD Phong shader draws, the kernel interpolates the world position and normal
-// right away instead (the deferred pass then reads them without gathering the triangle's data).
+// right away instead (the deferred pass then reads them without gathering the triangle's data),
+// or, shading forward, lights those fragments right away.
 //
 // Two implementations with bit-identical results: a scalar reference and a SIMD one (Google
 // Highway, the instruction set picked at run time: AVX-512, AVX2, SSE4, NEON, scalar). The
@@ -17,6 +18,8 @@
 namespace zraster::detail {
 
 inline constexpr std::uint32_t kNoTriangle = 0xffffffffu;
+
+struct PhongConstants;  // render/shade_kernel.hpp
 
 // Tile-local buffers with row stride kStride and padding, so a vector may run past the end of
 // a row (into the next row or the padding) without leaving the buffer.
@@ -34,6 +37,8 @@ struct TileBuffers {
     // 0: shade from ref and barycentrics; else the SIMD Phong constants' index + 1 in the low
     // bits and kShadeFlip where the normal is negated (a back face lit two-sided).
     alignas(64) std::uint32_t shade_tag[kPixels];
+    // RGBA8 of the pixels shaded forward (BlockJob::shade_constants), background elsewhere.
+    alignas(64) std::uint32_t color[kPixels];
     // Hierarchical z: per 8x8 block (row-major, kStride / 8 per row), the farthest depth stored
     // in it (render/hierarchical_z.hpp).
     static constexpr int kBlocksPerRow = kStride / 8;
@@ -94,6 +99,10 @@ struct BlockJob {
     // With barycentrics on: the shade tag (0 without corners), and with corners the
     // interpolated attributes instead of the barycentrics.
     const CornerAttributes* corners = nullptr;
+    // Forward shading (with corners): the fragments that pass are lit right away with these
+    // constants (the SIMD Phong shader's), their color written to TileBuffers::color instead of
+    // the interpolated attributes; the shade tag is still written.
+    const PhongConstants* shade_constants = nullptr;
     std::uint32_t ref = 0;
 };
 

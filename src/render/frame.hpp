@@ -48,11 +48,12 @@ inline void world_attributes(const glm::mat4& model, const glm::mat3& normal_mat
     normal = len > 0.0f ? n / len : glm::vec3(0, 1, 0);
 }
 
-// Whether the frame uses tagged shading: the visibility kernel interpolates the attributes of
-// SIMD Phong instances' triangles, and the deferred pass shades them a vector at a time.
+// Whether the frame may use tagged shading: the visibility kernel interpolates the attributes
+// of SIMD Phong instances' triangles, and either the deferred pass shades them a vector at a
+// time or, shading forward, the kernel lights them as they pass. (ShadingStrategy::Forward uses
+// it only when every instance is a SIMD Phong one: the others would be resolved first.)
 inline bool tagged_shading(const RenderOptions& options) {
     return options.simd && options.color_target && !options.normal_target &&
-           options.strategy != ShadingStrategy::Forward &&
            options.depth_format == DepthFormat::D32F && options.depth_test &&
            !options.coverage_counts;
 }

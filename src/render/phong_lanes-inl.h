@@ -56,8 +56,8 @@ struct RgbLanes {
 // One vector of pixels: the normal (not yet unit), the world position, and the lanes whose
 // normal is negated.
 template <class D, class V, class M>
-HWY_INLINE RgbLanes<hn::RebindToSigned<D>> shade_lanes(D d, const PhongConstants& k, V nx, V ny, V nz, V px, V py, V pz,
-                           M flip) {
+HWY_INLINE RgbLanes<hn::RebindToSigned<D>> shade_lanes(D d, const PhongConstants& k, V nx, V ny,
+                                                       V nz, V px, V py, V pz, M flip) {
     const auto zero = hn::Zero(d), one = hn::Set(d, 1.0f);
     // Unit normal, or (0, 1, 0); negated for back faces.
     const auto len = hn::Sqrt(dot3(d, nx, ny, nz, nx, ny, nz));

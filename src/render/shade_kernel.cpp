@@ -23,8 +23,8 @@ void ShadePhongBatch(const PhongConstants& k, PhongBatch& batch) {
     for (std::size_t i = 0; i < static_cast<std::size_t>(batch.count); i += lanes) {
         const auto flip = hn::RebindMask(d, hn::Ne(hn::LoadU(du, batch.flip + i), hn::Zero(du)));
         const auto c = shade_lanes(d, k, hn::LoadU(d, batch.nx + i), hn::LoadU(d, batch.ny + i),
-                                  hn::LoadU(d, batch.nz + i), hn::LoadU(d, batch.px + i),
-                                  hn::LoadU(d, batch.py + i), hn::LoadU(d, batch.pz + i), flip);
+                                   hn::LoadU(d, batch.nz + i), hn::LoadU(d, batch.px + i),
+                                   hn::LoadU(d, batch.py + i), hn::LoadU(d, batch.pz + i), flip);
         hn::StoreU(c.r, di, batch.r + i);
         hn::StoreU(c.g, di, batch.g + i);
         hn::StoreU(c.b, di, batch.b + i);
@@ -81,6 +81,31 @@ int shade_tagged_row(const PhongConstants* constants, const TileBuffers& tile, s
     return HWY_DYNAMIC_DISPATCH(ShadeTaggedRow)(constants, tile, at, count, rgba);
 }
 
+namespace {
+std::uint32_t rgba_of(const PhongBatch& batch, int i) {
+    return std::uint32_t(batch.r[i]) | std::uint32_t(batch.g[i]) << 8 |
+           std::uint32_t(batch.b[i]) << 16 | 0xff000000u;
+}
+}  // namespace
+
+std::uint32_t shade_interpolated_scalar(const PhongConstants& constants,
+                                        const CornerAttributes& corners, float b1, float b2) {
+    const glm::vec3 w = interpolation_weights(corners, b1, b2);
+    const glm::vec3 n = interpolate_corners(corners.normal, w);
+    const glm::vec3 p = interpolate_corners(corners.world, w);
+    PhongBatch one;
+    one.count = 1;
+    one.nx[0] = n.x;
+    one.ny[0] = n.y;
+    one.nz[0] = n.z;
+    one.px[0] = p.x;
+    one.py[0] = p.y;
+    one.pz[0] = p.z;
+    one.flip[0] = (corners.tag & kShadeFlip) ? ~0u : 0u;
+    shade_phong_batch_scalar(constants, one);
+    return rgba_of(one, 0);
+}
+
 int shade_tagged_row_scalar(const PhongConstants* constants, const TileBuffers& tile,
                             std::size_t at, int count, std::uint32_t* rgba) {
     PhongBatch one;
@@ -99,8 +124,7 @@ int shade_tagged_row_scalar(const PhongConstants* constants, const TileBuffers& 
         one.pz[0] = tile.wz[p];
         one.flip[0] = (tile.shade_tag[p] & kShadeFlip) ? ~0u : 0u;
         shade_phong_batch_scalar(constants[kernel - 1], one);
-        rgba[i] = std::uint32_t(one.r[0]) | std::uint32_t(one.g[0]) << 8 |
-                  std::uint32_t(one.b[0]) << 16 | 0xff000000u;
+        rgba[i] = rgba_of(one, 0);
     }
     return shaded;
 }

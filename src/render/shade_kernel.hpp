@@ -55,6 +55,11 @@ int shade_tagged_row(const PhongConstants* constants, const TileBuffers& tile, s
 int shade_tagged_row_scalar(const PhongConstants* constants, const TileBuffers& tile,
                             std::size_t at, int count, std::uint32_t* rgba);
 
+// The scalar twin of the visibility kernel's forward shading: the corner attributes
+// interpolated at (b1, b2) as store_interpolated does, lit, as RGBA8.
+std::uint32_t shade_interpolated_scalar(const PhongConstants& constants,
+                                        const CornerAttributes& corners, float b1, float b2);
+
 // The scalar unit normal used by both paths: n / |n|, or (0, 1, 0) for a zero vector.
 glm::vec3 unit_normal(const glm::vec3& n);
 // 8-bit rounding used by both paths.

@@ -69,8 +69,9 @@ void write_shaded(const TileContext& c, const ShadedFragment& f, int px, int py)
 // format, the depth test off, coverage counts, forward shading.
 std::uint64_t rasterize_scalar(const TileContext& c, const Chunk& chunk, const TriangleRef& ref,
                                const TriangleSetup& setup, std::uint32_t id,
-                               const CornerAttributes* corners, TileBuffers& tile, int x0, int y0,
-                               int x1, int y1) {
+                               const CornerAttributes* corners,
+                               const PhongConstants* shade_constants, TileBuffers& tile, int x0,
+                               int y0, int x1, int y1) {
     const RenderOptions& options = *c.frame.options;
     ShadingTriangle shading;
     if (c.forward && c.shade) prepare_shading_triangle(c.frame, chunk, ref, shading);
@@ -94,7 +95,10 @@ std::uint64_t rasterize_scalar(const TileContext& c, const Chunk& chunk, const T
         tile.b1[at] = b.y;
         tile.b2[at] = b.z;
         tile.shade_tag[at] = corners ? corners->tag : 0;
-        if (corners) store_interpolated(*corners, b.y, b.z, tile, at);
+        if (corners && shade_constants)  // forward, as the kernel does
+            tile.color[at] = shade_interpolated_scalar(*shade_constants, *corners, b.y, b.z);
+        else if (corners)
+            store_interpolated(*corners, b.y, b.z, tile, at);
         if (c.forward && c.shade)
             write_shaded(
                 c, shade_fragment(c.frame, shading, b.y, b.z, px, py, !c.targets.normal.empty()),
@@ -116,7 +120,8 @@ bool fits_int32(std::int64_t v) {
 // then the visibility kernel on the covered or partly covered ones.
 std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const TriangleRef& ref,
                                const TriangleSetup& setup, std::uint32_t id,
-                               const CornerAttributes* corners, TileBuffers& tile) {
+                               const CornerAttributes* corners,
+                               const PhongConstants* shade_constants, TileBuffers& tile) {
     const RenderOptions& options = *c.frame.options;
     const int rx0 = std::max(setup.min_x, c.x0), ry0 = std::max(setup.min_y, c.y0);
     const int rx1 = std::min(setup.max_x, c.x1 - 1), ry1 = std::min(setup.max_y, c.y1 - 1);
@@ -128,10 +133,14 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
     job.attributes = c.shade || !c.targets.instance_id.empty();
     job.barycentrics = c.shade;
     job.corners = corners;
+    job.shade_constants = shade_constants;
     job.ref = id;
     // Runs the kernel on pixels [x0, x1] x [y0, y1] of the triangle (edge values there fit 32
     // bits), unless hierarchical z shows them hidden; then refreshes the blocks' depth bounds.
-    const auto run_block = [&](int x0, int y0, int x1, int y1, bool full) -> std::uint64_t {
+    // Edges in `inside` (bit k: edge k) are non-negative over the whole block: the kernel gets
+    // zero for them (their values far inside a large triangle need not fit 32 bits).
+    const auto run_block = [&](int x0, int y0, int x1, int y1, bool full,
+                               unsigned inside) -> std::uint64_t {
         const int bx0 = (x0 - c.x0) / kBlockSize, bx1 = (x1 - c.x0) / kBlockSize;
         const int by0 = (y0 - c.y0) / kBlockSize, by1 = (y1 - c.y0) / kBlockSize;
         if (c.hiz != HierarchicalZ::Off) {
@@ -151,9 +160,10 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
             }
         }
         for (std::size_t k = 0; k < 3; ++k) {
-            job.e[k] = static_cast<std::int32_t>(edge_at(setup, k, x0, y0));
-            job.step_x[k] = static_cast<std::int32_t>(setup.edge_a[k]);
-            job.step_y[k] = static_cast<std::int32_t>(setup.edge_b[k]);
+            const bool zero = (inside >> k) & 1;
+            job.e[k] = zero ? 0 : static_cast<std::int32_t>(edge_at(setup, k, x0, y0));
+            job.step_x[k] = zero ? 0 : static_cast<std::int32_t>(setup.edge_a[k]);
+            job.step_y[k] = zero ? 0 : static_cast<std::int32_t>(setup.edge_b[k]);
         }
         job.full = full;
         job.x0 = x0 - c.x0;
@@ -184,7 +194,7 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
     const auto [lo_y, hi_y] = std::minmax({setup.y[0], setup.y[1], setup.y[2]});
     if (hi_x - lo_x < 64 * kSubpixelScale && hi_y - lo_y < 64 * kSubpixelScale &&
         rx1 - rx0 < kBlockSize && ry1 - ry0 < 2 * kBlockSize)
-        return run_block(rx0, ry0, rx1, ry1, false);
+        return run_block(rx0, ry0, rx1, ry1, false, 0);
 
     std::uint64_t passed = 0;
     const int first_by = c.y0 + (ry0 - c.y0) / kBlockSize * kBlockSize;
@@ -194,6 +204,7 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
         for (int bx = first_bx; bx <= rx1; bx += kBlockSize) {
             const int x0 = std::max(bx, rx0), x1 = std::min(bx + kBlockSize - 1, rx1);
             bool outside = false, full = true, fits = true;
+            unsigned inside = 0;
             for (std::size_t k = 0; k < 3 && !outside; ++k) {
                 // The extremes over the block's corners, from its first corner and the steps
                 // across it (a linear function: each step's sign picks the corner).
@@ -206,15 +217,17 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
                     e00 + std::max<std::int64_t>(across_x, 0) + std::max<std::int64_t>(across_y, 0);
                 outside = hi < 0;  // linear: negative at all corners means negative everywhere
                 full &= lo >= 0;
-                fits &= fits_int32(lo) && fits_int32(hi) && fits_int32(setup.edge_a[k]) &&
-                        fits_int32(setup.edge_b[k]);
+                inside |= unsigned(lo >= 0) << k;
+                // Only edges crossing the block are evaluated in 32-bit lanes.
+                fits &= lo >= 0 || (fits_int32(lo) && fits_int32(hi) &&
+                                    fits_int32(setup.edge_a[k]) && fits_int32(setup.edge_b[k]));
             }
             if (outside) continue;
             if (!fits && !full)  // edges too long for 32-bit lanes: the exact 64-bit scalar path
-                passed += rasterize_scalar(c, chunk, ref, setup, id, corners, tile, x0, y0, x1 + 1,
-                                           y1 + 1);
+                passed += rasterize_scalar(c, chunk, ref, setup, id, corners, shade_constants, tile,
+                                           x0, y0, x1 + 1, y1 + 1);
             else
-                passed += run_block(x0, y0, x1, y1, full);
+                passed += run_block(x0, y0, x1, y1, full, inside);
         }
     }
     return passed;
@@ -261,7 +274,8 @@ struct TriangleRun {
 // `untagged` says whether any triangle without a tag was drawn in the tile. Returns the number
 // of pixels shaded.
 std::uint64_t finish_tile(const TileContext& c, const TileBuffers& tile, std::uint32_t background,
-                          const std::uint32_t* background_row, bool shade_now, bool untagged) {
+                          const std::uint32_t* background_row, bool shade_now, bool untagged,
+                          bool forward_tile) {
     RenderTargets& t = c.targets;
     const bool d32 = c.codec.format() == DepthFormat::D32F;
     const bool want_normal = !t.normal.empty(), want_ids = !t.instance_id.empty();
@@ -287,7 +301,10 @@ std::uint64_t finish_tile(const TileContext& c, const TileBuffers& tile, std::ui
                 t.depth[row + std::size_t(c.x0 + i)] =
                     c.codec.decode(static_cast<std::uint32_t>(tile.depth[at_row + std::size_t(i)]));
         }
-        if (tagged) {
+        if (tagged && forward_tile) {  // lit as they passed
+            std::memcpy(&t.color[(row + std::size_t(c.x0)) * 4], tile.color + at_row,
+                        std::size_t(n) * sizeof(std::uint32_t));
+        } else if (tagged) {
             // (A copy, not a fill: GCC at -O2 fills element by element.)
             std::memcpy(row_rgba, background_row, std::size_t(n) * sizeof(std::uint32_t));
             shaded += std::uint64_t(
@@ -350,7 +367,13 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
                             : static_cast<float>(codec.encode(depth_clear_value(options)));
     const CompareFunc compare = effective_depth_compare(options);
     const bool shade = options.color_target || options.normal_target;
-    const bool forward = shade && options.strategy == ShadingStrategy::Forward;
+    // Tagged shading: triangles of SIMD Phong instances interpolate their attributes in the
+    // visibility kernel; the kernel lights them as they pass (forward) or the deferred pass
+    // shades them a vector at a time (the SIMD shader writes colors only: a normal target
+    // takes the scalar way).
+    const bool tagged = frame.tagged_shading;
+    // Forward shading otherwise goes the scalar way, fragment by fragment.
+    const bool forward = shade && options.strategy == ShadingStrategy::Forward && !tagged;
     // The block kernel covers the common case; the rest takes the scalar reference path.
     const bool kernel = options.depth_format == DepthFormat::D32F && options.depth_test &&
                         !options.coverage_counts && !forward;
@@ -363,12 +386,7 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
                                              to_unorm8(options.background.z), 255};
     std::uint32_t background;
     std::memcpy(&background, background_rgba, 4);
-    stats.deferred = shade && !forward;
     stats.simd_target = options.simd ? visibility_kernel_target() : "scalar";
-    // Tagged shading: triangles of SIMD Phong instances interpolate their attributes in the
-    // visibility kernel, and the deferred pass shades them a vector at a time (the SIMD shader
-    // writes colors only: a normal target takes the scalar way).
-    const bool tagged = frame.tagged_shading;
 
     // Rows of cleared values, copied into the targets of empty tiles.
     float clear_row[kTileSize];
@@ -382,6 +400,7 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
     const std::size_t tiles = std::size_t(frame.tiles_x) * std::size_t(frame.tiles_y);
     std::vector<std::uint64_t> passed_per_tile(tiles, 0), shaded_per_tile(tiles, 0),
         hidden_per_tile(tiles, 0);
+    std::vector<std::uint8_t> deferred_per_tile(tiles, 0);  // some pixels shaded deferred
     tbb::parallel_for(std::size_t{0}, tiles, [&](std::size_t tile_number) {
         thread_local std::unique_ptr<TileBuffers> buffers;
         if (!buffers) buffers = std::make_unique<TileBuffers>();
@@ -421,6 +440,15 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
         }
         // Blocks past the image edge are never drawn; their bound only has to be valid.
         std::fill_n(tile.farthest, std::size(tile.farthest), clear);
+        // Forward with tagged shading: the kernel lights the fragments as they pass. (Not
+        // Auto's choice: measured slower than deferred even on large, barely overlapping
+        // triangles; see docs/architecture.md.)
+        const bool forward_tile = tagged && options.strategy == ShadingStrategy::Forward;
+        if (forward_tile)
+            for (int y = 0; y < c.y1 - c.y0; ++y)
+                std::memcpy(tile.color + tile_index(0, y), background_row,
+                            std::size_t(c.x1 - c.x0) * sizeof(std::uint32_t));
+        std::uint64_t shaded_forward = 0;
 
         std::uint64_t passed = 0;
         bool untagged = false;  // a triangle without a shade tag was drawn
@@ -436,8 +464,8 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
                 const TriangleRef& ref = chunk.refs[local];
                 const std::uint32_t id = std::uint32_t(ci) << kLocalBits | local;
                 if (!kernel) {
-                    passed += rasterize_scalar(c, chunk, ref, setup, id, nullptr, tile, c.x0, c.y0,
-                                               c.x1, c.y1);
+                    passed += rasterize_scalar(c, chunk, ref, setup, id, nullptr, nullptr, tile,
+                                               c.x0, c.y0, c.x1, c.y1);
                     continue;
                 }
                 const CornerAttributes* with = nullptr;
@@ -452,15 +480,25 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
                 // tagged); fetching it now, while the tile rasterizes, saves a cache miss there
                 // (refs are read in bin order here but in pixel order there).
                 if (shade && with == nullptr) __builtin_prefetch(&ref);
-                passed += rasterize_blocks(c, chunk, ref, setup, id, with, tile);
+                const PhongConstants* shade_now =
+                    with != nullptr && forward_tile
+                        ? &frame.phong_constants[(with->tag & ~kShadeFlip) - 1]
+                        : nullptr;
+                const std::uint64_t kept =
+                    rasterize_blocks(c, chunk, ref, setup, id, with, shade_now, tile);
+                passed += kept;
+                if (shade_now != nullptr) shaded_forward += kept;
             }
         }
         passed_per_tile[tile_number] = passed;
         shaded_per_tile[tile_number] =
-            finish_tile(c, tile, background, background_row, shade && !forward, untagged);
+            shaded_forward + finish_tile(c, tile, background, background_row, shade && !forward,
+                                         untagged, forward_tile);
         if (forward) shaded_per_tile[tile_number] = passed;
+        deferred_per_tile[tile_number] = shade && !forward && (!forward_tile || untagged);
     });
     for (std::size_t t = 0; t < tiles; ++t) {
+        stats.deferred |= deferred_per_tile[t] != 0;
         stats.fragments_passed += passed_per_tile[t];
         stats.fragments_shaded += shaded_per_tile[t];
         stats.blocks_hidden += hidden_per_tile[t];

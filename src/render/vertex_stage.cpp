@@ -102,6 +102,8 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
 
     assign_phong_kernels(frame);
     frame.tagged_shading = tagged_shading(options) && !frame.phong_constants.empty();
+    if (options.strategy == ShadingStrategy::Forward)
+        frame.tagged_shading &= frame.phong_constants.size() == frame.instances.size();
 
     FrameVertices& v = frame.vertices;
     const bool attributes = frame.needs_attributes;

@@ -87,6 +87,9 @@ void add_bench_command(CLI::App& app, BenchArguments& a) {
     cmd->add_flag("--no-hierarchical-z", a.no_hierarchical_z,
                   "Disable hierarchical z (same image, to measure what it saves)");
     cmd->add_flag("--front-to-back", a.front_to_back, "Draw instances nearest first");
+    cmd->add_option("--shading-strategy", a.strategy, "auto | forward | deferred (same image)")
+        ->check(CLI::IsMember({"auto", "forward", "deferred"}))
+        ->capture_default_str();
     cmd->add_flag("--verbose", a.verbose, "Print every frame's time and the pipeline statistics");
     cmd->add_option("--out", a.out,
                     "Save the last frame as PNG (color; 16-bit depth, 65535 = far, in depth mode)");
@@ -142,6 +145,7 @@ int run_bench(const BenchArguments& a) {
     RenderOptions options = bench_render_options(mode, size.x, size.y, a.threads, !a.no_cull);
     options.hierarchical_z = !a.no_hierarchical_z;
     if (a.front_to_back) options.instance_order = InstanceOrder::FrontToBack;
+    options.strategy = shading_strategy(a.strategy);
     // The same fit_camera framing render() does for an unset camera, computed once: refitting
     // every frame would time a scan over all vertices that glbench does not do per frame.
     options.camera = fit_camera(scene.world_positions());
@@ -174,11 +178,11 @@ int run_bench(const BenchArguments& a) {
         if (a.verbose)
             fmt::print(
                 "{} {}: {:.3f} ms (setup {:.3f}, raster {:.3f}), {} rasterized, {} "
-                "fragments passed, {} shaded, {} blocks hidden by hierarchical z\n",
+                "fragments passed, {} shaded ({}), {} blocks hidden by hierarchical z\n",
                 f < a.warmup ? "warmup" : "frame", f < a.warmup ? f : f - a.warmup, ms,
                 result.stats.setup_ms, result.stats.raster_ms, result.stats.triangles_rasterized,
                 result.stats.fragments_passed, result.stats.fragments_shaded,
-                result.stats.blocks_hidden);
+                result.stats.deferred ? "deferred" : "forward", result.stats.blocks_hidden);
     }
     if (!a.out.empty()) write_frame(a.out, last->targets, mode);
 

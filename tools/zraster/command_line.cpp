@@ -43,6 +43,12 @@ glm::dvec4 parse_vec4(const std::string& option, const std::string& text) {
     return {v[0], v[1], v[2], v[3]};
 }
 
+ShadingStrategy shading_strategy(const std::string& name) {
+    return name == "forward"    ? ShadingStrategy::Forward
+           : name == "deferred" ? ShadingStrategy::Deferred
+                                : ShadingStrategy::Auto;
+}
+
 glm::ivec2 parse_size(const std::string& option, const std::string& text, int limit) {
     const std::size_t x = text.find('x');
     int w = 0, h = 0;

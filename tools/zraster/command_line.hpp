@@ -1,6 +1,7 @@
 // Shared pieces of the zraster command: value parsers and exit codes.
 #pragma once
 #include <zraster/error.hpp>
+#include <zraster/render.hpp>
 #include <zraster/scene.hpp>
 
 #include <glm/glm.hpp>
@@ -18,6 +19,9 @@ glm::dvec3 parse_vec3(const std::string& option, const std::string& text);
 glm::dvec4 parse_vec4(const std::string& option, const std::string& text);
 // "WxH" with 1 <= W, H <= limit.
 glm::ivec2 parse_size(const std::string& option, const std::string& text, int limit);
+
+// "auto" | "forward" | "deferred" (CLI11 checks the value first).
+ShadingStrategy shading_strategy(const std::string& name);
 
 // A mesh file path, or a procedural spec (builtin:NAME, sphere:N, city:N[:SEED], soup:N[:SEED]).
 // Assimp runs in a worker process (LoadIsolation::WorkerProcess) unless set_load_in_process(true)

@@ -105,6 +105,10 @@ void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
     cmd.add_flag("--front-to-back", a.front_to_back,
                  "Draw instances nearest first (hierarchical z then skips more; the image "
                  "changes only where instances meet at exactly equal depth)");
+    cmd.add_option("--shading-strategy", a.strategy,
+                   "auto (deferred) | forward | deferred (same image)")
+        ->check(CLI::IsMember({"auto", "forward", "deferred"}))
+        ->capture_default_str();
     cmd.add_option("--front-face", a.front_face, "Front-face winding ccw|cw")
         ->check(CLI::IsMember({"ccw", "cw"}))
         ->capture_default_str();
@@ -221,6 +225,7 @@ RenderOptions make_render_options(const RenderArguments& a, const Scene& scene) 
     o.front_face = a.front_face == "cw" ? FrontFace::Clockwise : FrontFace::CounterClockwise;
     o.occlusion_cull = a.occlusion_cull;
     if (a.front_to_back) o.instance_order = InstanceOrder::FrontToBack;
+    o.strategy = shading_strategy(a.strategy);
     parse_depth_format(a.depth_format, o.depth_format);
     if (!a.depth_compare.empty()) {
         CompareFunc f{};
@@ -402,8 +407,10 @@ int run_render(const RenderArguments& a) {
             s.triangles_trivially_rejected, s.triangles_clipped, s.triangles_backface_culled,
             s.triangles_degenerate, s.triangles_no_coverage, s.triangles_non_finite,
             s.triangles_rasterized);
-        fmt::print("  fragments shaded {}; setup {:.1f} ms, raster {:.1f} ms, total {:.1f} ms\n",
-                   s.fragments_shaded, s.setup_ms, s.raster_ms, s.total_ms);
+        fmt::print(
+            "  fragments shaded {} ({}); setup {:.1f} ms, raster {:.1f} ms, total {:.1f} ms\n",
+            s.fragments_shaded, s.deferred ? "deferred" : "forward", s.setup_ms, s.raster_ms,
+            s.total_ms);
         fmt::print(
             "  camera eye ({:.6g}, {:.6g}, {:.6g}) target ({:.6g}, {:.6g}, {:.6g}) near "
             "{:.6g} far {:.6g}\n",
