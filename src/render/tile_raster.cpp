@@ -23,11 +23,10 @@
 namespace zraster::detail {
 namespace {
 
-constexpr int kLocalBits = 20;
+constexpr int kLocalBits = 20;  // a pixel's triangle reference: chunk << 20 | index in chunk
 // Hierarchical z refreshes a block's bound after a triangle wrote at least this many fragments
 // there (or covered it whole).
-constexpr int kRefreshAfterFragments =
-    8;  // a pixel's triangle reference: chunk << 20 | index in chunk
+constexpr int kRefreshAfterFragments = 8;
 
 // Round to nearest (+ 0.5 and truncate: much cheaper than lround), as the SIMD shader does.
 std::uint8_t to_unorm8(float v) {
@@ -44,9 +43,13 @@ struct TileContext {
     bool forward;                  // shade as fragments pass (scalar path)
     HierarchicalZ hiz;             // per-block depth bounds in use (kernel path, depth writes on)
     std::uint64_t& blocks_hidden;  // this tile's count of blocks skipped by them
-    bool shade;                    // color or normal target wanted
-    bool tagged_shading;           // SIMD Phong instances interpolate in the kernel (see below)
-    int x0, y0, x1, y1;            // tile rectangle in the image, [x0, x1) x [y0, y1)
+    // How many of the tile's blocks have a bound nearer than the clear depth: until one has,
+    // no test can hide anything and none is made (a mesh of small triangles rarely covers a
+    // whole block in one write).
+    int& bounded_blocks;
+    bool shade;           // color or normal target wanted
+    bool tagged_shading;  // SIMD Phong instances interpolate in the kernel (see below)
+    int x0, y0, x1, y1;   // tile rectangle in the image, [x0, x1) x [y0, y1)
 };
 
 std::size_t tile_index(int x, int y) {
@@ -143,7 +146,7 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
                                unsigned inside) -> std::uint64_t {
         const int bx0 = (x0 - c.x0) / kBlockSize, bx1 = (x1 - c.x0) / kBlockSize;
         const int by0 = (y0 - c.y0) / kBlockSize, by1 = (y1 - c.y0) / kBlockSize;
-        if (c.hiz != HierarchicalZ::Off) {
+        if (c.hiz != HierarchicalZ::Off && c.bounded_blocks > 0) {
             const bool largest = c.hiz == HierarchicalZ::Largest;
             float farthest = tile.farthest[by0 * TileBuffers::kBlocksPerRow + bx0];
             for (int by = by0; by <= by1; ++by)
@@ -179,10 +182,13 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
         if (c.hiz != HierarchicalZ::Off && (full || passed >= kRefreshAfterFragments)) {
             const bool largest = c.hiz == HierarchicalZ::Largest;
             for (int by = by0; by <= by1; ++by)
-                for (int bx = bx0; bx <= bx1; ++bx)
-                    tile.farthest[by * TileBuffers::kBlocksPerRow + bx] =
-                        c.simd ? block_farthest_depth(tile, bx, by, largest)
-                               : block_farthest_depth_scalar(tile, bx, by, largest);
+                for (int bx = bx0; bx <= bx1; ++bx) {
+                    float& bound = tile.farthest[by * TileBuffers::kBlocksPerRow + bx];
+                    const bool was_bounded = largest ? bound < 1.0f : bound > 0.0f;
+                    bound = c.simd ? block_farthest_depth(tile, bx, by, largest)
+                                   : block_farthest_depth_scalar(tile, bx, by, largest);
+                    c.bounded_blocks += !was_bounded && (largest ? bound < 1.0f : bound > 0.0f);
+                }
         }
         return static_cast<std::uint64_t>(passed);
     };
@@ -407,6 +413,7 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
         TileBuffers& tile = *buffers;
         const int tx = int(tile_number % std::size_t(frame.tiles_x));
         const int ty = int(tile_number / std::size_t(frame.tiles_x));
+        int bounded_blocks = 0;
         const TileContext c{frame,
                             targets,
                             codec,
@@ -416,6 +423,7 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
                             forward,
                             hiz,
                             hidden_per_tile[tile_number],
+                            bounded_blocks,
                             shade,
                             tagged,
                             tx * kTileSize,
