@@ -6,9 +6,19 @@
 #include <hwy/highway.h>
 
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 
 #include "render/frame.hpp"
 #include "render/vertex_kernel.hpp"
+
+namespace zraster::detail {
+// The SIMD version stores a ScreenVertex as three 64-bit words: (x, y), (z, 1/w), (window x, y).
+static_assert(sizeof(ScreenVertex) == 24 && offsetof(ScreenVertex, x) == 0 &&
+              offsetof(ScreenVertex, y) == 4 && offsetof(ScreenVertex, z) == 8 &&
+              offsetof(ScreenVertex, inv_w) == 12 && offsetof(ScreenVertex, window_x) == 16 &&
+              offsetof(ScreenVertex, window_y) == 20);
+}  // namespace zraster::detail
 
 HWY_BEFORE_NAMESPACE();
 namespace zraster::detail::HWY_NAMESPACE {
@@ -47,8 +57,8 @@ void TransformVertices(const VertexJob& job) {
     const auto limit = hn::Set(dd, kGuardBand + double(kMaxViewport));
     const auto scale = hn::Set(dd, double(kSubpixelScale));
     const bool zero_to_one_window = job.setup.depth_range != ClipDepthRange::NegativeOneToOne;
-    alignas(64) std::int32_t sx[8], sy[8];
-    alignas(64) float sz[8], sw[8], wx_out[8], wy_out[8];
+    const hn::Rebind<std::uint32_t, decltype(dd)> du;
+    const hn::Rebind<std::uint64_t, decltype(dd)> dw;
     std::size_t k = 0;
     for (; k + lanes <= job.count; k += lanes) {
         hn::Vec<decltype(df)> x, y, z;
@@ -114,34 +124,32 @@ void TransformVertices(const VertexJob& job) {
         code = hn::IfThenElse(finite, code, hn::Set(di, static_cast<std::int32_t>(kNonFinite)));
         hn::StoreU(hn::BitCast(hn::Rebind<std::uint32_t, decltype(dd)>(), code),
                    hn::Rebind<std::uint32_t, decltype(dd)>(), job.outcode_out + k);
-        if (hn::AllFalse(di, hn::Eq(code, zero_i))) {
-            for (std::size_t i = 0; i < lanes; ++i) job.screen_out[k + i].x = kOutsideScreenX;
+        // Screen vertices go out as three 64-bit words each, (x, y), (z, 1/w), (window x, y),
+        // every lane written: lanes outside get x = kOutsideScreenX (the rest is unspecified).
+        auto* screen_words = reinterpret_cast<std::uint64_t*>(job.screen_out + k);
+        const auto now_inside = hn::Eq(code, zero_i);
+        if (hn::AllFalse(di, now_inside)) {
+            const auto none = hn::Zero(dw);
+            hn::StoreInterleaved3(hn::Set(dw, std::uint32_t(kOutsideScreenX)), none, none, dw,
+                                  screen_words);
             continue;
         }
         // Values outside the representable range are not converted (their lanes are unused).
         const auto safe_x = hn::IfThenElseZero(representable, wx);
         const auto safe_y = hn::IfThenElseZero(representable, wy);
-        hn::Store(hn::DemoteTo(di, hn::Round(hn::Mul(safe_x, scale))), di, sx);
-        hn::Store(hn::DemoteTo(di, hn::Round(hn::Mul(safe_y, scale))), di, sy);
+        const auto sx =
+            hn::IfThenElse(now_inside, hn::DemoteTo(di, hn::Round(hn::Mul(safe_x, scale))),
+                           hn::Set(di, kOutsideScreenX));
+        const auto sy = hn::DemoteTo(di, hn::Round(hn::Mul(safe_y, scale)));
         const auto zd = hn::Mul(hn::PromoteTo(dd, cz), rw);
         const auto window_z = zero_to_one_window ? zd : hn::Add(hn::Mul(half_d, zd), half_d);
-        hn::Store(hn::DemoteTo(df, window_z), df, sz);
-        hn::Store(hn::DemoteTo(df, rw), df, sw);
-        hn::Store(hn::DemoteTo(df, wx), df, wx_out);
-        hn::Store(hn::DemoteTo(df, wy), df, wy_out);
-        for (std::size_t i = 0; i < lanes; ++i) {
-            ScreenVertex& s = job.screen_out[k + i];
-            if (job.outcode_out[k + i] != 0) {
-                s.x = kOutsideScreenX;
-                continue;
-            }
-            s.x = sx[i];
-            s.y = sy[i];
-            s.z = sz[i];
-            s.inv_w = sw[i];
-            s.window_x = wx_out[i];
-            s.window_y = wy_out[i];
-        }
+        // Two 32-bit values as one 64-bit word, the first in the low half (memory order).
+        const auto word = [&](auto first, auto second) {
+            return hn::Or(hn::PromoteTo(dw, hn::BitCast(du, first)),
+                          hn::ShiftLeft<32>(hn::PromoteTo(dw, hn::BitCast(du, second))));
+        };
+        hn::StoreInterleaved3(word(sx, sy), word(hn::DemoteTo(df, window_z), hn::DemoteTo(df, rw)),
+                              word(hn::DemoteTo(df, wx), hn::DemoteTo(df, wy)), dw, screen_words);
     }
     if (k < job.count) {
         VertexJob tail = job;
