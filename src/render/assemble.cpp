@@ -274,19 +274,17 @@ void bin_offsets(Frame& frame) {
     const std::size_t tiles = std::size_t(frame.tiles_x) * std::size_t(frame.tiles_y);
     const std::size_t chunks = frame.chunks.size();
     frame.bin_offsets.resize(tiles * chunks + 1);
-    if (tiles * chunks < (std::size_t{1} << 15)) {  // small: not worth two parallel loops
-        std::size_t sum = 0;
-        for (std::size_t t = 0; t < tiles; ++t)
-            for (std::size_t c = 0; c < chunks; ++c) {
-                frame.bin_offsets[t * chunks + c] = sum;
-                sum += frame.chunks[c].bin_counts[t];
-            }
-        frame.bin_offsets[tiles * chunks] = sum;
-        return;
-    }
-    // Per tile first (in parallel over tiles: each writes its own slots), then the tiles' bases.
+    // Each loop over tiles writes only its tile's slots: in parallel unless the table is small
+    // (then two parallel loops cost more than they save).
+    const auto over_tiles = [&](const auto& body) {
+        if (tiles * chunks < (std::size_t{1} << 15))
+            for (std::size_t t = 0; t < tiles; ++t) body(t);
+        else
+            tbb::parallel_for(std::size_t{0}, tiles, body);
+    };
+    // Per tile first, then the tiles' bases.
     std::vector<std::size_t> tile_total(tiles);
-    tbb::parallel_for(std::size_t{0}, tiles, [&](std::size_t t) {
+    over_tiles([&](std::size_t t) {
         std::size_t sum = 0;
         for (std::size_t c = 0; c < chunks; ++c) {
             frame.bin_offsets[t * chunks + c] = sum;
@@ -296,7 +294,7 @@ void bin_offsets(Frame& frame) {
     });
     std::vector<std::size_t> tile_base(tiles + 1, 0);
     for (std::size_t t = 0; t < tiles; ++t) tile_base[t + 1] = tile_base[t] + tile_total[t];
-    tbb::parallel_for(std::size_t{0}, tiles, [&](std::size_t t) {
+    over_tiles([&](std::size_t t) {
         for (std::size_t c = 0; c < chunks; ++c) frame.bin_offsets[t * chunks + c] += tile_base[t];
     });
     frame.bin_offsets[tiles * chunks] = tile_base[tiles];
