@@ -47,7 +47,8 @@ struct OcclusionBuffer::Impl {
     int width = 0, height = 0;
     detail::TileGrid grid;
     std::vector<OcclusionTile> tiles;
-    std::vector<float> coarse;  // see TileGrid
+    std::vector<float> coarse;     // see TileGrid
+    std::vector<float> block_max;  // see TileGrid
     std::unique_ptr<detail::OccluderBatch> batch = std::make_unique<detail::OccluderBatch>();
     std::size_t batch_size = 0;
     std::vector<glm::vec4> transformed;  // scratch for render_occluders with a matrix
@@ -127,10 +128,12 @@ void OcclusionBuffer::set_resolution(int width, int height) {
     m.tiles.resize(static_cast<std::size_t>(m.grid.tiles_x) * m.grid.tiles_y);
     // Padded: the rectangle test loads whole vectors of them.
     m.coarse.resize(2 * m.tiles.size() + detail::kCoarsePadding);
+    m.block_max.resize(detail::block_max_size(m.grid.tiles_x, m.grid.tiles_y));
     m.grid.width = width;
     m.grid.height = height;
     m.grid.tiles = m.tiles.data();
     m.grid.coarse = m.coarse.data();
+    m.grid.block_max = m.block_max.data();
     clear();
 }
 
@@ -154,6 +157,7 @@ void OcclusionBuffer::clear() {
     std::fill(std::begin(empty.near_depth), std::end(empty.near_depth), detail::kEmptyNearDepth);
     std::fill(impl_->tiles.begin(), impl_->tiles.end(), empty);
     std::fill(impl_->coarse.begin(), impl_->coarse.end(), detail::kClearFarDepth);
+    std::fill(impl_->block_max.begin(), impl_->block_max.end(), detail::kClearFarDepth);
     impl_->rasterized = 0;
 }
 

@@ -170,29 +170,61 @@ void RasterizeOccluders(const OccluderBatch& b, std::size_t count, TileGrid grid
 }
 
 // Per tile of columns tx0..tx1 and rows ty0..ty1, the smallest bound and the largest far layer
-// (TileGrid::coarse): one tile per vector loop.
+// (TileGrid::coarse) and the largest bound of each quarter (TileGrid::block_max): one tile per
+// vector loop. A half row's largest bound is its near layer when the mask covers all 8 pixels,
+// else its far layer (near <= far).
 void RefreshCoarseLevels(TileGrid grid, int tx0, int ty0, int tx1, int ty1) {
     const DF df;
     const DU du;
     const int lanes = static_cast<int>(hn::Lanes(df));
+    constexpr int kHalf = kOcclusionBlockSide;
+    const auto left_bits = hn::Set(du, (1u << kHalf) - 1u);
+    const auto right_bits = hn::Set(du, ((1u << kHalf) - 1u) << kHalf);
+    const auto none = hn::Set(df, -HUGE_VALF);
+    const std::size_t block_row = 2 * static_cast<std::size_t>(grid.tiles_x);
     for (int ty = ty0; ty <= ty1; ++ty)
         for (int tx = tx0; tx <= tx1; ++tx) {
             const std::size_t i = static_cast<std::size_t>(ty) * grid.tiles_x + tx;
             const OcclusionTile& t = grid.tiles[i];
-            auto hi = hn::Load(df, t.far_depth);
-            auto lo = hn::IfThenElse(hn::RebindMask(df, hn::Ne(hn::Load(du, t.mask), hn::Zero(du))),
-                                     hn::Load(df, t.near_depth), hi);
-            for (int r = lanes; r < kOcclusionTileHeight; r += lanes) {
+            auto hi = none, lo = hn::Set(df, HUGE_VALF);
+            // Block maxima: top left, top right, bottom left, bottom right.
+            auto tl = none, tr = none, bl = none, br = none;
+            for (int r = 0; r < kOcclusionTileHeight; r += lanes) {
                 const auto far_depth = hn::Load(df, t.far_depth + r);
-                const auto masked =
-                    hn::RebindMask(df, hn::Ne(hn::Load(du, t.mask + r), hn::Zero(du)));
+                const auto near_depth = hn::Load(df, t.near_depth + r);
+                const auto mask = hn::Load(du, t.mask + r);
+                const auto masked = hn::RebindMask(df, hn::Ne(mask, hn::Zero(du)));
                 hi = hn::Max(hi, far_depth);
-                lo = hn::Min(lo, hn::IfThenElse(masked, hn::Load(df, t.near_depth + r), far_depth));
+                lo = hn::Min(lo, hn::IfThenElse(masked, near_depth, far_depth));
+                const auto left =
+                    hn::IfThenElse(hn::RebindMask(df, hn::Eq(hn::And(mask, left_bits), left_bits)),
+                                   near_depth, far_depth);
+                const auto right = hn::IfThenElse(
+                    hn::RebindMask(df, hn::Eq(hn::And(mask, right_bits), right_bits)), near_depth,
+                    far_depth);
+                if (lanes >= kOcclusionTileHeight) {  // top rows in the low lanes
+                    const auto top = hn::FirstN(df, kHalf);
+                    tl = hn::IfThenElse(top, left, none);
+                    tr = hn::IfThenElse(top, right, none);
+                    bl = hn::IfThenElse(top, none, left);
+                    br = hn::IfThenElse(top, none, right);
+                } else if (r < kHalf) {
+                    tl = hn::Max(tl, left);
+                    tr = hn::Max(tr, right);
+                } else {
+                    bl = hn::Max(bl, left);
+                    br = hn::Max(br, right);
+                }
             }
             // As the scalar twin: far_depth[0] takes part (near <= far makes it moot).
             const float lo_lanes = hn::GetLane(hn::MinOfLanes(df, lo));
             grid.coarse[2 * i] = lo_lanes < t.far_depth[0] ? lo_lanes : t.far_depth[0];
             grid.coarse[2 * i + 1] = hn::GetLane(hn::MaxOfLanes(df, hi));
+            float* blocks = grid.block_max + 2 * static_cast<std::size_t>(ty) * block_row + 2 * tx;
+            blocks[0] = hn::GetLane(hn::MaxOfLanes(df, tl));
+            blocks[1] = hn::GetLane(hn::MaxOfLanes(df, tr));
+            blocks[block_row] = hn::GetLane(hn::MaxOfLanes(df, bl));
+            blocks[block_row + 1] = hn::GetLane(hn::MaxOfLanes(df, br));
         }
 }
 
@@ -233,17 +265,72 @@ HWY_INLINE bool TileOccluded(const TileGrid& grid, int tx, int ty, int x0, int y
 // bound in two neighbouring lanes (the array is padded for the whole vector loads); only tiles
 // whose largest bound is not in front but whose smallest is are read.
 #if HWY_TARGET != HWY_SCALAR
+// The 8x8 blocks entirely inside columns x0..x1, rows y0..y1 (x0, y0 >= 0): bx0..bx1,
+// by0..by1, empty when bx0 > bx1 or by0 > by1. bx0 and by0 are at most one past the last block.
+struct CoveredBlocks {
+    int bx0, by0, bx1, by1;
+    CoveredBlocks(int x0, int y0, int x1, int y1) {
+        constexpr unsigned kSide = kOcclusionBlockSide;
+        bx0 = static_cast<int>((static_cast<unsigned>(x0) + kSide - 1) / kSide);
+        by0 = static_cast<int>((static_cast<unsigned>(y0) + kSide - 1) / kSide);
+        bx1 = static_cast<int>((static_cast<unsigned>(x1) + 1) / kSide) - 1;
+        by1 = static_cast<int>((static_cast<unsigned>(y1) + 1) / kSide) - 1;
+    }
+};
+
+// True when a covered 8x8 block (above) has a bound not in front of `depth`: the rectangle is
+// visible there.
+HWY_INLINE bool BlockSeen(const TileGrid& grid, int x0, int y0, int x1, int y1, float depth) {
+    const DF df;
+    const int lanes = static_cast<int>(hn::Lanes(df));
+    const CoveredBlocks b(x0, y0, x1, y1);
+    const auto d = hn::Set(df, depth);
+    const std::size_t block_row = 2 * static_cast<std::size_t>(grid.tiles_x);
+    for (int by = b.by0; by <= b.by1; ++by) {
+        const float* row = grid.block_max + static_cast<std::size_t>(by) * block_row;
+        for (int bx = b.bx0; bx <= b.bx1; bx += lanes) {
+            // Lanes past bx1 read the next blocks or the padding; FirstN masks them out.
+            const auto in_rect = hn::FirstN(df, static_cast<std::size_t>(b.bx1 + 1 - bx));
+            if (!hn::AllFalse(df, hn::AndNot(hn::Lt(hn::LoadU(df, row + bx), d), in_rect)))
+                return true;
+        }
+    }
+    return false;
+}
+
+// The covered blocks of the first row of covered blocks whose bound is not in front of d (the
+// lanes of blocks bx0..); none when the rectangle covers no block.
+HWY_INLINE hn::Mask<DF> FirstBlocksSeen(const TileGrid& grid, int x0, int y0, int x1, int y1,
+                                        hn::Vec<DF> d) {
+    const DF df;
+    const CoveredBlocks b(x0, y0, x1, y1);
+    // Arithmetic, not branches; with no covered block the row read is at most the one past the
+    // last, which the padding of block_max covers.
+    const int covered = std::max(b.bx1 + 1 - b.bx0, 0) * static_cast<int>(b.by0 <= b.by1);
+    const float* row =
+        grid.block_max +
+        static_cast<std::size_t>(b.by0) * (2 * static_cast<std::size_t>(grid.tiles_x)) + b.bx0;
+    return hn::AndNot(hn::Lt(hn::LoadU(df, row), d),
+                      hn::FirstN(df, static_cast<std::size_t>(covered)));
+}
+
 // Tiles tx.. of row ty whose coarse levels are not in front (the lanes of not_in_front, a
 // tile's smallest bound in an even lane, its largest in the next): false when the rectangle is
 // seen there.
-HWY_INLINE bool SettleTiles(const TileGrid& grid, hn::Mask<DF> not_in_front, int tx, int ty, int x0,
-                            int y0, int x1, int y1, float depth) {
+HWY_NOINLINE bool SettleTiles(const TileGrid& grid, hn::Mask<DF> not_in_front, int tx, int ty,
+                              int x0, int y0, int x1, int y1, float depth, bool& blocks_read) {
     const DF df;
     const DU du;
     const auto largest = hn::RebindMask(df, hn::Ne(hn::And(hn::Iota(du, 0), hn::Set(du, 1u)),
                                                    hn::Zero(du)));  // odd lanes
     // A tile with no bound in front: the rectangle is seen there.
     if (!hn::AllFalse(df, hn::AndNot(largest, not_in_front))) return false;
+    // Before the first tile's rows, the blocks the rectangle covers: one of them not in front
+    // settles the test without reading tiles (32 times more memory than the block maxima).
+    if (!blocks_read) {
+        blocks_read = true;
+        if (BlockSeen(grid, x0, y0, x1, y1, depth)) return false;
+    }
     auto open = not_in_front;  // odd lanes only
     do {
         const auto lane = hn::FindFirstTrue(df, open);
@@ -263,13 +350,33 @@ HWY_INLINE bool RectOccludedImpl(const TileGrid& grid, int x0, int y0, int x1, i
     const int ty0 = y0 / kOcclusionTileHeight, ty1 = y1 / kOcclusionTileHeight;
     const std::size_t row_stride = 2 * static_cast<std::size_t>(grid.tiles_x);
     const float* levels = grid.coarse + static_cast<std::size_t>(ty0) * row_stride + 2 * tx0;
+    bool blocks_read = false;
     if (tx1 - tx0 < tiles_per_vector) {  // one vector per row of tiles (the usual case)
         // Lanes past tx1 read the next tiles or the padding; in_rect masks them out.
         const auto in_rect = hn::FirstN(df, 2 * static_cast<std::size_t>(tx1 + 1 - tx0));
-        for (int ty = ty0; ty <= ty1; ++ty, levels += row_stride) {
-            const auto not_in_front = hn::AndNot(hn::Lt(hn::LoadU(df, levels), d), in_rect);
+        // The first row with a tile whose largest bound is not in front (a short loop: the
+        // rectangles behind everything are decided here).
+        int ty = ty0;
+        auto not_in_front = hn::FirstN(df, 0);
+        for (; ty <= ty1; ++ty, levels += row_stride) {
+            not_in_front = hn::AndNot(hn::Lt(hn::LoadU(df, levels), d), in_rect);
+            if (!hn::AllFalse(df, not_in_front)) break;
+        }
+        if (ty > ty1) return true;
+        // A tile of that row with no bound in front, or a covered block of the first row of
+        // blocks with none, settles most visible rectangles. Both read, one branch: on random
+        // rectangles a branch on either alone is unpredictable, and a mispredicted one costs
+        // more than both loads.
+        const DU du;
+        const auto smallest = hn::RebindMask(
+            df, hn::Eq(hn::And(hn::Iota(du, 0), hn::Set(du, 1u)), hn::Zero(du)));  // even lanes
+        if (!hn::AllFalse(df, hn::Or(hn::And(not_in_front, smallest),
+                                     FirstBlocksSeen(grid, x0, y0, x1, y1, d))))
+            return false;
+        for (; ty <= ty1; ++ty, levels += row_stride) {
+            not_in_front = hn::AndNot(hn::Lt(hn::LoadU(df, levels), d), in_rect);
             if (!hn::AllFalse(df, not_in_front) &&
-                !SettleTiles(grid, not_in_front, tx0, ty, x0, y0, x1, y1, depth))
+                !SettleTiles(grid, not_in_front, tx0, ty, x0, y0, x1, y1, depth, blocks_read))
                 return false;
         }
         return true;
@@ -280,7 +387,7 @@ HWY_INLINE bool RectOccludedImpl(const TileGrid& grid, int x0, int y0, int x1, i
             const auto not_in_front =
                 hn::AndNot(hn::Lt(hn::LoadU(df, levels + 2 * (tx - tx0)), d), in_rect);
             if (!hn::AllFalse(df, not_in_front) &&
-                !SettleTiles(grid, not_in_front, tx, ty, x0, y0, x1, y1, depth))
+                !SettleTiles(grid, not_in_front, tx, ty, x0, y0, x1, y1, depth, blocks_read))
                 return false;
         }
     }
@@ -688,6 +795,21 @@ void refresh_coarse_levels_scalar(TileGrid grid, int tx0, int ty0, int tx1, int 
             }
             grid.coarse[2 * i] = lo;
             grid.coarse[2 * i + 1] = hi;
+            const std::size_t block_row = 2 * static_cast<std::size_t>(grid.tiles_x);
+            float* blocks = grid.block_max + 2 * static_cast<std::size_t>(ty) * block_row + 2 * tx;
+            for (int by = 0; by < 2; ++by)
+                for (int bx = 0; bx < 2; ++bx) {
+                    const std::uint32_t half = ((1u << kOcclusionBlockSide) - 1u)
+                                               << (bx * kOcclusionBlockSide);
+                    float largest = -HUGE_VALF;
+                    for (int r = by * kOcclusionBlockSide; r < (by + 1) * kOcclusionBlockSide;
+                         ++r) {
+                        const float bound =
+                            (t.mask[r] & half) == half ? t.near_depth[r] : t.far_depth[r];
+                        largest = bound > largest ? bound : largest;
+                    }
+                    blocks[by * block_row + bx] = largest;
+                }
         }
 }
 

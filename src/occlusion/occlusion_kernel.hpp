@@ -145,17 +145,30 @@ struct TileGrid {
     //  - the largest far_depth of its rows: a tile the rectangle covers entirely is settled by
     //    one comparison when it is in front.
     float* coarse = nullptr;
+    // The largest depth bound of each 8x8 pixel block (a tile's quarter), block rows of
+    // 2 * tiles_x blocks, refreshed with the coarse levels. Exact, not rounded: a rectangle
+    // covering a block whose largest bound is not in front of it is visible, the answer the
+    // pixels would give, read from 1/32 of the tiles' memory.
+    float* block_max = nullptr;
     int tiles_x = 0, tiles_y = 0;
     int width = 0, height = 0;  // pixels
 };
-// coarse holds this many floats past the last tile (one vector's worth).
+inline constexpr int kOcclusionBlockSide = kOcclusionTileWidth / 2;
+static_assert(kOcclusionTileWidth == kOcclusionTileHeight, "blocks are tile quarters");
+// coarse holds this many floats past its last tile (one vector's worth).
 inline constexpr std::size_t kCoarsePadding = 16;
+// block_max's size: one more row of blocks and one vector past it (the rectangle test reads the
+// first row of blocks it covers, or the one past them when it covers none).
+inline std::size_t block_max_size(int tiles_x, int tiles_y) {
+    return (2 * static_cast<std::size_t>(tiles_y) + 1) * (2 * static_cast<std::size_t>(tiles_x)) +
+           kCoarsePadding;
+}
 
 // Rasterizes triangles [0, count) in order.
 void rasterize_occluders(const OccluderBatch& triangles, std::size_t count, TileGrid grid);
 void rasterize_occluders_scalar(const OccluderBatch& triangles, std::size_t count, TileGrid grid);
 
-// Recomputes the coarse levels of tiles tx0..tx1, ty0..ty1 (inclusive).
+// Recomputes the coarse levels and block maxima of tiles tx0..tx1, ty0..ty1 (inclusive).
 void refresh_coarse_levels(TileGrid grid, int tx0, int ty0, int tx1, int ty1);
 void refresh_coarse_levels_scalar(TileGrid grid, int tx0, int ty0, int tx1, int ty1);
 
