@@ -10,17 +10,10 @@
 
 #include <zraster/scenes.hpp>
 #include "occlusion/occlusion_kernel.hpp"
+#include "support/simd_target_scope.hpp"
 
 namespace zraster::detail {
 namespace {
-
-class TargetScope {
-  public:
-    explicit TargetScope(std::int64_t target) { hwy::SetSupportedTargetsForTest(target); }
-    ~TargetScope() { hwy::SetSupportedTargetsForTest(0); }
-    TargetScope(const TargetScope&) = delete;
-    TargetScope& operator=(const TargetScope&) = delete;
-};
 
 // A grid with its storage. Tiles are random but keep the invariants of OcclusionTile: no full
 // mask, near <= far. Depths come from a few levels so that equal bounds and ties occur.
@@ -73,7 +66,7 @@ struct Grid {
 
 TEST(OcclusionCoarseLevels, BlockMaximaAreTheLargestPixelBoundOfEachBlock) {
     for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        const TargetScope scope(target);
+        const test::SimdTargetScope scope(target);
         SCOPED_TRACE(hwy::TargetName(target));
         Grid simd(7, 5, 3), scalar(7, 5, 3);
         refresh_coarse_levels(simd.grid, 0, 0, 6, 4);
@@ -106,7 +99,7 @@ TEST(OcclusionCoarseLevels, BlockMaximaAreTheLargestPixelBoundOfEachBlock) {
 // Every rectangle, small and large, at the grid's far edges too, against the pixels.
 TEST(OcclusionCoarseLevels, RectangleTestsGiveThePixelAnswer) {
     for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        const TargetScope scope(target);
+        const test::SimdTargetScope scope(target);
         SCOPED_TRACE(hwy::TargetName(target));
         for (std::uint64_t seed = 1; seed <= 3; ++seed) {
             Grid g(6, 4, seed);

@@ -11,18 +11,10 @@
 #include <cstring>
 
 #include "occlusion/occlusion_test_util.hpp"
+#include "support/simd_target_scope.hpp"
 
 namespace zraster {
 namespace {
-
-// Every instruction set this machine runs and the library was built for, not only the best.
-class TargetScope {
-  public:
-    explicit TargetScope(std::int64_t target) { hwy::SetSupportedTargetsForTest(target); }
-    ~TargetScope() { hwy::SetSupportedTargetsForTest(0); }
-    TargetScope(const TargetScope&) = delete;
-    TargetScope& operator=(const TargetScope&) = delete;
-};
 
 void buffers_and_answers_match() {
     std::printf("SIMD target: %s\n", OcclusionBuffer::simd_target());
@@ -78,7 +70,7 @@ void buffers_and_answers_match() {
 
 TEST(OcclusionSimd, BuffersAndAnswersMatchTheScalarPath) {
     for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        const TargetScope scope(target);
+        const test::SimdTargetScope scope(target);
         SCOPED_TRACE(hwy::TargetName(target));
         buffers_and_answers_match();
         if (HasFatalFailure()) return;
@@ -89,7 +81,7 @@ TEST(OcclusionSimd, SceneAnswersMatchTheScalarPath) {
     const test::OcclusionScene scene = test::city_scene(3, 400);
     const auto scalar = test::buffer_answers(scene, false);
     for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        const TargetScope scope(target);
+        const test::SimdTargetScope scope(target);
         EXPECT_EQ(test::buffer_answers(scene, true), scalar) << hwy::TargetName(target);
     }
 }
