@@ -156,8 +156,9 @@ struct RenderResult {
 // uvs not one per position, no materials).
 RenderResult render(const Scene& scene, const RenderOptions& options);
 
-// The same, keeping its working memory (vertex arrays, bins, image targets) from frame to frame:
-// what an application rendering many frames wants. Not thread-safe: one frame at a time.
+// The same, keeping its working memory (vertex arrays, bins, image targets) and its thread arena
+// from frame to frame: what an application rendering many frames wants. Not thread-safe: one
+// frame at a time.
 class Renderer {
   public:
     Renderer();

@@ -185,14 +185,16 @@ void reset(detail::Frame& frame) {
 void render_frame_in_arena(detail::Frame& frame, const Scene& scene, const RenderOptions& options,
                            RenderResult& result);
 
-void render_frame(detail::Frame& frame, const Scene& scene, const RenderOptions& options,
-                  RenderResult& result) {
-    // Everything runs in an arena of the requested thread count, the checks too (the index
-    // check is parallel): a 1-thread frame uses one thread throughout.
-    const int threads = options.threads > 0
-                            ? options.threads
-                            : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    tbb::task_arena arena(threads);
+int thread_count(const RenderOptions& options) {
+    return options.threads > 0
+               ? options.threads
+               : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+// Everything runs in an arena of the requested thread count, the checks too (the index check is
+// parallel): a 1-thread frame uses one thread throughout.
+void render_frame(tbb::task_arena& arena, detail::Frame& frame, const Scene& scene,
+                  const RenderOptions& options, RenderResult& result) {
     arena.execute([&] { render_frame_in_arena(frame, scene, options, result); });
 }
 
@@ -243,20 +245,31 @@ void render_frame_in_arena(detail::Frame& frame, const Scene& scene, const Rende
 struct Renderer::State {
     detail::Frame frame;
     RenderResult result;
+    // Kept from frame to frame while the thread count stays: a new arena per frame made the
+    // workers join it anew, and a small scene's front end paid for that (bunny, 2 threads:
+    // front end 0.59 -> 0.50 ms, frame -4%).
+    std::unique_ptr<tbb::task_arena> arena;
+    int arena_threads = 0;
 };
 
 Renderer::Renderer() : state_(std::make_unique<State>()) {}
 Renderer::~Renderer() = default;
 
 const RenderResult& Renderer::render(const Scene& scene, const RenderOptions& options) {
-    render_frame(state_->frame, scene, options, state_->result);
+    const int threads = thread_count(options);
+    if (!state_->arena || state_->arena_threads != threads) {
+        state_->arena = std::make_unique<tbb::task_arena>(threads);
+        state_->arena_threads = threads;
+    }
+    render_frame(*state_->arena, state_->frame, scene, options, state_->result);
     return state_->result;
 }
 
 RenderResult render(const Scene& scene, const RenderOptions& options) {
     detail::Frame frame;
     RenderResult result;
-    render_frame(frame, scene, options, result);
+    tbb::task_arena arena(thread_count(options));
+    render_frame(arena, frame, scene, options, result);
     return result;
 }
 

@@ -27,6 +27,28 @@ void expect_identical_for_thread_counts(const Scene& scene, RenderOptions o) {
     }
 }
 
+// One Renderer kept across frames whose thread count changes (it keeps its thread arena while the
+// count stays and makes a new one when it changes): the same images as one-off renders.
+TEST(Determinism, ReusedRendererAcrossThreadCounts) {
+    const Scene scene = make_procedural_scene("soup:20000:7");
+    RenderOptions o;
+    o.width = 300;
+    o.height = 200;
+    o.cull = CullMode::None;
+    o.id_targets = true;
+    o.threads = 1;
+    const RenderResult reference = render(scene, o);
+    Renderer renderer;
+    for (int threads : {2, 2, 1, 3, 2}) {
+        o.threads = threads;
+        const RenderResult& r = renderer.render(scene, o);
+        EXPECT_EQ(r.targets.color, reference.targets.color) << threads << " threads";
+        EXPECT_EQ(r.targets.depth, reference.targets.depth) << threads << " threads";
+        EXPECT_EQ(r.targets.primitive_id, reference.targets.primitive_id) << threads << " threads";
+        EXPECT_EQ(r.stats.fragments_passed, reference.stats.fragments_passed);
+    }
+}
+
 TEST(Determinism, DefaultSceneAnyThreadCount) {
     RenderOptions o;
     o.width = 400;
