@@ -111,6 +111,24 @@ struct Chunk {
     static constexpr std::uint32_t kNoBadIndex = 0xffffffffu;
 };
 
+// Which tiles of a kept Renderer's targets still hold the cleared values from the previous
+// frame, so that a tile empty again is not rewritten (1080p depth and color are 16 MB a frame,
+// most of them background around a small model). Valid only for the same clear values and
+// targets; invalid while a frame is being written and after frames that draw edges (lines
+// cross empty tiles).
+struct ClearedTiles {
+    struct Signature {
+        int width = 0, height = 0;
+        DepthFormat format = DepthFormat::D32F;
+        std::uint32_t clear_bits = 0, background = 0;
+        bool color = false, normal = false, ids = false;
+        bool operator==(const Signature&) const = default;
+    };
+    bool valid = false;
+    Signature signature;
+    std::vector<std::uint8_t> cleared;  // per tile, row-major: 1 when it holds the cleared values
+};
+
 struct Frame {
     const Scene* scene = nullptr;
     const RenderOptions* options = nullptr;
@@ -135,6 +153,7 @@ struct Frame {
     // SIMD Phong instance's), written by the front end so the back end reads them in order.
     std::vector<CornerAttributes> bin_corners;
     std::vector<PhongConstants> phong_constants;
+    ClearedTiles cleared_tiles;  // kept from frame to frame (see above)
 
     const ScreenVertex& screen_vertex(const Chunk& chunk, std::uint32_t index) const {
         return (index & kExtraVertex) ? chunk.extra_vertices[index & ~kExtraVertex]
@@ -145,7 +164,8 @@ struct Frame {
 // Stages, in order.
 void run_vertex_stage(Frame& frame, RenderStats& stats);
 void assemble_and_bin(Frame& frame, RenderStats& stats);
-void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& stats);
+void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& stats,
+                     ClearedTiles& cleared_tiles);
 void draw_edges(const Frame& frame, RenderTargets& targets);
 
 }  // namespace zraster::detail

@@ -231,7 +231,7 @@ void render_frame_in_arena(detail::Frame& frame, const Scene& scene, const Rende
     check_indices(frame);
     const auto setup_done = std::chrono::steady_clock::now();
     result.stats.setup_ms = std::chrono::duration<double, std::milli>(setup_done - start).count();
-    detail::rasterize_tiles(frame, result.targets, result.stats);
+    detail::rasterize_tiles(frame, result.targets, result.stats, frame.cleared_tiles);
     if (options.edges != RenderOptions::Edges::None) detail::draw_edges(frame, result.targets);
     result.stats.raster_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - setup_done)

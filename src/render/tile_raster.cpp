@@ -351,7 +351,8 @@ std::uint64_t finish_tile(const TileContext& c, const TileBuffers& tile, std::ui
 
 }  // namespace
 
-void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& stats) {
+void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& stats,
+                     ClearedTiles& cleared_tiles) {
     const RenderOptions& options = *frame.options;
     const int width = options.width, height = options.height;
     const std::size_t pixels = std::size_t(width) * std::size_t(height);
@@ -404,6 +405,21 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
     std::fill_n(background_row, kTileSize, background);
 
     const std::size_t tiles = std::size_t(frame.tiles_x) * std::size_t(frame.tiles_y);
+    // Empty tiles that already hold the cleared values (a kept Renderer's previous frame, same
+    // clear values and targets) are left as they are.
+    ClearedTiles::Signature signature;
+    signature.width = width;
+    signature.height = height;
+    signature.format = options.depth_format;
+    std::memcpy(&signature.clear_bits, &clear, sizeof(float));
+    signature.background = options.color_target ? background : 0;
+    signature.color = options.color_target;
+    signature.normal = options.normal_target;
+    signature.ids = options.id_targets;
+    const bool reuse_cleared = cleared_tiles.valid && cleared_tiles.signature == signature;
+    if (!reuse_cleared) cleared_tiles.cleared.assign(tiles, 0);
+    cleared_tiles.valid = false;  // until every tile is written
+    std::uint8_t* cleared = cleared_tiles.cleared.data();
     std::vector<std::uint64_t> passed_per_tile(tiles, 0), shaded_per_tile(tiles, 0),
         hidden_per_tile(tiles, 0);
     std::vector<std::uint8_t> deferred_per_tile(tiles, 0);  // some pixels shaded deferred
@@ -434,10 +450,12 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
         const std::size_t* bins = frame.bin_offsets.data() + tile_number * chunks;
         const bool empty = bins[0] == bins[chunks];
         if (empty) {
-            // Nothing drawn here: write the cleared targets directly.
-            clear_tile_targets(c, clear_row, background_row);
+            // Nothing drawn here: write the cleared targets directly, unless they hold them.
+            if (!cleared[tile_number]) clear_tile_targets(c, clear_row, background_row);
+            cleared[tile_number] = 1;
             return;
         }
+        cleared[tile_number] = 0;
         const auto row_bytes = std::size_t(c.x1 - c.x0) * sizeof(float);
         for (int y = 0; y < c.y1 - c.y0; ++y) {
             std::memcpy(tile.depth + tile_index(0, y), clear_row, row_bytes);
@@ -505,6 +523,9 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
         if (forward) shaded_per_tile[tile_number] = passed;
         deferred_per_tile[tile_number] = shade && !forward && (!forward_tile || untagged);
     });
+    // Edges are drawn over the targets after this, across empty tiles too.
+    cleared_tiles.valid = options.edges == RenderOptions::Edges::None;
+    cleared_tiles.signature = signature;
     for (std::size_t t = 0; t < tiles; ++t) {
         stats.deferred |= deferred_per_tile[t] != 0;
         stats.fragments_passed += passed_per_tile[t];
