@@ -135,5 +135,61 @@ TEST(HierarchicalZ, ImagesAreIdenticalWithItOff) {
     }
 }
 
+// A large wall drawn first, then many small triangles (one kernel job each) behind it, or in
+// front of it: the hidden ones are skipped by their test (their own writes refresh no bound, so
+// the wall's bounds must do), the visible ones are drawn, and the images are those without it.
+TEST(HierarchicalZ, SmallTrianglesBehindALargeOccluder) {
+    const auto scene_with = [](double small_z) {
+        Mesh mesh;
+        const auto add = [&](glm::dvec3 a, glm::dvec3 b, glm::dvec3 c) {
+            for (const glm::dvec3& p : {a, b, c}) {
+                mesh.positions.emplace_back(p);
+                mesh.indices.push_back(std::uint32_t(mesh.positions.size() - 1));
+            }
+        };
+        add({-2, -2, 0}, {2, -2, 0}, {2, 2, 0});  // the wall, z = 0, facing the camera
+        add({-2, -2, 0}, {2, 2, 0}, {-2, 2, 0});
+        SplitMix64 rng(3);
+        for (int t = 0; t < 4000; ++t) {
+            const glm::dvec3 c(rng.uniform(-0.9, 0.9), rng.uniform(-0.9, 0.9), small_z);
+            add(c, c + glm::dvec3(0.02, 0, 0), c + glm::dvec3(0, 0.02, 0));
+        }
+        update_bounds(mesh);
+        Scene scene;
+        scene.meshes.push_back(std::move(mesh));
+        scene.materials.emplace_back();
+        scene.instances.emplace_back();
+        return scene;
+    };
+    RenderOptions o;
+    o.width = 256;
+    o.height = 256;
+    o.color_target = false;
+    o.id_targets = true;
+    Camera camera;
+    camera.eye = {0, 0, 3};
+    camera.target = {0, 0, 0};
+    camera.near = 0.5;
+    camera.far = 10;
+    o.camera = camera;
+    for (const double small_z : {-0.5, 0.5}) {  // behind the wall, then in front of it
+        SCOPED_TRACE(small_z);
+        const Scene scene = scene_with(small_z);
+        const RenderResult on = render(scene, o);
+        o.hierarchical_z = false;
+        const RenderResult off = render(scene, o);
+        o.hierarchical_z = true;
+        EXPECT_TRUE(same_bits(on.targets.depth, off.targets.depth));
+        EXPECT_TRUE(same_bits(on.targets.primitive_id, off.targets.primitive_id));
+        EXPECT_EQ(on.stats.fragments_passed, off.stats.fragments_passed);
+        // Every small triangle is one job of a few pixels, all inside the wall.
+        if (small_z < 0)
+            EXPECT_GE(on.stats.blocks_hidden, 3900u)
+                << on.stats.blocks_hidden;  // all but a few at tile edges
+        else
+            EXPECT_EQ(on.stats.blocks_hidden, 0u);
+    }
+}
+
 }  // namespace
 }  // namespace zraster::test
