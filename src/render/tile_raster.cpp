@@ -157,8 +157,8 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
     // Edges in `inside` (bit k: edge k) are non-negative over the whole block: the kernel gets
     // zero for them (their values far inside a large triangle need not fit 32 bits).
     // `small`: the whole triangle is this one job (see below).
-    const auto run_block = [&](int x0, int y0, int x1, int y1, bool full, unsigned inside,
-                               bool small) -> std::uint64_t {
+    const auto run_block = [&]<bool small>(int x0, int y0, int x1, int y1, bool full,
+                                           unsigned inside) -> std::uint64_t {
         const int bx0 = (x0 - c.x0) / kBlockSize, bx1 = (x1 - c.x0) / kBlockSize;
         const int by0 = (y0 - c.y0) / kBlockSize, by1 = (y1 - c.y0) / kBlockSize;
         if (c.hiz != HierarchicalZ::Off && c.bounded_blocks > 0 &&
@@ -218,7 +218,7 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
     const auto [lo_y, hi_y] = std::minmax({setup.y[0], setup.y[1], setup.y[2]});
     if (hi_x - lo_x < 64 * kSubpixelScale && hi_y - lo_y < 64 * kSubpixelScale &&
         rx1 - rx0 < kBlockSize && ry1 - ry0 < 2 * kBlockSize)
-        return run_block(rx0, ry0, rx1, ry1, false, 0, true);
+        return run_block.template operator()<true>(rx0, ry0, rx1, ry1, false, 0);
 
     std::uint64_t passed = 0;
     const int first_by = c.y0 + (ry0 - c.y0) / kBlockSize * kBlockSize;
@@ -251,7 +251,7 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
                 passed += rasterize_scalar(c, chunk, ref, setup, id, corners, shade_constants, tile,
                                            x0, y0, x1 + 1, y1 + 1);
             else
-                passed += run_block(x0, y0, x1, y1, full, inside, false);
+                passed += run_block.template operator()<false>(x0, y0, x1, y1, full, inside);
         }
     }
     return passed;
