@@ -3,6 +3,7 @@
 // does skip work on scenes with overdraw.
 #include <zraster/mesh.hpp>
 #include <zraster/render.hpp>
+#include <zraster/scene.hpp>
 #include <zraster/scenes.hpp>
 
 #include <gtest/gtest.h>
@@ -87,11 +88,9 @@ Scene overdraw_scene() {
     }
     compute_angle_weighted_normals(mesh);
     update_bounds(mesh);
-    Scene scene;
-    scene.meshes.push_back(std::move(mesh));
-    scene.materials.emplace_back();
-    scene.instances.emplace_back();
-    return scene;
+    std::vector<Mesh> meshes;
+    meshes.push_back(std::move(mesh));
+    return scene_from_meshes(std::move(meshes));
 }
 
 // Many overlapping triangles in random order (heavy overdraw), drawn with each compare function
@@ -155,11 +154,9 @@ TEST(HierarchicalZ, SmallTrianglesBehindALargeOccluder) {
             add(c, c + glm::dvec3(0.02, 0, 0), c + glm::dvec3(0, 0.02, 0));
         }
         update_bounds(mesh);
-        Scene scene;
-        scene.meshes.push_back(std::move(mesh));
-        scene.materials.emplace_back();
-        scene.instances.emplace_back();
-        return scene;
+        std::vector<Mesh> meshes;
+        meshes.push_back(std::move(mesh));
+        return scene_from_meshes(std::move(meshes));
     };
     RenderOptions o;
     o.width = 256;
