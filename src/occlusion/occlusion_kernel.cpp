@@ -316,7 +316,7 @@ HWY_INLINE hn::Mask<DF> FirstBlocksSeen(const TileGrid& grid, int x0, int y0, in
 
 // Tiles tx.. of row ty whose coarse levels are not in front (the lanes of not_in_front, a
 // tile's smallest bound in an even lane, its largest in the next): false when the rectangle is
-// seen there.
+// seen there. `blocks_read`: whether the covered blocks were scanned (once per test).
 HWY_NOINLINE bool SettleTiles(const TileGrid& grid, hn::Mask<DF> not_in_front, int tx, int ty,
                               int x0, int y0, int x1, int y1, float depth, bool& blocks_read) {
     const DF df;

@@ -114,8 +114,8 @@ struct Chunk {
 // Which tiles of a kept Renderer's targets still hold the cleared values from the previous
 // frame, so that a tile empty again is not rewritten (1080p depth and color are 16 MB a frame,
 // most of them background around a small model). Valid only for the same clear values and
-// targets; invalid while a frame is being written and after frames that draw edges (lines
-// cross empty tiles).
+// targets; invalid while a frame is being written and after frames that draw edges (a line may
+// reach a pixel past the tiles its triangle was binned to).
 struct ClearedTiles {
     struct Signature {
         int width = 0, height = 0;
