@@ -166,7 +166,9 @@ class Renderer {
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    // The result stays valid until the next call.
+    // The result stays valid until the next call, which reuses its targets: tiles that stay
+    // empty keep the cleared values they hold and are not rewritten.
+    // (So the targets are const: read or copy them, do not change them.)
     const RenderResult& render(const Scene& scene, const RenderOptions& options);
 
   private:
