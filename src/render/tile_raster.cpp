@@ -161,9 +161,13 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
                                            unsigned inside) -> std::uint64_t {
         const int bx0 = (x0 - c.x0) / kBlockSize, bx1 = (x1 - c.x0) / kBlockSize;
         const int by0 = (y0 - c.y0) / kBlockSize, by1 = (y1 - c.y0) / kBlockSize;
+        const bool largest = c.hiz == HierarchicalZ::Largest;
+        // A bound nearer than the clear depth (1, or 0 reversed): something was drawn there.
+        const auto bounded = [largest](float bound) {
+            return largest ? bound < 1.0f : bound > 0.0f;
+        };
         if (c.hiz != HierarchicalZ::Off && c.bounded_blocks > 0 &&
             (!small || c.small_jobs.worth_testing())) {
-            const bool largest = c.hiz == HierarchicalZ::Largest;
             float farthest = tile.farthest[by0 * TileBuffers::kBlocksPerRow + bx0];
             for (int by = by0; by <= by1; ++by)
                 for (int bx = bx0; bx <= bx1; ++bx) {
@@ -171,7 +175,7 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
                     farthest = largest ? std::max(farthest, f) : std::min(farthest, f);
                 }
             // Blocks still at the far plane (1, or 0 reversed) hide nothing worth the test.
-            const bool drawn = largest ? farthest < 1.0f : farthest > 0.0f;
+            const bool drawn = bounded(farthest);
             c.small_jobs.tests += small && drawn;
             if (drawn && block_hidden(setup.depth, x0 - setup.min_x, y0 - setup.min_y,
                                       x1 - setup.min_x, y1 - setup.min_y, farthest, c.compare)) {
@@ -198,14 +202,13 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
         // A stale bound is still a bound (stored depths only move nearer): refresh it only
         // after real work, not after every 1-pixel triangle.
         if (c.hiz != HierarchicalZ::Off && !small && (full || passed >= kRefreshAfterFragments)) {
-            const bool largest = c.hiz == HierarchicalZ::Largest;
             for (int by = by0; by <= by1; ++by)
                 for (int bx = bx0; bx <= bx1; ++bx) {
                     float& bound = tile.farthest[by * TileBuffers::kBlocksPerRow + bx];
-                    const bool was_bounded = largest ? bound < 1.0f : bound > 0.0f;
+                    const bool was_bounded = bounded(bound);
                     bound = c.simd ? block_farthest_depth(tile, bx, by, largest)
                                    : block_farthest_depth_scalar(tile, bx, by, largest);
-                    c.bounded_blocks += !was_bounded && (largest ? bound < 1.0f : bound > 0.0f);
+                    c.bounded_blocks += !was_bounded && bounded(bound);
                 }
         }
         return static_cast<std::uint64_t>(passed);
