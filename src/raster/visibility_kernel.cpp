@@ -98,9 +98,9 @@ HWY_INLINE void interpolate_attributes(D d, const BlockJob& job, V b1, V b2, Til
     store(interpolate(a.world, 2), tile.wz);
 }
 
-// One row of up to 8 pixels per step.
-int VisibilityRows(const BlockJob& job, TileBuffers& tile) {
-    const hn::CappedTag<float, 8> df;
+// One row of up to Lanes(df) pixels per step.
+template <class DF>
+int VisibilityRows(DF df, const BlockJob& job, TileBuffers& tile) {
     const hn::RebindToSigned<decltype(df)> di;
     const hn::RebindToUnsigned<decltype(df)> du;
     const int lanes = static_cast<int>(hn::Lanes(df));
@@ -265,8 +265,9 @@ int VisibilityBlock(const BlockJob& job, TileBuffers& tile) {
 #if HWY_MAX_BYTES >= 64 && HWY_TARGET != HWY_SCALAR
     const hn::CappedTag<float, 16> d16;
     if (hn::Lanes(d16) == 16 && job.width <= 8) return VisibilityRowPairs(d16, job, tile);
+    if (hn::Lanes(d16) == 16) return VisibilityRows(d16, job, tile);
 #endif
-    return VisibilityRows(job, tile);
+    return VisibilityRows(hn::CappedTag<float, 8>(), job, tile);
 }
 
 float BlockFarthestDepth(const TileBuffers& tile, int block_x, int block_y, bool largest) {

@@ -61,7 +61,7 @@ void VisibilityBlockMatchesScalarOnRandomTriangles() {
     settings.cull = CullMode::None;
     const CompareFunc compares[] = {CompareFunc::Less, CompareFunc::LessEqual, CompareFunc::Greater,
                                     CompareFunc::Always};
-    int blocks = 0, passed = 0;
+    int blocks = 0, passed = 0, wide = 0;
     for (std::uint32_t tri = 0; tri < 3000; ++tri) {
         std::array<ScreenVertex, 3> v;
         for (auto& s : v) {
@@ -89,11 +89,16 @@ void VisibilityBlockMatchesScalarOnRandomTriangles() {
         corners.tag = (1 + tri % 4) | (tri % 5 == 0 ? kShadeFlip : 0u);
         job.corners = tri % 3 == 0 ? &corners : nullptr;
         job.shade_constants = tri % 6 == 0 ? &lighting : nullptr;
-        // Blocks of the triangle's box on the 8x8 grid; edges straight from the setup.
-        for (int by = setup.min_y / 8 * 8; by <= setup.max_y; by += 8)
-            for (int bx = setup.min_x / 8 * 8; bx <= setup.max_x; bx += 8) {
+        // Jobs over the triangle's box on a grid of 8x8 blocks, or (as the tile rasterizer
+        // gives small triangles) of strips 13 or 32 pixels wide and a whole tile tall; edges
+        // straight from the setup.
+        const int job_w = tri % 4 == 1 ? 32 : tri % 4 == 3 ? 13 : 8;
+        const int job_h = job_w == 8 ? 8 : 64;
+        for (int by = setup.min_y / job_h * job_h; by <= setup.max_y; by += job_h)
+            for (int bx = setup.min_x / job_w * job_w; bx <= setup.max_x; bx += job_w) {
                 const int x0 = std::max(bx, setup.min_x), y0 = std::max(by, setup.min_y);
-                const int x1 = std::min(bx + 7, setup.max_x), y1 = std::min(by + 7, setup.max_y);
+                const int x1 = std::min(bx + job_w - 1, setup.max_x);
+                const int y1 = std::min(by + job_h - 1, setup.max_y);
                 for (std::size_t k = 0; k < 3; ++k) {
                     job.e[k] = static_cast<std::int32_t>(setup.edge_a[k] * x0 +
                                                          setup.edge_b[k] * y0 + setup.edge_c[k]);
@@ -111,11 +116,13 @@ void VisibilityBlockMatchesScalarOnRandomTriangles() {
                 const int b = visibility_block_scalar(job, *scalar_tile);
                 ASSERT_EQ(a, b) << "triangle " << tri;
                 passed += a;
+                wide += a > 0 && job.width > 8 && job.height > 8;
                 if (job.corners) (job.shade_constants ? lit : interpolated) += a;
                 ++blocks;
             }
     }
     EXPECT_GT(blocks, 3000);
+    EXPECT_GT(wide, 500);  // jobs wider than a block and taller than one, with pixels kept
     EXPECT_GT(passed, 10000);
     EXPECT_TRUE(same_bits(simd_tile->depth, scalar_tile->depth, TileBuffers::kPixels));
     EXPECT_TRUE(same_bits(simd_tile->ref, scalar_tile->ref, TileBuffers::kPixels));
