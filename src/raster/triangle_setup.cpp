@@ -47,21 +47,24 @@ SetupResult setup_triangle(const std::array<ScreenVertex, 3>& v, const SetupSett
     const std::int64_t x0 = t.x[0], y0 = t.y[0];
     const std::int64_t area = (t.x[1] - x0) * (t.y[2] - y0) - (t.x[2] - x0) * (t.y[1] - y0);
 
-    // Edge k is opposite vertex k, oriented so the inside is positive.
-    for (int k = 0; k < 3; ++k) {
-        int ia = (k + 1) % 3, ib = (k + 2) % 3;
-        if (area < 0) std::swap(ia, ib);
-        const std::int64_t ax = t.x[static_cast<std::size_t>(ia)];
-        const std::int64_t ay = t.y[static_cast<std::size_t>(ia)];
-        const std::int64_t dx = t.x[static_cast<std::size_t>(ib)] - ax;
-        const std::int64_t dy = t.y[static_cast<std::size_t>(ib)] - ay;
+    // Edge k is opposite vertex k, from vertex `from` to vertex `to` (or the reverse when the
+    // area is negative), oriented so the inside is positive. Reversing an edge negates its
+    // function exactly, and any point of the line gives the same constant, so `from` serves as
+    // the origin either way. (Written out per edge: with indices computed in a loop the
+    // compiler indexed the vertices through memory.)
+    const std::int64_t sign = area < 0 ? -1 : 1;
+    const auto edge = [&](std::size_t k, std::size_t from, std::size_t to) {
+        const std::int64_t ax = t.x[from], ay = t.y[from];
+        const std::int64_t dx = sign * (t.x[to] - ax), dy = sign * (t.y[to] - ay);
         // Top edge: horizontal with the triangle below it; left edge: going up (y down).
         const bool top_left = dy < 0 || (dy == 0 && dx > 0);
-        const auto ks = static_cast<std::size_t>(k);
-        t.edge_a[ks] = -dy * kSubpixelScale;
-        t.edge_b[ks] = dx * kSubpixelScale;
-        t.edge_c[ks] = dx * (kHalfPixel - ay) - dy * (kHalfPixel - ax) - (top_left ? 0 : 1);
-    }
+        t.edge_a[k] = -dy * kSubpixelScale;
+        t.edge_b[k] = dx * kSubpixelScale;
+        t.edge_c[k] = dx * (kHalfPixel - ay) - dy * (kHalfPixel - ax) - (top_left ? 0 : 1);
+    };
+    edge(0, 1, 2);
+    edge(1, 2, 0);
+    edge(2, 0, 1);
     if (!planes) return SetupResult::Visible;
 
     // Plane equations in pixel units relative to the center of pixel (min_x, min_y), from the
