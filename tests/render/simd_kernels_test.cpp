@@ -79,6 +79,7 @@ void VisibilityBlockMatchesScalarOnRandomTriangles() {
         job.compare = compares[tri % 4];
         job.perspective = tri % 5 != 0;
         job.write_depth = tri % 7 != 0;
+        job.attributes = tri % 8 != 5;  // depth only: the kernel's branch-free rows
         job.ref = tri;
         CornerAttributes corners;
         for (int k = 0; k < 3; ++k) {
