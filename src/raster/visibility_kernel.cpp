@@ -98,6 +98,23 @@ HWY_INLINE void interpolate_attributes(D d, const BlockJob& job, V b1, V b2, Til
     store(interpolate(a.world, 2), tile.wz);
 }
 
+// Stores the lanes of v (float or uint32 lanes of df's count) where `pass` is true, for the
+// arrays the kernel only writes (ref, tag, barycentrics, attributes, color; the deferred pass
+// reads them after the tile): AVX-512 has masked stores, so no load is needed. Depth is read
+// back by the next triangle and is blended and stored whole instead: a load that overlaps a
+// masked store waits for it. Elsewhere masked stores are slow (AVX2 on AMD) or emulated.
+template <class DF, class M, class V, class T>
+HWY_INLINE void store_where(DF df, M pass, V v, T* to) {
+    const hn::Rebind<T, DF> dt;
+    const auto vt = hn::BitCast(dt, v);
+#if HWY_TARGET <= HWY_AVX3
+    hn::BlendedStore(vt, hn::RebindMask(dt, pass), dt, to);
+#else
+    hn::StoreU(hn::IfThenElse(hn::RebindMask(dt, pass), vt, hn::LoadU(dt, to)), dt, to);
+#endif
+    (void)df;
+}
+
 // One row of up to Lanes(df) pixels per step.
 template <class DF>
 int VisibilityRows(DF df, const BlockJob& job, TileBuffers& tile) {
@@ -138,9 +155,9 @@ int VisibilityRows(DF df, const BlockJob& job, TileBuffers& tile) {
             passed += static_cast<int>(hn::CountTrue(df, pass));
             if (job.write_depth) hn::StoreU(hn::IfThenElse(pass, z, stored), df, tile.depth + at);
             if (!job.attributes) continue;
-            const auto pass_u = hn::RebindMask(du, pass);
-            hn::StoreU(hn::IfThenElse(pass_u, ref, hn::LoadU(du, tile.ref + at)), du,
-                       tile.ref + at);
+            // Arrays only written here: see store_where.
+            const auto store = [&](auto v, auto* to) { store_where(df, pass, v, to + at); };
+            store(ref, tile.ref);
             if (!job.barycentrics) continue;
             hn::Vec<decltype(df)> b1, b2;
             if (job.perspective) {
@@ -151,12 +168,7 @@ int VisibilityRows(DF df, const BlockJob& job, TileBuffers& tile) {
                 b1 = plane_at(df, t.l1, dx, dy);
                 b2 = plane_at(df, t.l2, dx, dy);
             }
-            const auto store = [&](auto v, auto* to) {
-                hn::StoreU(hn::IfThenElse(pass, v, hn::LoadU(df, to + at)), df, to + at);
-            };
-            const auto tag = hn::Set(du, job.corners ? job.corners->tag : 0u);
-            hn::StoreU(hn::IfThenElse(pass_u, tag, hn::LoadU(du, tile.shade_tag + at)), du,
-                       tile.shade_tag + at);
+            store(hn::Set(du, job.corners ? job.corners->tag : 0u), tile.shade_tag);
             if (job.corners == nullptr) {
                 store(b1, tile.b1);
                 store(b2, tile.b2);
@@ -236,8 +248,17 @@ int VisibilityRowPairs(D16 d, const BlockJob& job, TileBuffers& tile) {
         passed += static_cast<int>(hn::CountTrue(d, pass));
         if (job.write_depth) store_pair(d, hn::IfThenElse(pass, z, stored), tile.depth);
         if (!job.attributes) continue;
-        const auto pass_u = hn::RebindMask(du, pass);
-        store_pair(du, hn::IfThenElse(pass_u, ref, load_pair(du, tile.ref)), tile.ref);
+        // Arrays only written here (see store_where), a row at a time.
+        const hn::Half<D16> dh;
+        const auto pass_v = hn::VecFromMask(d, pass);
+        const auto pass_lo = hn::MaskFromVec(hn::LowerHalf(dh, pass_v));
+        const auto pass_hi = hn::MaskFromVec(hn::UpperHalf(dh, pass_v));
+        const auto store = [&](auto v, auto* to) {
+            const auto as_float = hn::BitCast(d, v);
+            store_where(dh, pass_lo, hn::LowerHalf(dh, as_float), to + at);
+            store_where(dh, pass_hi, hn::UpperHalf(dh, as_float), to + at + kNext);
+        };
+        store(ref, tile.ref);
         if (!job.barycentrics) continue;
         hn::Vec<D16> b1, b2;
         if (job.perspective) {
@@ -248,11 +269,7 @@ int VisibilityRowPairs(D16 d, const BlockJob& job, TileBuffers& tile) {
             b1 = plane(t.l1);
             b2 = plane(t.l2);
         }
-        const auto store = [&](auto v, auto* to) {
-            store_pair(d, hn::IfThenElse(pass, v, load_pair(d, to)), to);
-        };
-        const auto tag = hn::Set(du, job.corners ? job.corners->tag : 0u);
-        store_pair(du, hn::IfThenElse(pass_u, tag, load_pair(du, tile.shade_tag)), tile.shade_tag);
+        store(hn::Set(du, job.corners ? job.corners->tag : 0u), tile.shade_tag);
         if (job.corners == nullptr) {
             store(b1, tile.b1);
             store(b2, tile.b2);
