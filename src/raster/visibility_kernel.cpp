@@ -116,12 +116,16 @@ HWY_INLINE void store_where(DF df, M pass, V v, T* to) {
 }
 
 // One row of up to Lanes(df) pixels per step.
-template <class DF>
-int VisibilityRows(DF df, const BlockJob& job, TileBuffers& tile) {
+template <int kCompare, class DF>
+int VisibilityRows(DF df, const BlockJob& job_in, TileBuffers& tile) {
+    // (See VisibilityRowPairs.)
+    const BlockJob& job = job_in;
+    const TriangleSetup& t = *job.setup;
+    const bool attributes = job.attributes, write_depth = job.write_depth;
+    const CompareFunc compare = kCompare < 0 ? job.compare : static_cast<CompareFunc>(kCompare);
     const hn::RebindToSigned<decltype(df)> di;
     const hn::RebindToUnsigned<decltype(df)> du;
     const int lanes = static_cast<int>(hn::Lanes(df));
-    const TriangleSetup& t = *job.setup;
     const auto zero_i = hn::Zero(di);
     const auto zero_f = hn::Zero(df);
     const auto one_f = hn::Set(df, 1.0f);
@@ -149,12 +153,12 @@ int VisibilityRows(DF df, const BlockJob& job, TileBuffers& tile) {
                 static_cast<std::size_t>((job.y0 + y) * TileBuffers::kStride + job.x0 + x);
             const auto stored = hn::LoadU(df, tile.depth + at);
             const auto pass =
-                hn::And(hn::RebindMask(df, covered), depth_passes(df, z, stored, job.compare));
+                hn::And(hn::RebindMask(df, covered), depth_passes(df, z, stored, compare));
             // Depth only: no branch (see VisibilityRowPairs).
-            if (job.attributes && hn::AllFalse(df, pass)) continue;
+            if (attributes && hn::AllFalse(df, pass)) continue;
             passed += static_cast<int>(hn::CountTrue(df, pass));
-            if (job.write_depth) hn::StoreU(hn::IfThenElse(pass, z, stored), df, tile.depth + at);
-            if (!job.attributes) continue;
+            if (write_depth) hn::StoreU(hn::IfThenElse(pass, z, stored), df, tile.depth + at);
+            if (!attributes) continue;
             // Arrays only written here: see store_where.
             const auto store = [&](auto v, auto* to) { store_where(df, pass, v, to + at); };
             store(ref, tile.ref);
@@ -184,11 +188,18 @@ int VisibilityRows(DF df, const BlockJob& job, TileBuffers& tile) {
 // this halves the steps. Lanes 0-7 are row y, lanes 8-15 row y + 1; the same operations per
 // lane as VisibilityRows.
 #if HWY_MAX_BYTES >= 64 && HWY_TARGET != HWY_SCALAR
-template <class D16>
-int VisibilityRowPairs(D16 d, const BlockJob& job, TileBuffers& tile) {
+template <int kCompare, class D16>
+int VisibilityRowPairs(D16 d, const BlockJob& job_in, TileBuffers& tile) {
+    // The flags the loop tests, in locals: the tile stores could alias the job, so read
+    // through it they were loaded again in every step. kCompare, when not -1, fixes the depth
+    // test at compile time (else its switch runs in every step). (A copy of the whole job and
+    // setup was slower: wide loads of what the caller just wrote in narrow stores stall.)
+    const BlockJob& job = job_in;
+    const TriangleSetup& t = *job.setup;
+    const bool attributes = job.attributes, write_depth = job.write_depth;
+    const CompareFunc compare = kCompare < 0 ? job.compare : static_cast<CompareFunc>(kCompare);
     const hn::RebindToSigned<D16> di;
     const hn::RebindToUnsigned<D16> du;
-    const TriangleSetup& t = *job.setup;
     const auto zero_i = hn::Zero(di);
     const auto zero_f = hn::Zero(d);
     const auto one_f = hn::Set(d, 1.0f);
@@ -238,16 +249,15 @@ int VisibilityRowPairs(D16 d, const BlockJob& job, TileBuffers& tile) {
             hn::StoreU(hn::UpperHalf(half, v), half, to + at + kNext);
         };
         const auto stored = load_pair(d, tile.depth);
-        const auto pass =
-            hn::And(hn::RebindMask(d, covered), depth_passes(d, z, stored, job.compare));
+        const auto pass = hn::And(hn::RebindMask(d, covered), depth_passes(d, z, stored, compare));
         // Depth only, the rows go through without a branch: whether a row pair has pixels
         // covered or passing is data the branch predictor cannot guess, and a mispredicted
         // branch costs more than the loads and stores it saves (city:20000 raster -25%). With
         // attributes, the work a failing pair skips is worth that branch, not the coverage one.
-        if (job.attributes && hn::AllFalse(d, pass)) continue;
+        if (attributes && hn::AllFalse(d, pass)) continue;
         passed += static_cast<int>(hn::CountTrue(d, pass));
-        if (job.write_depth) store_pair(d, hn::IfThenElse(pass, z, stored), tile.depth);
-        if (!job.attributes) continue;
+        if (write_depth) store_pair(d, hn::IfThenElse(pass, z, stored), tile.depth);
+        if (!attributes) continue;
         // Arrays only written here (see store_where), a row at a time.
         const hn::Half<D16> dh;
         const auto pass_v = hn::VecFromMask(d, pass);
@@ -281,13 +291,30 @@ int VisibilityRowPairs(D16 d, const BlockJob& job, TileBuffers& tile) {
 }
 #endif
 
-int VisibilityBlock(const BlockJob& job, TileBuffers& tile) {
+template <int kCompare>
+int VisibilityBlockWith(const BlockJob& job, TileBuffers& tile) {
 #if HWY_MAX_BYTES >= 64 && HWY_TARGET != HWY_SCALAR
     const hn::CappedTag<float, 16> d16;
-    if (hn::Lanes(d16) == 16 && job.width <= 8) return VisibilityRowPairs(d16, job, tile);
-    if (hn::Lanes(d16) == 16) return VisibilityRows(d16, job, tile);
+    if (hn::Lanes(d16) == 16 && job.width <= 8) return VisibilityRowPairs<kCompare>(d16, job, tile);
+    if (hn::Lanes(d16) == 16) return VisibilityRows<kCompare>(d16, job, tile);
 #endif
-    return VisibilityRows(hn::CappedTag<float, 8>(), job, tile);
+    return VisibilityRows<kCompare>(hn::CappedTag<float, 8>(), job, tile);
+}
+
+// The depth tests of ordinary and reversed depth get kernels of their own; the rest share one.
+int VisibilityBlock(const BlockJob& job, TileBuffers& tile) {
+    switch (job.compare) {
+        case CompareFunc::Less:
+            return VisibilityBlockWith<static_cast<int>(CompareFunc::Less)>(job, tile);
+        case CompareFunc::LessEqual:
+            return VisibilityBlockWith<static_cast<int>(CompareFunc::LessEqual)>(job, tile);
+        case CompareFunc::Greater:
+            return VisibilityBlockWith<static_cast<int>(CompareFunc::Greater)>(job, tile);
+        case CompareFunc::GreaterEqual:
+            return VisibilityBlockWith<static_cast<int>(CompareFunc::GreaterEqual)>(job, tile);
+        default:
+            return VisibilityBlockWith<-1>(job, tile);
+    }
 }
 
 float BlockFarthestDepth(const TileBuffers& tile, int block_x, int block_y, bool largest) {

@@ -59,8 +59,10 @@ void VisibilityBlockMatchesScalarOnRandomTriangles() {
     SetupSettings settings;
     settings.viewport = {64, 64};
     settings.cull = CullMode::None;
-    const CompareFunc compares[] = {CompareFunc::Less, CompareFunc::LessEqual, CompareFunc::Greater,
-                                    CompareFunc::Always};
+    // Each depth test the kernel is compiled for, and two of the shared (run-time) kernel's.
+    const CompareFunc compares[] = {CompareFunc::Less,    CompareFunc::LessEqual,
+                                    CompareFunc::Greater, CompareFunc::GreaterEqual,
+                                    CompareFunc::Equal,   CompareFunc::Always};
     int blocks = 0, passed = 0, wide = 0;
     for (std::uint32_t tri = 0; tri < 3000; ++tri) {
         std::array<ScreenVertex, 3> v;
@@ -76,7 +78,7 @@ void VisibilityBlockMatchesScalarOnRandomTriangles() {
         if (setup_triangle(v, settings, setup) != SetupResult::Visible) continue;
         BlockJob job;
         job.setup = &setup;
-        job.compare = compares[tri % 4];
+        job.compare = compares[(tri / 3) % 6];
         job.perspective = tri % 5 != 0;
         job.write_depth = tri % 7 != 0;
         job.attributes = tri % 8 != 5;  // depth only: the kernel's branch-free rows
