@@ -41,6 +41,13 @@ HWY_INLINE auto depth_passes(D d, V z, V stored, CompareFunc compare) {
     return hn::Eq(z, z);  // all lanes (z is never NaN)
 }
 
+// The job's depth test: kCompare when it is one (a kernel compiled for it, where the test's
+// switch folds away), else the job's, switched on in every step.
+template <int kCompare>
+HWY_INLINE CompareFunc depth_test(const BlockJob& job) {
+    return kCompare < 0 ? job.compare : static_cast<CompareFunc>(kCompare);
+}
+
 // Edge k at the block's first pixel of row y (inside the block, so it fits 32 bits; the
 // product alone need not).
 inline std::int32_t edge_at_row(const BlockJob& job, int k, int y) {
@@ -117,12 +124,11 @@ HWY_INLINE void store_where(DF df, M pass, V v, T* to) {
 
 // One row of up to Lanes(df) pixels per step.
 template <int kCompare, class DF>
-int VisibilityRows(DF df, const BlockJob& job_in, TileBuffers& tile) {
-    // (See VisibilityRowPairs.)
-    const BlockJob& job = job_in;
+int VisibilityRows(DF df, const BlockJob& job, TileBuffers& tile) {
     const TriangleSetup& t = *job.setup;
+    // (Flags in locals: see VisibilityRowPairs.)
     const bool attributes = job.attributes, write_depth = job.write_depth;
-    const CompareFunc compare = kCompare < 0 ? job.compare : static_cast<CompareFunc>(kCompare);
+    const CompareFunc compare = depth_test<kCompare>(job);
     const hn::RebindToSigned<decltype(df)> di;
     const hn::RebindToUnsigned<decltype(df)> du;
     const int lanes = static_cast<int>(hn::Lanes(df));
@@ -189,15 +195,13 @@ int VisibilityRows(DF df, const BlockJob& job_in, TileBuffers& tile) {
 // lane as VisibilityRows.
 #if HWY_MAX_BYTES >= 64 && HWY_TARGET != HWY_SCALAR
 template <int kCompare, class D16>
-int VisibilityRowPairs(D16 d, const BlockJob& job_in, TileBuffers& tile) {
-    // The flags the loop tests, in locals: the tile stores could alias the job, so read
-    // through it they were loaded again in every step. kCompare, when not -1, fixes the depth
-    // test at compile time (else its switch runs in every step). (A copy of the whole job and
-    // setup was slower: wide loads of what the caller just wrote in narrow stores stall.)
-    const BlockJob& job = job_in;
+int VisibilityRowPairs(D16 d, const BlockJob& job, TileBuffers& tile) {
     const TriangleSetup& t = *job.setup;
+    // The flags the loop tests, in locals: the tile stores could alias the job, so read
+    // through it they were loaded again in every step. (A copy of the whole job and setup was
+    // slower: wide loads of what the caller just wrote in narrow stores stall.)
     const bool attributes = job.attributes, write_depth = job.write_depth;
-    const CompareFunc compare = kCompare < 0 ? job.compare : static_cast<CompareFunc>(kCompare);
+    const CompareFunc compare = depth_test<kCompare>(job);
     const hn::RebindToSigned<D16> di;
     const hn::RebindToUnsigned<D16> du;
     const auto zero_i = hn::Zero(di);
