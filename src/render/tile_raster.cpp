@@ -219,8 +219,8 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
     // that fit 32 bits anywhere near them (|E| <= 2^22 * 65 * 2 < 2^30), so one whose pixels in
     // the tile span at most kSingleJobColumns columns is one kernel job, whatever its height and
     // wherever it lies on the block grid: no corner tests, one call instead of one per block.
-    // The kernel skips the rows and vectors it does not cover for less than a block's corner
-    // tests and call cost: measured 2026-11-24 against the job limit of 8 x 16 pixels, raster
+    // Running the kernel over the rows and vectors the triangle does not cover costs less than
+    // a block's corner tests and call: measured 2026-11-24 against the job limit of 8 x 16, raster
     // time -25% on city:20000 (tall slivers of 5-10 blocks) and -20% on soup:1000000; 32
     // columns beat 16 and 64 there.
     const auto [lo_x, hi_x] = std::minmax({setup.x[0], setup.x[1], setup.x[2]});
