@@ -171,10 +171,18 @@ void for_each_covered_pixel(const TriangleSetup& t, int x0, int y0, int x1, int 
     // two, so floor division is an arithmetic shift (C++20 defines >> on negatives so).
     static_assert(kSubpixelScale == 1 << kSubpixelBits);
     constexpr std::int64_t half = kSubpixelScale / 2;
-    const std::int64_t lo_x = std::min(std::min(v0.x, v1.x), v2.x);
-    const std::int64_t hi_x = std::max(std::max(v0.x, v1.x), v2.x);
-    const std::int64_t lo_y = std::min(std::min(v0.y, v1.y), v2.y);
-    const std::int64_t hi_y = std::max(std::max(v0.y, v1.y), v2.y);
+    // Selects on values: std::min of the vertices' fields (references) compiled to a branch per
+    // comparison, which the shapes of triangles make unpredictable.
+    const auto lo3 = [](std::int64_t a, std::int64_t b, std::int64_t c) {
+        const std::int64_t ab = a < b ? a : b;
+        return ab < c ? ab : c;
+    };
+    const auto hi3 = [](std::int64_t a, std::int64_t b, std::int64_t c) {
+        const std::int64_t ab = a < b ? b : a;
+        return ab < c ? c : ab;
+    };
+    const std::int64_t lo_x = lo3(x0, v1.x, v2.x), hi_x = hi3(x0, v1.x, v2.x);
+    const std::int64_t lo_y = lo3(y0, v1.y, v2.y), hi_y = hi3(y0, v1.y, v2.y);
     const std::int64_t px0 = std::max<std::int64_t>(0, -((half - lo_x) >> kSubpixelBits));  // ceil
     const std::int64_t py0 = std::max<std::int64_t>(0, -((half - lo_y) >> kSubpixelBits));
     const std::int64_t px1 =
