@@ -71,6 +71,10 @@ struct RenderOptions {
     // Hierarchical z: skip 8x8 blocks whose stored depths already hide the triangle there. The
     // test is conservative, so the image is the same with it off (for comparisons).
     bool hierarchical_z = true;
+    // Back-face culling of whole clusters of 64 triangles by bounds kept from frame to frame
+    // (a Renderer drawing an unchanged mesh again), before their vertices are read. Exact: the
+    // image and the counts are the same with it off (for comparisons), bar clusters_culled.
+    bool cluster_culling = true;
     InstanceOrder instance_order = InstanceOrder::Submission;
 
     CullMode cull = CullMode::Back;
@@ -136,8 +140,10 @@ struct RenderStats {
     std::uint64_t triangles_degenerate = 0;
     std::uint64_t triangles_no_coverage = 0;  // no pixel center in their bounding box
     std::uint64_t triangles_rasterized = 0;   // set up and binned (after clipping: pieces)
-    std::uint64_t blocks_hidden = 0;          // skipped by hierarchical z (triangle x block)
-    std::uint64_t fragments_passed = 0;       // passed the depth test
+    std::uint64_t clusters_culled = 0;   // RenderOptions::cluster_culling (their triangles count
+                                         // as back-face culled)
+    std::uint64_t blocks_hidden = 0;     // skipped by hierarchical z (triangle x block)
+    std::uint64_t fragments_passed = 0;  // passed the depth test
     std::uint64_t fragments_shaded = 0;
     bool deferred = false;         // some pixels were shaded deferred (resolved first, then shaded)
     const char* simd_target = "";  // instruction set of the SIMD kernels

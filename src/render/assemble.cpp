@@ -14,6 +14,7 @@
 #include "render/classify_kernel.hpp"
 #include "render/frame.hpp"
 #include "render/vertex_kernel.hpp"
+#include "render/word_hash.hpp"
 
 namespace zraster::detail {
 namespace {
@@ -150,26 +151,10 @@ void assemble_triangle(const Frame& frame, std::uint32_t instance, std::size_t t
     clip_and_emit(frame, ref, {clip(0), clip(1), clip(2)}, crossing, chunk);
 }
 
-void process_instance_range(const Frame& frame, std::uint32_t instance, std::size_t first,
-                            std::size_t end, Chunk& chunk) {
+// Triangles [first, end) of an instance with the batch classifier (no user clip planes).
+void classify_range(const Frame& frame, std::uint32_t instance, const ClassifyInput& in,
+                    std::size_t first, std::size_t end, ClassifyOutput& out, Chunk& chunk) {
     const FrameInstance& fi = frame.instances[instance];
-    const Mesh& mesh = *fi.mesh;
-    const FrameVertices& vertices = frame.vertices;
-    // The batch classifier gathers 32-bit words of ScreenVertex (6 per vertex).
-    const bool batch = frame.clip_settings.user_plane_count == 0 &&
-                       vertices.screen.size() < (std::size_t{1} << 31) / 6;
-    if (!batch) {
-        for (std::size_t t = first; t < end; ++t) assemble_triangle(frame, instance, t, chunk);
-        return;
-    }
-    ClassifyInput in;
-    in.indices = mesh.indices.data();
-    in.vertex_total = static_cast<std::uint32_t>(mesh.positions.size());
-    in.first_vertex = fi.first_vertex;
-    in.screen = vertices.screen.data();
-    in.settings = frame.setup_settings;
-    thread_local ClassifyOutput out;
-    out.degenerate = out.culled = out.no_coverage = 0;
     for (std::size_t t = first; t < end; t += ClassifyOutput::kMaxBatch) {
         const std::size_t n = std::min(ClassifyOutput::kMaxBatch, end - t);
         if (frame.options->simd)
@@ -198,6 +183,51 @@ void process_instance_range(const Frame& frame, std::uint32_t instance, std::siz
             count_in_bins(frame, ref, chunk);
         }
     }
+}
+
+void process_instance_range(const Frame& frame, std::uint32_t instance, std::size_t first,
+                            std::size_t end, Chunk& chunk) {
+    const FrameInstance& fi = frame.instances[instance];
+    const Mesh& mesh = *fi.mesh;
+    const FrameVertices& vertices = frame.vertices;
+    // The batch classifier gathers 32-bit words of ScreenVertex (6 per vertex).
+    const bool batch = frame.clip_settings.user_plane_count == 0 &&
+                       vertices.screen.size() < (std::size_t{1} << 31) / 6;
+    if (!batch) {
+        for (std::size_t t = first; t < end; ++t) assemble_triangle(frame, instance, t, chunk);
+        return;
+    }
+    ClassifyInput in;
+    in.indices = mesh.indices.data();
+    in.vertex_total = static_cast<std::uint32_t>(mesh.positions.size());
+    in.first_vertex = fi.first_vertex;
+    in.screen = vertices.screen.data();
+    in.settings = frame.setup_settings;
+    thread_local ClassifyOutput out;
+    out.degenerate = out.culled = out.no_coverage = 0;
+    // Whole clusters inside the range that their bounds prove culled are skipped (counted as
+    // culled, as the classifier would); the triangles between them are classified.
+    std::size_t run = first;
+    if (fi.clusters != nullptr) {
+        const std::size_t triangles = mesh.triangle_count();
+        for (std::size_t c = (first + kClusterTriangles - 1) / kClusterTriangles;; ++c) {
+            const std::size_t lo = c * kClusterTriangles;
+            const std::size_t hi = std::min(lo + kClusterTriangles, triangles);
+            if (hi > end || lo >= hi) break;
+            const ClusterBounds& bounds = fi.clusters->bounds[c];
+            if (!cluster_is_culled(fi.cluster_view, bounds)) continue;
+            // The bounds hold for the indices they were built from: check those are still here.
+            if (hash_words(in.indices + 3 * lo, 3 * (hi - lo), 3 * lo) != bounds.index_hash) {
+                fi.clusters->stale = true;
+                continue;
+            }
+            classify_range(frame, instance, in, run, lo, out, chunk);
+            run = hi;
+            chunk.stats.triangles_backface_culled += hi - lo;
+            ++chunk.stats.clusters_culled;
+        }
+    }
+    classify_range(frame, instance, in, run, end, out, chunk);
     chunk.stats.triangles_degenerate += out.degenerate;
     chunk.stats.triangles_backface_culled += out.culled;
     chunk.stats.triangles_no_coverage += out.no_coverage;
@@ -338,6 +368,7 @@ void assemble_and_bin(Frame& frame, RenderStats& stats) {
         stats.triangles_degenerate += c.stats.triangles_degenerate;
         stats.triangles_no_coverage += c.stats.triangles_no_coverage;
         stats.triangles_rasterized += c.stats.triangles_rasterized;
+        stats.clusters_culled += c.stats.clusters_culled;
     }
 }
 

@@ -9,6 +9,7 @@
 #include <zraster/render.hpp>
 
 #include "raster/visibility_kernel.hpp"
+#include "render/cluster_cache.hpp"
 #include "render/shade_kernel.hpp"
 
 #include <array>
@@ -35,6 +36,12 @@ struct FrameInstance {
     bool textured = false;
     int phong_kernel = -1;  // index into Frame::phong_constants when the SIMD shader applies
     float distance = 0.0f;  // eye to the world bounding box (InstanceOrder::FrontToBack)
+    // Cluster culling (cluster_cache.hpp): the vertex stage's hash of the mesh's positions, and
+    // the mesh's cluster bounds (null: none this frame) with this instance's view of them.
+    bool positions_hashed = false;
+    std::uint64_t positions_hash = 0;
+    const MeshClusters* clusters = nullptr;
+    ClusterView cluster_view;
 };
 
 // A vertex's world position and unit world normal ((0, 1, 0) for a zero normal): the one
@@ -154,6 +161,7 @@ struct Frame {
     std::vector<CornerAttributes> bin_corners;
     std::vector<PhongConstants> phong_constants;
     ClearedTiles cleared_tiles;  // kept from frame to frame (see above)
+    ClusterCache cluster_cache;  // kept from frame to frame
 
     const ScreenVertex& screen_vertex(const Chunk& chunk, std::uint32_t index) const {
         return (index & kExtraVertex) ? chunk.extra_vertices[index & ~kExtraVertex]
@@ -163,7 +171,9 @@ struct Frame {
 
 // Stages, in order.
 void run_vertex_stage(Frame& frame, RenderStats& stats);
+void attach_clusters(Frame& frame);  // cluster_cache.cpp
 void assemble_and_bin(Frame& frame, RenderStats& stats);
+void drop_stale_clusters(Frame& frame);
 void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& stats,
                      ClearedTiles& cleared_tiles);
 void draw_edges(const Frame& frame, RenderTargets& targets);

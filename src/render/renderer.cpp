@@ -227,7 +227,9 @@ void render_frame_in_arena(detail::Frame& frame, const Scene& scene, const Rende
     result.stats.camera = frame.camera;
 
     detail::run_vertex_stage(frame, result.stats);
+    detail::attach_clusters(frame);
     detail::assemble_and_bin(frame, result.stats);
+    detail::drop_stale_clusters(frame);
     check_indices(frame);
     const auto setup_done = std::chrono::steady_clock::now();
     result.stats.setup_ms = std::chrono::duration<double, std::milli>(setup_done - start).count();

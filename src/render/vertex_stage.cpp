@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 
 #include "memory/huge_pages.hpp"
@@ -13,8 +14,11 @@
 #include "render/occlusion_cull.hpp"
 #include "render/shade_kernel.hpp"
 #include "render/vertex_kernel.hpp"
+#include "render/word_hash.hpp"
 
 namespace zraster::detail {
+static_assert(sizeof(glm::vec3) == 12);  // positions are hashed as 3 words each
+
 namespace {
 
 // True when the 8 corners of the box are all outside one plane of the view frustum.
@@ -122,9 +126,12 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
     if (attributes && any_textured) memory::resize_on_huge_pages(v.uv, vertex_count);
     if (any_gouraud && attributes) memory::resize_on_huge_pages(v.gouraud, vertex_count);
 
-    for (const FrameInstance& fi : frame.instances) {
+    for (FrameInstance& fi : frame.instances) {
         const Mesh& mesh = *fi.mesh;
         const bool lit_per_vertex = fi.shading == ShadingMode::Gouraud && attributes;
+        // The positions' hash for the cluster cache, summed over the blocks in any order.
+        fi.positions_hashed = cluster_culling_applies(options, mesh);
+        std::atomic<std::uint32_t> hash_low{0}, hash_high{0};
         tbb::parallel_for(
             tbb::blocked_range<std::size_t>(0, mesh.positions.size(), 8192),
             [&](const tbb::blocked_range<std::size_t>& r) {
@@ -149,6 +156,12 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
                     transform_vertices(job);
                 else
                     transform_vertices_scalar(job);
+                if (fi.positions_hashed) {  // while the block is in cache
+                    const std::uint64_t h = (options.simd ? hash_words : hash_words_scalar)(
+                        job.positions, 3 * job.count, 3 * std::uint64_t{r.begin()});
+                    hash_low += static_cast<std::uint32_t>(h);
+                    hash_high += static_cast<std::uint32_t>(h >> 32);
+                }
                 if (!attributes || (!fi.textured && !lit_per_vertex)) return;
                 for (std::size_t k = r.begin(); k < r.end(); ++k) {
                     const std::size_t out = fi.first_vertex + k;
@@ -159,6 +172,7 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
                                               v.normal[out], frame.eye, frame.view_axis);
                 }
             });
+        fi.positions_hash = (std::uint64_t{hash_high} << 32) | hash_low;
     }
 }
 

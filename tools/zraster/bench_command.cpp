@@ -86,6 +86,9 @@ void add_bench_command(CLI::App& app, BenchArguments& a) {
     cmd->add_flag("--no-cull", a.no_cull, "Disable back-face culling");
     cmd->add_flag("--no-hierarchical-z", a.no_hierarchical_z,
                   "Disable hierarchical z (same image, to measure what it saves)");
+    cmd->add_flag("--no-cluster-culling", a.no_cluster_culling,
+                  "Disable back-face culling of triangle clusters (same image, to measure what "
+                  "it saves)");
     cmd->add_flag("--front-to-back", a.front_to_back, "Draw instances nearest first");
     cmd->add_option("--shading-strategy", a.strategy, "auto | forward | deferred (same image)")
         ->check(CLI::IsMember({"auto", "forward", "deferred"}))
@@ -144,6 +147,7 @@ int run_bench(const BenchArguments& a) {
     apply_bench_shading(scene, mode);
     RenderOptions options = bench_render_options(mode, size.x, size.y, a.threads, !a.no_cull);
     options.hierarchical_z = !a.no_hierarchical_z;
+    options.cluster_culling = !a.no_cluster_culling;
     if (a.front_to_back) options.instance_order = InstanceOrder::FrontToBack;
     options.strategy = shading_strategy(a.strategy);
     // The same fit_camera framing render() does for an unset camera, computed once: refitting
@@ -178,11 +182,13 @@ int run_bench(const BenchArguments& a) {
         if (a.verbose)
             fmt::print(
                 "{} {}: {:.3f} ms (setup {:.3f}, raster {:.3f}), {} rasterized, {} "
-                "fragments passed, {} shaded ({}), {} blocks hidden by hierarchical z\n",
+                "fragments passed, {} shaded ({}), {} blocks hidden by hierarchical z, {} "
+                "clusters culled\n",
                 f < a.warmup ? "warmup" : "frame", f < a.warmup ? f : f - a.warmup, ms,
                 result.stats.setup_ms, result.stats.raster_ms, result.stats.triangles_rasterized,
                 result.stats.fragments_passed, result.stats.fragments_shaded,
-                result.stats.deferred ? "deferred" : "forward", result.stats.blocks_hidden);
+                result.stats.deferred ? "deferred" : "forward", result.stats.blocks_hidden,
+                result.stats.clusters_culled);
     }
     if (!a.out.empty()) write_frame(a.out, last->targets, mode);
 

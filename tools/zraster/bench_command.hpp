@@ -19,6 +19,7 @@ struct BenchArguments {
     int threads = 0;
     bool no_cull = false;
     bool no_hierarchical_z = false;
+    bool no_cluster_culling = false;
     bool front_to_back = false;
     std::string strategy = "auto";
     bool verbose = false;

@@ -1,0 +1,202 @@
+// See cluster_cull.hpp for the bound and why it is exact. The constants below are safety
+// margins, each far above the rounding it covers.
+#include "render/cluster_cull.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "render/word_hash.hpp"
+
+namespace zraster::detail {
+namespace {
+
+// |computed n - true n| <= kCrossError * |e1| |e2| for n = e1 x e2 from float positions in
+// double (a few roundings of 2^-53 each).
+constexpr double kCrossError = 0x1p-48;
+// Triangles with |n| below this fraction of |e1| |e2| are too thin for the normal's direction
+// to be trusted: their cluster is never culled.
+constexpr double kThinTriangle = 0x1p-30;
+// Clusters whose normal cone is wider than acos(kMinCos) are never culled whole: not worth a
+// test per frame.
+constexpr double kMinCos = 0.05;
+// Float clip coordinates computed by the vertex stage, and double ones computed here, are within
+// kClipError * (|row| . (|p|, 1)) of the exact value (three products and three sums in float:
+// at most 3 * 2^-24 of that sum; no FMA contraction, -ffp-contract=off).
+constexpr double kClipError = 0x1p-21;
+// Relative slack for quantities evaluated in double here (radii, cone angles, the margin).
+constexpr double kSlack = 1e-12;
+constexpr double kMarginSlack = 1e-9;
+
+void bound_cluster(const Mesh& mesh, std::size_t first, std::size_t end, ClusterBounds& out) {
+    out = ClusterBounds{};
+    const std::uint32_t* indices = mesh.indices.data();
+    out.index_hash = hash_words(indices + 3 * first, 3 * (end - first), 3 * first);
+    const std::size_t vertex_total = mesh.positions.size();
+    std::array<glm::dvec3, kClusterTriangles> unit_normal;
+    std::array<double, kClusterTriangles> angle_error;
+    glm::dvec3 lo(HUGE_VAL), hi(-HUGE_VAL), normal_sum(0.0);
+    double min_area = HUGE_VAL, max_edge = 0.0;
+    for (std::size_t t = first; t < end; ++t) {
+        std::array<glm::dvec3, 3> p;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const std::uint32_t i = indices[3 * t + k];
+            if (i >= vertex_total) return;  // the front end reports it; never culled
+            p[k] = glm::dvec3(mesh.positions[i]);
+            if (!std::isfinite(p[k].x) || !std::isfinite(p[k].y) || !std::isfinite(p[k].z)) return;
+            lo = glm::min(lo, p[k]);
+            hi = glm::max(hi, p[k]);
+        }
+        const glm::dvec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
+        const glm::dvec3 n = glm::cross(e1, e2);
+        const double length = glm::length(n);
+        const double scale = glm::length(e1) * glm::length(e2);
+        if (!(length > kThinTriangle * scale)) return;  // degenerate or nearly so
+        unit_normal[t - first] = n / length;
+        normal_sum += n / length;
+        // |n / |n| - true unit normal| <= 2 |error| / (|n| - |error|).
+        angle_error[t - first] = 4.0 * kCrossError * scale / length;
+        min_area = std::min(min_area, length - kCrossError * scale);
+        max_edge = std::max({max_edge, glm::length(e1), glm::length(e2), glm::length(p[2] - p[1])});
+    }
+    const double sum_length = glm::length(normal_sum);
+    if (!(sum_length > 0.0)) return;
+    const glm::dvec3 axis = normal_sum / sum_length;
+    double cos_angle = 1.0;
+    for (std::size_t t = 0; t < end - first; ++t)
+        cos_angle = std::min(cos_angle, glm::dot(unit_normal[t], axis) - angle_error[t]);
+    cos_angle -= kSlack;
+    if (!(cos_angle > kMinCos) || !(min_area > 0.0)) return;
+    const glm::dvec3 center = 0.5 * (lo + hi);
+    double radius = 0.0;
+    for (std::size_t t = first; t < end; ++t)
+        for (std::size_t k = 0; k < 3; ++k)
+            radius = std::max(radius,
+                              glm::length(glm::dvec3(mesh.positions[indices[3 * t + k]]) - center));
+    out.center = center;
+    out.radius = radius * (1.0 + kSlack);
+    // The box: the cone's axis and two unit vectors perpendicular to it.
+    const glm::dvec3 helper = std::abs(axis.x) < 0.6 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    const glm::dvec3 u = glm::normalize(glm::cross(axis, helper));
+    const std::array<glm::dvec3, 3> frame{axis, u, glm::cross(axis, u)};
+    glm::dvec3 t_lo(HUGE_VAL), t_hi(-HUGE_VAL);
+    for (std::size_t t = first; t < end; ++t)
+        for (std::size_t k = 0; k < 3; ++k) {
+            const glm::dvec3 p(mesh.positions[indices[3 * t + k]]);
+            const glm::dvec3 along(glm::dot(frame[0], p), glm::dot(frame[1], p),
+                                   glm::dot(frame[2], p));
+            t_lo = glm::min(t_lo, along);
+            t_hi = glm::max(t_hi, along);
+        }
+    const glm::dvec3 mid = 0.5 * (t_lo + t_hi);
+    out.box_center = mid.x * frame[0] + mid.y * frame[1] + mid.z * frame[2];
+    for (std::size_t k = 0; k < 3; ++k) out.box_axis[k] = frame[k];
+    // Rounding of the frame and of the coordinates: a relative slack of the whole extent.
+    const double slack = kSlack * (radius + glm::length(center));
+    out.box_half = 0.5 * (t_hi - t_lo) * (1.0 + kSlack) + slack;
+    out.max_abs = glm::max(glm::abs(lo), glm::abs(hi));
+    out.axis = axis;
+    out.cos_angle = cos_angle;
+    out.sin_angle = std::min(1.0, std::sqrt(std::max(0.0, 1.0 - cos_angle * cos_angle)) + kSlack);
+    out.max_edge = max_edge * (1.0 + kSlack);
+    out.min_double_area = min_area * (1.0 - kSlack);
+}
+
+}  // namespace
+
+std::vector<ClusterBounds> build_cluster_bounds(const Mesh& mesh) {
+    std::vector<ClusterBounds> clusters(cluster_count(mesh));
+    const std::size_t triangles = mesh.triangle_count();
+    tbb::parallel_for(std::size_t{0}, clusters.size(), [&](std::size_t c) {
+        const std::size_t first = c * kClusterTriangles;
+        bound_cluster(mesh, first, std::min(triangles, first + kClusterTriangles), clusters[c]);
+    });
+    return clusters;
+}
+
+ClusterView make_cluster_view(const glm::mat4& mvp, const ClipSettings& clip,
+                              const SetupSettings& setup) {
+    ClusterView v;
+    if (setup.cull == CullMode::None) return v;
+    for (int r = 0; r < 4; ++r) {
+        v.row[r] = glm::dvec4(mvp[0][r], mvp[1][r], mvp[2][r], mvp[3][r]);
+        v.abs_row[r] = glm::abs(v.row[r]);
+        v.row_length[r] = glm::length(glm::dvec3(v.row[r]));
+    }
+    const glm::dvec3 a1(v.row[0]), a2(v.row[1]), a3(v.row[3]);  // x, y, w
+    const glm::dvec3 c1 = glm::cross(a2, a3), c2 = glm::cross(a3, a1), c3 = glm::cross(a1, a2);
+    v.det = glm::dot(a1, c1);
+    v.abs_det = std::abs(v.det);
+    v.adj_b = v.row[0].w * c1 + v.row[1].w * c2 + v.row[3].w * c3;
+    // n . G > 0 means a negative window area: counter-clockwise with y up.
+    const bool positive_is_front = setup.front_face == FrontFace::CounterClockwise;
+    v.culled_sign = (setup.cull == CullMode::Back) != positive_is_front ? 1.0 : -1.0;
+    v.width = setup.viewport.width;
+    v.half_width = 0.5 * setup.viewport.width;
+    v.half_height = 0.5 * setup.viewport.height;
+    v.area_scale = v.half_width * v.half_height;
+    v.guard_x = clip.guard_x;
+    v.guard_y = clip.guard_y;
+    v.zero_to_one = clip.depth_range == ClipDepthRange::ZeroToOne;
+    v.enabled = std::isfinite(v.det) && std::isfinite(v.adj_b.x) && std::isfinite(v.adj_b.y) &&
+                std::isfinite(v.adj_b.z);
+    return v;
+}
+
+bool cluster_is_culled(const ClusterView& v, const ClusterBounds& c) {
+    if (!v.enabled || !c.cullable()) return false;
+    // The cone and sphere: s (n . G(p)) >= margin for every triangle, s the culled sign.
+    const glm::dvec3 g = v.det * c.center + v.adj_b;
+    const double along = v.culled_sign * glm::dot(c.axis, g);
+    if (!(along > 0.0)) return false;  // facing the culled way at most partly
+    const double across = std::sqrt(std::max(0.0, glm::dot(g, g) - along * along));
+    const double spread = v.abs_det * c.radius;
+    const double margin = c.cos_angle * along - c.sin_angle * across - spread -
+                          kMarginSlack * (along + across + spread);
+    if (!(margin > 0.0)) return false;
+
+    // The cluster in clip space: value at the box's center, spread over the box, rounding.
+    const glm::dvec4 center(c.box_center, 1.0);
+    const glm::dvec4 extent(c.max_abs, 1.0);  // bounds |p|
+    const auto value = [&](int r) { return glm::dot(v.row[r], center); };
+    const auto reach = [&](int r) {
+        const glm::dvec3 row(v.row[r]);
+        const double spread = std::abs(glm::dot(row, c.box_axis[0])) * c.box_half.x +
+                              std::abs(glm::dot(row, c.box_axis[1])) * c.box_half.y +
+                              std::abs(glm::dot(row, c.box_axis[2])) * c.box_half.z;
+        return spread + kClipError * glm::dot(v.abs_row[r], extent);
+    };
+    const auto error = [&](int r) { return kClipError * glm::dot(v.abs_row[r], extent); };
+    const double w = value(3), w_reach = reach(3);
+    const double w_lo = w - w_reach, w_hi = w + w_reach;
+    if (!(w_lo > 0.0) || !(w_hi < 1e30)) return false;
+    // Inside the guard band with room for the float products (|x| <= guard * w in float).
+    const double x_hi = std::abs(value(0)) + reach(0), y_hi = std::abs(value(1)) + reach(1);
+    constexpr double kShrink = 1.0 - 0x1p-20;
+    if (!(x_hi <= v.guard_x * w_lo * kShrink) || !(y_hi <= v.guard_y * w_lo * kShrink))
+        return false;
+    const double z = value(2), z_reach = reach(2);
+    const double near_distance = v.zero_to_one ? z - z_reach : z - z_reach + w_lo;
+    if (!(near_distance > 0.0) || !(w_lo - (z + z_reach) > 0.0)) return false;
+
+    // delta: the largest error of a snapped coordinate, in pixels.
+    const double inv_w = 1.0 / w_lo;
+    const double ndc_x = x_hi * inv_w, ndc_y = y_hi * inv_w;  // bounds of |x / w|, |y / w|
+    const double w_error = error(3);
+    const double double_error = 0x1p-48 * (ndc_x + ndc_y + 2.0) * (v.half_width + v.half_height);
+    const double delta_x = v.half_width * (error(0) + ndc_x * w_error) * inv_w;
+    const double delta_y = v.half_height * (error(1) + ndc_y * w_error) * inv_w;
+    const double delta = std::max(delta_x, delta_y) + 1.0 / 512.0 + double_error;
+    // Window extents of a triangle: its edges through the projection's derivative.
+    const double extent_x =
+        v.half_width * c.max_edge * (ndc_x * v.row_length[3] + v.row_length[0]) * inv_w;
+    const double extent_y =
+        v.half_height * c.max_edge * (ndc_y * v.row_length[3] + v.row_length[1]) * inv_w;
+    const double area = v.area_scale * c.min_double_area * margin / (w_hi * w_hi * w_hi);
+    const double area_error = 4.0 * delta * (extent_x + extent_y) + 8.0 * delta * delta;
+    return area > 2.0 * area_error;
+}
+
+}  // namespace zraster::detail
