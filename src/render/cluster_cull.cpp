@@ -69,14 +69,6 @@ void bound_cluster(const Mesh& mesh, std::size_t first, std::size_t end, Cluster
         cos_angle = std::min(cos_angle, glm::dot(unit_normal[t], axis) - angle_error[t]);
     cos_angle -= kSlack;
     if (!(cos_angle > kMinCos) || !(min_area > 0.0)) return;
-    const glm::dvec3 center = 0.5 * (lo + hi);
-    double radius = 0.0;
-    for (std::size_t t = first; t < end; ++t)
-        for (std::size_t k = 0; k < 3; ++k)
-            radius = std::max(radius,
-                              glm::length(glm::dvec3(mesh.positions[indices[3 * t + k]]) - center));
-    out.center = center;
-    out.radius = radius * (1.0 + kSlack);
     // The box: the cone's axis and two unit vectors perpendicular to it.
     const glm::dvec3 helper = std::abs(axis.x) < 0.6 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
     const glm::dvec3 u = glm::normalize(glm::cross(axis, helper));
@@ -94,10 +86,9 @@ void bound_cluster(const Mesh& mesh, std::size_t first, std::size_t end, Cluster
     out.box_center = mid.x * frame[0] + mid.y * frame[1] + mid.z * frame[2];
     for (std::size_t k = 0; k < 3; ++k) out.box_axis[k] = frame[k];
     // Rounding of the frame and of the coordinates: a relative slack of the whole extent.
-    const double slack = kSlack * (radius + glm::length(center));
+    const double slack = kSlack * glm::length(glm::max(glm::abs(lo), glm::abs(hi)));
     out.box_half = 0.5 * (t_hi - t_lo) * (1.0 + kSlack) + slack;
     out.max_abs = glm::max(glm::abs(lo), glm::abs(hi));
-    out.axis = axis;
     out.cos_angle = cos_angle;
     out.sin_angle = std::min(1.0, std::sqrt(std::max(0.0, 1.0 - cos_angle * cos_angle)) + kSlack);
     out.max_edge = max_edge * (1.0 + kSlack);
@@ -147,53 +138,61 @@ ClusterView make_cluster_view(const glm::mat4& mvp, const ClipSettings& clip,
 
 bool cluster_is_culled(const ClusterView& v, const ClusterBounds& c) {
     if (!v.enabled || !c.cullable()) return false;
-    // The cone and sphere: s (n . G(p)) >= margin for every triangle, s the culled sign.
-    const glm::dvec3 g = v.det * c.center + v.adj_b;
-    const double along = v.culled_sign * glm::dot(c.axis, g);
+    // The cone and box: s (n . G(p)) >= margin for every triangle, s the culled sign. At the
+    // box's center g = G(center); over the box, n . (p - center) is at most the box's half
+    // thickness along the axis plus sin_angle times its other half extents.
+    const glm::dvec3 g = v.det * c.box_center + v.adj_b;
+    const double along = v.culled_sign * glm::dot(c.box_axis[0], g);
     if (!(along > 0.0)) return false;  // facing the culled way at most partly
     const double across = std::sqrt(std::max(0.0, glm::dot(g, g) - along * along));
-    const double spread = v.abs_det * c.radius;
+    const double spread = v.abs_det * (c.box_half.x + c.sin_angle * (c.box_half.y + c.box_half.z));
     const double margin = c.cos_angle * along - c.sin_angle * across - spread -
                           kMarginSlack * (along + across + spread);
     if (!(margin > 0.0)) return false;
 
-    // The cluster in clip space: value at the box's center, spread over the box, rounding.
+    // The cluster in clip space, per row r of the mvp: the value at the box's center, its
+    // spread over the box, and the rounding of the float transform. And the most a row changes
+    // along a triangle's edge d: each box axis' component of d is at most the box's extent
+    // along it and at most the longest edge.
     const glm::dvec4 center(c.box_center, 1.0);
     const glm::dvec4 extent(c.max_abs, 1.0);  // bounds |p|
-    const auto value = [&](int r) { return glm::dot(v.row[r], center); };
-    const auto reach = [&](int r) {
-        const glm::dvec3 row(v.row[r]);
-        const double spread = std::abs(glm::dot(row, c.box_axis[0])) * c.box_half.x +
-                              std::abs(glm::dot(row, c.box_axis[1])) * c.box_half.y +
-                              std::abs(glm::dot(row, c.box_axis[2])) * c.box_half.z;
-        return spread + kClipError * glm::dot(v.abs_row[r], extent);
+    const glm::dvec3 edge_along(std::min(2.0 * c.box_half.x, c.max_edge),
+                                std::min(2.0 * c.box_half.y, c.max_edge),
+                                std::min(2.0 * c.box_half.z, c.max_edge));
+    struct RowBounds {
+        double value, reach, error, edge_change;
     };
-    const auto error = [&](int r) { return kClipError * glm::dot(v.abs_row[r], extent); };
-    const double w = value(3), w_reach = reach(3);
-    const double w_lo = w - w_reach, w_hi = w + w_reach;
+    const auto row_bounds = [&](int r) {
+        const glm::dvec3 row(v.row[r]);
+        const glm::dvec3 on_axes(std::abs(glm::dot(row, c.box_axis[0])),
+                                 std::abs(glm::dot(row, c.box_axis[1])),
+                                 std::abs(glm::dot(row, c.box_axis[2])));
+        const double error = kClipError * glm::dot(v.abs_row[r], extent);
+        return RowBounds{glm::dot(v.row[r], center), glm::dot(on_axes, c.box_half) + error, error,
+                         glm::dot(on_axes, edge_along) + kSlack * v.row_length[r] * c.max_edge};
+    };
+    const RowBounds bx = row_bounds(0), by = row_bounds(1), bz = row_bounds(2), bw = row_bounds(3);
+    const double w_lo = bw.value - bw.reach, w_hi = bw.value + bw.reach;
     if (!(w_lo > 0.0) || !(w_hi < 1e30)) return false;
     // Inside the guard band with room for the float products (|x| <= guard * w in float).
-    const double x_hi = std::abs(value(0)) + reach(0), y_hi = std::abs(value(1)) + reach(1);
+    const double x_hi = std::abs(bx.value) + bx.reach, y_hi = std::abs(by.value) + by.reach;
     constexpr double kShrink = 1.0 - 0x1p-20;
     if (!(x_hi <= v.guard_x * w_lo * kShrink) || !(y_hi <= v.guard_y * w_lo * kShrink))
         return false;
-    const double z = value(2), z_reach = reach(2);
-    const double near_distance = v.zero_to_one ? z - z_reach : z - z_reach + w_lo;
-    if (!(near_distance > 0.0) || !(w_lo - (z + z_reach) > 0.0)) return false;
+    const double near_distance = v.zero_to_one ? bz.value - bz.reach : bz.value - bz.reach + w_lo;
+    if (!(near_distance > 0.0) || !(w_lo - (bz.value + bz.reach) > 0.0)) return false;
 
     // delta: the largest error of a snapped coordinate, in pixels.
     const double inv_w = 1.0 / w_lo;
     const double ndc_x = x_hi * inv_w, ndc_y = y_hi * inv_w;  // bounds of |x / w|, |y / w|
-    const double w_error = error(3);
     const double double_error = 0x1p-48 * (ndc_x + ndc_y + 2.0) * (v.half_width + v.half_height);
-    const double delta_x = v.half_width * (error(0) + ndc_x * w_error) * inv_w;
-    const double delta_y = v.half_height * (error(1) + ndc_y * w_error) * inv_w;
+    const double delta_x = v.half_width * (bx.error + ndc_x * bw.error) * inv_w;
+    const double delta_y = v.half_height * (by.error + ndc_y * bw.error) * inv_w;
     const double delta = std::max(delta_x, delta_y) + 1.0 / 512.0 + double_error;
-    // Window extents of a triangle: its edges through the projection's derivative.
-    const double extent_x =
-        v.half_width * c.max_edge * (ndc_x * v.row_length[3] + v.row_length[0]) * inv_w;
-    const double extent_y =
-        v.half_height * c.max_edge * (ndc_y * v.row_length[3] + v.row_length[1]) * inv_w;
+    // Window extents of a triangle: x/w changes along an edge d by at most
+    // (|x/w| |w . d| + |x . d|) / w.
+    const double extent_x = v.half_width * (ndc_x * bw.edge_change + bx.edge_change) * inv_w;
+    const double extent_y = v.half_height * (ndc_y * bw.edge_change + by.edge_change) * inv_w;
     const double area = v.area_scale * c.min_double_area * margin / (w_hi * w_hi * w_hi);
     const double area_error = 4.0 * delta * (extent_x + extent_y) + 8.0 * delta * delta;
     return area > 2.0 * area_error;

@@ -1,23 +1,24 @@
 // Back-face culling of whole clusters of triangles, before the front end reads their vertices.
 //
 // A mesh's triangles are cut into clusters of kClusterTriangles consecutive triangles. Each gets,
-// once (cluster_cache.hpp keeps them from frame to frame), bounds in object space: a sphere
-// holding its vertices, a cone holding its unit face normals, its smallest doubled triangle area
-// and longest edge. Per frame, cluster_is_culled() proves from these alone that every triangle of
-// the cluster is one the exact path (classify_triangle on the snapped vertices) culls: no
-// triangle is clipped, each keeps a non-zero snapped area, and its sign is the culled one.
+// once (cluster_cache.hpp keeps them from frame to frame), bounds in object space: a box holding
+// its vertices (oriented along the normals' mean), a cone holding its unit face normals, its
+// smallest doubled triangle area and longest edge. Per frame, cluster_is_culled() proves from these
+// alone that every triangle of the cluster is one the exact path (classify_triangle on the snapped
+// vertices) culls: no triangle is clipped, each keeps a non-zero snapped area, and its sign is the
+// culled one.
 //
 // Why it is exact. With M the mvp, A its x, y, w rows' 3x3 part and b their 4th column, the
 // clip positions c_i = A p_i + b of a triangle satisfy
 //   det[c0 c1 c2] = n . G(p0),   n = (p1 - p0) x (p2 - p0),   G(p) = det(A) p + adj(A) b,
 // and its doubled window area (y down, as the classifier measures it) is
 //   -(W H / 4) det[c0 c1 c2] / (w0 w1 w2).
-// The cone and sphere bound n . G(p0) away from 0 with a known sign, so the true area is at
+// The cone and box bound n . G(p0) away from 0 with a known sign, so the true area is at
 // least (W H / 4) * min |n| * margin / w_max^3. The snapped area differs from the true one by at
 // most 4 delta (extent_x + extent_y) + 8 delta^2, delta being the largest error of a snapped
 // coordinate (1/512 pixel of snapping, the float transform's rounding through the divide, the
 // double divide) and extent the triangle's window extent (longest edge through the projection's
-// derivative). A cluster is culled only if the first exceeds twice the second, and if the sphere
+// derivative). A cluster is culled only if the first exceeds twice the second, and if the box
 // lies inside the guard band, in front of the near plane and behind the far one with room for
 // the same rounding, so that every vertex's outcode is 0 and no triangle is clipped.
 // (Here G(p) = det(A) (p - eye) for a perspective camera: the eye's side of the plane.)
@@ -37,16 +38,14 @@ namespace zraster::detail {
 inline constexpr std::size_t kClusterTriangles = 64;
 
 struct ClusterBounds {
-    // A sphere and a box oriented along the normal cone's axis (thin for a flat cluster, so
-    // tighter for linear forms such as depth), each holding every vertex of the cluster's
-    // triangles, and a bound of their coordinates' magnitudes.
-    glm::dvec3 center{0.0};
-    double radius = 0.0;
+    // A box oriented along the normal cone's axis (thin for a flat cluster), holding every
+    // vertex of the cluster's triangles, and a bound of their coordinates' magnitudes.
     glm::dvec3 box_center{0.0};
     glm::dvec3 box_axis[3] = {};  // orthonormal (up to rounding, which the slack covers)
     glm::dvec3 box_half{0.0};
     glm::dvec3 max_abs{0.0};
-    glm::dvec3 axis{0.0};  // unit; every true unit face normal n satisfies n . axis >= cos_angle
+    // The normal cone: its axis is box_axis[0]; every true unit face normal n satisfies
+    // n . box_axis[0] >= cos_angle.
     double cos_angle = 0.0, sin_angle = 1.0;  // sin_angle >= sqrt(1 - cos_angle^2)
     double min_double_area = 0.0;  // lower bound of |n| over its triangles (0: never culled)
     double max_edge = 0.0;         // upper bound of its triangles' edge lengths
