@@ -38,7 +38,7 @@ void bound_cluster(const Mesh& mesh, std::size_t first, std::size_t end, Cluster
     std::array<glm::dvec3, kClusterTriangles> unit_normal;
     std::array<double, kClusterTriangles> angle_error;
     glm::dvec3 lo(HUGE_VAL), hi(-HUGE_VAL), normal_sum(0.0);
-    double min_area = HUGE_VAL, max_edge = 0.0;
+    double min_area = HUGE_VAL, max_edge_squared = 0.0;
     for (std::size_t t = first; t < end; ++t) {
         std::array<glm::dvec3, 3> p;
         for (std::size_t k = 0; k < 3; ++k) {
@@ -51,16 +51,21 @@ void bound_cluster(const Mesh& mesh, std::size_t first, std::size_t end, Cluster
         }
         const glm::dvec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
         const glm::dvec3 n = glm::cross(e1, e2);
-        const double length = glm::length(n);
-        const double scale = glm::length(e1) * glm::length(e2);
+        // (Squared lengths where they do: a million triangles' square roots add up.)
+        const double length = std::sqrt(glm::dot(n, n));
+        const double e1_squared = glm::dot(e1, e1), e2_squared = glm::dot(e2, e2);
+        const double scale = std::sqrt(e1_squared * e2_squared) * (1.0 + kSlack);
         if (!(length > kThinTriangle * scale)) return;  // degenerate or nearly so
-        unit_normal[t - first] = n / length;
-        normal_sum += n / length;
+        const double inverse_length = 1.0 / length;
+        unit_normal[t - first] = n * inverse_length;
+        normal_sum += unit_normal[t - first];
         // |n / |n| - true unit normal| <= 2 |error| / (|n| - |error|).
-        angle_error[t - first] = 4.0 * kCrossError * scale / length;
+        angle_error[t - first] = 4.0 * kCrossError * scale * inverse_length;
         min_area = std::min(min_area, length - kCrossError * scale);
-        max_edge = std::max({max_edge, glm::length(e1), glm::length(e2), glm::length(p[2] - p[1])});
+        const glm::dvec3 e3 = p[2] - p[1];
+        max_edge_squared = std::max({max_edge_squared, e1_squared, e2_squared, glm::dot(e3, e3)});
     }
+    const double max_edge = std::sqrt(max_edge_squared);
     const double sum_length = glm::length(normal_sum);
     if (!(sum_length > 0.0)) return;
     const glm::dvec3 axis = normal_sum / sum_length;
