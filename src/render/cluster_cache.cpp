@@ -7,40 +7,47 @@
 
 namespace zraster::detail {
 
+// Bounds are kept only if at least this fraction of a mesh's clusters could be culled.
+constexpr std::size_t kWorthItDivisor = 16;
+
 void attach_clusters(Frame& frame) {
     ClusterCache& cache = frame.cluster_cache;
-    for (ClusterCache::Entry& e : cache.entries) e.seen = false;
+    for (auto& [mesh, e] : cache.entries) e.seen = e.recorded = false;
     for (FrameInstance& fi : frame.instances) {
         fi.clusters = nullptr;
-        if (!fi.positions_hashed) continue;
         const Mesh& mesh = *fi.mesh;
-        auto it = std::find_if(cache.entries.begin(), cache.entries.end(),
-                               [&](const ClusterCache::Entry& e) { return e.mesh == &mesh; });
-        if (it == cache.entries.end()) it = cache.entries.emplace(cache.entries.end());
-        ClusterCache::Entry& e = *it;
-        const bool same = e.mesh == &mesh && e.positions == mesh.positions.size() &&
+        if (!cluster_culling_applies(*frame.options, mesh)) continue;
+        ClusterCache::Entry& e = cache.entries[&mesh];
+        e.seen = true;
+        if (!fi.positions_hashed) continue;  // not worth it (wants_positions_hash)
+        const bool same = e.positions == mesh.positions.size() &&
                           e.indices == mesh.indices.size() && e.positions_hash == fi.positions_hash;
         if (!same) {  // first sighting, or changed: remember it, build next time
-            e.mesh = &mesh;
             e.positions = mesh.positions.size();
             e.indices = mesh.indices.size();
             e.positions_hash = fi.positions_hash;
             e.clusters.reset();
-        } else if (!e.clusters && !e.seen) {
-            e.clusters = std::make_unique<MeshClusters>();
-            e.clusters->bounds = build_cluster_bounds(mesh);
+            e.not_worth_it = false;
+            e.recorded = true;
+        } else if (!e.clusters && !e.not_worth_it && !e.recorded) {
+            auto clusters = std::make_unique<MeshClusters>();
+            clusters->bounds = build_cluster_bounds(mesh);
+            const auto cullable =
+                std::count_if(clusters->bounds.begin(), clusters->bounds.end(),
+                              [](const ClusterBounds& b) { return b.cullable(); });
+            e.not_worth_it = std::size_t(cullable) * kWorthItDivisor < clusters->bounds.size();
+            if (!e.not_worth_it) e.clusters = std::move(clusters);
         }
-        e.seen = true;
         fi.clusters = e.clusters.get();
         if (fi.clusters)
             fi.cluster_view = make_cluster_view(fi.mvp, frame.clip_settings, frame.setup_settings);
     }
     // Meshes not drawn in this frame are forgotten (memory stays bounded by the last frame's).
-    std::erase_if(cache.entries, [](const ClusterCache::Entry& e) { return !e.seen; });
+    std::erase_if(cache.entries, [](const auto& entry) { return !entry.second.seen; });
 }
 
 void drop_stale_clusters(Frame& frame) {
-    for (ClusterCache::Entry& e : frame.cluster_cache.entries)
+    for (auto& [mesh, e] : frame.cluster_cache.entries)
         if (e.clusters && e.clusters->stale) {
             e.clusters.reset();
             e.positions_hash = 0;

@@ -6,7 +6,8 @@
 // reads anyway (word_hash.hpp) and the cache compares that hash and the array sizes; the
 // indices, which it does not read, are hashed per cluster when a cluster is about to be culled,
 // and a mismatch makes the front end classify that cluster's triangles after all and drops the
-// mesh's bounds after the frame.
+// mesh's bounds after the frame. A mesh whose bounds turn out nearly all uncullable (normals
+// every way, as in a triangle soup) is then left alone, unhashed, while its sizes stay.
 #pragma once
 #include <zraster/mesh.hpp>
 #include <zraster/render.hpp>
@@ -15,6 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 #include "render/cluster_cull.hpp"
@@ -39,13 +41,24 @@ inline bool cluster_culling_applies(const RenderOptions& options, const Mesh& me
 
 struct ClusterCache {
     struct Entry {
-        const Mesh* mesh = nullptr;
         std::size_t positions = 0, indices = 0;
         std::uint64_t positions_hash = 0;
         std::unique_ptr<MeshClusters> clusters;  // null until seen unchanged twice
-        bool seen = false;                       // in the current frame
+        // Bounds were built and too few clusters could ever be culled (a triangle soup): the
+        // mesh is not hashed or bounded again while its array sizes stay.
+        bool not_worth_it = false;
+        bool seen = false;      // in the current frame
+        bool recorded = false;  // (re)recorded in the current frame: not seen unchanged yet
     };
-    std::vector<Entry> entries;
+    std::unordered_map<const Mesh*, Entry> entries;
+
+    // Whether the vertex stage should hash this mesh's positions (options permitting).
+    bool wants_positions_hash(const Mesh& mesh) const {
+        const auto it = entries.find(&mesh);
+        return it == entries.end() || !it->second.not_worth_it ||
+               it->second.positions != mesh.positions.size() ||
+               it->second.indices != mesh.indices.size();
+    }
 };
 
 }  // namespace zraster::detail

@@ -130,7 +130,8 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
         const Mesh& mesh = *fi.mesh;
         const bool lit_per_vertex = fi.shading == ShadingMode::Gouraud && attributes;
         // The positions' hash for the cluster cache, summed over the blocks in any order.
-        fi.positions_hashed = cluster_culling_applies(options, mesh);
+        fi.positions_hashed = cluster_culling_applies(options, mesh) &&
+                              frame.cluster_cache.wants_positions_hash(mesh);
         std::atomic<std::uint32_t> hash_low{0}, hash_high{0};
         tbb::parallel_for(
             tbb::blocked_range<std::size_t>(0, mesh.positions.size(), 8192),

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "render/cluster_cull.hpp"
+#include "render/frame.hpp"
 #include "render/vertex_kernel.hpp"
 #include "render/word_hash.hpp"
 #include "support/simd_target_scope.hpp"
@@ -453,6 +454,36 @@ TEST(ClusterCulling, OneShotRendersBuildNoBounds) {
     o.height = 100;
     EXPECT_EQ(render(scene, o).stats.clusters_culled, 0u);
     EXPECT_EQ(render(scene, o).stats.clusters_culled, 0u);
+}
+
+// The cache's bookkeeping on its own: bounds on the second sighting of an unchanged mesh,
+// none for a mesh that changed, and a soup (every cluster's normals point every way) is left
+// alone after one look.
+TEST(ClusterCache, BuildsOnTheSecondSightingAndGivesUpOnSoups) {
+    const Mesh sphere = make_bench_sphere(20000);
+    const Mesh soup = make_bench_soup(20000);
+    RenderOptions options;
+    Frame frame;
+    frame.options = &options;
+    const auto sighting = [&](const Mesh& mesh, std::uint64_t hash) {
+        frame.instances.assign(1, FrameInstance{});
+        frame.instances[0].mesh = &mesh;
+        frame.instances[0].positions_hashed = frame.cluster_cache.wants_positions_hash(mesh);
+        frame.instances[0].positions_hash = hash;
+        attach_clusters(frame);
+        return frame.instances[0].clusters;
+    };
+    EXPECT_EQ(sighting(sphere, 1), nullptr);
+    EXPECT_NE(sighting(sphere, 1), nullptr);
+    EXPECT_NE(sighting(sphere, 1), nullptr);
+    EXPECT_EQ(sighting(sphere, 2), nullptr);  // changed
+    EXPECT_NE(sighting(sphere, 2), nullptr);
+    EXPECT_TRUE(frame.cluster_cache.wants_positions_hash(sphere));
+    EXPECT_EQ(sighting(soup, 3), nullptr);  // the sphere is forgotten: not in this frame
+    EXPECT_EQ(frame.cluster_cache.entries.count(&sphere), 0u);
+    EXPECT_EQ(sighting(soup, 3), nullptr);  // built, and found not worth it
+    EXPECT_FALSE(frame.cluster_cache.wants_positions_hash(soup));
+    EXPECT_EQ(sighting(soup, 3), nullptr);
 }
 
 // A grid of triangles facing away from the camera: nothing is drawn, and from the second frame
