@@ -51,9 +51,12 @@ struct ClusterCache {
         bool recorded = false;  // (re)recorded in the current frame: not seen unchanged yet
     };
     std::unordered_map<const Mesh*, Entry> entries;
+    // False for a frame that is not kept (the one-shot render()): nothing would be reused.
+    bool kept = true;
 
     // Whether the vertex stage should hash this mesh's positions (options permitting).
     bool wants_positions_hash(const Mesh& mesh) const {
+        if (!kept) return false;
         const auto it = entries.find(&mesh);
         return it == entries.end() || !it->second.not_worth_it ||
                it->second.positions != mesh.positions.size() ||

@@ -269,6 +269,7 @@ const RenderResult& Renderer::render(const Scene& scene, const RenderOptions& op
 
 RenderResult render(const Scene& scene, const RenderOptions& options) {
     detail::Frame frame;
+    frame.cluster_cache.kept = false;
     RenderResult result;
     tbb::task_arena arena(thread_count(options));
     render_frame(arena, frame, scene, options, result);
