@@ -2,6 +2,8 @@
 // cluster it culls holds only triangles the exact path culls (after the vertex stage's float
 // transform and the snap), the renderer draws the same images and counts with it on and off,
 // and bounds kept from an earlier frame are never trusted once the mesh has changed.
+#include <zraster/error.hpp>
+#include <zraster/load.hpp>
 #include <zraster/render.hpp>
 #include <zraster/scene.hpp>
 #include <zraster/scenes.hpp>
@@ -11,6 +13,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -19,6 +22,7 @@
 #include "render/vertex_kernel.hpp"
 #include "render/word_hash.hpp"
 #include "support/simd_target_scope.hpp"
+#include "support/test_support.hpp"
 
 namespace zraster::test {
 namespace {
@@ -442,6 +446,45 @@ TEST(ClusterCulling, SameFramesAsWithoutItFromTheSecondFrameOn) {
             }
         }
     }
+}
+
+// Real meshes (their triangle orders, shared vertices, slivers), from cameras all around: the
+// same frames with and without cluster culling, frame after frame.
+TEST(ClusterCulling, SharedMeshesFromEverySideSameAsWithout) {
+    ZRASTER_REQUIRE_SHARED_DATA();
+    int meshes = 0;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(shared_data("meshes"))) {
+        const std::string ext = entry.path().extension().string();
+        if (ext != ".obj" && ext != ".ply" && ext != ".stl" && ext != ".glb") continue;
+        Scene scene;
+        try {
+            scene = load_scene(entry.path());
+        } catch (const InputError&) {
+            continue;  // the deliberately broken ones
+        }
+        if (scene.triangle_count() < kMinClusteredTriangles) continue;
+        ++meshes;
+        SCOPED_TRACE(entry.path().string());
+        const Camera fit = fit_camera(scene.world_positions());
+        const double distance = glm::length(fit.eye - fit.target);
+        RenderOptions o;
+        o.width = 256;
+        o.height = 192;
+        o.id_targets = true;
+        RenderOptions off = o;
+        off.cluster_culling = false;
+        Renderer with, without;
+        for (int view = 0; view < 6; ++view) {
+            Camera camera = orbit_camera(fit.target, distance * (view % 3 == 2 ? 0.6 : 1.0),
+                                         60.0 * view, view % 2 ? 35.0 : -20.0);
+            camera.near = distance * 0.05;
+            camera.far = distance * 3.0;
+            o.camera = off.camera = camera;
+            const RenderResult& a = with.render(scene, o);
+            expect_same_frame(a, without.render(scene, off), "view " + std::to_string(view));
+        }
+    }
+    EXPECT_GT(meshes, 3);
 }
 
 TEST(ClusterCulling, OneShotRendersBuildNoBounds) {
