@@ -1,5 +1,6 @@
 // Google Benchmark suites for the pipeline's stages and for whole frames:
-//   triangle setup, front-end classification (SIMD and scalar), the visibility kernel on 8x8
+//   triangle setup, front-end classification (SIMD and scalar), cluster culling (the per-cluster
+//   test, building the bounds, the hash that checks them), the visibility kernel on 8x8
 //   blocks (SIMD and scalar), the Phong shading kernel, and whole frames of the benchmark scenes
 //   in depth-only and Phong modes at several resolutions and thread counts (binning, tile
 //   raster and deferred shading together; `zraster bench --verbose` splits a frame further).
@@ -17,7 +18,9 @@
 
 #include "raster/visibility_kernel.hpp"
 #include "render/classify_kernel.hpp"
+#include "render/cluster_cull.hpp"
 #include "render/shade_kernel.hpp"
+#include "render/word_hash.hpp"
 
 namespace zraster {
 namespace {
@@ -81,6 +84,64 @@ void BM_ClassifyTriangles(benchmark::State& state) {
     state.SetLabel(simd ? "simd (sub-pixel triangles, back-face culling)" : "scalar");
 }
 BENCHMARK(BM_ClassifyTriangles)->Arg(1)->Arg(0);
+
+// The benchmark sphere's clusters, from its benchmark camera (about two thirds are culled).
+struct SphereClusters {
+    Mesh mesh = make_bench_sphere(1000000);
+    std::vector<detail::ClusterBounds> bounds = detail::build_cluster_bounds(mesh);
+    detail::ClusterView view;
+    SphereClusters() {
+        const Camera camera = fit_camera(mesh.positions);
+        ClipSettings clip;
+        clip.guard_x = float(kGuardBand / 960.0);
+        clip.guard_y = float(kGuardBand / 540.0);
+        SetupSettings setup;
+        setup.viewport = {1920, 1080};
+        view = detail::make_cluster_view(camera.view_projection(1920.0 / 1080.0), clip, setup);
+    }
+};
+
+const SphereClusters& sphere_clusters() {
+    static const SphereClusters clusters;
+    return clusters;
+}
+
+void BM_ClusterTest(benchmark::State& state) {
+    const SphereClusters& s = sphere_clusters();
+    std::size_t culled = 0;
+    for (auto _ : state) {
+        culled = 0;
+        for (const detail::ClusterBounds& b : s.bounds)
+            culled += detail::cluster_is_culled(s.view, b);
+        benchmark::DoNotOptimize(culled);
+    }
+    state.SetItemsProcessed(std::int64_t(state.iterations() * s.bounds.size()));
+    state.SetLabel(std::to_string(culled) + " of " + std::to_string(s.bounds.size()) +
+                   " sphere:1000000 clusters culled");
+}
+BENCHMARK(BM_ClusterTest);
+
+void BM_BuildClusterBounds(benchmark::State& state) {
+    const Mesh& mesh = sphere_clusters().mesh;
+    for (auto _ : state) benchmark::DoNotOptimize(detail::build_cluster_bounds(mesh).data());
+    state.SetItemsProcessed(std::int64_t(state.iterations() * mesh.triangle_count()));
+    state.SetLabel("sphere:1000000, 1 thread");
+}
+BENCHMARK(BM_BuildClusterBounds)->Unit(benchmark::kMillisecond);
+
+void BM_HashWords(benchmark::State& state) {
+    const bool simd = state.range(0) != 0;
+    std::vector<std::uint32_t> words(std::size_t(state.range(1)));
+    SplitMix64 rng(3);
+    for (auto& w : words) w = std::uint32_t(rng.next());
+    for (auto _ : state)
+        benchmark::DoNotOptimize(simd ? detail::hash_words(words.data(), words.size(), 0)
+                                      : detail::hash_words_scalar(words.data(), words.size(), 0));
+    state.SetBytesProcessed(std::int64_t(state.iterations() * words.size() * 4));
+    state.SetLabel(simd ? "simd" : "scalar");
+}
+// A cluster's indices (192 words, from cache), and 16 MB (from memory).
+BENCHMARK(BM_HashWords)->Args({1, 192})->Args({0, 192})->Args({1, 1 << 22});
 
 void BM_VisibilityBlock(benchmark::State& state) {
     const bool simd = state.range(0) != 0;
