@@ -50,7 +50,6 @@ void drop_stale_clusters(Frame& frame) {
     for (auto& [mesh, e] : frame.cluster_cache.entries)
         if (e.clusters && e.clusters->stale) {
             e.clusters.reset();
-            e.positions_hash = 0;
             e.positions = ~std::size_t{0};  // never "same": seen twice more before rebuilding
         }
 }

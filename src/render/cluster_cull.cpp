@@ -129,7 +129,6 @@ ClusterView make_cluster_view(const glm::mat4& mvp, const ClipSettings& clip,
     // n . G > 0 means a negative window area: counter-clockwise with y up.
     const bool positive_is_front = setup.front_face == FrontFace::CounterClockwise;
     v.culled_sign = (setup.cull == CullMode::Back) != positive_is_front ? 1.0 : -1.0;
-    v.width = setup.viewport.width;
     v.half_width = 0.5 * setup.viewport.width;
     v.half_height = 0.5 * setup.viewport.height;
     v.area_scale = v.half_width * v.half_height;

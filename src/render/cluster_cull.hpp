@@ -74,7 +74,6 @@ struct ClusterView {
     glm::dvec3 adj_b{0.0};            // adj(A) b
     double culled_sign = 1.0;         // the sign of n . G(p0) of the triangles the cull mode culls
     double half_width = 0.0, half_height = 0.0, area_scale = 0.0;  // W/2, H/2, W*H/4
-    double width = 0.0;
     double guard_x = 1.0, guard_y = 1.0;
     bool zero_to_one = false;  // clip depth range [0, w] instead of [-w, w]
 };

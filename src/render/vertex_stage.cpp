@@ -8,6 +8,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <unordered_map>
 
 #include "memory/huge_pages.hpp"
 #include "render/frame.hpp"
@@ -126,12 +127,17 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
     if (attributes && any_textured) memory::resize_on_huge_pages(v.uv, vertex_count);
     if (any_gouraud && attributes) memory::resize_on_huge_pages(v.gouraud, vertex_count);
 
+    // Positions hashed this frame, per mesh: instances of the same mesh hash it once.
+    std::unordered_map<const Mesh*, std::uint64_t> hashed;
     for (FrameInstance& fi : frame.instances) {
         const Mesh& mesh = *fi.mesh;
         const bool lit_per_vertex = fi.shading == ShadingMode::Gouraud && attributes;
         // The positions' hash for the cluster cache, summed over the blocks in any order.
         fi.positions_hashed = cluster_culling_applies(options, mesh) &&
                               frame.cluster_cache.wants_positions_hash(mesh);
+        const auto earlier = hashed.find(&mesh);
+        const bool hash_here = fi.positions_hashed && earlier == hashed.end();
+        if (fi.positions_hashed && !hash_here) fi.positions_hash = earlier->second;
         std::atomic<std::uint32_t> hash_low{0}, hash_high{0};
         tbb::parallel_for(
             tbb::blocked_range<std::size_t>(0, mesh.positions.size(), 8192),
@@ -157,7 +163,7 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
                     transform_vertices(job);
                 else
                     transform_vertices_scalar(job);
-                if (fi.positions_hashed) {  // while the block is in cache
+                if (hash_here) {  // while the block is in cache
                     const std::uint64_t h = (options.simd ? hash_words : hash_words_scalar)(
                         job.positions, 3 * job.count, 3 * std::uint64_t{r.begin()});
                     hash_low += static_cast<std::uint32_t>(h);
@@ -173,7 +179,10 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
                                               v.normal[out], frame.eye, frame.view_axis);
                 }
             });
-        fi.positions_hash = (std::uint64_t{hash_high} << 32) | hash_low;
+        if (hash_here) {
+            fi.positions_hash = (std::uint64_t{hash_high} << 32) | hash_low;
+            hashed.emplace(&mesh, fi.positions_hash);
+        }
     }
 }
 

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 #include <hwy/targets.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
 #include <cstring>
@@ -527,6 +528,35 @@ TEST(ClusterCache, BuildsOnTheSecondSightingAndGivesUpOnSoups) {
     EXPECT_EQ(sighting(soup, 3), nullptr);  // built, and found not worth it
     EXPECT_FALSE(frame.cluster_cache.wants_positions_hash(soup));
     EXPECT_EQ(sighting(soup, 3), nullptr);
+}
+
+// Instances of one mesh share its bounds (and its positions are hashed once a frame): both are
+// culled from the second frame on, each from its own view of them.
+TEST(ClusterCulling, InstancesOfOneMeshShareItsBounds) {
+    Scene scene = sphere_scene();
+    Instance second = scene.instances[0];
+    second.transform = glm::rotate(glm::mat4(1.0f), 2.0f, glm::vec3(0, 1, 0));
+    second.transform[3] = glm::vec4(2.5f, 0.0f, 0.0f, 1.0f);
+    scene.instances.push_back(second);
+    RenderOptions o;
+    o.width = 320;
+    o.height = 200;
+    o.threads = 2;
+    o.camera = fit_camera(scene.world_positions());
+    RenderOptions off = o;
+    off.cluster_culling = false;
+    Renderer with, without;
+    std::uint64_t culled = 0;
+    for (int frame = 0; frame < 3; ++frame) {
+        const RenderResult& a = with.render(scene, o);
+        expect_same_frame(a, without.render(scene, off), "frame " + std::to_string(frame));
+        culled = a.stats.clusters_culled;
+    }
+    Scene alone = sphere_scene();
+    Renderer single;
+    for (int frame = 0; frame < 2; ++frame) single.render(alone, o);
+    // More than one instance's worth: the second instance's clusters are culled too.
+    EXPECT_GT(culled, single.render(alone, o).stats.clusters_culled + 50);
 }
 
 // A grid of triangles facing away from the camera: nothing is drawn, and from the second frame
