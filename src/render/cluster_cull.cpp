@@ -26,7 +26,7 @@ constexpr double kMinCos = 0.05;
 // kClipError * (|row| . (|p|, 1)) of the exact value (three products and three sums in float:
 // at most 3 * 2^-24 of that sum; no FMA contraction, -ffp-contract=off).
 constexpr double kClipError = 0x1p-21;
-// Relative slack for quantities evaluated in double here (radii, cone angles, the margin).
+// Relative slack for quantities evaluated in double here (extents, cone angles, the margin).
 constexpr double kSlack = 1e-12;
 constexpr double kMarginSlack = 1e-9;
 
