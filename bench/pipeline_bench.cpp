@@ -121,6 +121,19 @@ void BM_ClusterTest(benchmark::State& state) {
 }
 BENCHMARK(BM_ClusterTest);
 
+void BM_ClustersCulled(benchmark::State& state) {
+    const SphereClusters& s = sphere_clusters();
+    const detail::ClusterArrays arrays(s.bounds);
+    std::vector<std::uint8_t> culled(arrays.count);
+    for (auto _ : state) {
+        detail::clusters_culled(s.view, arrays, 0, arrays.count, culled.data());
+        benchmark::DoNotOptimize(culled.data());
+    }
+    state.SetItemsProcessed(std::int64_t(state.iterations() * arrays.count));
+    state.SetLabel("simd, sphere:1000000 clusters");
+}
+BENCHMARK(BM_ClustersCulled);
+
 void BM_BuildClusterBounds(benchmark::State& state) {
     const Mesh& mesh = sphere_clusters().mesh;
     for (auto _ : state) benchmark::DoNotOptimize(detail::build_cluster_bounds(mesh).data());

@@ -209,15 +209,23 @@ void process_instance_range(const Frame& frame, std::uint32_t instance, std::siz
     // culled, as the classifier would); the triangles between them are classified.
     std::size_t run = first;
     if (fi.clusters != nullptr) {
+        // The clusters that lie wholly inside the range, tested all at once.
         const std::size_t triangles = mesh.triangle_count();
-        for (std::size_t c = (first + kClusterTriangles - 1) / kClusterTriangles;; ++c) {
+        const std::size_t first_cluster = (first + kClusterTriangles - 1) / kClusterTriangles;
+        const std::size_t end_cluster =
+            end == triangles ? cluster_count(mesh) : end / kClusterTriangles;
+        thread_local std::vector<std::uint8_t> culled;
+        const std::size_t clusters = std::max(first_cluster, end_cluster) - first_cluster;
+        culled.resize(clusters);
+        const ClusterArrays& arrays = fi.clusters->arrays;
+        (frame.options->simd ? clusters_culled : clusters_culled_scalar)(
+            fi.cluster_view, arrays, first_cluster, clusters, culled.data());
+        for (std::size_t c = first_cluster; c < first_cluster + clusters; ++c) {
+            if (!culled[c - first_cluster]) continue;
             const std::size_t lo = c * kClusterTriangles;
             const std::size_t hi = std::min(lo + kClusterTriangles, triangles);
-            if (hi > end || lo >= hi) break;
-            const ClusterBounds& bounds = fi.clusters->bounds[c];
-            if (!cluster_is_culled(fi.cluster_view, bounds)) continue;
             // The bounds hold for the indices they were built from: check those are still here.
-            if (hash_words(in.indices + 3 * lo, 3 * (hi - lo), 3 * lo) != bounds.index_hash) {
+            if (hash_words(in.indices + 3 * lo, 3 * (hi - lo), 3 * lo) != arrays.index_hash[c]) {
                 fi.clusters->stale = true;
                 continue;
             }

@@ -30,13 +30,11 @@ void attach_clusters(Frame& frame) {
             e.not_worth_it = false;
             e.recorded = true;
         } else if (!e.clusters && !e.not_worth_it && !e.recorded) {
-            auto clusters = std::make_unique<MeshClusters>();
-            clusters->bounds = build_cluster_bounds(mesh);
-            const auto cullable =
-                std::count_if(clusters->bounds.begin(), clusters->bounds.end(),
-                              [](const ClusterBounds& b) { return b.cullable(); });
-            e.not_worth_it = std::size_t(cullable) * kWorthItDivisor < clusters->bounds.size();
-            if (!e.not_worth_it) e.clusters = std::move(clusters);
+            const std::vector<ClusterBounds> bounds = build_cluster_bounds(mesh);
+            const auto cullable = std::count_if(
+                bounds.begin(), bounds.end(), [](const ClusterBounds& b) { return b.cullable(); });
+            e.not_worth_it = std::size_t(cullable) * kWorthItDivisor < bounds.size();
+            if (!e.not_worth_it) e.clusters = std::make_unique<MeshClusters>(bounds);
         }
         fi.clusters = e.clusters.get();
         if (fi.clusters)

@@ -24,7 +24,8 @@
 namespace zraster::detail {
 
 struct MeshClusters {
-    std::vector<ClusterBounds> bounds;
+    explicit MeshClusters(const std::vector<ClusterBounds>& bounds) : arrays(bounds) {}
+    ClusterArrays arrays;
     // Set by the front end (any thread) when a cluster's indices no longer match its hash.
     mutable std::atomic<bool> stale{false};
 };

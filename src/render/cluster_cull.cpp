@@ -1,5 +1,6 @@
-// See cluster_cull.hpp for the bound and why it is exact. The constants below are safety
-// margins, each far above the rounding it covers.
+// See cluster_cull.hpp for the bound and why it is exact. The constants below and in
+// cluster_constants.hpp are safety margins, each far above the rounding it covers. The SIMD twin
+// of cluster_is_culled() (cluster_kernel.cpp) repeats its operations in the same order.
 #include "render/cluster_cull.hpp"
 
 #include <tbb/parallel_for.h>
@@ -8,6 +9,7 @@
 #include <array>
 #include <cmath>
 
+#include "render/cluster_constants.hpp"
 #include "render/word_hash.hpp"
 
 namespace zraster::detail {
@@ -22,13 +24,6 @@ constexpr double kThinTriangle = 0x1p-30;
 // Clusters whose normal cone is wider than acos(kMinCos) are never culled whole: not worth a
 // test per frame.
 constexpr double kMinCos = 0.05;
-// Float clip coordinates computed by the vertex stage, and double ones computed here, are within
-// kClipError * (|row| . (|p|, 1)) of the exact value (three products and three sums in float:
-// at most 3 * 2^-24 of that sum; no FMA contraction, -ffp-contract=off).
-constexpr double kClipError = 0x1p-21;
-// Relative slack for quantities evaluated in double here (extents, cone angles, the margin).
-constexpr double kSlack = 1e-12;
-constexpr double kMarginSlack = 1e-9;
 
 void bound_cluster(const Mesh& mesh, std::size_t first, std::size_t end, ClusterBounds& out) {
     out = ClusterBounds{};
@@ -180,7 +175,6 @@ bool cluster_is_culled(const ClusterView& v, const ClusterBounds& c) {
     if (!(w_lo > 0.0) || !(w_hi < 1e30)) return false;
     // Inside the guard band with room for the float products (|x| <= guard * w in float).
     const double x_hi = std::abs(bx.value) + bx.reach, y_hi = std::abs(by.value) + by.reach;
-    constexpr double kShrink = 1.0 - 0x1p-20;
     if (!(x_hi <= v.guard_x * w_lo * kShrink) || !(y_hi <= v.guard_y * w_lo * kShrink))
         return false;
     const double near_distance = v.zero_to_one ? bz.value - bz.reach : bz.value - bz.reach + w_lo;
@@ -200,6 +194,42 @@ bool cluster_is_culled(const ClusterView& v, const ClusterBounds& c) {
     const double area = v.area_scale * c.min_double_area * margin / (w_hi * w_hi * w_hi);
     const double area_error = 4.0 * delta * (extent_x + extent_y) + 8.0 * delta * delta;
     return area > 2.0 * area_error;
+}
+
+ClusterArrays::ClusterArrays(const std::vector<ClusterBounds>& bounds) : count(bounds.size()) {
+    const auto fill = [&](std::vector<double>& field, auto get) {
+        field.resize(count);
+        for (std::size_t c = 0; c < count; ++c) field[c] = get(bounds[c]);
+    };
+    for (int k = 0; k < 3; ++k) {
+        fill(center[k], [k](const ClusterBounds& b) { return b.box_center[k]; });
+        fill(half[k], [k](const ClusterBounds& b) { return b.box_half[k]; });
+        fill(max_abs[k], [k](const ClusterBounds& b) { return b.max_abs[k]; });
+        for (int j = 0; j < 3; ++j)
+            fill(axis[k][j], [k, j](const ClusterBounds& b) { return b.box_axis[k][j]; });
+    }
+    fill(cos_angle, [](const ClusterBounds& b) { return b.cos_angle; });
+    fill(sin_angle, [](const ClusterBounds& b) { return b.sin_angle; });
+    fill(min_double_area, [](const ClusterBounds& b) { return b.min_double_area; });
+    fill(max_edge, [](const ClusterBounds& b) { return b.max_edge; });
+    index_hash.resize(count);
+    for (std::size_t c = 0; c < count; ++c) index_hash[c] = bounds[c].index_hash;
+}
+
+ClusterBounds ClusterArrays::operator[](std::size_t c) const {
+    ClusterBounds b;
+    for (int k = 0; k < 3; ++k) {
+        b.box_center[k] = center[k][c];
+        b.box_half[k] = half[k][c];
+        b.max_abs[k] = max_abs[k][c];
+        for (int j = 0; j < 3; ++j) b.box_axis[k][j] = axis[k][j][c];
+    }
+    b.cos_angle = cos_angle[c];
+    b.sin_angle = sin_angle[c];
+    b.min_double_area = min_double_area[c];
+    b.max_edge = max_edge[c];
+    b.index_hash = index_hash[c];
+    return b;
 }
 
 }  // namespace zraster::detail

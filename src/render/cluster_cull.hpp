@@ -85,4 +85,21 @@ ClusterView make_cluster_view(const glm::mat4& mvp, const ClipSettings& clip,
 // cannot tell.
 bool cluster_is_culled(const ClusterView& view, const ClusterBounds& cluster);
 
+// The same bounds, one array per field, for testing many clusters at once (what a frame does).
+struct ClusterArrays {
+    std::size_t count = 0;
+    std::vector<double> center[3], axis[3][3], half[3], max_abs[3];
+    std::vector<double> cos_angle, sin_angle, min_double_area, max_edge;
+    std::vector<std::uint64_t> index_hash;
+    explicit ClusterArrays(const std::vector<ClusterBounds>& bounds);
+    ClusterBounds operator[](std::size_t c) const;
+};
+
+// culled[i] = cluster_is_culled(view, clusters[first + i]) for i < count: a SIMD version (the
+// same operations in the same order, a cluster per lane) and the scalar reference.
+void clusters_culled(const ClusterView& view, const ClusterArrays& clusters, std::size_t first,
+                     std::size_t count, std::uint8_t* culled);
+void clusters_culled_scalar(const ClusterView& view, const ClusterArrays& clusters,
+                            std::size_t first, std::size_t count, std::uint8_t* culled);
+
 }  // namespace zraster::detail

@@ -12,6 +12,7 @@
 #include <hwy/targets.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -241,6 +242,32 @@ TEST(ClusterCull, CulledClustersHoldOnlyTrianglesTheExactPathCulls) {
     EXPECT_GT(exactly_cullable, clusters_seen / 10);
     EXPECT_GT(culled, exactly_cullable / 4) << culled << " of " << exactly_cullable;
     EXPECT_GT(roomy_culled, roomy_cullable * 65 / 100) << roomy_culled << " of " << roomy_cullable;
+}
+
+// The SIMD test gives every cluster the scalar verdict, on every instruction set, for clusters
+// of all kinds (the random patches and views above) and any start and count.
+TEST(ClusterCull, SimdVerdictsMatchTheScalarOnEveryTarget) {
+    SplitMix64 rng(99);
+    std::size_t culled = 0;
+    for (int round = 0; round < 120; ++round) {
+        const View view = random_view(rng);
+        const ClusterArrays clusters(
+            build_cluster_bounds(random_patches(rng, 100, view.eye, view.offset)));
+        const ClusterView cluster_view = make_cluster_view(view.mvp, view.clip, view.setup);
+        const std::size_t first = rng.next() % 10, count = 90 - rng.next() % 10;
+        std::vector<std::uint8_t> expected(count), got(count);
+        clusters_culled_scalar(cluster_view, clusters, first, count, expected.data());
+        for (std::size_t i = 0; i < count; ++i)
+            ASSERT_EQ(expected[i], cluster_is_culled(cluster_view, clusters[first + i]) ? 1 : 0);
+        for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+            SimdTargetScope scope(target);
+            std::fill(got.begin(), got.end(), 7);
+            clusters_culled(cluster_view, clusters, first, count, got.data());
+            ASSERT_EQ(got, expected) << hwy::TargetName(target) << " round " << round;
+        }
+        culled += std::size_t(std::count(expected.begin(), expected.end(), 1));
+    }
+    EXPECT_GT(culled, 200u);  // not vacuous
 }
 
 // A camera at `eye` looking at `target` (y up unless told), as the renderer would set it up at
