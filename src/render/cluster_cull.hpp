@@ -53,7 +53,8 @@ struct ClusterBounds {
     bool cullable() const { return min_double_area > 0.0; }
 };
 
-// Triangles [first_triangle(c), end_triangle(c)) of the mesh form cluster c.
+// Cluster c is the mesh's triangles [c * kClusterTriangles, min((c + 1) * kClusterTriangles,
+// triangle count)); this many clusters cover the mesh.
 inline std::size_t cluster_count(const Mesh& mesh) {
     return (mesh.triangle_count() + kClusterTriangles - 1) / kClusterTriangles;
 }
