@@ -149,6 +149,9 @@ struct RenderStats {
     const char* simd_target = "";  // instruction set of the SIMD kernels
     Camera camera;                 // the camera actually used
     double setup_ms = 0, raster_ms = 0, total_ms = 0;
+    // setup_ms in its parts: the vertex stage, primitive assembly (culling, clipping, coverage
+    // tests) and binning.
+    double vertex_ms = 0, assembly_ms = 0, binning_ms = 0;
 };
 
 struct RenderResult {

@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <chrono>
 #include <vector>
 
 #include <zraster/error.hpp>
@@ -359,14 +360,20 @@ void assemble_and_bin(Frame& frame, RenderStats& stats) {
         frame.chunks[c].first_triangle = c * chunk_triangles;
         frame.chunks[c].end_triangle = std::min(total, (c + 1) * chunk_triangles);
     }
+    const auto start = std::chrono::steady_clock::now();
     tbb::parallel_for(std::size_t{0}, frame.chunks.size(),
                       [&](std::size_t c) { process_chunk(frame, frame.chunks[c]); });
+    const auto assembled = std::chrono::steady_clock::now();
+    stats.assembly_ms = std::chrono::duration<double, std::milli>(assembled - start).count();
     bin_offsets(frame);
     const std::size_t entries = frame.bin_offsets.back();
     memory::resize_on_huge_pages(frame.bin_entries, entries);
     memory::resize_on_huge_pages(frame.bin_corners, frame.tagged_shading ? entries : 0);
     tbb::parallel_for(std::size_t{0}, frame.chunks.size(),
                       [&](std::size_t c) { write_bins(frame, c); });
+    stats.binning_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - assembled)
+            .count();
     for (const Chunk& c : frame.chunks) {
         stats.triangles_in += c.stats.triangles_in;
         stats.triangles_non_finite += c.stats.triangles_non_finite;

@@ -227,6 +227,8 @@ void render_frame_in_arena(detail::Frame& frame, const Scene& scene, const Rende
     result.stats.camera = frame.camera;
 
     detail::run_vertex_stage(frame, result.stats);
+    result.stats.vertex_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     detail::attach_clusters(frame);
     detail::assemble_and_bin(frame, result.stats);
     detail::drop_stale_clusters(frame);
