@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "raster/setup_lanes.hpp"
 #include "raster/visibility_kernel.hpp"
 #include "render/classify_kernel.hpp"
 #include "render/cluster_cull.hpp"
@@ -59,6 +60,37 @@ void BM_TriangleSetup(benchmark::State& state) {
     state.SetLabel("triangles of about " + std::to_string(state.range(0)) + " px");
 }
 BENCHMARK(BM_TriangleSetup)->Arg(2)->Arg(10)->Arg(50);
+
+// The same triangles set up eight at a time, as the tile rasterizer does it: vertices copied
+// into lanes, set up in lanes (SIMD, or the scalar reference with range(1) = 0), each lane
+// loaded as a TriangleSetup.
+void BM_SetupLanes(benchmark::State& state) {
+    const auto vertices = random_vertices(3 * 4096, double(state.range(0)), 1);
+    const bool simd = state.range(1) != 0;
+    SetupSettings settings;
+    settings.viewport = {1920, 1080};
+    settings.cull = CullMode::None;
+    settings.screen_linear_planes = false;  // as perspective-correct frames set up
+    TriangleSetup setup;
+    detail::VertexLanes lanes;
+    detail::SetupLanes out;
+    for (auto _ : state)
+        for (std::size_t t = 0; t < vertices.size(); t += 3 * detail::kSetupLanes) {
+            for (int lane = 0; lane < detail::kSetupLanes; ++lane)
+                for (int k = 0; k < 3; ++k)
+                    lanes.set_vertex(k, lane, vertices[t + 3 * std::size_t(lane) + std::size_t(k)]);
+            (simd ? detail::setup_lanes : detail::setup_lanes_scalar)(lanes, detail::kSetupLanes,
+                                                                      settings, out);
+            for (int lane = 0; lane < detail::kSetupLanes; ++lane) {
+                benchmark::DoNotOptimize(detail::load_setup(lanes, out, lane, settings, setup));
+                benchmark::DoNotOptimize(setup);
+            }
+        }
+    state.SetItemsProcessed(std::int64_t(state.iterations()) * 4096);
+    state.SetLabel(std::string(simd ? detail::setup_lanes_target() : "scalar") + ", about " +
+                   std::to_string(state.range(0)) + " px");
+}
+BENCHMARK(BM_SetupLanes)->Args({2, 1})->Args({10, 1})->Args({10, 0});
 
 void BM_ClassifyTriangles(benchmark::State& state) {
     const bool simd = state.range(0) != 0;

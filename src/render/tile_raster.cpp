@@ -508,12 +508,24 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
         std::uint64_t passed = 0;
         bool untagged = false;  // a triangle without a shade tag was drawn
         TriangleSetup setup;
-        for (std::size_t ci = 0; ci < chunks; ++ci) {
-            const Chunk& chunk = frame.chunks[ci];
-            for (std::size_t e = bins[ci]; e < bins[ci + 1]; ++e) {
-                const BinEntry& entry = frame.bin_entries[e];
-                const std::uint32_t local = entry.ref;
-                if (setup_triangle(entry.vertices, frame.setup_settings, setup) !=
+        // The tile's entries, kSetupLanes at a time (set up together), the chunks in order.
+        SetupLanes lanes;
+        VertexLanes vertices;
+        const auto setup_block = options.simd ? setup_lanes : setup_lanes_scalar;
+        std::size_t ci = 0;
+        const std::size_t end = bins[chunks];
+        for (std::size_t e = bins[0]; e < end;) {
+            const int count = int(std::min<std::size_t>(end - e, kSetupLanes));
+            const BinEntry* entries = frame.bin_entries.data() + e;
+            for (int lane = 0; lane < count; ++lane)
+                for (int k = 0; k < 3; ++k)
+                    vertices.set_vertex(k, lane, entries[lane].vertices[std::size_t(k)]);
+            setup_block(vertices, count, frame.setup_settings, lanes);
+            for (int lane = 0; lane < count; ++lane, ++e) {
+                while (e >= bins[ci + 1]) ++ci;
+                const Chunk& chunk = frame.chunks[ci];
+                const std::uint32_t local = entries[lane].ref;
+                if (load_setup(vertices, lanes, lane, frame.setup_settings, setup) !=
                     SetupResult::Visible)
                     continue;  // cannot happen: the front end made the same decision
                 const TriangleRef& ref = chunk.refs[local];

@@ -1,0 +1,71 @@
+// Triangle setup of eight triangles at a time, from their snapped vertices stored one array per
+// field, with results bit for bit those of setup_triangle (include/zraster/raster.hpp).
+//
+// The tile rasterizer sets up every bin entry, and one at a time that was a fifth of a frame of
+// small triangles: about 100 cycles of scalar double arithmetic, mostly one long dependency
+// chain (the divide, then the planes). In lanes the chains of eight triangles overlap.
+//
+// Every integer the setup computes is exact in double when the snapped coordinates are below
+// kSetupLanesCoordinateLimit in magnitude (products below 2^51), so the SIMD version computes
+// the edge functions in double lanes too; a lane beyond that limit, or one setup_triangle would
+// reject, is marked for the scalar setup.
+//
+// Two implementations with identical results: a SIMD one (Google Highway, the instruction set
+// picked at run time) and the scalar reference, which calls setup_triangle per lane.
+#pragma once
+#include <zraster/raster.hpp>
+
+#include <cstdint>
+
+namespace zraster::detail {
+
+inline constexpr int kSetupLanes = 8;
+inline constexpr std::int32_t kSetupLanesCoordinateLimit = 1 << 24;
+
+// Eight triangles' vertices, one array per field and corner ([corner][lane]).
+struct VertexLanes {
+    std::int32_t x[3][kSetupLanes], y[3][kSetupLanes];
+    float z[3][kSetupLanes], inv_w[3][kSetupLanes];
+    float window_x[3][kSetupLanes], window_y[3][kSetupLanes];
+
+    ScreenVertex vertex(int corner, int lane) const {
+        return {x[corner][lane],     y[corner][lane],        z[corner][lane],
+                inv_w[corner][lane], window_x[corner][lane], window_y[corner][lane]};
+    }
+    void set_vertex(int corner, int lane, const ScreenVertex& v) {
+        x[corner][lane] = v.x;
+        y[corner][lane] = v.y;
+        z[corner][lane] = v.z;
+        inv_w[corner][lane] = v.inv_w;
+        window_x[corner][lane] = v.window_x;
+        window_y[corner][lane] = v.window_y;
+    }
+};
+
+// The setups of eight triangles, one array per TriangleSetup field.
+struct SetupLanes {
+    enum Plane { kDepth, kQ, kP1, kP2, kL1, kL2, kPlanes };
+    std::int32_t min_x[kSetupLanes], min_y[kSetupLanes], max_x[kSetupLanes], max_y[kSetupLanes];
+    std::int64_t edge_a[3][kSetupLanes], edge_b[3][kSetupLanes], edge_c[3][kSetupLanes];
+    float plane_a[kPlanes][kSetupLanes], plane_b[kPlanes][kSetupLanes],
+        plane_c[kPlanes][kSetupLanes];
+    std::int32_t front_facing[kSetupLanes];
+    // 1 where the lane was left to the scalar setup (see above): its other fields are unset.
+    std::int32_t scalar[kSetupLanes];
+};
+
+// Sets up lanes [0, count) of `in` (the planes settings asks for: depth always, q, p1, p2
+// with barycentric_planes, l1, l2 with screen_linear_planes too).
+void setup_lanes(const VertexLanes& in, int count, const SetupSettings& settings, SetupLanes& out);
+void setup_lanes_scalar(const VertexLanes& in, int count, const SetupSettings& settings,
+                        SetupLanes& out);
+
+// Lane `lane` as a TriangleSetup: from `lanes` unless it was left to the scalar setup, which
+// then runs here. Returns what setup_triangle returns.
+SetupResult load_setup(const VertexLanes& in, const SetupLanes& lanes, int lane,
+                       const SetupSettings& settings, TriangleSetup& out);
+
+// Name of the instruction set the dispatcher picked (for reports and tests).
+const char* setup_lanes_target();
+
+}  // namespace zraster::detail
