@@ -142,6 +142,7 @@ struct RenderStats {
     std::uint64_t triangles_rasterized = 0;   // set up and binned (after clipping: pieces)
     std::uint64_t clusters_culled = 0;   // RenderOptions::cluster_culling (their triangles count
                                          // as back-face culled)
+    std::uint64_t vertices_skipped = 0;  // not transformed: only culled clusters use them
     std::uint64_t blocks_hidden = 0;     // skipped by hierarchical z (triangle x block)
     std::uint64_t fragments_passed = 0;  // passed the depth test
     std::uint64_t fragments_shaded = 0;

@@ -215,18 +215,25 @@ void process_instance_range(const Frame& frame, std::uint32_t instance, std::siz
         const std::size_t first_cluster = (first + kClusterTriangles - 1) / kClusterTriangles;
         const std::size_t end_cluster =
             end == triangles ? cluster_count(mesh) : end / kClusterTriangles;
-        thread_local std::vector<std::uint8_t> culled;
         const std::size_t clusters = std::max(first_cluster, end_cluster) - first_cluster;
-        culled.resize(clusters);
         const ClusterArrays& arrays = fi.clusters->arrays;
-        (frame.options->simd ? clusters_culled : clusters_culled_scalar)(
-            fi.cluster_view, arrays, first_cluster, clusters, culled.data());
+        // The vertex stage's verdicts, or this range's own.
+        const std::uint8_t* culled =
+            fi.culled_clusters != nullptr ? fi.culled_clusters + first_cluster : nullptr;
+        if (culled == nullptr) {
+            thread_local std::vector<std::uint8_t> verdicts;
+            verdicts.resize(clusters);
+            (frame.options->simd ? clusters_culled : clusters_culled_scalar)(
+                fi.cluster_view, arrays, first_cluster, clusters, verdicts.data());
+            culled = verdicts.data();
+        }
         for (std::size_t c = first_cluster; c < first_cluster + clusters; ++c) {
             if (!culled[c - first_cluster]) continue;
             const std::size_t lo = c * kClusterTriangles;
             const std::size_t hi = std::min(lo + kClusterTriangles, triangles);
             // The bounds hold for the indices they were built from: check those are still here.
-            if (hash_words(in.indices + 3 * lo, 3 * (hi - lo), 3 * lo) != arrays.index_hash[c]) {
+            if (!fi.cluster_indices_checked &&
+                hash_words(in.indices + 3 * lo, 3 * (hi - lo), 3 * lo) != arrays.index_hash[c]) {
                 fi.clusters->stale = true;
                 continue;
             }

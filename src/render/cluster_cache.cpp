@@ -15,6 +15,11 @@ void attach_clusters(Frame& frame) {
     for (auto& [mesh, e] : cache.entries) e.seen = e.recorded = false;
     for (FrameInstance& fi : frame.instances) {
         fi.clusters = nullptr;
+        // Verdicts the vertex stage made hold only with the bounds attached below.
+        const std::uint8_t* verdicts = fi.culled_clusters;
+        const bool indices_checked = fi.cluster_indices_checked;
+        fi.culled_clusters = nullptr;
+        fi.cluster_indices_checked = false;
         const Mesh& mesh = *fi.mesh;
         if (!cluster_culling_applies(*frame.options, mesh)) continue;
         ClusterCache::Entry& e = cache.entries[&mesh];
@@ -34,11 +39,15 @@ void attach_clusters(Frame& frame) {
             const auto cullable = std::count_if(
                 bounds.begin(), bounds.end(), [](const ClusterBounds& b) { return b.cullable(); });
             e.not_worth_it = std::size_t(cullable) * kWorthItDivisor < bounds.size();
-            if (!e.not_worth_it) e.clusters = std::make_unique<MeshClusters>(bounds);
+            if (!e.not_worth_it) e.clusters = std::make_unique<MeshClusters>(bounds, mesh);
         }
-        fi.clusters = e.clusters.get();
-        if (fi.clusters)
+        // (Bounds found stale by the vertex stage are dropped after the frame.)
+        fi.clusters = e.clusters && !e.clusters->stale ? e.clusters.get() : nullptr;
+        if (fi.clusters) {
             fi.cluster_view = make_cluster_view(fi.mvp, frame.clip_settings, frame.setup_settings);
+            fi.culled_clusters = verdicts;
+            fi.cluster_indices_checked = verdicts != nullptr && indices_checked;
+        }
     }
     // Meshes not drawn in this frame are forgotten (memory stays bounded by the last frame's).
     std::erase_if(cache.entries, [](const auto& entry) { return !entry.second.seen; });

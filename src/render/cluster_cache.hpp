@@ -20,12 +20,15 @@
 #include <vector>
 
 #include "render/cluster_cull.hpp"
+#include "render/vertex_blocks.hpp"
 
 namespace zraster::detail {
 
 struct MeshClusters {
-    explicit MeshClusters(const std::vector<ClusterBounds>& bounds) : arrays(bounds) {}
+    MeshClusters(const std::vector<ClusterBounds>& bounds, const Mesh& mesh)
+        : arrays(bounds), blocks(build_vertex_block_clusters(mesh)) {}
     ClusterArrays arrays;
+    VertexBlockClusters blocks;  // which clusters use which vertices (vertex_blocks.hpp)
     // Set by the front end (any thread) when a cluster's indices no longer match its hash.
     mutable std::atomic<bool> stale{false};
 };
@@ -54,6 +57,21 @@ struct ClusterCache {
     std::unordered_map<const Mesh*, Entry> entries;
     // False for a frame that is not kept (the one-shot render()): nothing would be reused.
     bool kept = true;
+
+    // The bounds kept for this mesh from earlier frames, while its array sizes match (the
+    // vertex stage checks the rest before it relies on them: indices, positions' hash).
+    const MeshClusters* kept_clusters(const Mesh& mesh) const {
+        const auto it = entries.find(&mesh);
+        if (!kept || it == entries.end() || !it->second.clusters) return nullptr;
+        const Entry& e = it->second;
+        const bool sizes = e.positions == mesh.positions.size() && e.indices == mesh.indices.size();
+        return sizes && !e.clusters->stale ? e.clusters.get() : nullptr;
+    }
+    // Whether these are the positions the kept bounds were made for (by their hash).
+    bool same_positions(const Mesh& mesh, std::uint64_t positions_hash) const {
+        const auto it = entries.find(&mesh);
+        return it != entries.end() && it->second.positions_hash == positions_hash;
+    }
 
     // Whether the vertex stage should hash this mesh's positions (options permitting).
     bool wants_positions_hash(const Mesh& mesh) const {

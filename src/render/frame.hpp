@@ -43,6 +43,11 @@ struct FrameInstance {
     std::uint64_t positions_hash = 0;
     const MeshClusters* clusters = nullptr;
     ClusterView cluster_view;
+    // The clusters' verdicts (1: culled), made by the vertex stage to skip the vertices only
+    // culled clusters use; null when it made none (the front end then tests the clusters
+    // itself). When it skipped vertices it checked every cluster's indices first.
+    const std::uint8_t* culled_clusters = nullptr;
+    bool cluster_indices_checked = false;
 };
 
 // A vertex's world position and unit world normal ((0, 1, 0) for a zero normal): the one
@@ -163,6 +168,8 @@ struct Frame {
     std::vector<PhongConstants> phong_constants;
     ClearedTiles cleared_tiles;  // kept from frame to frame (see above)
     ClusterCache cluster_cache;  // kept from frame to frame
+    std::vector<std::vector<std::uint8_t>> cluster_verdicts;  // FrameInstance::culled_clusters
+    std::vector<std::uint8_t> needed_vertex_blocks;           // the vertex stage's scratch
 
     const ScreenVertex& screen_vertex(const Chunk& chunk, std::uint32_t index) const {
         return (index & kExtraVertex) ? chunk.extra_vertices[index & ~kExtraVertex]

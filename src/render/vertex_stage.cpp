@@ -14,6 +14,7 @@
 #include "render/frame.hpp"
 #include "render/occlusion_cull.hpp"
 #include "render/shade_kernel.hpp"
+#include "render/vertex_blocks.hpp"
 #include "render/vertex_kernel.hpp"
 #include "render/word_hash.hpp"
 
@@ -56,6 +57,62 @@ void assign_phong_kernels(Frame& frame) {
         frame.phong_constants.push_back(
             make_phong_constants(options.lighting, *fi.material, frame.eye, frame.view_axis));
     }
+}
+
+// Vertex blocks are skipped only when that spares at least 1 / kMinSkipDivisor of the
+// vertices: before skipping, every cluster's indices are hashed, which costs about what
+// transforming a few percent of the vertices would.
+constexpr std::size_t kMinSkipDivisor = 8;
+
+// What the vertex stage learns from bounds kept from earlier frames, before it transforms.
+struct EarlyClusters {
+    bool verdicts = false;  // `culled` holds every cluster's verdict (1: culled)
+    bool skip = false;      // `needed` says which vertex blocks to transform; indices checked
+    std::size_t skipped = 0;
+};
+
+// The clusters' verdicts and, when it pays, the vertex blocks only culled clusters use. Every
+// cluster's indices are checked before any block is skipped (a changed index could point into
+// one); on a mismatch the bounds are marked stale and nothing is culled.
+EarlyClusters cull_clusters_early(const Frame& frame, const FrameInstance& fi,
+                                  const MeshClusters& kept, std::vector<std::uint8_t>& culled,
+                                  std::vector<std::uint8_t>& needed) {
+    const Mesh& mesh = *fi.mesh;
+    const ClusterArrays& arrays = kept.arrays;
+    const std::size_t clusters = arrays.count, triangles = mesh.triangle_count();
+    const bool simd = frame.options->simd;
+    const ClusterView view = make_cluster_view(fi.mvp, frame.clip_settings, frame.setup_settings);
+    culled.resize(clusters);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, clusters, 1024),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                          (simd ? clusters_culled : clusters_culled_scalar)(
+                              view, arrays, r.begin(), r.size(), culled.data() + r.begin());
+                      });
+    EarlyClusters early;
+    early.verdicts = true;
+    needed.resize(kept.blocks.blocks);
+    const std::size_t skipped =
+        needed_vertex_blocks(kept.blocks, culled.data(), mesh.positions.size(), needed.data());
+    if (skipped * kMinSkipDivisor < mesh.positions.size()) return early;
+    std::atomic<bool> changed{false};
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, clusters, 1024),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                          for (std::size_t c = r.begin(); c < r.end(); ++c) {
+                              const std::size_t lo = c * kClusterTriangles;
+                              const std::size_t hi = std::min(lo + kClusterTriangles, triangles);
+                              if ((simd ? hash_words : hash_words_scalar)(
+                                      mesh.indices.data() + 3 * lo, 3 * (hi - lo), 3 * lo) !=
+                                  arrays.index_hash[c])
+                                  changed = true;
+                          }
+                      });
+    if (changed) {
+        kept.stale = true;
+        return {};
+    }
+    early.skip = true;
+    early.skipped = skipped;
+    return early;
 }
 
 }  // namespace
@@ -129,7 +186,9 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
 
     // Positions hashed this frame, per mesh: instances of the same mesh hash it once.
     std::unordered_map<const Mesh*, std::uint64_t> hashed;
-    for (FrameInstance& fi : frame.instances) {
+    frame.cluster_verdicts.resize(frame.instances.size());
+    for (std::size_t i = 0; i < frame.instances.size(); ++i) {
+        FrameInstance& fi = frame.instances[i];
         const Mesh& mesh = *fi.mesh;
         const bool lit_per_vertex = fi.shading == ShadingMode::Gouraud && attributes;
         // The positions' hash for the cluster cache, summed over the blocks in any order.
@@ -138,34 +197,73 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
         const auto earlier = hashed.find(&mesh);
         const bool hash_here = fi.positions_hashed && earlier == hashed.end();
         if (fi.positions_hashed && !hash_here) fi.positions_hash = earlier->second;
+        // Vertices only culled clusters use are skipped (vertex_blocks.hpp), with the bounds
+        // kept from earlier frames; their positions are checked after (hash_here) or before.
+        fi.culled_clusters = nullptr;
+        fi.cluster_indices_checked = false;
+        const std::uint8_t* needed = nullptr;
+        std::size_t skipped = 0;
+        if (fi.positions_hashed && !lit_per_vertex) {
+            const MeshClusters* kept = frame.cluster_cache.kept_clusters(mesh);
+            if (kept != nullptr &&
+                (hash_here || frame.cluster_cache.same_positions(mesh, fi.positions_hash))) {
+                const EarlyClusters early = cull_clusters_early(
+                    frame, fi, *kept, frame.cluster_verdicts[i], frame.needed_vertex_blocks);
+                if (early.verdicts) fi.culled_clusters = frame.cluster_verdicts[i].data();
+                if (early.skip) {
+                    fi.cluster_indices_checked = true;
+                    needed = frame.needed_vertex_blocks.data();
+                    skipped = early.skipped;
+                }
+            }
+        }
+        // The vertex kernel on vertices [begin, end) of the mesh.
+        const auto transform = [&](std::size_t begin, std::size_t end) {
+            VertexJob job;
+            job.positions = mesh.positions.data() + begin;
+            job.count = end - begin;
+            job.mvp = fi.mvp;
+            job.clip = frame.clip_settings;
+            job.setup = frame.setup_settings;
+            job.screen_out = v.screen.data() + fi.first_vertex + begin;
+            job.outcode_out = v.outcode.data() + fi.first_vertex + begin;
+            if (world) {  // user clip planes need the world position, shading both
+                job.model = fi.model;
+                job.normal_matrix = fi.normal_matrix;
+                job.world_out = v.world.data() + fi.first_vertex + begin;
+                if (attributes) {
+                    job.normal_out = v.normal.data() + fi.first_vertex + begin;
+                    if (!mesh.normals.empty()) job.normals = mesh.normals.data() + begin;
+                }
+            }
+            if (options.simd)
+                transform_vertices(job);
+            else
+                transform_vertices_scalar(job);
+        };
         std::atomic<std::uint32_t> hash_low{0}, hash_high{0};
         tbb::parallel_for(
             tbb::blocked_range<std::size_t>(0, mesh.positions.size(), 8192),
             [&](const tbb::blocked_range<std::size_t>& r) {
-                VertexJob job;
-                job.positions = mesh.positions.data() + r.begin();
-                job.count = r.end() - r.begin();
-                job.mvp = fi.mvp;
-                job.clip = frame.clip_settings;
-                job.setup = frame.setup_settings;
-                job.screen_out = v.screen.data() + fi.first_vertex + r.begin();
-                job.outcode_out = v.outcode.data() + fi.first_vertex + r.begin();
-                if (world) {  // user clip planes need the world position, shading both
-                    job.model = fi.model;
-                    job.normal_matrix = fi.normal_matrix;
-                    job.world_out = v.world.data() + fi.first_vertex + r.begin();
-                    if (attributes) {
-                        job.normal_out = v.normal.data() + fi.first_vertex + r.begin();
-                        if (!mesh.normals.empty()) job.normals = mesh.normals.data() + r.begin();
+                if (needed == nullptr) {
+                    transform(r.begin(), r.end());
+                } else {  // runs of needed blocks
+                    for (std::size_t k = r.begin(); k < r.end();) {
+                        std::size_t end = std::min(r.end(), (k / kVertexBlock + 1) * kVertexBlock);
+                        if (!needed[k / kVertexBlock]) {
+                            k = end;
+                            continue;
+                        }
+                        while (end < r.end() && needed[end / kVertexBlock])
+                            end = std::min(r.end(), end + kVertexBlock);
+                        transform(k, end);
+                        k = end;
                     }
                 }
-                if (options.simd)
-                    transform_vertices(job);
-                else
-                    transform_vertices_scalar(job);
                 if (hash_here) {  // while the block is in cache
                     const std::uint64_t h = (options.simd ? hash_words : hash_words_scalar)(
-                        job.positions, 3 * job.count, 3 * std::uint64_t{r.begin()});
+                        mesh.positions.data() + r.begin(), 3 * (r.end() - r.begin()),
+                        3 * std::uint64_t{r.begin()});
                     hash_low += static_cast<std::uint32_t>(h);
                     hash_high += static_cast<std::uint32_t>(h >> 32);
                 }
@@ -182,7 +280,21 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
         if (hash_here) {
             fi.positions_hash = (std::uint64_t{hash_high} << 32) | hash_low;
             hashed.emplace(&mesh, fi.positions_hash);
+            // Moved positions: the bounds no longer hold, and the skipped vertices are needed.
+            if (fi.culled_clusters != nullptr &&
+                !frame.cluster_cache.same_positions(mesh, fi.positions_hash)) {
+                fi.culled_clusters = nullptr;
+                fi.cluster_indices_checked = false;
+            }
+            if (needed != nullptr && fi.culled_clusters == nullptr) {
+                skipped = 0;
+                tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.positions.size(), 8192),
+                                  [&](const tbb::blocked_range<std::size_t>& r) {
+                                      transform(r.begin(), r.end());
+                                  });
+            }
         }
+        stats.vertices_skipped += skipped;
     }
 }
 

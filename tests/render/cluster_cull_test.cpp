@@ -639,9 +639,12 @@ TEST(ClusterCulling, ChangedIndicesAreNoticed) {
     std::vector<std::uint32_t>& indices = scene.meshes[0].indices;
     for (std::size_t t = 40 * kClusterTriangles; t < 40 * kClusterTriangles + 6; ++t)
         std::swap(indices[3 * t + 1], indices[3 * t + 2]);
+    // Every vertex is used only by culled clusters, so the vertex stage would skip them all: it
+    // checks every cluster's indices first, finds the change and culls no cluster this frame.
     const RenderResult& third = render_and_check(kept, scene, o, "indices changed");
     EXPECT_EQ(third.stats.triangles_rasterized, 6u);
-    EXPECT_EQ(third.stats.clusters_culled, 8192u / kClusterTriangles - 1);
+    EXPECT_EQ(third.stats.clusters_culled, 0u);
+    EXPECT_EQ(third.stats.vertices_skipped, 0u);
     // The bounds were dropped after that frame, and are rebuilt once the mesh is seen unchanged
     // again (the changed cluster now faces both ways: never culled).
     const RenderResult& fourth = render_and_check(kept, scene, o, "after the change");
@@ -650,6 +653,98 @@ TEST(ClusterCulling, ChangedIndicesAreNoticed) {
     const RenderResult& fifth = render_and_check(kept, scene, o, "bounds rebuilt");
     EXPECT_EQ(fifth.stats.triangles_rasterized, 6u);
     EXPECT_EQ(fifth.stats.clusters_culled, 8192u / kClusterTriangles - 1);
+    // From the next frame on, the vertices only the culled clusters use are not transformed.
+    const RenderResult& sixth = render_and_check(kept, scene, o, "vertices skipped");
+    EXPECT_EQ(sixth.stats.clusters_culled, 8192u / kClusterTriangles - 1);
+    EXPECT_GT(sixth.stats.vertices_skipped, 3000u);
+}
+
+// Skipped vertices keep the screen positions of the last frame that transformed them: a frame
+// that read one would draw it where an earlier camera saw it. With the camera moving every
+// frame, every frame must still be the exact path's, when the mesh stays, when an index of a
+// visible triangle is made to point at a skipped vertex, and when a skipped vertex moves.
+TEST(ClusterCulling, SkippedVerticesAreNeverRead) {
+    Scene scene = sphere_scene();
+    RenderOptions o;
+    o.width = 320;
+    o.height = 240;
+    o.threads = 2;
+    const Camera fitted = fit_camera(scene.world_positions());
+    Renderer kept;
+    int frame = 0;
+    const auto next_frame = [&](const std::string& what) -> const RenderResult& {
+        // The eye circles the sphere a little each frame.
+        Camera camera = fitted;
+        const double angle = 0.15 * frame++;
+        const glm::dvec3 eye = camera.eye - camera.target;
+        camera.eye =
+            camera.target + glm::dvec3(eye.x * std::cos(angle) - eye.z * std::sin(angle), eye.y,
+                                       eye.x * std::sin(angle) + eye.z * std::cos(angle));
+        o.camera = camera;
+        return render_and_check(kept, scene, o, what);
+    };
+    next_frame("first");
+    next_frame("second: bounds built");
+    const RenderResult& third = next_frame("third: vertices skipped");
+    ASSERT_GT(third.stats.vertices_skipped, 20000u);
+    next_frame("fourth");
+    // A vertex on the back, high up (so it projects far from the middle of the image), and two
+    // triangles facing the eye: each gets it as a corner, one in each winding, so that one of
+    // them faces the eye and is drawn.
+    Mesh& mesh = scene.meshes[0];
+    const glm::dvec3 toward_eye = glm::normalize(o.camera->eye - o.camera->target);
+    const auto along = [&](std::size_t v, const glm::dvec3& d) {
+        return glm::dot(glm::dvec3(mesh.positions[v]), d);
+    };
+    std::size_t back = 0, front = 0;
+    float highest = -2.0f;
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v)
+        if (along(v, toward_eye) < -0.6 && mesh.positions[v].y > highest) {
+            back = v;
+            highest = mesh.positions[v].y;
+        }
+    for (std::size_t t = 0; t < mesh.triangle_count(); ++t)
+        if (along(mesh.indices[3 * t], toward_eye) > along(mesh.indices[3 * front], toward_eye))
+            front = t;
+    ASSERT_LT(along(back, toward_eye), -0.6);
+    mesh.indices[3 * front + 1] = static_cast<std::uint32_t>(back);
+    mesh.indices[3 * (front + 2) + 2] = static_cast<std::uint32_t>(back);
+    const RenderResult& changed =
+        next_frame("an index of a visible triangle points at a skipped vertex");
+    EXPECT_EQ(changed.stats.vertices_skipped, 0u);
+    next_frame("after the change");
+    next_frame("bounds rebuilt");
+    ASSERT_GT(next_frame("skipping again").stats.vertices_skipped, 20000u);
+    mesh.positions[back].y = std::nextafter(mesh.positions[back].y, 2.0f);
+    EXPECT_EQ(next_frame("a skipped vertex moved").stats.vertices_skipped, 0u);
+    next_frame("after the move");
+}
+
+// The same with two instances of the mesh: the second is skipped from the positions' hash the
+// first computed, so a change must be seen before it skips anything.
+TEST(ClusterCulling, SkippedVerticesOfASecondInstanceAreNeverRead) {
+    Scene scene = sphere_scene();
+    Instance second = scene.instances[0];
+    second.transform = glm::translate(glm::mat4(1.0f), glm::vec3(2.5f, 0.0f, 0.0f));
+    scene.instances.push_back(second);
+    RenderOptions o;
+    o.width = 320;
+    o.height = 240;
+    o.threads = 2;
+    Camera camera = fit_camera(scene.world_positions());
+    Renderer kept;
+    for (int frame = 0; frame < 5; ++frame) {
+        camera.eye.y += 0.2;  // a new view every frame: skipped vertices hold stale positions
+        o.camera = camera;
+        if (frame == 4)  // mirrored: every triangle turns to face the other way
+            for (glm::vec3& p : scene.meshes[0].positions) p.x = -p.x;
+        const RenderResult& r = render_and_check(kept, scene, o, "frame " + std::to_string(frame));
+        if (frame == 3) {
+            EXPECT_GT(r.stats.vertices_skipped, 40000u);
+        } else if (frame == 4) {
+            EXPECT_EQ(r.stats.vertices_skipped, 0u);
+        }
+    }
 }
 
 TEST(ClusterCulling, ChangedPositionsAreNoticed) {

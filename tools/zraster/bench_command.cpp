@@ -183,13 +183,15 @@ int run_bench(const BenchArguments& a) {
             fmt::print(
                 "{} {}: {:.3f} ms (setup {:.3f}, raster {:.3f}), {} rasterized, {} "
                 "fragments passed, {} shaded ({}), {} blocks hidden by hierarchical z, {} "
-                "clusters culled; front end: vertices {:.3f}, assembly {:.3f}, binning {:.3f}\n",
+                "clusters culled, {} vertices skipped; front end: vertices {:.3f}, assembly "
+                "{:.3f}, "
+                "binning {:.3f}\n",
                 f < a.warmup ? "warmup" : "frame", f < a.warmup ? f : f - a.warmup, ms,
                 result.stats.setup_ms, result.stats.raster_ms, result.stats.triangles_rasterized,
                 result.stats.fragments_passed, result.stats.fragments_shaded,
                 result.stats.deferred ? "deferred" : "forward", result.stats.blocks_hidden,
-                result.stats.clusters_culled, result.stats.vertex_ms, result.stats.assembly_ms,
-                result.stats.binning_ms);
+                result.stats.clusters_culled, result.stats.vertices_skipped, result.stats.vertex_ms,
+                result.stats.assembly_ms, result.stats.binning_ms);
     }
     if (!a.out.empty()) write_frame(a.out, last->targets, mode);
 
