@@ -30,7 +30,7 @@ SetupResult classify_triangle(const std::array<ScreenVertex, 3>& v, const SetupS
     return classify_triangle(v[0], v[1], v[2], settings, out);
 }
 
-__attribute__((target_clones("arch=x86-64-v4", "default"))) SetupResult setup_triangle(const std::array<ScreenVertex, 3>& v, const SetupSettings& settings,
+SetupResult setup_triangle(const std::array<ScreenVertex, 3>& v, const SetupSettings& settings,
                            TriangleSetup& t, bool planes) {
     TriangleBounds bounds;
     const SetupResult result = classify_triangle(v[0], v[1], v[2], settings, bounds);
