@@ -33,7 +33,8 @@ struct LightingModel {
     // Local viewer: V = normalize(eye - P) per point. Infinite viewer: V is the constant direction
     // towards the eye along the view axis (cheaper, highlights slide less with position).
     bool local_viewer = true;
-    std::vector<Light> lights = std::vector<Light>(1);  // one default light (not an init list: GCC 12 warns falsely on it)
+    std::vector<Light> lights =
+        std::vector<Light>(1);  // one default light (not an init list: GCC 12 warns falsely on it)
 };
 
 // The two parts of the lit color, kept apart so Gouraud shading can interpolate them per vertex
