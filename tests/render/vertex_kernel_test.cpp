@@ -1,8 +1,9 @@
 // The vertex stage's kernel (src/render/vertex_kernel.hpp): the SIMD version gives the scalar
 // reference's outcodes bit for bit everywhere, and its screen vertices where the outcode is 0
-// (elsewhere x = kOutsideScreenX in both), on every instruction set the machine runs; positions include NaN, infinity,
-// huge values, points behind the eye and on w = 0, and points beyond the guard band. The world
-// positions and unit normals it computes on request equal world_attributes() bit for bit.
+// (elsewhere x = kOutsideScreenX in both), on every instruction set the machine runs; positions
+// include NaN, infinity, huge values, points behind the eye and on w = 0, and points beyond the
+// guard band. The world positions and unit normals it computes on request equal world_attributes()
+// bit for bit.
 #include <zraster/camera.hpp>
 #include <zraster/scenes.hpp>
 
