@@ -80,7 +80,8 @@ if [ "$which" = tsan ] || [ "$which" = all ]; then
     # The multithreaded paths: the render suite (TBB tiles and chunks; Determinism.* renders the
     # same frames with 1..5 threads) and the parallel OBJ reader (ObjParser.* of the io suite).
     dir=${ZRASTER_TSAN_BUILD_DIR:-$root/build-tsan}
-    build "$dir" "-fsanitize=thread" zraster_render_tests zraster_io_tests
+    build "$dir" "-fsanitize=thread $(bash "$root/scripts/sanitizer-hwy-targets.sh")" \
+        zraster_render_tests zraster_io_tests
     mkdir -p "$dir/tmp"
     # TBB hands tasks between threads inside libtbb.so; Debian's is not instrumented, so
     # ThreadSanitizer would see none of that synchronization and report every task's data as a
