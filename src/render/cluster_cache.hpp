@@ -4,10 +4,12 @@
 // seen unchanged in two frames in a row (a one-shot render never builds them) and kept while it
 // stays so. "Unchanged" is checked, never assumed: the vertex stage hashes the positions it
 // reads anyway (word_hash.hpp) and the cache compares that hash and the array sizes; the
-// indices, which it does not read, are hashed per cluster when a cluster is about to be culled,
-// and a mismatch makes the front end classify that cluster's triangles after all and drops the
-// mesh's bounds after the frame. A mesh whose bounds turn out nearly all uncullable (normals
-// every way, as in a triangle soup) is then left alone, unhashed, while its sizes stay.
+// indices, which it does not read, are hashed per cluster when a cluster is about to be culled
+// (a mismatch makes the front end classify that cluster's triangles after all), or all of them
+// before the vertex stage skips vertices (vertex_blocks.hpp; a mismatch culls nothing that
+// frame). Either way the mesh's bounds are dropped after the frame. A mesh whose bounds turn out
+// nearly all uncullable (normals every way, as in a triangle soup) is then left alone,
+// unhashed, while its sizes stay.
 #pragma once
 #include <zraster/mesh.hpp>
 #include <zraster/render.hpp>
@@ -29,7 +31,8 @@ struct MeshClusters {
         : arrays(bounds), blocks(build_vertex_block_clusters(mesh)) {}
     ClusterArrays arrays;
     VertexBlockClusters blocks;  // which clusters use which vertices (vertex_blocks.hpp)
-    // Set by the front end (any thread) when a cluster's indices no longer match its hash.
+    // Set by the vertex stage or the front end (any thread) when a cluster's indices no longer
+    // match its hash.
     mutable std::atomic<bool> stale{false};
 };
 
