@@ -28,7 +28,7 @@ constexpr double kMinCos = 0.05;
 void bound_cluster(const Mesh& mesh, std::size_t first, std::size_t end, ClusterBounds& out) {
     out = ClusterBounds{};
     const std::uint32_t* indices = mesh.indices.data();
-    out.index_hash = hash_words(indices + 3 * first, 3 * (end - first), 3 * first);
+    out.index_hash = cluster_index_hash(mesh, first / kClusterTriangles);
     const std::size_t vertex_total = mesh.positions.size();
     std::array<glm::dvec3, kClusterTriangles> unit_normal;
     std::array<double, kClusterTriangles> angle_error;
@@ -96,6 +96,12 @@ void bound_cluster(const Mesh& mesh, std::size_t first, std::size_t end, Cluster
 }
 
 }  // namespace
+
+std::uint64_t cluster_index_hash(const Mesh& mesh, std::size_t c) {
+    const std::size_t first = c * kClusterTriangles;
+    const std::size_t end = std::min(first + kClusterTriangles, mesh.triangle_count());
+    return hash_words(mesh.indices.data() + 3 * first, 3 * (end - first), 3 * first);
+}
 
 std::vector<ClusterBounds> build_cluster_bounds(const Mesh& mesh) {
     std::vector<ClusterBounds> clusters(cluster_count(mesh));

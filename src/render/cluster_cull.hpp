@@ -59,6 +59,11 @@ inline std::size_t cluster_count(const Mesh& mesh) {
     return (mesh.triangle_count() + kClusterTriangles - 1) / kClusterTriangles;
 }
 
+// The hash of cluster c's indices (hash_words over triangles [c * kClusterTriangles, ...)):
+// ClusterBounds::index_hash when the bounds were built, and what tells later frames that the
+// bounds still describe the mesh's triangles.
+std::uint64_t cluster_index_hash(const Mesh& mesh, std::size_t c);
+
 // The clusters of a mesh (in parallel). Clusters with an index out of range, a non-finite
 // position, a triangle degenerate or nearly so in object space, or normals spread too wide to
 // ever be culled whole are marked never culled.

@@ -8,7 +8,6 @@
 #include <zraster/clip.hpp>
 #include <zraster/render.hpp>
 
-#include "raster/setup_lanes.hpp"
 #include "raster/visibility_kernel.hpp"
 #include "render/cluster_cache.hpp"
 #include "render/shade_kernel.hpp"

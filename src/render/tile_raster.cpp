@@ -15,6 +15,7 @@
 #include <memory>
 
 #include "memory/huge_pages.hpp"
+#include "raster/setup_lanes.hpp"
 #include "raster/visibility_kernel.hpp"
 #include "render/frame.hpp"
 #include "render/hierarchical_z.hpp"

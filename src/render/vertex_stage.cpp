@@ -79,7 +79,7 @@ EarlyClusters cull_clusters_early(const Frame& frame, const FrameInstance& fi,
                                   std::vector<std::uint8_t>& needed) {
     const Mesh& mesh = *fi.mesh;
     const ClusterArrays& arrays = kept.arrays;
-    const std::size_t clusters = arrays.count, triangles = mesh.triangle_count();
+    const std::size_t clusters = arrays.count;
     const bool simd = frame.options->simd;
     const ClusterView view = make_cluster_view(fi.mvp, frame.clip_settings, frame.setup_settings);
     culled.resize(clusters);
@@ -97,14 +97,9 @@ EarlyClusters cull_clusters_early(const Frame& frame, const FrameInstance& fi,
     std::atomic<bool> changed{false};
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, clusters, 1024),
                       [&](const tbb::blocked_range<std::size_t>& r) {
-                          for (std::size_t c = r.begin(); c < r.end(); ++c) {
-                              const std::size_t lo = c * kClusterTriangles;
-                              const std::size_t hi = std::min(lo + kClusterTriangles, triangles);
-                              if ((simd ? hash_words : hash_words_scalar)(
-                                      mesh.indices.data() + 3 * lo, 3 * (hi - lo), 3 * lo) !=
-                                  arrays.index_hash[c])
+                          for (std::size_t c = r.begin(); c < r.end(); ++c)
+                              if (cluster_index_hash(mesh, c) != arrays.index_hash[c])
                                   changed = true;
-                          }
                       });
     if (changed) {
         kept.stale = true;
