@@ -100,6 +100,7 @@ void BM_ClassifyTriangles(benchmark::State& state) {
     for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = std::uint32_t(i);
     detail::ClassifyInput in;
     in.indices = indices.data();
+    in.triangle_total = indices.size() / 3;
     in.vertex_total = std::uint32_t(screen.size());
     in.screen = screen.data();
     in.settings.viewport = {1920, 1080};

@@ -200,6 +200,7 @@ void process_instance_range(const Frame& frame, std::uint32_t instance, std::siz
     }
     ClassifyInput in;
     in.indices = mesh.indices.data();
+    in.triangle_total = mesh.triangle_count();
     in.vertex_total = static_cast<std::uint32_t>(mesh.positions.size());
     in.first_vertex = fi.first_vertex;
     in.screen = vertices.screen.data();

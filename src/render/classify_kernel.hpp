@@ -22,6 +22,7 @@ inline constexpr std::int32_t kOutsideScreenX = std::numeric_limits<std::int32_t
 
 struct ClassifyInput {
     const std::uint32_t* indices = nullptr;  // the mesh's, 3 per triangle
+    std::size_t triangle_total = 0;          // the mesh's triangle count (how far to prefetch)
     std::uint32_t vertex_total = 0;          // the mesh's vertex count (indices must be below)
     std::uint32_t first_vertex = 0;          // frame index of the mesh's vertex 0
     // Frame screen vertices (FrameVertices::screen), x = kOutsideScreenX where outside.

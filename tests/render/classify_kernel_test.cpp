@@ -67,6 +67,7 @@ TEST(ClassifyKernel, SimdMatchesScalarAndClassifyTriangle) {
         }
         ClassifyInput in;
         in.indices = indices.data();
+        in.triangle_total = indices.size() / 3;
         in.vertex_total = vertex_total;
         in.first_vertex = first_vertex;
         in.screen = screen.data();
