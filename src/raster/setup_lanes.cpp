@@ -195,34 +195,9 @@ void setup_lanes_scalar(const VertexLanes& in, int count, const SetupSettings& s
     }
 }
 
-SetupResult load_setup(const VertexLanes& in, const SetupLanes& lanes, int lane,
-                       const SetupSettings& settings, TriangleSetup& t) {
-    if (lanes.scalar[lane]) return setup_triangle(lane_vertices(in, lane), settings, t);
-    for (std::size_t k = 0; k < 3; ++k) {
-        t.x[k] = in.x[k][lane];
-        t.y[k] = in.y[k][lane];
-        t.edge_a[k] = lanes.edge_a[k][lane];
-        t.edge_b[k] = lanes.edge_b[k][lane];
-        t.edge_c[k] = lanes.edge_c[k][lane];
-    }
-    t.min_x = lanes.min_x[lane];
-    t.min_y = lanes.min_y[lane];
-    t.max_x = lanes.max_x[lane];
-    t.max_y = lanes.max_y[lane];
-    t.front_facing = lanes.front_facing[lane] != 0;
-    const auto plane = [&](int p) {
-        return PlaneEquation{lanes.plane_a[p][lane], lanes.plane_b[p][lane],
-                             lanes.plane_c[p][lane]};
-    };
-    t.depth = plane(SetupLanes::kDepth);
-    if (!settings.barycentric_planes) return SetupResult::Visible;
-    t.q = plane(SetupLanes::kQ);
-    t.p1 = plane(SetupLanes::kP1);
-    t.p2 = plane(SetupLanes::kP2);
-    if (!settings.screen_linear_planes) return SetupResult::Visible;
-    t.l1 = plane(SetupLanes::kL1);
-    t.l2 = plane(SetupLanes::kL2);
-    return SetupResult::Visible;
+SetupResult setup_lane_scalar(const VertexLanes& in, int lane, const SetupSettings& settings,
+                              TriangleSetup& t) {
+    return setup_triangle(lane_vertices(in, lane), settings, t);
 }
 
 }  // namespace zraster::detail

@@ -15,6 +15,7 @@
 #pragma once
 #include <zraster/raster.hpp>
 
+#include <cstddef>
 #include <cstdint>
 
 namespace zraster::detail {
@@ -60,10 +61,42 @@ void setup_lanes(const VertexLanes& in, int count, const SetupSettings& settings
 void setup_lanes_scalar(const VertexLanes& in, int count, const SetupSettings& settings,
                         SetupLanes& out);
 
+// setup_triangle on lane `lane`'s vertices.
+SetupResult setup_lane_scalar(const VertexLanes& in, int lane, const SetupSettings& settings,
+                              TriangleSetup& t);
+
 // Lane `lane` as a TriangleSetup: from `lanes` unless it was left to the scalar setup, which
-// then runs here. Returns what setup_triangle returns.
-SetupResult load_setup(const VertexLanes& in, const SetupLanes& lanes, int lane,
-                       const SetupSettings& settings, TriangleSetup& out);
+// then runs here. Returns what setup_triangle returns. (Inline: called once per bin entry, and
+// the caller's loop keeps what it can in registers.)
+inline SetupResult load_setup(const VertexLanes& in, const SetupLanes& lanes, int lane,
+                              const SetupSettings& settings, TriangleSetup& t) {
+    if (lanes.scalar[lane]) return setup_lane_scalar(in, lane, settings, t);
+    for (std::size_t k = 0; k < 3; ++k) {
+        t.x[k] = in.x[k][lane];
+        t.y[k] = in.y[k][lane];
+        t.edge_a[k] = lanes.edge_a[k][lane];
+        t.edge_b[k] = lanes.edge_b[k][lane];
+        t.edge_c[k] = lanes.edge_c[k][lane];
+    }
+    t.min_x = lanes.min_x[lane];
+    t.min_y = lanes.min_y[lane];
+    t.max_x = lanes.max_x[lane];
+    t.max_y = lanes.max_y[lane];
+    t.front_facing = lanes.front_facing[lane] != 0;
+    const auto plane = [&](int p) {
+        return PlaneEquation{lanes.plane_a[p][lane], lanes.plane_b[p][lane],
+                             lanes.plane_c[p][lane]};
+    };
+    t.depth = plane(SetupLanes::kDepth);
+    if (!settings.barycentric_planes) return SetupResult::Visible;
+    t.q = plane(SetupLanes::kQ);
+    t.p1 = plane(SetupLanes::kP1);
+    t.p2 = plane(SetupLanes::kP2);
+    if (!settings.screen_linear_planes) return SetupResult::Visible;
+    t.l1 = plane(SetupLanes::kL1);
+    t.l2 = plane(SetupLanes::kL2);
+    return SetupResult::Visible;
+}
 
 // Name of the instruction set the dispatcher picked (for reports and tests).
 const char* setup_lanes_target();
