@@ -233,7 +233,7 @@ void process_instance_range(const Frame& frame, std::uint32_t instance, std::siz
             const std::size_t lo = c * kClusterTriangles;
             const std::size_t hi = std::min(lo + kClusterTriangles, triangles);
             // The bounds hold for the indices they were built from: check those are still here.
-            if (!fi.cluster_indices_checked &&
+            if (!fi.cluster_indices_checked && !frame.options->static_meshes &&
                 cluster_index_hash(mesh, c) != arrays.index_hash[c]) {
                 fi.clusters->stale = true;
                 continue;

@@ -9,7 +9,8 @@
 // before the vertex stage skips vertices (vertex_blocks.hpp; a mismatch culls nothing that
 // frame). Either way the mesh's bounds are dropped after the frame. A mesh whose bounds turn out
 // nearly all uncullable (normals every way, as in a triangle soup) is then left alone,
-// unhashed, while its sizes stay.
+// unhashed, while its sizes stay. With RenderOptions::static_meshes nothing is hashed: the
+// caller promises the meshes do not change, and only their array sizes are compared.
 #pragma once
 #include <zraster/mesh.hpp>
 #include <zraster/render.hpp>
@@ -35,6 +36,9 @@ struct MeshClusters {
     // match its hash.
     mutable std::atomic<bool> stale{false};
 };
+
+// The positions' hash recorded for every mesh under RenderOptions::static_meshes.
+inline constexpr std::uint64_t kStaticMeshHash = 0;
 
 // Meshes smaller than this are not worth their bounds' upkeep.
 inline constexpr std::size_t kMinClusteredTriangles = 4096;

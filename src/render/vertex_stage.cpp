@@ -95,12 +95,13 @@ EarlyClusters cull_clusters_early(const Frame& frame, const FrameInstance& fi,
         needed_vertex_blocks(kept.blocks, culled.data(), mesh.positions.size(), needed.data());
     if (skipped * kMinSkipDivisor < mesh.positions.size()) return early;
     std::atomic<bool> changed{false};
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, clusters, 1024),
-                      [&](const tbb::blocked_range<std::size_t>& r) {
-                          for (std::size_t c = r.begin(); c < r.end(); ++c)
-                              if (cluster_index_hash(mesh, c) != arrays.index_hash[c])
-                                  changed = true;
-                      });
+    if (!frame.options->static_meshes)  // (a static mesh's indices are taken as unchanged)
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, clusters, 1024),
+                          [&](const tbb::blocked_range<std::size_t>& r) {
+                              for (std::size_t c = r.begin(); c < r.end(); ++c)
+                                  if (cluster_index_hash(mesh, c) != arrays.index_hash[c])
+                                      changed = true;
+                          });
     if (changed) {
         kept.stale = true;
         return {};
@@ -190,8 +191,11 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
         fi.positions_hashed = cluster_culling_applies(options, mesh) &&
                               frame.cluster_cache.wants_positions_hash(mesh);
         const auto earlier = hashed.find(&mesh);
-        const bool hash_here = fi.positions_hashed && earlier == hashed.end();
-        if (fi.positions_hashed && !hash_here) fi.positions_hash = earlier->second;
+        // Static meshes (RenderOptions::static_meshes) are not hashed: all have one hash.
+        const bool hash_here =
+            fi.positions_hashed && earlier == hashed.end() && !options.static_meshes;
+        if (fi.positions_hashed && !hash_here)
+            fi.positions_hash = options.static_meshes ? kStaticMeshHash : earlier->second;
         // Vertices only culled clusters use are skipped (vertex_blocks.hpp), with the bounds
         // kept from earlier frames; their positions are checked after (hash_here) or before.
         fi.culled_clusters = nullptr;

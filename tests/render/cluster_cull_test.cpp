@@ -769,5 +769,56 @@ TEST(ClusterCulling, ChangedPositionsAreNoticed) {
     EXPECT_EQ(nudged.stats.clusters_culled, 0u);
 }
 
+// RenderOptions::static_meshes: the same frames while the promise holds, no hashing (a moved
+// vertex goes unnoticed: that is the promise's price), and a change of size still noticed.
+TEST(ClusterCulling, StaticMeshesAreCheckedBySizeOnly) {
+    Scene scene = sphere_scene();
+    RenderOptions o;
+    o.width = 320;
+    o.height = 240;
+    o.threads = 2;
+    o.static_meshes = true;
+    const Camera fitted = fit_camera(scene.world_positions());
+    Renderer kept;
+    int frame = 0;
+    // The eye circles the sphere a little each frame: skipped vertices hold stale positions.
+    const auto next_view = [&] {
+        Camera camera = fitted;
+        const double angle = 0.15 * frame++;
+        const glm::dvec3 eye = camera.eye - camera.target;
+        camera.eye =
+            camera.target + glm::dvec3(eye.x * std::cos(angle) - eye.z * std::sin(angle), eye.y,
+                                       eye.x * std::sin(angle) + eye.z * std::cos(angle));
+        o.camera = camera;
+    };
+    const auto next_frame = [&](const std::string& what) -> const RenderResult& {
+        next_view();
+        return render_and_check(kept, scene, o, what);
+    };
+    next_frame("first");
+    EXPECT_GT(next_frame("second: bounds built").stats.clusters_culled, 100u);
+    EXPECT_GT(next_frame("third: vertices skipped").stats.vertices_skipped, 20000u);
+    // One more triangle (a copy of the first): the sizes changed, nothing is culled or skipped.
+    Mesh& mesh = scene.meshes[0];
+    for (std::size_t k = 0; k < 3; ++k) mesh.indices.push_back(mesh.indices[k]);
+    const RenderResult& grown = next_frame("a triangle added");
+    EXPECT_EQ(grown.stats.clusters_culled, 0u);
+    EXPECT_EQ(grown.stats.vertices_skipped, 0u);
+    next_frame("seen again");
+    EXPECT_GT(next_frame("bounds rebuilt").stats.vertices_skipped, 20000u);
+    // A promise broken: every vertex moved, same sizes. Not hashed, so not noticed: the
+    // renderer still skips the vertices its old bounds cull (the frame is not checked).
+    for (glm::vec3& p : mesh.positions) p *= 0.9f;
+    next_view();
+    EXPECT_GT(kept.render(scene, o).stats.vertices_skipped, 20000u);
+    // Checked again from the next frame on: the moved mesh is taken as new.
+    o.static_meshes = false;
+    const RenderResult& checked = next_frame("checked again");
+    EXPECT_EQ(checked.stats.clusters_culled, 0u);
+    EXPECT_EQ(checked.stats.vertices_skipped, 0u);
+    next_frame("checked, seen again");
+    EXPECT_GT(next_frame("checked, bounds rebuilt").stats.vertices_skipped, 20000u);
+}
+
 }  // namespace
 }  // namespace zraster::test

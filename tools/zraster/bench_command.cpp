@@ -63,6 +63,8 @@ RenderOptions bench_render_options(BenchMode mode, int width, int height, int th
     o.depth_write = true;
     o.background = {0.2f, 0.2f, 0.2f};
     o.color_target = mode != BenchMode::Depth;
+    // The scene does not change from frame to frame, as glbench's static vertex buffers do not.
+    o.static_meshes = true;
     return o;
 }
 
@@ -89,6 +91,9 @@ void add_bench_command(CLI::App& app, BenchArguments& a) {
     cmd->add_flag("--no-cluster-culling", a.no_cluster_culling,
                   "Disable back-face culling of triangle clusters (same image, to measure what "
                   "it saves)");
+    cmd->add_flag("--check-meshes", a.check_meshes,
+                  "Check every frame that the meshes did not change (hash them), as a Renderer "
+                  "does unless told they are static (same image)");
     cmd->add_flag("--front-to-back", a.front_to_back, "Draw instances nearest first");
     cmd->add_option("--shading-strategy", a.strategy, "auto | forward | deferred (same image)")
         ->check(CLI::IsMember({"auto", "forward", "deferred"}))
@@ -148,6 +153,7 @@ int run_bench(const BenchArguments& a) {
     RenderOptions options = bench_render_options(mode, size.x, size.y, a.threads, !a.no_cull);
     options.hierarchical_z = !a.no_hierarchical_z;
     options.cluster_culling = !a.no_cluster_culling;
+    options.static_meshes = !a.check_meshes;
     if (a.front_to_back) options.instance_order = InstanceOrder::FrontToBack;
     options.strategy = shading_strategy(a.strategy);
     // The same fit_camera framing render() does for an unset camera, computed once: refitting

@@ -20,6 +20,7 @@ struct BenchArguments {
     bool no_cull = false;
     bool no_hierarchical_z = false;
     bool no_cluster_culling = false;
+    bool check_meshes = false;
     bool front_to_back = false;
     std::string strategy = "auto";
     bool verbose = false;
