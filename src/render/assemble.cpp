@@ -191,9 +191,9 @@ void process_instance_range(const Frame& frame, std::uint32_t instance, std::siz
     const FrameInstance& fi = frame.instances[instance];
     const Mesh& mesh = *fi.mesh;
     const FrameVertices& vertices = frame.vertices;
-    // The batch classifier gathers 32-bit words of ScreenVertex (6 per vertex).
+    // The batch classifier computes frame vertex indices in 32-bit lanes.
     const bool batch = frame.clip_settings.user_plane_count == 0 &&
-                       vertices.screen.size() < (std::size_t{1} << 31) / 6;
+                       vertices.screen.size() < (std::size_t{1} << 31);
     if (!batch) {
         for (std::size_t t = first; t < end; ++t) assemble_triangle(frame, instance, t, chunk);
         return;

@@ -6,14 +6,15 @@
 #include <hwy/highway.h>
 
 #include <algorithm>
+#include <bit>
 #include <cstddef>
 
 #include "render/classify_kernel.hpp"
 
 namespace zraster::detail {
-// ScreenVertex is gathered as 32-bit words: x is word 0, y word 1 of 6.
+// ScreenVertex is gathered as 64-bit words: (x, y) is word 0 of 3, x in its low half.
 static_assert(sizeof(ScreenVertex) == 24 && offsetof(ScreenVertex, x) == 0 &&
-              offsetof(ScreenVertex, y) == 4);
+              offsetof(ScreenVertex, y) == 4 && std::endian::native == std::endian::little);
 }  // namespace zraster::detail
 
 HWY_BEFORE_NAMESPACE();
@@ -30,7 +31,9 @@ void ClassifyTriangles(const ClassifyInput& in, std::size_t first, std::size_t c
     const hn::Rebind<std::int32_t, decltype(dd)> di;
     const hn::Rebind<std::uint32_t, decltype(dd)> du;
     const std::size_t lanes = hn::Lanes(dd);
-    const auto* words = reinterpret_cast<const std::int32_t*>(in.screen);
+    const hn::Rebind<std::uint64_t, decltype(dd)> d64;
+    const hn::Rebind<std::int64_t, decltype(dd)> di64;
+    const auto* pairs = reinterpret_cast<const std::uint64_t*>(in.screen);
     const SetupSettings& s = in.settings;
     const bool ccw = s.front_face == FrontFace::CounterClockwise;
     const auto limit = hn::Set(di, kClassifyCoordinateLimit);
@@ -69,15 +72,23 @@ void ClassifyTriangles(const ClassifyInput& in, std::size_t first, std::size_t c
         const auto g0 = hn::BitCast(di, hn::Add(base, hn::IfThenElse(in_range, i0, zero_u)));
         const auto g1 = hn::BitCast(di, hn::Add(base, hn::IfThenElse(in_range, i1, zero_u)));
         const auto g2 = hn::BitCast(di, hn::Add(base, hn::IfThenElse(in_range, i2, zero_u)));
-        const auto six = hn::Set(di, 6);
-        const auto w0 = hn::Mul(g0, six), w1 = hn::Mul(g1, six), w2 = hn::Mul(g2, six);
+        // Each vertex's (x, y) in one 64-bit gather (3 per ScreenVertex; x in the low half):
+        // gathers cost per element, so half the elements of gathering x and y apart.
+        const auto pair = [&](hn::Vec<decltype(di)> g) {
+            const auto g64 = hn::PromoteTo(di64, g);
+            return hn::GatherIndex(d64, pairs, hn::Add(hn::ShiftLeft<1>(g64), g64));
+        };
+        const auto low = [&](hn::Vec<decltype(d64)> p) {
+            return hn::BitCast(di, hn::TruncateTo(du, p));
+        };
+        const auto high = [&](hn::Vec<decltype(d64)> p) {
+            return hn::BitCast(di, hn::TruncateTo(du, hn::ShiftRight<32>(p)));
+        };
+        const auto p0 = pair(g0), p1 = pair(g1), p2 = pair(g2);
+        const auto x0 = low(p0), y0 = high(p0);
+        const auto x1 = low(p1), y1 = high(p1);
+        const auto x2 = low(p2), y2 = high(p2);
         const auto one = hn::Set(di, 1);
-        const auto x0 = hn::GatherIndex(di, words, w0),
-                   y0 = hn::GatherIndex(di, words, hn::Add(w0, one));
-        const auto x1 = hn::GatherIndex(di, words, w1),
-                   y1 = hn::GatherIndex(di, words, hn::Add(w1, one));
-        const auto x2 = hn::GatherIndex(di, words, w2),
-                   y2 = hn::GatherIndex(di, words, hn::Add(w2, one));
         const auto lo_x = hn::Min(hn::Min(x0, x1), x2), hi_x = hn::Max(hn::Max(x0, x1), x2);
         const auto lo_y = hn::Min(hn::Min(y0, y1), y2), hi_y = hn::Max(hn::Max(y0, y1), y2);
         const auto small = hn::And(hn::And(hn::Gt(lo_x, neg_limit), hn::Lt(hi_x, limit)),

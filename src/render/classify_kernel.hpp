@@ -45,8 +45,8 @@ struct ClassifyOutput {
 };
 
 // Classifies mesh triangles [first, first + count), count <= kMaxBatch; out.count is reset,
-// the counters accumulate. Entries keep triangle order. Frame vertex indices times 6 must fit
-// in 31 bits (the SIMD version gathers 32-bit words).
+// the counters accumulate. Entries keep triangle order. Frame vertex indices must fit in 31 bits
+// (the SIMD version computes them in 32-bit lanes).
 void classify_triangles(const ClassifyInput& in, std::size_t first, std::size_t count,
                         ClassifyOutput& out);
 void classify_triangles_scalar(const ClassifyInput& in, std::size_t first, std::size_t count,
