@@ -69,11 +69,11 @@ HWY_INLINE void interpolate_attributes(D d, const BlockJob& job, V b1, V b2, Til
                                        const Store& store) {
     const CornerAttributes& a = *job.corners;
     auto w0 = hn::Sub(hn::Sub(hn::Set(d, 1.0f), b1), b2), w1 = b1, w2 = b2;
-    if (a.piece != nullptr) {
+    if (const glm::vec3* piece = job.piece; piece != nullptr) {
         const auto remap = [&](int c) {
-            return hn::Add(hn::Add(hn::Mul(w0, hn::Set(d, a.piece[0][c])),
-                                   hn::Mul(w1, hn::Set(d, a.piece[1][c]))),
-                           hn::Mul(w2, hn::Set(d, a.piece[2][c])));
+            return hn::Add(
+                hn::Add(hn::Mul(w0, hn::Set(d, piece[0][c])), hn::Mul(w1, hn::Set(d, piece[1][c]))),
+                hn::Mul(w2, hn::Set(d, piece[2][c])));
         };
         const auto r0 = remap(0), r1 = remap(1), r2 = remap(2);
         w0 = r0;
@@ -410,11 +410,11 @@ int visibility_block_scalar(const BlockJob& job, TileBuffers& tile) {
                 continue;
             }
             if (job.shade_constants != nullptr) {
-                tile.color[at] =
-                    shade_interpolated_scalar(*job.shade_constants, *job.corners, b1, b2);
+                tile.color[at] = shade_interpolated_scalar(*job.shade_constants, *job.corners,
+                                                           job.piece, b1, b2);
                 continue;
             }
-            store_interpolated(*job.corners, b1, b2, tile, at);
+            store_interpolated(*job.corners, job.piece, b1, b2, tile, at);
         }
     return passed;
 }

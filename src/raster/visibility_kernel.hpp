@@ -48,27 +48,28 @@ struct TileBuffers {
 inline constexpr std::uint32_t kShadeFlip = 0x80000000u;
 
 // A triangle's corner attributes for interpolation in the kernel, as the deferred shader would
-// interpolate them: b = (1 - b1 - b2, b1, b2), remapped by a clipped piece's corner weights,
-// then attribute = (a0 b.x + a1 b.y) + a2 b.z.
+// interpolate them: b = (1 - b1 - b2, b1, b2), remapped by a clipped piece's corner weights
+// (`piece` below: the three corners' weights, or null), then attribute = (a0 b.x + a1 b.y) +
+// a2 b.z. (The piece travels apart: a bin entry carries these 76 bytes for every triangle,
+// and pieces are rare.)
 struct CornerAttributes {
     glm::vec3 world[3], normal[3];
-    const glm::vec3* piece = nullptr;  // a clipped piece's corner weights, or null
-    std::uint32_t tag = 0;             // written to TileBuffers::shade_tag
+    std::uint32_t tag = 0;  // written to TileBuffers::shade_tag
 };
 
 // The scalar forms of that interpolation (the kernel does the same operations in lanes).
-inline glm::vec3 interpolation_weights(const CornerAttributes& a, float b1, float b2) {
+inline glm::vec3 interpolation_weights(const glm::vec3* piece, float b1, float b2) {
     glm::vec3 b{1.0f - b1 - b2, b1, b2};
-    if (a.piece != nullptr) b = b.x * a.piece[0] + b.y * a.piece[1] + b.z * a.piece[2];
+    if (piece != nullptr) b = b.x * piece[0] + b.y * piece[1] + b.z * piece[2];
     return b;
 }
 inline glm::vec3 interpolate_corners(const glm::vec3 corner[3], const glm::vec3& b) {
     return corner[0] * b.x + corner[1] * b.y + corner[2] * b.z;
 }
 // Stores a pixel's interpolated normal and position (the scalar paths).
-inline void store_interpolated(const CornerAttributes& a, float b1, float b2, TileBuffers& tile,
-                               std::size_t at) {
-    const glm::vec3 w = interpolation_weights(a, b1, b2);
+inline void store_interpolated(const CornerAttributes& a, const glm::vec3* piece, float b1,
+                               float b2, TileBuffers& tile, std::size_t at) {
+    const glm::vec3 w = interpolation_weights(piece, b1, b2);
     const glm::vec3 n = interpolate_corners(a.normal, w);
     const glm::vec3 p = interpolate_corners(a.world, w);
     tile.nx[at] = n.x;
@@ -99,6 +100,7 @@ struct BlockJob {
     // With barycentrics on: the shade tag (0 without corners), and with corners the
     // interpolated attributes instead of the barycentrics.
     const CornerAttributes* corners = nullptr;
+    const glm::vec3* piece = nullptr;  // a clipped piece's corner weights, or null
     // Forward shading (with corners): the fragments that pass are lit right away with these
     // constants (the SIMD Phong shader's), their color written to TileBuffers::color instead of
     // the interpolated attributes; the shade tag is still written.

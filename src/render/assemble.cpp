@@ -266,13 +266,10 @@ void process_chunk(const Frame& frame, Chunk& chunk) {
 
 // The corners' world positions and normals of a triangle the SIMD Phong shader draws, for
 // interpolation in the visibility kernel: the same values shade_fragment() interpolates.
-void corner_attributes(const Frame& frame, const Chunk& chunk, const TriangleRef& ref,
-                       CornerAttributes& corners) {
+void corner_attributes(const Frame& frame, const TriangleRef& ref, CornerAttributes& corners) {
     const FrameInstance& fi = frame.instances[ref.instance];
     corners.tag = 0;  // the scalar shader's
     if (fi.phong_kernel < 0) return;
-    corners.piece =
-        ref.piece == TriangleRef::kNotClipped ? nullptr : chunk.pieces[ref.piece].weights.data();
     const bool flip = !ref.front_facing && frame.options->two_sided_lighting;
     corners.tag = std::uint32_t(fi.phong_kernel + 1) | (flip ? kShadeFlip : 0u);
     for (std::size_t k = 0; k < 3; ++k) {
@@ -310,8 +307,8 @@ void write_bins(Frame& frame, std::size_t chunk_index) {
                 first = at;
                 for (std::size_t k = 0; k < 3; ++k)
                     entry.vertices[k] = frame.screen_vertex(chunk, r.screen[k]);
-                entry.ref = i;
-                if (frame.tagged_shading) corner_attributes(frame, chunk, r, corners[at]);
+                entry.ref = i | (r.piece == TriangleRef::kNotClipped ? 0 : BinEntry::kClippedPiece);
+                if (frame.tagged_shading) corner_attributes(frame, r, corners[at]);
             }
     }
 }

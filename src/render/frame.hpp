@@ -106,7 +106,10 @@ struct ClippedPiece {
 // bins sequentially instead of chasing refs and vertices all over memory.
 struct BinEntry {
     std::array<ScreenVertex, 3> vertices;
-    std::uint32_t ref;  // index into Chunk::refs
+    std::uint32_t ref;  // index into Chunk::refs, | kClippedPiece for a clipped piece
+    // Set for a clipped piece: its corner weights (Chunk::pieces) are looked up through the
+    // ref (rare, so CornerAttributes does not carry them).
+    static constexpr std::uint32_t kClippedPiece = 0x80000000u;
 };
 
 struct Chunk {

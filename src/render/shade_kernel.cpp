@@ -89,8 +89,9 @@ std::uint32_t rgba_of(const PhongBatch& batch, int i) {
 }  // namespace
 
 std::uint32_t shade_interpolated_scalar(const PhongConstants& constants,
-                                        const CornerAttributes& corners, float b1, float b2) {
-    const glm::vec3 w = interpolation_weights(corners, b1, b2);
+                                        const CornerAttributes& corners, const glm::vec3* piece,
+                                        float b1, float b2) {
+    const glm::vec3 w = interpolation_weights(piece, b1, b2);
     const glm::vec3 n = interpolate_corners(corners.normal, w);
     const glm::vec3 p = interpolate_corners(corners.world, w);
     PhongBatch one;

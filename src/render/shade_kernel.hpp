@@ -58,7 +58,8 @@ int shade_tagged_row_scalar(const PhongConstants* constants, const TileBuffers& 
 // The scalar twin of the visibility kernel's forward shading: the corner attributes
 // interpolated at (b1, b2) as store_interpolated does, lit, as RGBA8.
 std::uint32_t shade_interpolated_scalar(const PhongConstants& constants,
-                                        const CornerAttributes& corners, float b1, float b2);
+                                        const CornerAttributes& corners, const glm::vec3* piece,
+                                        float b1, float b2);
 
 // The scalar unit normal used by both paths: n / |n|, or (0, 1, 0) for a zero vector.
 glm::vec3 unit_normal(const glm::vec3& n);

@@ -89,7 +89,7 @@ void write_shaded(const TileContext& c, const ShadedFragment& f, int px, int py)
 // format, the depth test off, coverage counts, forward shading.
 std::uint64_t rasterize_scalar(const TileContext& c, const Chunk& chunk, const TriangleRef& ref,
                                const TriangleSetup& setup, std::uint32_t id,
-                               const CornerAttributes* corners,
+                               const CornerAttributes* corners, const glm::vec3* piece,
                                const PhongConstants* shade_constants, TileBuffers& tile, int x0,
                                int y0, int x1, int y1) {
     const RenderOptions& options = *c.frame.options;
@@ -116,9 +116,9 @@ std::uint64_t rasterize_scalar(const TileContext& c, const Chunk& chunk, const T
         tile.b2[at] = b.z;
         tile.shade_tag[at] = corners ? corners->tag : 0;
         if (corners && shade_constants)  // forward, as the kernel does
-            tile.color[at] = shade_interpolated_scalar(*shade_constants, *corners, b.y, b.z);
+            tile.color[at] = shade_interpolated_scalar(*shade_constants, *corners, piece, b.y, b.z);
         else if (corners)
-            store_interpolated(*corners, b.y, b.z, tile, at);
+            store_interpolated(*corners, piece, b.y, b.z, tile, at);
         if (c.forward && c.shade)
             write_shaded(
                 c, shade_fragment(c.frame, shading, b.y, b.z, px, py, !c.targets.normal.empty()),
@@ -140,7 +140,7 @@ bool fits_int32(std::int64_t v) {
 // then the visibility kernel on the covered or partly covered ones.
 std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const TriangleRef& ref,
                                const TriangleSetup& setup, std::uint32_t id,
-                               const CornerAttributes* corners,
+                               const CornerAttributes* corners, const glm::vec3* piece,
                                const PhongConstants* shade_constants, TileBuffers& tile) {
     const RenderOptions& options = *c.frame.options;
     const int rx0 = std::max(setup.min_x, c.x0), ry0 = std::max(setup.min_y, c.y0);
@@ -153,6 +153,7 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
     job.attributes = c.shade || !c.targets.instance_id.empty();
     job.barycentrics = c.shade;
     job.corners = corners;
+    job.piece = piece;
     job.shade_constants = shade_constants;
     job.ref = id;
     // Runs the kernel on pixels [x0, x1] x [y0, y1] of the triangle (edge values there fit 32
@@ -258,8 +259,8 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
             }
             if (outside) continue;
             if (!fits && !full)  // edges too long for 32-bit lanes: the exact 64-bit scalar path
-                passed += rasterize_scalar(c, chunk, ref, setup, id, corners, shade_constants, tile,
-                                           x0, y0, x1 + 1, y1 + 1);
+                passed += rasterize_scalar(c, chunk, ref, setup, id, corners, piece,
+                                           shade_constants, tile, x0, y0, x1 + 1, y1 + 1);
             else
                 passed += run_block.template operator()<false>(x0, y0, x1, y1, full, inside);
         }
@@ -525,23 +526,26 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
             for (int lane = 0; lane < count; ++lane, ++e) {
                 while (e >= bins[ci + 1]) ++ci;
                 const Chunk& chunk = frame.chunks[ci];
-                const std::uint32_t local = entries[lane].ref;
+                const std::uint32_t local = entries[lane].ref & ~BinEntry::kClippedPiece;
                 if (load_setup(vertices, lanes, lane, frame.setup_settings, setup) !=
                     SetupResult::Visible)
                     continue;  // cannot happen: the front end made the same decision
                 const TriangleRef& ref = chunk.refs[local];
                 const std::uint32_t id = std::uint32_t(ci) << kLocalBits | local;
                 if (!kernel) {
-                    passed += rasterize_scalar(c, chunk, ref, setup, id, nullptr, nullptr, tile,
-                                               c.x0, c.y0, c.x1, c.y1);
+                    passed += rasterize_scalar(c, chunk, ref, setup, id, nullptr, nullptr, nullptr,
+                                               tile, c.x0, c.y0, c.x1, c.y1);
                     continue;
                 }
                 const CornerAttributes* with = nullptr;
+                const glm::vec3* piece = nullptr;
                 if (tagged) {
                     with = &frame.bin_corners[e];
                     if (with->tag == 0) {
                         with = nullptr;
                         untagged = true;
+                    } else if (entries[lane].ref & BinEntry::kClippedPiece) {
+                        piece = chunk.pieces[ref.piece].weights.data();
                     }
                 }
                 // The deferred pass reads the ref of every pixel the triangle keeps (unless
@@ -553,7 +557,7 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
                         ? &frame.phong_constants[(with->tag & ~kShadeFlip) - 1]
                         : nullptr;
                 const std::uint64_t kept =
-                    rasterize_blocks(c, chunk, ref, setup, id, with, shade_now, tile);
+                    rasterize_blocks(c, chunk, ref, setup, id, with, piece, shade_now, tile);
                 passed += kept;
                 if (shade_now != nullptr) shaded_forward += kept;
             }

@@ -88,7 +88,7 @@ void VisibilityBlockMatchesScalarOnRandomTriangles() {
             corners.world[k] = {attribute(rng), attribute(rng), attribute(rng)};
             corners.normal[k] = {attribute(rng), attribute(rng), attribute(rng)};
         }
-        corners.piece = tri % 2 ? piece : nullptr;
+        job.piece = tri % 2 ? piece : nullptr;
         corners.tag = (1 + tri % 4) | (tri % 5 == 0 ? kShadeFlip : 0u);
         job.corners = tri % 3 == 0 ? &corners : nullptr;
         job.shade_constants = tri % 6 == 0 ? &lighting : nullptr;
@@ -278,6 +278,22 @@ void WholeFramesMatchTheScalarPath() {
     scene.instances.push_back(second);
     o.camera.reset();
     expect_simd_equals_scalar(scene, o);
+    // The near plane through a sphere: its clipped pieces interpolate with their corner weights
+    // (the kernel gets them through the bin entry's ref), the inside seen through the hole.
+    const Scene sphere = make_procedural_scene("sphere:5000");
+    const Bounds3f box = sphere.meshes[0].bounds;
+    const glm::dvec3 center = glm::dvec3(box.center());
+    const double radius = 0.5 * double(box.hi.x - box.lo.x);
+    Camera cut;
+    cut.eye = center + glm::dvec3(0.3 * radius, 0.2 * radius, 1.6 * radius);
+    cut.target = center;
+    cut.near = 0.9 * radius;
+    cut.far = 10.0 * radius;
+    o.camera = cut;
+    o.cull = CullMode::None;
+    const RenderResult clipped = render(sphere, o);
+    ASSERT_GT(clipped.stats.triangles_clipped, 50u);
+    expect_simd_equals_scalar(sphere, o);
 }
 
 // Forward (SIMD Phong fragments lit in the visibility kernel as they pass) and deferred shading
