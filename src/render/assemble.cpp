@@ -46,10 +46,10 @@ void emit(const Frame& frame, TriangleRef ref, const ScreenVertex& v0, const Scr
             return;
     }
     ref.front_facing = setup.front_facing;
-    ref.tile_x0 = static_cast<std::uint16_t>(setup.min_x / kTileSize);
-    ref.tile_y0 = static_cast<std::uint16_t>(setup.min_y / kTileSize);
-    ref.tile_x1 = static_cast<std::uint16_t>(setup.max_x / kTileSize);
-    ref.tile_y1 = static_cast<std::uint16_t>(setup.max_y / kTileSize);
+    ref.tile_x0 = static_cast<std::uint8_t>(setup.min_x / kTileSize);
+    ref.tile_y0 = static_cast<std::uint8_t>(setup.min_y / kTileSize);
+    ref.tile_x1 = static_cast<std::uint8_t>(setup.max_x / kTileSize);
+    ref.tile_y1 = static_cast<std::uint8_t>(setup.max_y / kTileSize);
     ++chunk.stats.triangles_rasterized;
     count_in_bins(frame, ref, chunk);
     chunk.refs.push_back(ref);
@@ -85,7 +85,6 @@ void clip_and_emit(const Frame& frame, TriangleRef ref, const std::array<glm::ve
     }
     for (int k = 1; k + 1 < polygon.count; ++k) {
         const auto a = base, b = base + std::uint32_t(k), c = base + std::uint32_t(k + 1);
-        ref.screen = {a | kExtraVertex, b | kExtraVertex, c | kExtraVertex};
         ref.piece = static_cast<std::uint32_t>(chunk.pieces.size());
         const std::size_t before = chunk.refs.size();
         emit(frame, ref, chunk.extra_vertices[a], chunk.extra_vertices[b], chunk.extra_vertices[c],
@@ -93,7 +92,8 @@ void clip_and_emit(const Frame& frame, TriangleRef ref, const std::array<glm::ve
         if (chunk.refs.size() != before)
             chunk.pieces.push_back({{polygon.vertices[0].weights,
                                      polygon.vertices[static_cast<std::size_t>(k)].weights,
-                                     polygon.vertices[static_cast<std::size_t>(k + 1)].weights}});
+                                     polygon.vertices[static_cast<std::size_t>(k + 1)].weights},
+                                    {a, b, c}});
     }
 }
 
@@ -116,7 +116,7 @@ void assemble_triangle(const Frame& frame, std::uint32_t instance, std::size_t t
         local[k] = indices[3 * t + k];
         valid &= local[k] < vertex_total;
         const std::uint32_t global = fi.first_vertex + (local[k] < vertex_total ? local[k] : 0);
-        ref.vertex[k] = ref.screen[k] = global;
+        ref.vertex[k] = global;
         code[k] = vertices.outcode[global];
         finite &= code[k] != kNonFinite;
     }
@@ -173,13 +173,12 @@ void classify_range(const Frame& frame, std::uint32_t instance, const ClassifyIn
             ref.instance = instance;
             ref.primitive = out.triangle[k];
             const std::uint32_t* corner = in.indices + 3 * std::size_t{out.triangle[k]};
-            for (std::size_t c = 0; c < 3; ++c)
-                ref.vertex[c] = ref.screen[c] = fi.first_vertex + corner[c];
+            for (std::size_t c = 0; c < 3; ++c) ref.vertex[c] = fi.first_vertex + corner[c];
             ref.front_facing = (out.flags[k] & ClassifyOutput::kFront) != 0;
-            ref.tile_x0 = static_cast<std::uint16_t>(out.min_x[k] / kTileSize);
-            ref.tile_y0 = static_cast<std::uint16_t>(out.min_y[k] / kTileSize);
-            ref.tile_x1 = static_cast<std::uint16_t>(out.max_x[k] / kTileSize);
-            ref.tile_y1 = static_cast<std::uint16_t>(out.max_y[k] / kTileSize);
+            ref.tile_x0 = static_cast<std::uint8_t>(out.min_x[k] / kTileSize);
+            ref.tile_y0 = static_cast<std::uint8_t>(out.min_y[k] / kTileSize);
+            ref.tile_x1 = static_cast<std::uint8_t>(out.max_x[k] / kTileSize);
+            ref.tile_y1 = static_cast<std::uint8_t>(out.max_y[k] / kTileSize);
             ++chunk.stats.triangles_rasterized;
             count_in_bins(frame, ref, chunk);
         }
@@ -306,7 +305,7 @@ void write_bins(Frame& frame, std::size_t chunk_index) {
                 }
                 first = at;
                 for (std::size_t k = 0; k < 3; ++k)
-                    entry.vertices[k] = frame.screen_vertex(chunk, r.screen[k]);
+                    entry.vertices[k] = frame.screen_vertex(chunk, r, k);
                 entry.ref = i | (r.piece == TriangleRef::kNotClipped ? 0 : BinEntry::kClippedPiece);
                 if (frame.tagged_shading) corner_attributes(frame, r, corners[at]);
             }

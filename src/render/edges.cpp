@@ -56,9 +56,9 @@ void draw_edges(const Frame& frame, RenderTargets& targets) {
     TriangleSetup setup;
     for (const Chunk& chunk : frame.chunks)
         for (const TriangleRef& ref : chunk.refs) {
-            const std::array<ScreenVertex, 3> v{frame.screen_vertex(chunk, ref.screen[0]),
-                                                frame.screen_vertex(chunk, ref.screen[1]),
-                                                frame.screen_vertex(chunk, ref.screen[2])};
+            const std::array<ScreenVertex, 3> v{frame.screen_vertex(chunk, ref, 0),
+                                                frame.screen_vertex(chunk, ref, 1),
+                                                frame.screen_vertex(chunk, ref, 2)};
             float offset = 0.0f;
             if (hidden_line) {
                 if (setup_triangle(v, frame.setup_settings, setup) != SetupResult::Visible)

@@ -6,6 +6,7 @@
 // triangles in submission order whatever the thread count.
 #pragma once
 #include <zraster/clip.hpp>
+#include <zraster/precision.hpp>
 #include <zraster/render.hpp>
 
 #include "raster/visibility_kernel.hpp"
@@ -81,24 +82,27 @@ struct FrameVertices {
 };
 inline constexpr std::uint32_t kNonFinite = 0xffffffffu;
 
-// A triangle (or a piece of a clipped one) that covers at least one pixel center.
+// A triangle (or a piece of a clipped one) that covers at least one pixel center. 32 bytes:
+// the front end writes one per kept triangle and the bin writer reads them all back.
 struct TriangleRef {
-    // Screen vertices: indices into FrameVertices::screen, or, with kExtraVertex set, into the
-    // chunk's extra vertices (made by the clipper).
-    std::array<std::uint32_t, 3> screen{};
-    std::array<std::uint32_t, 3> vertex{};  // the original triangle's vertices (attributes)
-    std::uint32_t instance = 0;             // into Frame::instances
-    std::uint32_t primitive = 0;            // triangle index within its mesh
-    std::uint32_t piece = kNotClipped;      // into Chunk::pieces for a clipped piece
-    std::uint16_t tile_x0 = 0, tile_y0 = 0, tile_x1 = 0, tile_y1 = 0;
+    // The original triangle's vertices (attributes), which are also its screen vertices unless
+    // it is a clipped piece (see ClippedPiece::screen).
+    std::array<std::uint32_t, 3> vertex{};
+    std::uint32_t instance = 0;         // into Frame::instances
+    std::uint32_t primitive = 0;        // triangle index within its mesh
+    std::uint32_t piece = kNotClipped;  // into Chunk::pieces for a clipped piece
+    std::uint8_t tile_x0 = 0, tile_y0 = 0, tile_x1 = 0, tile_y1 = 0;  // the tiles it touches
     bool front_facing = true;
     static constexpr std::uint32_t kNotClipped = 0xffffffffu;
 };
-inline constexpr std::uint32_t kExtraVertex = 0x80000000u;
+static_assert(kMaxViewport / kTileSize <= 256, "tile coordinates fit TriangleRef's bytes");
+static_assert(sizeof(TriangleRef) == 32);
 
-// Barycentric weights of a clipped piece's corners relative to its original triangle.
+// A clipped piece: the barycentric weights of its corners relative to its original triangle,
+// and its screen vertices, indices into the chunk's extra vertices (made by the clipper).
 struct ClippedPiece {
     std::array<glm::vec3, 3> weights;
+    std::array<std::uint32_t, 3> screen;
 };
 
 // A run of consecutive triangles in draw order (instances one after another).
@@ -173,9 +177,12 @@ struct Frame {
     std::vector<std::vector<std::uint8_t>> cluster_verdicts;  // FrameInstance::culled_clusters
     std::vector<std::uint8_t> needed_vertex_blocks;           // the vertex stage's scratch
 
-    const ScreenVertex& screen_vertex(const Chunk& chunk, std::uint32_t index) const {
-        return (index & kExtraVertex) ? chunk.extra_vertices[index & ~kExtraVertex]
-                                      : vertices.screen[index];
+    // Corner k of a ref's triangle on screen.
+    const ScreenVertex& screen_vertex(const Chunk& chunk, const TriangleRef& ref,
+                                      std::size_t k) const {
+        return ref.piece == TriangleRef::kNotClipped
+                   ? vertices.screen[ref.vertex[k]]
+                   : chunk.extra_vertices[chunk.pieces[ref.piece].screen[k]];
     }
 };
 

@@ -44,9 +44,9 @@ void prepare_shading_triangle(const Frame& frame, const Chunk& chunk, const Tria
     const FrameInstance& fi = frame.instances[ref.instance];
     out.has_setup = false;
     if (fi.textured && frame.options->texture_filter == TextureFilter::Trilinear) {
-        const std::array<ScreenVertex, 3> v{frame.screen_vertex(chunk, ref.screen[0]),
-                                            frame.screen_vertex(chunk, ref.screen[1]),
-                                            frame.screen_vertex(chunk, ref.screen[2])};
+        const std::array<ScreenVertex, 3> v{frame.screen_vertex(chunk, ref, 0),
+                                            frame.screen_vertex(chunk, ref, 1),
+                                            frame.screen_vertex(chunk, ref, 2)};
         out.has_setup = setup_triangle(v, frame.setup_settings, out.setup) == SetupResult::Visible;
     }
     if (fi.shading == ShadingMode::Flat) {
