@@ -663,24 +663,35 @@ TEST(ClusterCulling, ChangedIndicesAreNoticed) {
 // that read one would draw it where an earlier camera saw it. With the camera moving every
 // frame, every frame must still be the exact path's, when the mesh stays, when an index of a
 // visible triangle is made to point at a skipped vertex, and when a skipped vertex moves.
-TEST(ClusterCulling, SkippedVerticesAreNeverRead) {
-    Scene scene = sphere_scene();
+// 320x240 on two threads: the frames the renderer tests below check against one-shot renders.
+RenderOptions small_frame_options() {
     RenderOptions o;
     o.width = 320;
     o.height = 240;
     o.threads = 2;
+    return o;
+}
+
+// The fitted camera with its eye turned about the vertical through the target, a little more
+// each frame.
+Camera circled(const Camera& fitted, int frame) {
+    Camera camera = fitted;
+    const double angle = 0.15 * frame;
+    const glm::dvec3 eye = camera.eye - camera.target;
+    camera.eye =
+        camera.target + glm::dvec3(eye.x * std::cos(angle) - eye.z * std::sin(angle), eye.y,
+                                   eye.x * std::sin(angle) + eye.z * std::cos(angle));
+    return camera;
+}
+
+TEST(ClusterCulling, SkippedVerticesAreNeverRead) {
+    Scene scene = sphere_scene();
+    RenderOptions o = small_frame_options();
     const Camera fitted = fit_camera(scene.world_positions());
     Renderer kept;
     int frame = 0;
     const auto next_frame = [&](const std::string& what) -> const RenderResult& {
-        // The eye circles the sphere a little each frame.
-        Camera camera = fitted;
-        const double angle = 0.15 * frame++;
-        const glm::dvec3 eye = camera.eye - camera.target;
-        camera.eye =
-            camera.target + glm::dvec3(eye.x * std::cos(angle) - eye.z * std::sin(angle), eye.y,
-                                       eye.x * std::sin(angle) + eye.z * std::cos(angle));
-        o.camera = camera;
+        o.camera = circled(fitted, frame++);
         return render_and_check(kept, scene, o, what);
     };
     next_frame("first");
@@ -727,10 +738,7 @@ TEST(ClusterCulling, SkippedVerticesOfASecondInstanceAreNeverRead) {
     Instance second = scene.instances[0];
     second.transform = glm::translate(glm::mat4(1.0f), glm::vec3(2.5f, 0.0f, 0.0f));
     scene.instances.push_back(second);
-    RenderOptions o;
-    o.width = 320;
-    o.height = 240;
-    o.threads = 2;
+    RenderOptions o = small_frame_options();
     Camera camera = fit_camera(scene.world_positions());
     Renderer kept;
     for (int frame = 0; frame < 5; ++frame) {
@@ -773,24 +781,13 @@ TEST(ClusterCulling, ChangedPositionsAreNoticed) {
 // vertex goes unnoticed: that is the promise's price), and a change of size still noticed.
 TEST(ClusterCulling, StaticMeshesAreCheckedBySizeOnly) {
     Scene scene = sphere_scene();
-    RenderOptions o;
-    o.width = 320;
-    o.height = 240;
-    o.threads = 2;
+    RenderOptions o = small_frame_options();
     o.static_meshes = true;
     const Camera fitted = fit_camera(scene.world_positions());
     Renderer kept;
     int frame = 0;
-    // The eye circles the sphere a little each frame: skipped vertices hold stale positions.
-    const auto next_view = [&] {
-        Camera camera = fitted;
-        const double angle = 0.15 * frame++;
-        const glm::dvec3 eye = camera.eye - camera.target;
-        camera.eye =
-            camera.target + glm::dvec3(eye.x * std::cos(angle) - eye.z * std::sin(angle), eye.y,
-                                       eye.x * std::sin(angle) + eye.z * std::cos(angle));
-        o.camera = camera;
-    };
+    // A new view every frame: skipped vertices hold stale positions.
+    const auto next_view = [&] { o.camera = circled(fitted, frame++); };
     const auto next_frame = [&](const std::string& what) -> const RenderResult& {
         next_view();
         return render_and_check(kept, scene, o, what);

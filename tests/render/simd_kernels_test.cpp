@@ -241,6 +241,20 @@ void TaggedRowShadingMatchesScalar() {
     EXPECT_GT(shaded, 1500);
 }
 
+// A camera whose near plane cuts through the scene's first mesh, a sphere: triangles crossing it
+// are clipped into pieces, and the inside shows through the hole.
+Camera near_plane_through(const Scene& sphere) {
+    const Bounds3f box = sphere.meshes[0].bounds;
+    const glm::dvec3 center = glm::dvec3(box.center());
+    const double radius = 0.5 * double(box.hi.x - box.lo.x);
+    Camera cut;
+    cut.eye = center + glm::dvec3(0.3 * radius, 0.2 * radius, 1.6 * radius);
+    cut.target = center;
+    cut.near = 0.9 * radius;
+    cut.far = 10.0 * radius;
+    return cut;
+}
+
 void expect_simd_equals_scalar(const Scene& scene, RenderOptions o) {
     o.id_targets = true;
     o.simd = false;
@@ -281,15 +295,7 @@ void WholeFramesMatchTheScalarPath() {
     // The near plane through a sphere: its clipped pieces interpolate with their corner weights
     // (the kernel gets them through the bin entry's ref), the inside seen through the hole.
     const Scene sphere = make_procedural_scene("sphere:5000");
-    const Bounds3f box = sphere.meshes[0].bounds;
-    const glm::dvec3 center = glm::dvec3(box.center());
-    const double radius = 0.5 * double(box.hi.x - box.lo.x);
-    Camera cut;
-    cut.eye = center + glm::dvec3(0.3 * radius, 0.2 * radius, 1.6 * radius);
-    cut.target = center;
-    cut.near = 0.9 * radius;
-    cut.far = 10.0 * radius;
-    o.camera = cut;
+    o.camera = near_plane_through(sphere);
     o.cull = CullMode::None;
     const RenderResult clipped = render(sphere, o);
     ASSERT_GT(clipped.stats.triangles_clipped, 50u);
@@ -336,15 +342,7 @@ void ForwardEqualsDeferred() {
     // The near plane through the sphere: clipped triangles (pieces' weights), and the inside
     // seen through the hole (back faces, two-sided).
     const Scene sphere = make_procedural_scene("sphere:5000");
-    const Bounds3f box = sphere.meshes[0].bounds;
-    const glm::dvec3 center = glm::dvec3(box.center());
-    const double radius = 0.5 * double(box.hi.x - box.lo.x);
-    Camera cut;
-    cut.eye = center + glm::dvec3(0.3 * radius, 0.2 * radius, 1.6 * radius);
-    cut.target = center;
-    cut.near = 0.9 * radius;
-    cut.far = 10.0 * radius;
-    o.camera = cut;
+    o.camera = near_plane_through(sphere);
     expect_forward_equals_deferred(sphere, o, true);
     // A Gouraud instance among Phong ones: Forward takes the scalar path for the whole frame.
     Scene mixed = make_procedural_scene("sphere:5000");
