@@ -37,8 +37,9 @@ struct FrameInstance {
     bool textured = false;
     int phong_kernel = -1;  // index into Frame::phong_constants when the SIMD shader applies
     float distance = 0.0f;  // eye to the world bounding box (InstanceOrder::FrontToBack)
-    // Cluster culling (cluster_cache.hpp): the vertex stage's hash of the mesh's positions, and
-    // the mesh's cluster bounds (null: none this frame) with this instance's view of them.
+    // Cluster culling (cluster_cache.hpp): the vertex stage's hash of the mesh's positions
+    // (kStaticMeshHash, nothing hashed, under RenderOptions::static_meshes), and the mesh's
+    // cluster bounds (null: none this frame) with this instance's view of them.
     bool positions_hashed = false;
     std::uint64_t positions_hash = 0;
     const MeshClusters* clusters = nullptr;
