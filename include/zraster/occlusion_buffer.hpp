@@ -53,6 +53,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <vector>
 
 namespace zraster {
 
@@ -129,8 +130,9 @@ class OcclusionBuffer {
     // bound of the nearest occluder's depth, 1 where nothing was rendered. For debugging and
     // pictures.
     void depth_bounds(std::span<float> out) const;
-    // The raw tile storage, for tests that compare two buffers bit for bit.
-    std::span<const std::byte> raw_storage() const;
+    // A copy of the raw storage (coverage masks and depth layers), for tests that compare two
+    // buffers bit for bit.
+    std::vector<std::byte> raw_storage() const;
 
     // Counters since the last clear.
     std::uint64_t occluder_triangles_rasterized() const;

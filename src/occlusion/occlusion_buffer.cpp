@@ -13,8 +13,6 @@
 
 namespace zraster {
 
-using detail::OcclusionTile;
-
 namespace {
 
 static_assert(OcclusionBuffer::kTileWidth == detail::kOcclusionTileWidth &&
@@ -46,7 +44,7 @@ bool finite(const glm::vec4& v) {
 struct OcclusionBuffer::Impl {
     int width = 0, height = 0;
     detail::TileGrid grid;
-    std::vector<OcclusionTile> tiles;
+    detail::StripStorage rows;     // see TileGrid
     std::vector<float> coarse;     // see TileGrid
     std::vector<float> block_max;  // see TileGrid
     std::unique_ptr<detail::OccluderBatch> batch = std::make_unique<detail::OccluderBatch>();
@@ -125,13 +123,13 @@ void OcclusionBuffer::set_resolution(int width, int height) {
     m.height = height;
     m.grid.tiles_x = (width + kTileWidth - 1) / kTileWidth;
     m.grid.tiles_y = (height + kTileHeight - 1) / kTileHeight;
-    m.tiles.resize(static_cast<std::size_t>(m.grid.tiles_x) * m.grid.tiles_y);
+    m.rows.attach(m.grid);
     // Padded: the rectangle test loads whole vectors of them.
-    m.coarse.resize(2 * m.tiles.size() + detail::kCoarsePadding);
+    m.coarse.resize(2 * static_cast<std::size_t>(m.grid.tiles_x) * m.grid.tiles_y +
+                    detail::kCoarsePadding);
     m.block_max.resize(detail::block_max_size(m.grid.tiles_x, m.grid.tiles_y));
     m.grid.width = width;
     m.grid.height = height;
-    m.grid.tiles = m.tiles.data();
     m.grid.coarse = m.coarse.data();
     m.grid.block_max = m.block_max.data();
     clear();
@@ -151,11 +149,7 @@ const char* OcclusionBuffer::simd_target() {
 }
 
 void OcclusionBuffer::clear() {
-    OcclusionTile empty;
-    std::fill(std::begin(empty.mask), std::end(empty.mask), 0u);
-    std::fill(std::begin(empty.far_depth), std::end(empty.far_depth), detail::kClearFarDepth);
-    std::fill(std::begin(empty.near_depth), std::end(empty.near_depth), detail::kEmptyNearDepth);
-    std::fill(impl_->tiles.begin(), impl_->tiles.end(), empty);
+    impl_->rows.clear();
     std::fill(impl_->coarse.begin(), impl_->coarse.end(), detail::kClearFarDepth);
     std::fill(impl_->block_max.begin(), impl_->block_max.end(), detail::kClearFarDepth);
     impl_->rasterized = 0;
@@ -305,16 +299,19 @@ void OcclusionBuffer::depth_bounds(std::span<float> out) const {
     const std::size_t n = static_cast<std::size_t>(m.width) * m.height;
     for (std::size_t i = 0; i < std::min(n, out.size()); ++i) {
         const int x = static_cast<int>(i % m.width), y = static_cast<int>(i / m.width);
-        const OcclusionTile& tile =
-            m.tiles[static_cast<std::size_t>(y / kTileHeight) * m.grid.tiles_x + x / kTileWidth];
-        const int r = y % kTileHeight;
-        const bool masked = (tile.mask[r] >> (x % kTileWidth)) & 1u;
-        out[i] = masked ? tile.near_depth[r] : tile.far_depth[r];
+        const std::size_t at = detail::row_index(m.grid, x / kTileWidth, y);
+        const bool masked = (m.grid.mask[at] >> (x % kTileWidth)) & 1u;
+        out[i] = masked ? m.grid.near_depth[at] : m.grid.far_depth[at];
     }
 }
 
-std::span<const std::byte> OcclusionBuffer::raw_storage() const {
-    return std::as_bytes(std::span<const OcclusionTile>(impl_->tiles));
+std::vector<std::byte> OcclusionBuffer::raw_storage() const {
+    const detail::StripStorage& rows = impl_->rows;
+    const auto mask = std::as_bytes(std::span<const std::uint32_t>(rows.mask.get(), rows.rows));
+    const auto depth = std::as_bytes(std::span<const float>(rows.depth.get(), 2 * rows.rows));
+    std::vector<std::byte> out(mask.begin(), mask.end());
+    out.insert(out.end(), depth.begin(), depth.end());
+    return out;
 }
 
 std::uint64_t OcclusionBuffer::occluder_triangles_rasterized() const {

@@ -78,14 +78,13 @@ void RasterizeOccluders(const OccluderBatch& b, std::size_t count, TileGrid grid
         const int x0 = b.x0[i], x1 = b.x1[i], y0 = b.y0[i], y1 = b.y1[i];
         const auto field = [&](int f) { return hn::Set(df, b.field[f][i]); };
         const int tx0 = x0 / kOcclusionTileWidth, tx1 = x1 / kOcclusionTileWidth;
-        const int ty0 = y0 / kOcclusionTileHeight, ty1 = y1 / kOcclusionTileHeight;
         const auto left_x0 = field(k::kLeftX), left_step0 = field(k::kLeftStep);
         const auto left_x1 = field(k::kLeftX + 1), left_step1 = field(k::kLeftStep + 1);
         const auto right_x0 = field(k::kRightX), right_step0 = field(k::kRightStep);
         const auto right_x1 = field(k::kRightX + 1), right_step1 = field(k::kRightStep + 1);
         const auto span_lo = hn::Set(df, static_cast<float>(x0));
         const auto span_hi = hn::Set(df, static_cast<float>(x1 + 1));
-        const auto row_lo = hn::Set(di, y0 - 1), row_hi = hn::Set(di, y1 + 1);
+        const auto row_hi = hn::Set(di, y1 + 1);
         const auto origin_y = hn::Set(di, y0);
         const auto origin_x = hn::Set(di, x0);
         const float dx = b.field[k::kZDx][i], kx = b.field[k::kZKx][i];
@@ -94,76 +93,72 @@ void RasterizeOccluders(const OccluderBatch& b, std::size_t count, TileGrid grid
         const auto z_ky = field(k::kZKy), z_bias = field(k::kZBias);
         const auto z_max = field(k::kZMax);
         const auto z_dx_positive = hn::RebindMask(di, hn::Gt(z_dx, hn::Zero(df)));
-        for (int ty = ty0; ty <= ty1; ++ty) {
-            OcclusionTile* row_tiles = grid.tiles + static_cast<std::size_t>(ty) * grid.tiles_x;
-            for (int r = 0; r < kOcclusionTileHeight; r += lanes) {
-                const auto y = hn::Iota(di, ty * kOcclusionTileHeight + r);
-                const auto row_valid = hn::And(hn::Gt(y, row_lo), hn::Lt(y, row_hi));
-                const auto yf = hn::ConvertTo(df, hn::Sub(y, origin_y));
-                const auto l0 = hn::Add(left_x0, hn::Mul(yf, left_step0));
-                const auto l1 = hn::Add(left_x1, hn::Mul(yf, left_step1));
-                const auto r0 = hn::Add(right_x0, hn::Mul(yf, right_step0));
-                const auto r1 = hn::Add(right_x1, hn::Mul(yf, right_step1));
-                const auto xl = hn::IfThenElse(hn::Gt(l0, l1), l0, l1);
-                const auto xr = hn::IfThenElse(hn::Lt(r0, r1), r0, r1);
-                // First covered column and one past the last, clamped to the bounding box.
-                auto lo = hn::Add(xl, half);
-                lo = hn::IfThenElse(hn::Lt(lo, span_lo), span_lo, lo);
-                lo = hn::IfThenElse(hn::Gt(lo, span_hi), span_hi, lo);
-                auto hi = hn::Sub(xr, half);
-                hi = hn::IfThenElse(hn::Lt(hi, span_lo), span_lo, hi);
-                hi = hn::IfThenElse(hn::Gt(hi, span_hi), span_hi, hi);
-                // lo >= 0: truncation is its floor.
-                const auto first = TruncInRange(lo);
-                const auto end = hn::IfThenElse(row_valid, TruncInRange(hn::Ceil(hi)), first);
-                // The bound is taken at the extreme covered column of the whole row and at the
-                // tile's extreme column; the plane being affine, the smaller of the two bounds
-                // the covered pixels of the row inside the tile.
-                const auto row_depth =
-                    hn::Add(hn::Add(z_origin, hn::Mul(z_dy, hn::Add(yf, z_ky))), z_bias);
-                // A select, not a branch: the sign of z_dx is a coin toss per triangle.
-                const auto row_extreme =
-                    hn::Sub(hn::IfThenElse(z_dx_positive, hn::Sub(end, one_i), first), origin_x);
-                auto row_bound = hn::Add(
-                    row_depth, hn::Mul(z_dx, hn::Add(hn::ConvertTo(df, row_extreme), z_kx)));
-                row_bound = hn::IfThenElse(hn::Lt(row_bound, z_max), row_bound, z_max);
-                for (int tx = tx0; tx <= tx1; ++tx) {
-                    OcclusionTile& tile = row_tiles[tx];
-                    const auto tile_x = hn::Set(di, tx * kOcclusionTileWidth);
-                    auto s = hn::Sub(first, tile_x);
-                    s = hn::Min(hn::Max(s, zero_i), width_i);
-                    auto e = hn::Sub(end, tile_x);
-                    e = hn::Min(hn::Max(e, zero_i), width_i);
-                    // Columns s..e-1: (~0 << s) & ~(~0 << e).
-                    const auto coverage = hn::AndNot(ones_shifted_left(e), ones_shifted_left(s));
-                    const auto tile_bound =
-                        hn::Add(row_depth, hn::Set(df, tile_depth_step(dx, kx, x0, tx)));
-                    const auto z =
-                        hn::IfThenElse(hn::Lt(row_bound, tile_bound), row_bound, tile_bound);
+        // Rows y0.. a vector at a time, each vector of rows one load per strip (see TileGrid).
+        for (int y_first = y0; y_first <= y1; y_first += lanes) {
+            const auto y = hn::Iota(di, y_first);
+            const auto row_valid = hn::Lt(y, row_hi);
+            const auto yf = hn::ConvertTo(df, hn::Sub(y, origin_y));
+            const auto l0 = hn::Add(left_x0, hn::Mul(yf, left_step0));
+            const auto l1 = hn::Add(left_x1, hn::Mul(yf, left_step1));
+            const auto r0 = hn::Add(right_x0, hn::Mul(yf, right_step0));
+            const auto r1 = hn::Add(right_x1, hn::Mul(yf, right_step1));
+            const auto xl = hn::IfThenElse(hn::Gt(l0, l1), l0, l1);
+            const auto xr = hn::IfThenElse(hn::Lt(r0, r1), r0, r1);
+            // First covered column and one past the last, clamped to the bounding box.
+            auto lo = hn::Add(xl, half);
+            lo = hn::IfThenElse(hn::Lt(lo, span_lo), span_lo, lo);
+            lo = hn::IfThenElse(hn::Gt(lo, span_hi), span_hi, lo);
+            auto hi = hn::Sub(xr, half);
+            hi = hn::IfThenElse(hn::Lt(hi, span_lo), span_lo, hi);
+            hi = hn::IfThenElse(hn::Gt(hi, span_hi), span_hi, hi);
+            // lo >= 0: truncation is its floor.
+            const auto first = TruncInRange(lo);
+            const auto end = hn::IfThenElse(row_valid, TruncInRange(hn::Ceil(hi)), first);
+            // The bound is taken at the extreme covered column of the whole row and at the
+            // tile's extreme column; the plane being affine, the smaller of the two bounds
+            // the covered pixels of the row inside the tile.
+            const auto row_depth =
+                hn::Add(hn::Add(z_origin, hn::Mul(z_dy, hn::Add(yf, z_ky))), z_bias);
+            // A select, not a branch: the sign of z_dx is a coin toss per triangle.
+            const auto row_extreme =
+                hn::Sub(hn::IfThenElse(z_dx_positive, hn::Sub(end, one_i), first), origin_x);
+            auto row_bound =
+                hn::Add(row_depth, hn::Mul(z_dx, hn::Add(hn::ConvertTo(df, row_extreme), z_kx)));
+            row_bound = hn::IfThenElse(hn::Lt(row_bound, z_max), row_bound, z_max);
+            for (int tx = tx0; tx <= tx1; ++tx) {
+                const std::size_t at = row_index(grid, tx, y_first);
+                const auto tile_x = hn::Set(di, tx * kOcclusionTileWidth);
+                auto s = hn::Sub(first, tile_x);
+                s = hn::Min(hn::Max(s, zero_i), width_i);
+                auto e = hn::Sub(end, tile_x);
+                e = hn::Min(hn::Max(e, zero_i), width_i);
+                // Columns s..e-1: (~0 << s) & ~(~0 << e).
+                const auto coverage = hn::AndNot(ones_shifted_left(e), ones_shifted_left(s));
+                const auto tile_bound =
+                    hn::Add(row_depth, hn::Set(df, tile_depth_step(dx, kx, x0, tx)));
+                const auto z = hn::IfThenElse(hn::Lt(row_bound, tile_bound), row_bound, tile_bound);
 
-                    const auto mask = hn::Load(du, tile.mask + r);
-                    const auto far_depth = hn::Load(df, tile.far_depth + r);
-                    const auto near_depth = hn::Load(df, tile.near_depth + r);
-                    const auto live =
-                        hn::And(hn::RebindMask(df, hn::Ne(coverage, zero_u)), hn::Lt(z, far_depth));
-                    const auto discard =
-                        hn::Gt(hn::Sub(near_depth, z), hn::Sub(far_depth, near_depth));
-                    auto merged_mask = hn::IfThenZeroElse(hn::RebindMask(du, discard), mask);
-                    auto merged_near = hn::IfThenZeroElse(discard, near_depth);
-                    merged_mask = hn::Or(merged_mask, coverage);
-                    merged_near = hn::IfThenElse(hn::Lt(merged_near, z), z, merged_near);
-                    const auto full_u = hn::Eq(merged_mask, full_mask);
-                    const auto full = hn::RebindMask(df, full_u);
-                    const auto covers_row = hn::RebindMask(df, hn::Eq(coverage, full_mask));
-                    const auto new_far =
-                        hn::IfThenElse(full, hn::IfThenElse(covers_row, z, merged_near), far_depth);
-                    const auto new_mask = hn::IfThenZeroElse(full_u, merged_mask);
-                    const auto new_near = hn::IfThenZeroElse(full, merged_near);
-                    const auto live_u = hn::RebindMask(du, live);
-                    hn::Store(hn::IfThenElse(live_u, new_mask, mask), du, tile.mask + r);
-                    hn::Store(hn::IfThenElse(live, new_far, far_depth), df, tile.far_depth + r);
-                    hn::Store(hn::IfThenElse(live, new_near, near_depth), df, tile.near_depth + r);
-                }
+                const auto mask = hn::LoadU(du, grid.mask + at);
+                const auto far_depth = hn::LoadU(df, grid.far_depth + at);
+                const auto near_depth = hn::LoadU(df, grid.near_depth + at);
+                const auto live =
+                    hn::And(hn::RebindMask(df, hn::Ne(coverage, zero_u)), hn::Lt(z, far_depth));
+                const auto discard = hn::Gt(hn::Sub(near_depth, z), hn::Sub(far_depth, near_depth));
+                auto merged_mask = hn::IfThenZeroElse(hn::RebindMask(du, discard), mask);
+                auto merged_near = hn::IfThenZeroElse(discard, near_depth);
+                merged_mask = hn::Or(merged_mask, coverage);
+                merged_near = hn::IfThenElse(hn::Lt(merged_near, z), z, merged_near);
+                const auto full_u = hn::Eq(merged_mask, full_mask);
+                const auto full = hn::RebindMask(df, full_u);
+                const auto covers_row = hn::RebindMask(df, hn::Eq(coverage, full_mask));
+                const auto new_far =
+                    hn::IfThenElse(full, hn::IfThenElse(covers_row, z, merged_near), far_depth);
+                const auto new_mask = hn::IfThenZeroElse(full_u, merged_mask);
+                const auto new_near = hn::IfThenZeroElse(full, merged_near);
+                const auto live_u = hn::RebindMask(du, live);
+                hn::StoreU(hn::IfThenElse(live_u, new_mask, mask), du, grid.mask + at);
+                hn::StoreU(hn::IfThenElse(live, new_far, far_depth), df, grid.far_depth + at);
+                hn::StoreU(hn::IfThenElse(live, new_near, near_depth), df, grid.near_depth + at);
             }
         }
     }
@@ -185,7 +180,8 @@ void RefreshCoarseLevels(TileGrid grid, int tx0, int ty0, int tx1, int ty1) {
     for (int ty = ty0; ty <= ty1; ++ty)
         for (int tx = tx0; tx <= tx1; ++tx) {
             const std::size_t i = static_cast<std::size_t>(ty) * grid.tiles_x + tx;
-            const OcclusionTile& t = grid.tiles[i];
+            const std::size_t at = row_index(grid, tx, ty * kOcclusionTileHeight);
+            const TileRows t{grid.mask + at, grid.far_depth + at, grid.near_depth + at};
             auto hi = none, lo = hn::Set(df, HUGE_VALF);
             // Block maxima: top left, top right, bottom left, bottom right.
             auto tl = none, tr = none, bl = none, br = none;
@@ -236,7 +232,8 @@ HWY_INLINE bool TileOccluded(const TileGrid& grid, int tx, int ty, int x0, int y
     const DI di;
     const DU du;
     const int lanes = static_cast<int>(hn::Lanes(df));
-    const OcclusionTile& tile = grid.tiles[static_cast<std::size_t>(ty) * grid.tiles_x + tx];
+    const std::size_t at = row_index(grid, tx, ty * kOcclusionTileHeight);
+    const TileRows tile{grid.mask + at, grid.far_depth + at, grid.near_depth + at};
     const int s = std::max(x0 - tx * kOcclusionTileWidth, 0);
     const int e = std::min(x1 + 1 - tx * kOcclusionTileWidth, kOcclusionTileWidth);
     const std::uint32_t high = e >= 32 ? ~0u : (1u << e) - 1u;  // e <= tile width
@@ -786,7 +783,8 @@ void refresh_coarse_levels_scalar(TileGrid grid, int tx0, int ty0, int tx1, int 
     for (int ty = ty0; ty <= ty1; ++ty)
         for (int tx = tx0; tx <= tx1; ++tx) {
             const std::size_t i = static_cast<std::size_t>(ty) * grid.tiles_x + tx;
-            const OcclusionTile& t = grid.tiles[i];
+            const std::size_t at = row_index(grid, tx, ty * kOcclusionTileHeight);
+            const TileRows t{grid.mask + at, grid.far_depth + at, grid.near_depth + at};
             float hi = t.far_depth[0], lo = t.far_depth[0];
             for (int r = 0; r < kOcclusionTileHeight; ++r) {
                 const float bound = t.mask[r] != 0 ? t.near_depth[r] : t.far_depth[r];
@@ -848,55 +846,50 @@ void rasterize_occluders_scalar(const OccluderBatch& b, std::size_t count, TileG
         t.z_bias = b.field[k::kZBias][i];
         t.z_max = b.field[k::kZMax][i];
         const float span_lo = static_cast<float>(t.x0), span_hi = static_cast<float>(t.x1 + 1);
-        for (int ty = t.y0 / kOcclusionTileHeight; ty <= t.y1 / kOcclusionTileHeight; ++ty) {
-            OcclusionTile* row_tiles = grid.tiles + static_cast<std::size_t>(ty) * grid.tiles_x;
-            for (int r = 0; r < kOcclusionTileHeight; ++r) {
-                const int y = ty * kOcclusionTileHeight + r;
-                const bool row_valid = y > t.y0 - 1 && y < t.y1 + 1;
-                const float yf = static_cast<float>(y - t.y0);
-                const float l0 = t.left_x[0] + yf * t.left_step[0];
-                const float l1 = t.left_x[1] + yf * t.left_step[1];
-                const float r0 = t.right_x[0] + yf * t.right_step[0];
-                const float r1 = t.right_x[1] + yf * t.right_step[1];
-                const float xl = l0 > l1 ? l0 : l1;
-                const float xr = r0 < r1 ? r0 : r1;
-                float lo = xl + 0.5f;
-                lo = lo < span_lo ? span_lo : lo;
-                lo = lo > span_hi ? span_hi : lo;
-                float hi = xr - 0.5f;
-                hi = hi < span_lo ? span_lo : hi;
-                hi = hi > span_hi ? span_hi : hi;
-                const int first = static_cast<int>(std::floor(lo));
-                const int end = row_valid ? static_cast<int>(std::ceil(hi)) : first;
-                const float row_depth = (t.z_origin + t.z_dy * (yf + t.z_ky)) + t.z_bias;
-                const int row_extreme = t.z_dx > 0.0f ? (end - 1) - t.x0 : first - t.x0;
-                float row_bound = row_depth + t.z_dx * (static_cast<float>(row_extreme) + t.z_kx);
-                row_bound = row_bound < t.z_max ? row_bound : t.z_max;
-                for (int tx = t.x0 / kOcclusionTileWidth; tx <= t.x1 / kOcclusionTileWidth; ++tx) {
-                    OcclusionTile& tile = row_tiles[tx];
-                    const int s = std::min(std::max(first - tx * kOcclusionTileWidth, 0),
-                                           kOcclusionTileWidth);
-                    const int e =
-                        std::min(std::max(end - tx * kOcclusionTileWidth, 0), kOcclusionTileWidth);
-                    const std::uint32_t coverage = ~low_bits_scalar(s) & low_bits_scalar(e);
-                    if (coverage == 0) continue;
-                    const float tile_bound = row_depth + tile_depth_step(t.z_dx, t.z_kx, t.x0, tx);
-                    const float z = row_bound < tile_bound ? row_bound : tile_bound;
+        for (int y = t.y0; y <= t.y1; ++y) {
+            const float yf = static_cast<float>(y - t.y0);
+            const float l0 = t.left_x[0] + yf * t.left_step[0];
+            const float l1 = t.left_x[1] + yf * t.left_step[1];
+            const float r0 = t.right_x[0] + yf * t.right_step[0];
+            const float r1 = t.right_x[1] + yf * t.right_step[1];
+            const float xl = l0 > l1 ? l0 : l1;
+            const float xr = r0 < r1 ? r0 : r1;
+            float lo = xl + 0.5f;
+            lo = lo < span_lo ? span_lo : lo;
+            lo = lo > span_hi ? span_hi : lo;
+            float hi = xr - 0.5f;
+            hi = hi < span_lo ? span_lo : hi;
+            hi = hi > span_hi ? span_hi : hi;
+            const int first = static_cast<int>(std::floor(lo));
+            const int end = static_cast<int>(std::ceil(hi));
+            const float row_depth = (t.z_origin + t.z_dy * (yf + t.z_ky)) + t.z_bias;
+            const int row_extreme = t.z_dx > 0.0f ? (end - 1) - t.x0 : first - t.x0;
+            float row_bound = row_depth + t.z_dx * (static_cast<float>(row_extreme) + t.z_kx);
+            row_bound = row_bound < t.z_max ? row_bound : t.z_max;
+            for (int tx = t.x0 / kOcclusionTileWidth; tx <= t.x1 / kOcclusionTileWidth; ++tx) {
+                const std::size_t at = row_index(grid, tx, y);
+                const int s =
+                    std::min(std::max(first - tx * kOcclusionTileWidth, 0), kOcclusionTileWidth);
+                const int e =
+                    std::min(std::max(end - tx * kOcclusionTileWidth, 0), kOcclusionTileWidth);
+                const std::uint32_t coverage = ~low_bits_scalar(s) & low_bits_scalar(e);
+                if (coverage == 0) continue;
+                const float tile_bound = row_depth + tile_depth_step(t.z_dx, t.z_kx, t.x0, tx);
+                const float z = row_bound < tile_bound ? row_bound : tile_bound;
 
-                    const std::uint32_t mask = tile.mask[r];
-                    const float far_depth = tile.far_depth[r], near_depth = tile.near_depth[r];
-                    if (!(coverage != 0 && z < far_depth)) continue;
-                    const bool discard = near_depth - z > far_depth - near_depth;
-                    std::uint32_t merged_mask = discard ? 0u : mask;
-                    float merged_near = discard ? 0.0f : near_depth;
-                    merged_mask |= coverage;
-                    merged_near = merged_near < z ? z : merged_near;
-                    const bool full = merged_mask == kOcclusionFullMask;
-                    const bool covers_row = coverage == kOcclusionFullMask;
-                    tile.far_depth[r] = full ? (covers_row ? z : merged_near) : far_depth;
-                    tile.mask[r] = full ? 0u : merged_mask;
-                    tile.near_depth[r] = full ? 0.0f : merged_near;
-                }
+                const std::uint32_t mask = grid.mask[at];
+                const float far_depth = grid.far_depth[at], near_depth = grid.near_depth[at];
+                if (!(z < far_depth)) continue;
+                const bool discard = near_depth - z > far_depth - near_depth;
+                std::uint32_t merged_mask = discard ? 0u : mask;
+                float merged_near = discard ? 0.0f : near_depth;
+                merged_mask |= coverage;
+                merged_near = merged_near < z ? z : merged_near;
+                const bool full = merged_mask == kOcclusionFullMask;
+                const bool covers_row = coverage == kOcclusionFullMask;
+                grid.far_depth[at] = full ? (covers_row ? z : merged_near) : far_depth;
+                grid.mask[at] = full ? 0u : merged_mask;
+                grid.near_depth[at] = full ? 0.0f : merged_near;
             }
         }
     }
@@ -1042,8 +1035,8 @@ bool rect_occluded_scalar(const TileGrid& grid, int x0, int y0, int x1, int y1, 
     for (int y = y0; y <= y1; ++y) {
         const int ty = y / kOcclusionTileHeight, r = y % kOcclusionTileHeight;
         for (int tx = x0 / kOcclusionTileWidth; tx <= x1 / kOcclusionTileWidth; ++tx) {
-            const OcclusionTile& tile =
-                grid.tiles[static_cast<std::size_t>(ty) * grid.tiles_x + tx];
+            const std::size_t at = row_index(grid, tx, ty * kOcclusionTileHeight);
+            const TileRows tile{grid.mask + at, grid.far_depth + at, grid.near_depth + at};
             const int s = std::max(x0 - tx * kOcclusionTileWidth, 0);
             const int e = std::min(x1 + 1 - tx * kOcclusionTileWidth, kOcclusionTileWidth);
             const std::uint32_t rect_mask = ~low_bits_scalar(s) & low_bits_scalar(e);

@@ -3,6 +3,9 @@
 // Highway, dispatched at run time) and a scalar reference twin with the same operations in the
 // same order; tests compare the two bit for bit.
 #pragma once
+#include <hwy/aligned_allocator.h>
+
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 
@@ -15,18 +18,22 @@ inline constexpr int kOcclusionTileHeight = 16;  // pixel rows: one SIMD lane ea
 inline constexpr float kEmptyNearDepth = 0.0f;   // identity of the working layer's max
 inline constexpr float kClearFarDepth = 1.0f;    // the far plane
 
-// One tile: for each of its 16 pixel rows, the coverage mask of the working (near) layer and the
-// two depth bounds. Invariants, for every pixel p of row r (true_depth = nearest occluder depth
-// at p's center, 1 where none):
-//   true_depth(p) <= far_depth[r]
-//   true_depth(p) <= near_depth[r]   when bit p of mask[r] is set
-//   mask[r] != kOcclusionFullMask (a full mask is folded into far_depth at once), near_depth[r] <=
-//   far_depth[r]
-struct alignas(64) OcclusionTile {
-    std::uint32_t mask[kOcclusionTileHeight];
-    float far_depth[kOcclusionTileHeight];
-    float near_depth[kOcclusionTileHeight];
-};
+// The pixel rows of the buffer, in column strips one tile wide. For each pixel row of a strip:
+// the coverage mask of the working (near) layer and the two depth bounds. Invariants, for every
+// pixel p of row y (true_depth = nearest occluder depth at p's center, 1 where none):
+//   true_depth(p) <= far_depth[y]
+//   true_depth(p) <= near_depth[y]   when bit p of mask[y] is set
+//   mask[y] != kOcclusionFullMask (a full mask is folded into far_depth at once), near_depth[y] <=
+//   far_depth[y]
+// Rows are contiguous within a strip, so the 16 rows from any y are one vector: a triangle up to
+// 16 rows tall is one vector per strip wherever it starts (with tiles of fixed rows, over half of
+// the 10-row triangles of a typical occluder mesh straddle two). Tiles (16 x 16) remain the unit
+// of the coarse levels and of the rectangle test.
+// Each strip has this many rows past its last tile row, for whole-vector loads from any row.
+inline constexpr int kStripPaddingRows = kOcclusionTileHeight;
+inline std::size_t strip_row_count(int tiles_y) {
+    return static_cast<std::size_t>(tiles_y) * kOcclusionTileHeight + kStripPaddingRows;
+}
 
 // An occluder triangle ready for the tiles (made by setup_occluder in occluder_setup.cpp for
 // triangles that need clipping; the rasterizer reads them from an OccluderBatch, below). Pixel
@@ -137,7 +144,12 @@ inline float tile_depth_step(float z_dx, float z_kx, int x0, int tx) {
 }
 
 struct TileGrid {
-    OcclusionTile* tiles = nullptr;
+    // Row y of strip tx is element tx * strip_rows + y of each array (64-byte aligned, strip_rows
+    // a whole number of tiles: a tile's rows are aligned vectors).
+    std::uint32_t* mask = nullptr;
+    float* far_depth = nullptr;
+    float* near_depth = nullptr;
+    std::size_t strip_rows = 0;
     // Two coarse levels per tile, side by side (coarse[2 i] and coarse[2 i + 1] for tile i: a
     // rectangle test reads both from one cache line), refreshed after each render call:
     //  - the smallest depth bound of its pixels: a rectangle touching a tile whose smallest
@@ -153,6 +165,42 @@ struct TileGrid {
     int tiles_x = 0, tiles_y = 0;
     int width = 0, height = 0;  // pixels
 };
+// Index of row y of strip tx in the arrays of a TileGrid.
+inline std::size_t row_index(const TileGrid& grid, int tx, int y) {
+    return static_cast<std::size_t>(tx) * grid.strip_rows + static_cast<std::size_t>(y);
+}
+
+// The 16 rows of one tile (pointers into a TileGrid's arrays).
+struct TileRows {
+    const std::uint32_t* mask;
+    const float* far_depth;
+    const float* near_depth;
+};
+
+// Owns the rows of a TileGrid (and clears them).
+struct StripStorage {
+    hwy::AlignedFreeUniquePtr<std::uint32_t[]> mask;
+    hwy::AlignedFreeUniquePtr<float[]> depth;  // the far layers of all strips, then the near ones
+    std::size_t rows = 0;                      // in all strips
+
+    // Allocates rows for grid.tiles_x and grid.tiles_y (uninitialized) and points `grid` at them.
+    void attach(TileGrid& grid) {
+        grid.strip_rows = strip_row_count(grid.tiles_y);
+        rows = static_cast<std::size_t>(grid.tiles_x) * grid.strip_rows;
+        mask = hwy::AllocateAligned<std::uint32_t>(rows);
+        depth = hwy::AllocateAligned<float>(2 * rows);
+        grid.mask = mask.get();
+        grid.far_depth = depth.get();
+        grid.near_depth = depth.get() + rows;
+    }
+    // Empty: no coverage, far layers at the far plane.
+    void clear() {
+        std::fill_n(mask.get(), rows, 0u);
+        std::fill_n(depth.get(), rows, kClearFarDepth);
+        std::fill_n(depth.get() + rows, rows, kEmptyNearDepth);
+    }
+};
+
 inline constexpr int kOcclusionBlockSide = kOcclusionTileWidth / 2;
 static_assert(kOcclusionTileWidth == kOcclusionTileHeight, "blocks are tile quarters");
 // coarse holds this many floats past its last tile (one vector's worth).

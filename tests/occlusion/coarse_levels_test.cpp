@@ -15,52 +15,55 @@
 namespace zraster::detail {
 namespace {
 
-// A grid with its storage. Tiles are random but keep the invariants of OcclusionTile: no full
-// mask, near <= far. Depths come from a few levels so that equal bounds and ties occur.
+// A grid with its storage. Rows are random but keep the invariants of TileGrid: no full mask,
+// near <= far. Depths come from a few levels so that equal bounds and ties occur; the kind of
+// content (empty, full far layer, mixed, dense) changes per tile.
 struct Grid {
-    std::vector<OcclusionTile> tiles;
+    StripStorage rows;
     std::vector<float> coarse, block_max;
     TileGrid grid;
 
     Grid(int tiles_x, int tiles_y, std::uint64_t seed) {
-        tiles.resize(static_cast<std::size_t>(tiles_x) * tiles_y);
-        coarse.assign(2 * tiles.size() + kCoarsePadding, -1.0f);
+        const std::size_t tiles = static_cast<std::size_t>(tiles_x) * tiles_y;
+        coarse.assign(2 * tiles + kCoarsePadding, -1.0f);
         block_max.assign(block_max_size(tiles_x, tiles_y), -1.0f);
-        grid.tiles = tiles.data();
         grid.coarse = coarse.data();
         grid.block_max = block_max.data();
         grid.tiles_x = tiles_x;
         grid.tiles_y = tiles_y;
         grid.width = tiles_x * kOcclusionTileWidth;
         grid.height = tiles_y * kOcclusionTileHeight;
+        rows.attach(grid);
+        rows.clear();
         SplitMix64 rng{seed};
         const auto level = [&] {
             return static_cast<float>(static_cast<int>(rng.uniform(0, 9))) / 8;
         };
-        for (OcclusionTile& t : tiles) {
-            const int kind = static_cast<int>(rng.uniform(0, 4));  // empty, full far, mixed, dense
-            for (int r = 0; r < kOcclusionTileHeight; ++r) {
-                std::uint32_t mask = 0;
-                if (kind == 2) mask = static_cast<std::uint32_t>(rng.next()) & kOcclusionFullMask;
-                if (kind == 3) {  // most bits set, often whole halves
-                    mask = kOcclusionFullMask & ~(1u << static_cast<int>(rng.uniform(0, 16)));
-                    if (rng.uniform(0, 1) < 0.3) mask &= 0xff00u;
+        for (int ty = 0; ty < tiles_y; ++ty)
+            for (int tx = 0; tx < tiles_x; ++tx) {
+                const int kind = static_cast<int>(rng.uniform(0, 4));
+                for (int r = 0; r < kOcclusionTileHeight; ++r) {
+                    std::uint32_t mask = 0;
+                    if (kind == 2)
+                        mask = static_cast<std::uint32_t>(rng.next()) & kOcclusionFullMask;
+                    if (kind == 3) {  // most bits set, often whole halves
+                        mask = kOcclusionFullMask & ~(1u << static_cast<int>(rng.uniform(0, 16)));
+                        if (rng.uniform(0, 1) < 0.3) mask &= 0xff00u;
+                    }
+                    if (mask == kOcclusionFullMask) mask &= ~1u;
+                    const float a = level(), b = level();
+                    const std::size_t at = row_index(grid, tx, ty * kOcclusionTileHeight + r);
+                    grid.far_depth[at] = kind == 0 ? kClearFarDepth : std::max(a, b);
+                    grid.near_depth[at] = mask != 0 ? std::min(a, b) : kEmptyNearDepth;
+                    grid.mask[at] = mask;
                 }
-                if (mask == kOcclusionFullMask) mask &= ~1u;
-                const float a = level(), b = level();
-                t.far_depth[r] = kind == 0 ? kClearFarDepth : std::max(a, b);
-                t.near_depth[r] = mask != 0 ? std::min(a, b) : kEmptyNearDepth;
-                t.mask[r] = mask;
             }
-        }
     }
 
     float pixel_bound(int x, int y) const {
-        const OcclusionTile& t =
-            tiles[static_cast<std::size_t>(y / kOcclusionTileHeight) * grid.tiles_x +
-                  x / kOcclusionTileWidth];
-        const int r = y % kOcclusionTileHeight;
-        return (t.mask[r] >> (x % kOcclusionTileWidth)) & 1u ? t.near_depth[r] : t.far_depth[r];
+        const std::size_t at = row_index(grid, x / kOcclusionTileWidth, y);
+        return (grid.mask[at] >> (x % kOcclusionTileWidth)) & 1u ? grid.near_depth[at]
+                                                                 : grid.far_depth[at];
     }
 };
 
