@@ -457,6 +457,44 @@ WindowRectResult WindowRectTest(const TileGrid& grid, float xmin, float xmax, fl
 // they differ by at most the larger residual) and added to the bias.
 // Lanes that need clipping (or hold NaN/Inf) go through setup_occluder in submission order.
 
+// AVX2 and AVX-512 vectors hold two or four whole vertices: LoadCorners reads them.
+#undef ZRASTER_TRANSPOSE_CORNERS
+#if HWY_ARCH_X86 && HWY_TARGET <= HWY_AVX2
+#define ZRASTER_TRANSPOSE_CORNERS 1
+// x, y, z, w of vertex index[l] for each lane l, as LoadInterleaved4 of the vertices copied
+// side by side would give: each vertex read as one 128-bit block, the blocks combined and
+// transposed in registers. (Copies through the stack stalled: wide loads of narrow stores.)
+template <class DF>
+HWY_INLINE void LoadCorners(DF df, const float* clip, const std::uint32_t* index, hn::Vec<DF>& x,
+                            hn::Vec<DF>& y, hn::Vec<DF>& z, hn::Vec<DF>& w) {
+    constexpr std::size_t kLanes = hn::MaxLanes(DF());
+    static_assert(kLanes == 8 || kLanes == 16, "two or four vertices per vector");
+    const hn::Full128<float> d4;
+    const auto block = [&](std::size_t l) {
+        return hn::LoadU(d4, clip + 4 * std::size_t{index[l]});
+    };
+    hn::Vec<DF> v[4];  // v[j]: the vertices of lanes j * kLanes / 4 ..., x y z w each
+    for (std::size_t j = 0; j < 4; ++j) {
+        if constexpr (kLanes == 16) {
+            const hn::Half<DF> dh;
+            v[j] = hn::Combine(df, hn::Combine(dh, block(4 * j + 3), block(4 * j + 2)),
+                               hn::Combine(dh, block(4 * j + 1), block(4 * j)));
+        } else {
+            v[j] = hn::Combine(df, block(2 * j + 1), block(2 * j));
+        }
+    }
+    // (x z) and (y w) pairs of each half, then the components in lane order.
+    const auto xz_lo = hn::ConcatEven(df, v[1], v[0]), yw_lo = hn::ConcatOdd(df, v[1], v[0]);
+    const auto xz_hi = hn::ConcatEven(df, v[3], v[2]), yw_hi = hn::ConcatOdd(df, v[3], v[2]);
+    x = hn::ConcatEven(df, xz_hi, xz_lo);
+    z = hn::ConcatOdd(df, xz_hi, xz_lo);
+    y = hn::ConcatEven(df, yw_hi, yw_lo);
+    w = hn::ConcatOdd(df, yw_hi, yw_lo);
+}
+#else
+#define ZRASTER_TRANSPOSE_CORNERS 0
+#endif
+
 std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::size_t count,
                            OccluderBatch& out) {
     namespace k = occluder_setup;
@@ -499,6 +537,9 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
     for (std::size_t base = 0; base < count; base += lanes) {
         const std::size_t m = std::min(lanes, count - base);
         std::uint32_t valid = 0;
+        // The corners' x, y, z, w, when the vector path loaded them straight into registers.
+        hn::Vec<DF> cx[3], cy[3], cz[3], cw[3];
+        bool loaded = false;
         const std::size_t i0 = first + base;
         if (m == lanes && i0 > 0 && i0 + lanes < src.triangle_count &&
             src.vertex_count <= 0xffffffffu) {
@@ -527,10 +568,16 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
             // Lanes with a bad index read vertex 0 (there is one); their results are dropped.
             alignas(64) std::uint32_t read[3][kMaxLanes];
             for (int v = 0; v < 3; ++v) hn::Store(hn::IfThenElseZero(ok, corner[v]), du, read[v]);
+#if ZRASTER_TRANSPOSE_CORNERS
+            for (int v = 0; v < 3; ++v)
+                LoadCorners(df, src.clip, read[v], cx[v], cy[v], cz[v], cw[v]);
+            loaded = true;
+#else
             for (std::size_t l = 0; l < lanes; ++l)
                 for (int v = 0; v < 3; ++v)
                     std::memcpy(corners[v] + 4 * l, src.clip + 4 * std::size_t{read[v][l]},
                                 4 * sizeof(float));
+#endif
         } else {
             for (std::size_t l = 0; l < lanes; ++l) {
                 interior[l] = 0;
@@ -583,8 +630,8 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
         hn::Vec<DF> X[3], Y[3], Z[3];
         auto fast = hn::Eq(zero, zero);
         for (int v = 0; v < 3; ++v) {
-            hn::Vec<DF> x, y, z, w;
-            hn::LoadInterleaved4(df, corners[v], x, y, z, w);
+            hn::Vec<DF> x = cx[v], y = cy[v], z = cz[v], w = cw[v];
+            if (!loaded) hn::LoadInterleaved4(df, corners[v], x, y, z, w);
             // In front of the near plane, before the far plane, inside the guard band (false
             // for NaN): no clipping needed.
             fast = hn::And(fast, hn::And(hn::Gt(w, zero), hn::Lt(w, hn::Set(df, k::kMaxW))));
