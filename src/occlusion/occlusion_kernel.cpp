@@ -545,6 +545,14 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
             src.vertex_count <= 0xffffffffu) {
             // A whole vector with both neighbours in the list: the indices as vectors.
             const std::uint32_t* t = src.indices + 3 * i0;
+            // The first corner of each triangle a setup group ahead: the vertex loads waited
+            // on memory (the others are usually on the same or the next line).
+            if (i0 + kSetupGroup + lanes <= src.triangle_count) {
+                const std::uint32_t* ahead = t + 3 * kSetupGroup;
+                const auto last = static_cast<std::uint32_t>(src.vertex_count - 1);
+                for (std::size_t l = 0; l < lanes; ++l)
+                    __builtin_prefetch(src.clip + 4 * std::size_t{std::min(ahead[3 * l], last)});
+            }
             const auto limit = hn::Set(du, static_cast<std::uint32_t>(src.vertex_count));
             hn::Vec<DU> a, b, c;
             hn::LoadInterleaved3(du, t, a, b, c);
