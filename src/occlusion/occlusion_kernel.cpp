@@ -78,26 +78,26 @@ void RasterizeOccluders(const OccluderBatch& b, std::size_t count, TileGrid grid
         const int x0 = b.x0[i], x1 = b.x1[i], y0 = b.y0[i], y1 = b.y1[i];
         const auto field = [&](int f) { return hn::Set(df, b.field[f][i]); };
         const int tx0 = x0 / kOcclusionTileWidth, tx1 = x1 / kOcclusionTileWidth;
-        const auto left_x0 = field(k::kLeftX), left_step0 = field(k::kLeftStep);
-        const auto left_x1 = field(k::kLeftX + 1), left_step1 = field(k::kLeftStep + 1);
-        const auto right_x0 = field(k::kRightX), right_step0 = field(k::kRightStep);
-        const auto right_x1 = field(k::kRightX + 1), right_step1 = field(k::kRightStep + 1);
-        const auto span_lo = hn::Set(df, static_cast<float>(x0));
-        const auto span_hi = hn::Set(df, static_cast<float>(x1 + 1));
-        const auto row_hi = hn::Set(di, y1 + 1);
-        const auto origin_y = hn::Set(di, y0);
-        const auto origin_x = hn::Set(di, x0);
         const float dx = b.field[k::kZDx][i], kx = b.field[k::kZKx][i];
-        const auto z_origin = field(k::kZOrigin), z_dx = hn::Set(df, dx);
-        const auto z_dy = field(k::kZDy), z_kx = hn::Set(df, kx);
-        const auto z_ky = field(k::kZKy), z_bias = field(k::kZBias);
-        const auto z_max = field(k::kZMax);
-        const auto z_dx_positive = hn::RebindMask(di, hn::Gt(z_dx, hn::Zero(df)));
         // Rows y0.. a vector at a time, each vector of rows one load per strip (see TileGrid).
+        // Most triangles are one vector of rows: the triangle's values are broadcast in the
+        // loop, where they are used once (hoisted, they did not fit the registers and spilled).
         for (int y_first = y0; y_first <= y1; y_first += lanes) {
+            const auto left_x0 = field(k::kLeftX), left_step0 = field(k::kLeftStep);
+            const auto left_x1 = field(k::kLeftX + 1), left_step1 = field(k::kLeftStep + 1);
+            const auto right_x0 = field(k::kRightX), right_step0 = field(k::kRightStep);
+            const auto right_x1 = field(k::kRightX + 1), right_step1 = field(k::kRightStep + 1);
+            const auto span_lo = hn::Set(df, static_cast<float>(x0));
+            const auto span_hi = hn::Set(df, static_cast<float>(x1 + 1));
+            const auto origin_x = hn::Set(di, x0);
+            const auto z_origin = field(k::kZOrigin), z_dx = hn::Set(df, dx);
+            const auto z_dy = field(k::kZDy), z_kx = hn::Set(df, kx);
+            const auto z_ky = field(k::kZKy), z_bias = field(k::kZBias);
+            const auto z_max = field(k::kZMax);
+            const auto z_dx_positive = hn::RebindMask(di, hn::Gt(z_dx, hn::Zero(df)));
             const auto y = hn::Iota(di, y_first);
-            const auto row_valid = hn::Lt(y, row_hi);
-            const auto yf = hn::ConvertTo(df, hn::Sub(y, origin_y));
+            const auto row_valid = hn::Lt(y, hn::Set(di, y1 + 1));
+            const auto yf = hn::ConvertTo(df, hn::Sub(y, hn::Set(di, y0)));
             const auto l0 = hn::Add(left_x0, hn::Mul(yf, left_step0));
             const auto l1 = hn::Add(left_x1, hn::Mul(yf, left_step1));
             const auto r0 = hn::Add(right_x0, hn::Mul(yf, right_step0));
@@ -125,7 +125,10 @@ void RasterizeOccluders(const OccluderBatch& b, std::size_t count, TileGrid grid
             auto row_bound =
                 hn::Add(row_depth, hn::Mul(z_dx, hn::Add(hn::ConvertTo(df, row_extreme), z_kx)));
             row_bound = hn::IfThenElse(hn::Lt(row_bound, z_max), row_bound, z_max);
-            for (int tx = tx0; tx <= tx1; ++tx) {
+            // tile_depth_step's column - x0, stepped a tile at a time (exact in float).
+            float column = static_cast<float>(tx0 * kOcclusionTileWidth +
+                                              (dx > 0.0f ? kOcclusionTileWidth - 1 : 0) - x0);
+            for (int tx = tx0; tx <= tx1; ++tx, column += static_cast<float>(kOcclusionTileWidth)) {
                 const std::size_t at = row_index(grid, tx, y_first);
                 const auto tile_x = hn::Set(di, tx * kOcclusionTileWidth);
                 auto s = hn::Sub(first, tile_x);
@@ -134,8 +137,7 @@ void RasterizeOccluders(const OccluderBatch& b, std::size_t count, TileGrid grid
                 e = hn::Min(hn::Max(e, zero_i), width_i);
                 // Columns s..e-1: (~0 << s) & ~(~0 << e).
                 const auto coverage = hn::AndNot(ones_shifted_left(e), ones_shifted_left(s));
-                const auto tile_bound =
-                    hn::Add(row_depth, hn::Set(df, tile_depth_step(dx, kx, x0, tx)));
+                const auto tile_bound = hn::Add(row_depth, hn::Set(df, dx * (column + kx)));
                 const auto z = hn::IfThenElse(hn::Lt(row_bound, tile_bound), row_bound, tile_bound);
 
                 const auto mask = hn::LoadU(du, grid.mask + at);
