@@ -14,10 +14,11 @@
 // each pixel row of a tile (a 16-pixel strip) keeps a coverage bit mask and two depth layers.
 // `far_depth` bounds every pixel of the strip; `near_depth` bounds the pixels whose mask bit is
 // set. When a strip's mask fills up, its near layer becomes the far layer (MSOC's merge, with
-// its rule for dropping the near layer when a much nearer surface arrives). Rasterization works
-// on one tile at a time, one SIMD lane per strip: a row's coverage is the bits between its left
-// and right edge crossings (two shifts), its depth bound the triangle's plane at the extreme
-// covered column. Every stored depth is an upper bound of the true nearest occluder depth at
+// its rule for dropping the near layer when a much nearer surface arrives). The strips are
+// stored by column of tiles, rows in order, so that rasterization takes 16 rows from any row
+// (one SIMD lane per strip): a triangle up to 16 rows tall is one vector per column of tiles
+// wherever it starts. A row's coverage is the bits between its left and right edge crossings
+// (two shifts), its depth bound the triangle's plane at the extreme covered column. Every stored depth is an upper bound of the true nearest occluder depth at
 // each pixel (src/occlusion/occluder_setup.cpp explains the margins), so "Occluded" is only
 // answered when every pixel the object could touch holds an occluder strictly nearer than the
 // object's nearest point. Per tile, the largest and smallest bounds are kept too (refreshed at
