@@ -10,13 +10,16 @@
 //
 // Reported counters: ns_per_triangle (occluder renders) and ns_per_test (rectangle and box
 // tests), both per item, single thread. Run: build/occlusion_bench [--benchmark_filter=...]
+// (ZRASTER_BENCH_AVX2=1: the AVX2 kernels on an AVX-512 machine).
 #include <zraster/camera.hpp>
 #include <zraster/occlusion_buffer.hpp>
 
 #include <benchmark/benchmark.h>
+#include <hwy/targets.h>
 
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <numbers>
 #include <vector>
 
@@ -254,4 +257,14 @@ BENCHMARK(BM_TestBox_InFrontOfWall);
 
 }  // namespace
 
-BENCHMARK_MAIN();
+// ZRASTER_BENCH_AVX2=1 runs the AVX2 kernels on an AVX-512 machine: Intel's published MSOC
+// figures are for AVX2.
+int main(int argc, char** argv) {
+    if (const char* avx2 = std::getenv("ZRASTER_BENCH_AVX2"); avx2 != nullptr && *avx2 == '1')
+        hwy::DisableTargets(HWY_AVX2 - 1);  // the targets better than AVX2
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}

@@ -18,12 +18,12 @@
 // stored by column of tiles, rows in order, so that rasterization takes 16 rows from any row
 // (one SIMD lane per strip): a triangle up to 16 rows tall is one vector per column of tiles
 // wherever it starts. A row's coverage is the bits between its left and right edge crossings
-// (two shifts), its depth bound the triangle's plane at the extreme covered column. Every stored depth is an upper bound of the true nearest occluder depth at
-// each pixel (src/occlusion/occluder_setup.cpp explains the margins), so "Occluded" is only
-// answered when every pixel the object could touch holds an occluder strictly nearer than the
-// object's nearest point. Per tile, the largest and smallest bounds are kept too (refreshed at
-// the end of each render_occluders call), so most tiles of a test are settled without reading
-// them.
+// (two shifts), its depth bound the triangle's plane at the extreme covered column. Every stored
+// depth is an upper bound of the true nearest occluder depth at each pixel
+// (src/occlusion/occluder_setup.cpp explains the margins), so "Occluded" is only answered when
+// every pixel the object could touch holds an occluder strictly nearer than the object's nearest
+// point. Per tile, the largest and smallest bounds are kept too (refreshed at the end of each
+// render_occluders call), so most tiles of a test are settled without reading them.
 //
 // Guarantees:
 //  - Conservative: never Occluded for something an exact z-buffer of the same occluders would

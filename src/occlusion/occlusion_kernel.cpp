@@ -22,6 +22,7 @@
 
 #include "occlusion/occluder_setup.hpp"
 #include "occlusion/occlusion_kernel.hpp"
+#include "simd/compress_lanes-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace zraster::detail::HWY_NAMESPACE {
@@ -761,9 +762,9 @@ std::size_t SetupOccluders(const OccluderSource& src, std::size_t first, std::si
             const auto take = hn::And(keep, valid_lanes);
             const auto take_i = hn::RebindMask(di, take);
             for (int field = 0; field < k::kFloatFields; ++field)
-                hn::StoreU(hn::Compress(f[field], take), df, out.field[field] + n);
+                hn::StoreU(CompressLanes(df, f[field], take), df, out.field[field] + n);
             for (int b = 0; b < 4; ++b)
-                hn::StoreU(hn::Compress(bounds[b], take_i), di, out_bounds[b] + n);
+                hn::StoreU(CompressLanes(di, bounds[b], take_i), di, out_bounds[b] + n);
             n += hn::CountTrue(df, take);
             continue;
         }

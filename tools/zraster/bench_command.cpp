@@ -8,6 +8,7 @@
 #include <zraster/scenes.hpp>
 
 #include <fmt/format.h>
+#include <hwy/targets.h>
 
 #include <algorithm>
 #include <chrono>
@@ -95,6 +96,8 @@ void add_bench_command(CLI::App& app, BenchArguments& a) {
                   "Check every frame that the meshes did not change (hash them), as a Renderer "
                   "does unless told they are static (same image)");
     cmd->add_flag("--front-to-back", a.front_to_back, "Draw instances nearest first");
+    cmd->add_flag("--no-avx512", a.no_avx512,
+                  "Run the AVX2 kernels where AVX-512 is available (as a machine without it)");
     cmd->add_option("--shading-strategy", a.strategy, "auto | forward | deferred (same image)")
         ->check(CLI::IsMember({"auto", "forward", "deferred"}))
         ->capture_default_str();
@@ -145,6 +148,7 @@ int run_bench(const BenchArguments& a) {
     if (a.warmup < 0) throw InputError("--warmup", "must be >= 0");
     if (a.threads < 0) throw InputError("--threads", "must be >= 0");
     validate_png_output(a.out);
+    if (a.no_avx512) hwy::DisableTargets(HWY_AVX2 - 1);  // the targets better than AVX2
 
     // Loading, shading setup and framing stay outside the timed loop, as in glbench.
     Scene scene = load_scene_or_procedural(a.scene);

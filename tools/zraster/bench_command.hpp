@@ -22,6 +22,7 @@ struct BenchArguments {
     bool no_cluster_culling = false;
     bool check_meshes = false;
     bool front_to_back = false;
+    bool no_avx512 = false;
     std::string strategy = "auto";
     bool verbose = false;
     std::string out;
