@@ -190,12 +190,14 @@ int VisibilityRows(DF df, const BlockJob& job, TileBuffers& tile) {
     return passed;
 }
 
-// Two rows of up to 8 pixels per step, in 16 lanes (AVX-512): small triangles span few rows, so
-// this halves the steps. Lanes 0-7 are row y, lanes 8-15 row y + 1; the same operations per
-// lane as VisibilityRows.
-#if HWY_MAX_BYTES >= 64 && HWY_TARGET != HWY_SCALAR
+// Two rows of up to 8 pixels per step in 16 lanes (AVX-512), or of up to 4 in 8 (AVX2): small
+// triangles span few rows, so this halves the steps. The low half of the lanes is row y, the
+// high half row y + 1; the same operations per lane as VisibilityRows.
+#if HWY_MAX_BYTES >= 32 && HWY_TARGET != HWY_SCALAR
 template <int kCompare, class D16>
 int VisibilityRowPairs(D16 d, const BlockJob& job, TileBuffers& tile) {
+    constexpr int kRowLanes = static_cast<int>(hn::MaxLanes(D16())) / 2;
+    static_assert(kRowLanes == 8 || kRowLanes == 4, "AVX-512 or AVX2 vectors");
     const TriangleSetup& t = *job.setup;
     // The flags the loop tests, in locals: the tile stores could alias the job, so read
     // through it they were loaded again in every step. (A copy of the whole job and setup was
@@ -208,8 +210,8 @@ int VisibilityRowPairs(D16 d, const BlockJob& job, TileBuffers& tile) {
     const auto zero_f = hn::Zero(d);
     const auto one_f = hn::Set(d, 1.0f);
     const auto lane = hn::Iota(di, 0);
-    const auto column = hn::And(lane, hn::Set(di, 7));
-    const auto second_row = hn::ShiftRight<3>(lane);  // 0 or 1
+    const auto column = hn::And(lane, hn::Set(di, kRowLanes - 1));
+    const auto second_row = hn::ShiftRight < kRowLanes == 8 ? 3 : 2 > (lane);  // 0 or 1
     const auto in_width = hn::Lt(column, hn::Set(di, job.width));
     hn::Vec<decltype(di)> off[3];
     for (int k = 0; k < 3; ++k)
@@ -240,8 +242,8 @@ int VisibilityRowPairs(D16 d, const BlockJob& job, TileBuffers& tile) {
         z = hn::Add(hn::Min(hn::Max(z, zero_f), one_f), zero_f);
         const std::size_t at =
             static_cast<std::size_t>((job.y0 + y) * TileBuffers::kStride + job.x0);
-        // Both rows' 8 values (the second may be past the block or the tile: then its lanes
-        // are not covered and the same values go back; TileBuffers has room for that).
+        // Both rows' values (the second may be past the block or the tile: then its lanes are
+        // not covered and the same values go back; TileBuffers has room for that).
         const auto load_pair = [&](auto dtag, const auto* from) {
             const hn::Half<decltype(dtag)> half;
             return hn::Combine(dtag, hn::LoadU(half, from + at + kNext),
@@ -302,7 +304,11 @@ int VisibilityBlockWith(const BlockJob& job, TileBuffers& tile) {
     if (hn::Lanes(d16) == 16 && job.width <= 8) return VisibilityRowPairs<kCompare>(d16, job, tile);
     if (hn::Lanes(d16) == 16) return VisibilityRows<kCompare>(d16, job, tile);
 #endif
-    return VisibilityRows<kCompare>(hn::CappedTag<float, 8>(), job, tile);
+    const hn::CappedTag<float, 8> d8;
+#if HWY_MAX_BYTES >= 32 && HWY_TARGET != HWY_SCALAR
+    if (hn::Lanes(d8) == 8 && job.width <= 4) return VisibilityRowPairs<kCompare>(d8, job, tile);
+#endif
+    return VisibilityRows<kCompare>(d8, job, tile);
 }
 
 // The depth tests of ordinary and reversed depth get kernels of their own; the rest share one.
