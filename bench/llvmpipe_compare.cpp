@@ -12,6 +12,7 @@
 #include <zraster/scenes.hpp>
 
 #include <fmt/format.h>
+#include <hwy/targets.h>
 #include <sys/resource.h>
 #include <unistd.h>
 #include <CLI/CLI.hpp>
@@ -41,6 +42,7 @@ struct Options {
     int frames = 5;
     int warmup = 2;
     bool no_cull = false;
+    bool no_avx512 = false;
     bool check = false;
     bool verbose = false;
 };
@@ -292,6 +294,7 @@ int run(const Options& o) {
     const glm::ivec2 size = cli::parse_size("--size", o.size, kMaxViewport);
     if (o.rounds < 1 || o.frames < 1 || o.warmup < 0 || o.threads < 0)
         throw InputError("", "--rounds and --frames must be >= 1, --warmup and --threads >= 0");
+    if (o.no_avx512) hwy::DisableTargets(HWY_AVX2 - 1);  // the targets better than AVX2
 
     // The context first: LP_NUM_THREADS must be in the environment before EGL initializes.
     const GlContext context(o.threads);
@@ -348,6 +351,8 @@ int main(int argc, char** argv) {
     app.add_option("--frames", o.frames, "Frames per batch")->capture_default_str();
     app.add_option("--warmup", o.warmup, "Untimed frames per side first")->capture_default_str();
     app.add_flag("--no-cull", o.no_cull, "Disable back-face culling");
+    app.add_flag("--no-avx512", o.no_avx512,
+                 "zraster runs its AVX2 kernels where AVX-512 is available (llvmpipe unchanged)");
     app.add_flag("--check", o.check, "Compare one frame's depth and color instead of timing");
     app.add_flag("--verbose", o.verbose, "Print every round");
     CLI11_PARSE(app, argc, argv);
