@@ -183,8 +183,7 @@ void RefreshCoarseLevels(TileGrid grid, int tx0, int ty0, int tx1, int ty1) {
     for (int ty = ty0; ty <= ty1; ++ty)
         for (int tx = tx0; tx <= tx1; ++tx) {
             const std::size_t i = static_cast<std::size_t>(ty) * grid.tiles_x + tx;
-            const std::size_t at = row_index(grid, tx, ty * kOcclusionTileHeight);
-            const TileRows t{grid.mask + at, grid.far_depth + at, grid.near_depth + at};
+            const TileRows t = tile_rows(grid, tx, ty);
             auto hi = none, lo = hn::Set(df, HUGE_VALF);
             // Block maxima: top left, top right, bottom left, bottom right.
             auto tl = none, tr = none, bl = none, br = none;
@@ -235,8 +234,7 @@ HWY_INLINE bool TileOccluded(const TileGrid& grid, int tx, int ty, int x0, int y
     const DI di;
     const DU du;
     const int lanes = static_cast<int>(hn::Lanes(df));
-    const std::size_t at = row_index(grid, tx, ty * kOcclusionTileHeight);
-    const TileRows tile{grid.mask + at, grid.far_depth + at, grid.near_depth + at};
+    const TileRows tile = tile_rows(grid, tx, ty);
     const int s = std::max(x0 - tx * kOcclusionTileWidth, 0);
     const int e = std::min(x1 + 1 - tx * kOcclusionTileWidth, kOcclusionTileWidth);
     const std::uint32_t high = e >= 32 ? ~0u : (1u << e) - 1u;  // e <= tile width
@@ -841,8 +839,7 @@ void refresh_coarse_levels_scalar(TileGrid grid, int tx0, int ty0, int tx1, int 
     for (int ty = ty0; ty <= ty1; ++ty)
         for (int tx = tx0; tx <= tx1; ++tx) {
             const std::size_t i = static_cast<std::size_t>(ty) * grid.tiles_x + tx;
-            const std::size_t at = row_index(grid, tx, ty * kOcclusionTileHeight);
-            const TileRows t{grid.mask + at, grid.far_depth + at, grid.near_depth + at};
+            const TileRows t = tile_rows(grid, tx, ty);
             float hi = t.far_depth[0], lo = t.far_depth[0];
             for (int r = 0; r < kOcclusionTileHeight; ++r) {
                 const float bound = t.mask[r] != 0 ? t.near_depth[r] : t.far_depth[r];
@@ -1093,8 +1090,7 @@ bool rect_occluded_scalar(const TileGrid& grid, int x0, int y0, int x1, int y1, 
     for (int y = y0; y <= y1; ++y) {
         const int ty = y / kOcclusionTileHeight, r = y % kOcclusionTileHeight;
         for (int tx = x0 / kOcclusionTileWidth; tx <= x1 / kOcclusionTileWidth; ++tx) {
-            const std::size_t at = row_index(grid, tx, ty * kOcclusionTileHeight);
-            const TileRows tile{grid.mask + at, grid.far_depth + at, grid.near_depth + at};
+            const TileRows tile = tile_rows(grid, tx, ty);
             const int s = std::max(x0 - tx * kOcclusionTileWidth, 0);
             const int e = std::min(x1 + 1 - tx * kOcclusionTileWidth, kOcclusionTileWidth);
             const std::uint32_t rect_mask = ~low_bits_scalar(s) & low_bits_scalar(e);

@@ -26,8 +26,8 @@ inline constexpr float kClearFarDepth = 1.0f;    // the far plane
 //   mask[y] != kOcclusionFullMask (a full mask is folded into far_depth at once), near_depth[y] <=
 //   far_depth[y]
 // Rows are contiguous within a strip, so the 16 rows from any y are one vector: a triangle up to
-// 16 rows tall is one vector per strip wherever it starts (with tiles of fixed rows, over half of
-// the 10-row triangles of a typical occluder mesh straddle two). Tiles (16 x 16) remain the unit
+// 16 rows tall is one vector per strip wherever it starts (with tiles of fixed rows, about half of
+// the 9-row triangles of a typical occluder mesh straddle two). Tiles (16 x 16) remain the unit
 // of the coarse levels and of the rectangle test.
 // Each strip has this many rows past its last tile row, for whole-vector loads from any row.
 inline constexpr int kStripPaddingRows = kOcclusionTileHeight;
@@ -176,6 +176,10 @@ struct TileRows {
     const float* far_depth;
     const float* near_depth;
 };
+inline TileRows tile_rows(const TileGrid& grid, int tx, int ty) {
+    const std::size_t at = row_index(grid, tx, ty * kOcclusionTileHeight);
+    return {grid.mask + at, grid.far_depth + at, grid.near_depth + at};
+}
 
 // Owns the rows of a TileGrid (and clears them).
 struct StripStorage {
