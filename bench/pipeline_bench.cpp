@@ -80,7 +80,7 @@ void BM_SetupLanes(benchmark::State& state) {
                 for (int k = 0; k < 3; ++k)
                     lanes.set_vertex(k, lane, vertices[t + 3 * std::size_t(lane) + std::size_t(k)]);
             (simd ? detail::setup_lanes : detail::setup_lanes_scalar)(lanes, detail::kSetupLanes,
-                                                                      settings, out);
+                                                                      settings, out, nullptr);
             for (int lane = 0; lane < detail::kSetupLanes; ++lane) {
                 benchmark::DoNotOptimize(detail::load_setup(lanes, out, lane, settings, setup));
                 benchmark::DoNotOptimize(setup);
@@ -217,7 +217,7 @@ void BM_VisibilityBlock(benchmark::State& state) {
                 job.step_x[k] = std::int32_t(s.edge_a[std::size_t(k)]);
                 job.step_y[k] = std::int32_t(s.edge_b[std::size_t(k)]);
             }
-            job.setup = &s;
+            job.planes = {s.depth, s.q, s.p1, s.p2, s.l1, s.l2};
             job.width = s.max_x - s.min_x + 1;
             job.height = s.max_y - s.min_y + 1;
             job.attributes = job.barycentrics = attributes;

@@ -5,6 +5,7 @@
 #include <hwy/foreach_target.h>  // must come before highway.h
 #include <hwy/highway.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdlib>
 
@@ -17,7 +18,7 @@ namespace hn = hwy::HWY_NAMESPACE;
 // setup_triangle's operations, in its order, on lanes of doubles (integers included: see the
 // header).
 void SetupLanesImpl(const VertexLanes& in, int count, const SetupSettings& settings,
-                    SetupLanes& out) {
+                    SetupLanes& out, const JobWindow* window) {
     const hn::CappedTag<double, kSetupLanes> dd;
     const hn::Rebind<std::int32_t, decltype(dd)> di;
     const hn::Rebind<float, decltype(dd)> df;
@@ -69,6 +70,34 @@ void SetupLanesImpl(const VertexLanes& in, int count, const SetupSettings& setti
         hn::StoreU(hn::DemoteTo(di, hn::IfThenElseZero(front, one)), di, out.front_facing + lane);
         hn::StoreU(hn::DemoteTo(di, hn::IfThenElseZero(scalar, one)), di, out.scalar + lane);
 
+        // Single jobs in the window (see the header): the box clipped to it, in double too.
+        auto single = hn::FirstN(dd, 0);
+        auto job_x = zero, job_y = zero;
+        if (window != nullptr) {
+            const auto wx0 = hn::Set(dd, double(window->x0)), wy0 = hn::Set(dd, double(window->y0));
+            job_x = hn::Max(px0, wx0);
+            job_y = hn::Max(py0, wy0);
+            const auto end_x = hn::Min(px1, hn::Set(dd, double(window->x1 - 1)));
+            const auto end_y = hn::Min(py1, hn::Set(dd, double(window->y1 - 1)));
+            const auto extent = hn::Set(dd, double(kSingleJobExtent));
+            single = hn::AndNot(
+                scalar, hn::And(hn::And(hn::Lt(hn::Sub(hi_x, lo_x), extent),
+                                        hn::Lt(hn::Sub(hi_y, lo_y), extent)),
+                                hn::And(hn::Lt(hn::Sub(end_x, job_x),
+                                               hn::Set(dd, double(window->max_columns))),
+                                        hn::And(hn::Le(job_x, end_x), hn::Le(job_y, end_y)))));
+            const auto store_job = [&](hn::Vec<decltype(dd)> v, std::int32_t* to) {
+                hn::StoreU(hn::DemoteTo(di, hn::IfThenElseZero(single, v)), di, to + lane);
+            };
+            store_job(one, out.single_job);
+            store_job(hn::Sub(job_x, wx0), out.job_x0);
+            store_job(hn::Sub(job_y, wy0), out.job_y0);
+            store_job(hn::Add(hn::Sub(end_x, job_x), one), out.job_width);
+            store_job(hn::Add(hn::Sub(end_y, job_y), one), out.job_height);
+            store_job(hn::Sub(job_x, px0), out.job_plane_dx);
+            store_job(hn::Sub(job_y, py0), out.job_plane_dy);
+        }
+
         // The edges, oriented by the sign of the area, with the fill rule's bias.
         const auto sign = hn::IfThenElse(negative, hn::Set(dd, -1.0), one);
         const auto edge = [&](int k, hn::Vec<decltype(dd)> ax, hn::Vec<decltype(dd)> ay,
@@ -79,9 +108,18 @@ void SetupLanesImpl(const VertexLanes& in, int count, const SetupSettings& setti
             const auto c =
                 hn::Sub(hn::Sub(hn::Mul(dx, hn::Sub(half, ay)), hn::Mul(dy, hn::Sub(half, ax))),
                         hn::IfThenZeroElse(top_left, one));
-            hn::StoreU(hn::ConvertTo(dl, hn::Mul(hn::Neg(dy), scale)), dl, out.edge_a[k] + lane);
-            hn::StoreU(hn::ConvertTo(dl, hn::Mul(dx, scale)), dl, out.edge_b[k] + lane);
+            const auto a = hn::Mul(hn::Neg(dy), scale), b = hn::Mul(dx, scale);
+            hn::StoreU(hn::ConvertTo(dl, a), dl, out.edge_a[k] + lane);
+            hn::StoreU(hn::ConvertTo(dl, b), dl, out.edge_b[k] + lane);
             hn::StoreU(hn::ConvertTo(dl, c), dl, out.edge_c[k] + lane);
+            if (window == nullptr) return;
+            // A single job's values fit 32 bits (see kSingleJobExtent).
+            const auto store_job = [&](hn::Vec<decltype(dd)> v, std::int32_t* to) {
+                hn::StoreU(hn::DemoteTo(di, hn::IfThenElseZero(single, v)), di, to + lane);
+            };
+            store_job(hn::Add(hn::Add(hn::Mul(a, job_x), hn::Mul(b, job_y)), c), out.job_e[k]);
+            store_job(a, out.job_step_x[k]);
+            store_job(b, out.job_step_y[k]);
         };
         edge(0, x1, y1, x2, y2);
         edge(1, x2, y2, x0, y0);
@@ -145,8 +183,9 @@ namespace zraster::detail {
 HWY_EXPORT(SetupLanesImpl);
 HWY_EXPORT(SetupLanesTarget);
 
-void setup_lanes(const VertexLanes& in, int count, const SetupSettings& settings, SetupLanes& out) {
-    HWY_DYNAMIC_DISPATCH(SetupLanesImpl)(in, count, settings, out);
+void setup_lanes(const VertexLanes& in, int count, const SetupSettings& settings, SetupLanes& out,
+                 const JobWindow* window) {
+    HWY_DYNAMIC_DISPATCH(SetupLanesImpl)(in, count, settings, out, window);
 }
 
 const char* setup_lanes_target() {
@@ -159,10 +198,35 @@ std::array<ScreenVertex, 3> lane_vertices(const VertexLanes& in, int lane) {
     return {in.vertex(0, lane), in.vertex(1, lane), in.vertex(2, lane)};
 }
 
+// The single job of lane `lane` (set up in `t`) in `window`, as the header describes it.
+void single_job_scalar(const VertexLanes& in, int lane, const TriangleSetup& t,
+                       const JobWindow& window, SetupLanes& out) {
+    const auto [lo_x, hi_x] = std::minmax({in.x[0][lane], in.x[1][lane], in.x[2][lane]});
+    const auto [lo_y, hi_y] = std::minmax({in.y[0][lane], in.y[1][lane], in.y[2][lane]});
+    const int x0 = std::max(t.min_x, window.x0), y0 = std::max(t.min_y, window.y0);
+    const int x1 = std::min(t.max_x, window.x1 - 1), y1 = std::min(t.max_y, window.y1 - 1);
+    const bool single = std::int64_t{hi_x} - lo_x < kSingleJobExtent &&
+                        std::int64_t{hi_y} - lo_y < kSingleJobExtent &&
+                        x1 - x0 < window.max_columns && x0 <= x1 && y0 <= y1;
+    const auto job = [&](std::int64_t v) { return single ? static_cast<std::int32_t>(v) : 0; };
+    out.single_job[lane] = single;
+    out.job_x0[lane] = job(x0 - window.x0);
+    out.job_y0[lane] = job(y0 - window.y0);
+    out.job_width[lane] = job(x1 - x0 + 1);
+    out.job_height[lane] = job(y1 - y0 + 1);
+    out.job_plane_dx[lane] = job(x0 - t.min_x);
+    out.job_plane_dy[lane] = job(y0 - t.min_y);
+    for (std::size_t k = 0; k < 3; ++k) {
+        out.job_e[k][lane] = job(t.edge_a[k] * x0 + t.edge_b[k] * y0 + t.edge_c[k]);
+        out.job_step_x[k][lane] = job(t.edge_a[k]);
+        out.job_step_y[k][lane] = job(t.edge_b[k]);
+    }
+}
+
 }  // namespace
 
 void setup_lanes_scalar(const VertexLanes& in, int count, const SetupSettings& settings,
-                        SetupLanes& out) {
+                        SetupLanes& out, const JobWindow* window) {
     for (int lane = 0; lane < count; ++lane) {
         TriangleSetup t;
         const bool small = [&] {
@@ -174,6 +238,13 @@ void setup_lanes_scalar(const VertexLanes& in, int count, const SetupSettings& s
         }();
         out.scalar[lane] =
             !small || setup_triangle(lane_vertices(in, lane), settings, t) != SetupResult::Visible;
+        if (window != nullptr) {
+            if (out.scalar[lane]) {
+                t = TriangleSetup{};
+                t.max_x = t.max_y = -1;  // no pixels: not a single job
+            }
+            single_job_scalar(in, lane, t, *window, out);
+        }
         if (out.scalar[lane]) continue;
         out.min_x[lane] = t.min_x;
         out.min_y[lane] = t.min_y;

@@ -43,6 +43,18 @@ struct VertexLanes {
     }
 };
 
+// The part of the image a tile rasterizes, [x0, x1) x [y0, y1), and the widest triangle (in
+// pixel columns inside it) that it runs as a single kernel job: setup_lanes computes those jobs
+// in lanes too (see SetupLanes::single_job).
+struct JobWindow {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    int max_columns = 0;
+};
+
+// A single job's triangle has its vertices less than this far apart (subpixels) each way: then
+// its edge values fit 32 bits anywhere near it (|E| <= 2^22 * 65 * 2 < 2^30).
+inline constexpr std::int32_t kSingleJobExtent = 64 * kSubpixelScale;
+
 // The setups of eight triangles, one array per TriangleSetup field.
 struct SetupLanes {
     enum Plane { kDepth, kQ, kP1, kP2, kL1, kL2, kPlanes };
@@ -53,13 +65,26 @@ struct SetupLanes {
     std::int32_t front_facing[kSetupLanes];
     // 1 where the lane was left to the scalar setup (see above): its other fields are unset.
     std::int32_t scalar[kSetupLanes];
+    // With a JobWindow: 1 where the lane's triangle is a single job there (set up in lanes,
+    // vertices less than kSingleJobExtent apart each way, its pixels in the window at most
+    // max_columns wide and at least one), and that job (visibility_kernel.hpp's BlockJob): its
+    // first pixel (x0, y0) = the box of covered pixel centers' corner clipped to the window,
+    // relative to the window and (plane_dx, plane_dy) to the setup's plane origin (min_x,
+    // min_y); its size; the edge functions there and their steps.
+    std::int32_t single_job[kSetupLanes];
+    std::int32_t job_x0[kSetupLanes], job_y0[kSetupLanes];
+    std::int32_t job_width[kSetupLanes], job_height[kSetupLanes];
+    std::int32_t job_plane_dx[kSetupLanes], job_plane_dy[kSetupLanes];
+    std::int32_t job_e[3][kSetupLanes], job_step_x[3][kSetupLanes], job_step_y[3][kSetupLanes];
 };
 
 // Sets up lanes [0, count) of `in` (the planes settings asks for: depth always, q, p1, p2
-// with barycentric_planes, l1, l2 with screen_linear_planes too).
-void setup_lanes(const VertexLanes& in, int count, const SetupSettings& settings, SetupLanes& out);
+// with barycentric_planes, l1, l2 with screen_linear_planes too), and their single jobs in
+// `window` unless it is null (then single_job and the job fields are unset).
+void setup_lanes(const VertexLanes& in, int count, const SetupSettings& settings, SetupLanes& out,
+                 const JobWindow* window = nullptr);
 void setup_lanes_scalar(const VertexLanes& in, int count, const SetupSettings& settings,
-                        SetupLanes& out);
+                        SetupLanes& out, const JobWindow* window = nullptr);
 
 // setup_triangle on lane `lane`'s vertices.
 SetupResult setup_lane_scalar(const VertexLanes& in, int lane, const SetupSettings& settings,

@@ -125,7 +125,7 @@ HWY_INLINE void store_where(DF df, M pass, V v, T* to) {
 // One row of up to Lanes(df) pixels per step.
 template <int kCompare, class DF>
 int VisibilityRows(DF df, const BlockJob& job, TileBuffers& tile) {
-    const TriangleSetup& t = *job.setup;
+    const JobPlanes& t = job.planes;
     // (Flags in locals: see VisibilityRowPairs.)
     const bool attributes = job.attributes, write_depth = job.write_depth;
     const CompareFunc compare = depth_test<kCompare>(job);
@@ -198,7 +198,7 @@ template <int kCompare, class D16>
 int VisibilityRowPairs(D16 d, const BlockJob& job, TileBuffers& tile) {
     constexpr int kRowLanes = static_cast<int>(hn::MaxLanes(D16())) / 2;
     static_assert(kRowLanes == 8 || kRowLanes == 4, "AVX-512 or AVX2 vectors");
-    const TriangleSetup& t = *job.setup;
+    const JobPlanes& t = job.planes;
     // The flags the loop tests, in locals: the tile stores could alias the job, so read
     // through it they were loaded again in every step. (A copy of the whole job and setup was
     // slower: wide loads of what the caller just wrote in narrow stores stall.)
@@ -312,19 +312,45 @@ int VisibilityBlockWith(const BlockJob& job, TileBuffers& tile) {
 }
 
 // The depth tests of ordinary and reversed depth get kernels of their own; the rest share one.
-int VisibilityBlock(const BlockJob& job, TileBuffers& tile) {
-    switch (job.compare) {
+template <class Run>
+HWY_INLINE auto WithCompare(CompareFunc compare, const Run& run) {
+    switch (compare) {
         case CompareFunc::Less:
-            return VisibilityBlockWith<static_cast<int>(CompareFunc::Less)>(job, tile);
+            return run.template operator()<static_cast<int>(CompareFunc::Less)>();
         case CompareFunc::LessEqual:
-            return VisibilityBlockWith<static_cast<int>(CompareFunc::LessEqual)>(job, tile);
+            return run.template operator()<static_cast<int>(CompareFunc::LessEqual)>();
         case CompareFunc::Greater:
-            return VisibilityBlockWith<static_cast<int>(CompareFunc::Greater)>(job, tile);
+            return run.template operator()<static_cast<int>(CompareFunc::Greater)>();
         case CompareFunc::GreaterEqual:
-            return VisibilityBlockWith<static_cast<int>(CompareFunc::GreaterEqual)>(job, tile);
+            return run.template operator()<static_cast<int>(CompareFunc::GreaterEqual)>();
         default:
-            return VisibilityBlockWith<-1>(job, tile);
+            return run.template operator()<-1>();
     }
+}
+
+int VisibilityBlock(const BlockJob& job, TileBuffers& tile) {
+    return WithCompare(job.compare,
+                       [&]<int kCompare>() { return VisibilityBlockWith<kCompare>(job, tile); });
+}
+
+LaneJobsDone VisibilityLanes(const LaneJobs& jobs, int first, int count, const BlockJob& shared,
+                             TileBuffers& tile) {
+    return WithCompare(shared.compare, [&]<int kCompare>() {
+        LaneJobsDone done;
+        BlockJob job = shared;
+        for (int lane = first; lane < count; ++lane) {
+            if (!fill_lane_job(jobs, lane, job)) {
+                done.next = lane;
+                return done;
+            }
+            const int passed = VisibilityBlockWith<kCompare>(job, tile);
+            done.passed += static_cast<std::uint64_t>(passed);
+            if (job.shade_constants != nullptr)
+                done.passed_shaded += static_cast<std::uint64_t>(passed);
+        }
+        done.next = count;
+        return done;
+    });
 }
 
 float BlockFarthestDepth(const TileBuffers& tile, int block_x, int block_y, bool largest) {
@@ -351,6 +377,7 @@ HWY_AFTER_NAMESPACE();
 namespace zraster::detail {
 
 HWY_EXPORT(VisibilityBlock);
+HWY_EXPORT(VisibilityLanes);
 HWY_EXPORT(TargetName);
 HWY_EXPORT(BlockFarthestDepth);
 
@@ -373,12 +400,35 @@ int visibility_block(const BlockJob& job, TileBuffers& tile) {
     return HWY_DYNAMIC_DISPATCH(VisibilityBlock)(job, tile);
 }
 
+LaneJobsDone visibility_lanes(const LaneJobs& jobs, int first, int count, const BlockJob& shared,
+                              TileBuffers& tile) {
+    return HWY_DYNAMIC_DISPATCH(VisibilityLanes)(jobs, first, count, shared, tile);
+}
+
+LaneJobsDone visibility_lanes_scalar(const LaneJobs& jobs, int first, int count,
+                                     const BlockJob& shared, TileBuffers& tile) {
+    LaneJobsDone done;
+    BlockJob job = shared;
+    for (int lane = first; lane < count; ++lane) {
+        if (!fill_lane_job(jobs, lane, job)) {
+            done.next = lane;
+            return done;
+        }
+        const int passed = visibility_block_scalar(job, tile);
+        done.passed += static_cast<std::uint64_t>(passed);
+        if (job.shade_constants != nullptr)
+            done.passed_shaded += static_cast<std::uint64_t>(passed);
+    }
+    done.next = count;
+    return done;
+}
+
 const char* visibility_kernel_target() {
     return HWY_DYNAMIC_DISPATCH(TargetName)();
 }
 
 int visibility_block_scalar(const BlockJob& job, TileBuffers& tile) {
-    const TriangleSetup& t = *job.setup;
+    const JobPlanes& t = job.planes;
     int passed = 0;
     for (int y = 0; y < job.height; ++y)
         for (int x = 0; x < job.width; ++x) {

@@ -15,6 +15,8 @@
 
 #include <cstdint>
 
+#include "raster/setup_lanes.hpp"
+
 namespace zraster::detail {
 
 inline constexpr std::uint32_t kNoTriangle = 0xffffffffu;
@@ -80,6 +82,12 @@ inline void store_interpolated(const CornerAttributes& a, const glm::vec3* piece
     tile.wz[at] = p.z;
 }
 
+// The plane equations the kernel evaluates: TriangleSetup's (q, p1, p2 for perspective-correct
+// barycentrics, l1, l2 for screen-linear ones; only those the job asks for need be set).
+struct JobPlanes {
+    PlaneEquation depth, q, p1, p2, l1, l2;
+};
+
 // One block of at most 8 pixels wide (any height) of one triangle.
 struct BlockJob {
     // Edge function values at the block's first pixel (x0, y0), and their steps per pixel in
@@ -91,7 +99,7 @@ struct BlockJob {
     int x0 = 0, y0 = 0;              // tile-local position of the block's first pixel
     int width = 0, height = 0;       // width <= 8
     int plane_dx = 0, plane_dy = 0;  // (x0, y0) relative to the triangle's plane origin
-    const TriangleSetup* setup = nullptr;
+    JobPlanes planes;
     bool perspective = true;
     CompareFunc compare = CompareFunc::Less;
     bool write_depth = true;
@@ -111,6 +119,66 @@ struct BlockJob {
 // Returns the number of fragments that passed the depth test. D32F only.
 int visibility_block(const BlockJob& job, TileBuffers& tile);
 int visibility_block_scalar(const BlockJob& job, TileBuffers& tile);
+
+// Set-up lanes whose triangles are single jobs (setup_lanes with a JobWindow: small triangles,
+// one kernel job each), with what their jobs need beyond the setup. The tile rasterizer spent
+// about as long filling a TriangleSetup and a BlockJob for each small triangle, in scalar
+// code, as the kernel spent on it; the lanes already hold those values.
+struct LaneJobs {
+    const SetupLanes* lanes = nullptr;
+    std::uint32_t ref[kSetupLanes];
+    const CornerAttributes* corners[kSetupLanes];
+    const glm::vec3* piece[kSetupLanes];
+    const PhongConstants* shade_constants[kSetupLanes];
+};
+struct LaneJobsDone {
+    int next = 0;  // the first lane not run: not a single job, or the count
+    std::uint64_t passed = 0;
+    std::uint64_t passed_shaded = 0;  // of those, by lanes with shade constants
+};
+// Lane `lane`'s job into `job` (the fields all lanes share are left as they are); false if the
+// lane is not a single job.
+inline bool fill_lane_job(const LaneJobs& jobs, int lane, BlockJob& job) {
+    const SetupLanes& l = *jobs.lanes;
+    if (!l.single_job[lane]) return false;
+    for (int k = 0; k < 3; ++k) {
+        job.e[k] = l.job_e[k][lane];
+        job.step_x[k] = l.job_step_x[k][lane];
+        job.step_y[k] = l.job_step_y[k][lane];
+    }
+    job.full = false;
+    job.x0 = l.job_x0[lane];
+    job.y0 = l.job_y0[lane];
+    job.width = l.job_width[lane];
+    job.height = l.job_height[lane];
+    job.plane_dx = l.job_plane_dx[lane];
+    job.plane_dy = l.job_plane_dy[lane];
+    const auto plane = [&](int p) {
+        return PlaneEquation{l.plane_a[p][lane], l.plane_b[p][lane], l.plane_c[p][lane]};
+    };
+    job.planes.depth = plane(SetupLanes::kDepth);
+    if (job.barycentrics && job.perspective) {
+        job.planes.q = plane(SetupLanes::kQ);
+        job.planes.p1 = plane(SetupLanes::kP1);
+        job.planes.p2 = plane(SetupLanes::kP2);
+    } else if (job.barycentrics) {
+        job.planes.l1 = plane(SetupLanes::kL1);
+        job.planes.l2 = plane(SetupLanes::kL2);
+    }
+    job.ref = jobs.ref[lane];
+    job.corners = jobs.corners[lane];
+    job.piece = jobs.piece[lane];
+    job.shade_constants = jobs.shade_constants[lane];
+    return true;
+}
+
+// Runs lanes first, first + 1, ... (below count) while they are single jobs, each as
+// visibility_block would run that job: `shared` gives what all lanes share (the depth test,
+// perspective, write_depth, attributes, barycentrics), the lanes the rest.
+LaneJobsDone visibility_lanes(const LaneJobs& jobs, int first, int count, const BlockJob& shared,
+                              TileBuffers& tile);
+LaneJobsDone visibility_lanes_scalar(const LaneJobs& jobs, int first, int count,
+                                     const BlockJob& shared, TileBuffers& tile);
 
 // The farthest depth stored in the 8x8 block (block_x, block_y) of the tile: the largest when
 // `largest`, else the smallest. Exact (a max/min over the stored values).

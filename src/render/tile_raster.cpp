@@ -136,22 +136,28 @@ bool fits_int32(std::int64_t v) {
            v <= std::numeric_limits<std::int32_t>::max();
 }
 
+// What the kernel jobs of all triangles in the tile share.
+BlockJob shared_job(const TileContext& c) {
+    const RenderOptions& options = *c.frame.options;
+    BlockJob job;
+    job.perspective = options.interpolation == Interpolation::PerspectiveCorrect;
+    job.compare = c.compare;
+    job.write_depth = options.depth_write;
+    job.attributes = c.shade || !c.targets.instance_id.empty();
+    job.barycentrics = c.shade;
+    return job;
+}
+
 // Hierarchical traversal of one triangle in one tile: 8x8 blocks classified by their corners,
 // then the visibility kernel on the covered or partly covered ones.
 std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const TriangleRef& ref,
                                const TriangleSetup& setup, std::uint32_t id,
                                const CornerAttributes* corners, const glm::vec3* piece,
                                const PhongConstants* shade_constants, TileBuffers& tile) {
-    const RenderOptions& options = *c.frame.options;
     const int rx0 = std::max(setup.min_x, c.x0), ry0 = std::max(setup.min_y, c.y0);
     const int rx1 = std::min(setup.max_x, c.x1 - 1), ry1 = std::min(setup.max_y, c.y1 - 1);
-    BlockJob job;
-    job.setup = &setup;
-    job.perspective = options.interpolation == Interpolation::PerspectiveCorrect;
-    job.compare = c.compare;
-    job.write_depth = options.depth_write;
-    job.attributes = c.shade || !c.targets.instance_id.empty();
-    job.barycentrics = c.shade;
+    BlockJob job = shared_job(c);
+    job.planes = {setup.depth, setup.q, setup.p1, setup.p2, setup.l1, setup.l2};
     job.corners = corners;
     job.piece = piece;
     job.shade_constants = shade_constants;
@@ -227,7 +233,7 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
     // columns beat 16 and 64 there.
     const auto [lo_x, hi_x] = std::minmax({setup.x[0], setup.x[1], setup.x[2]});
     const auto [lo_y, hi_y] = std::minmax({setup.y[0], setup.y[1], setup.y[2]});
-    if (hi_x - lo_x < 64 * kSubpixelScale && hi_y - lo_y < 64 * kSubpixelScale &&
+    if (hi_x - lo_x < kSingleJobExtent && hi_y - lo_y < kSingleJobExtent &&
         rx1 - rx0 < kSingleJobColumns)
         return run_block.template operator()<true>(rx0, ry0, rx1, ry1, false, 0);
 
@@ -511,53 +517,83 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
         bool untagged = false;  // a triangle without a shade tag was drawn
         TriangleSetup setup;
         // The tile's entries, kSetupLanes at a time (set up together), the chunks in order.
+        // Small triangles are single jobs (see rasterize_blocks), which the setup computes in
+        // lanes and the kernel runs straight from them; the others take rasterize_blocks.
         SetupLanes lanes;
         VertexLanes vertices;
+        LaneJobs jobs;
+        jobs.lanes = &lanes;
+        const BlockJob shared_lane_job = shared_job(c);
+        const JobWindow window{c.x0, c.y0, c.x1, c.y1, kSingleJobColumns};
         const auto setup_block = options.simd ? setup_lanes : setup_lanes_scalar;
+        const auto run_lanes = options.simd ? visibility_lanes : visibility_lanes_scalar;
+        // While small triangles' hierarchical z tests are worth making, rasterize_blocks makes
+        // them. (Only triangles that are not single jobs make bounded blocks.)
+        const auto lanes_run = [&] {
+            return hiz == HierarchicalZ::Off || bounded_blocks == 0 || !small_jobs.worth_testing();
+        };
+        const Chunk* lane_chunk[kSetupLanes];
         std::size_t ci = 0;
         const std::size_t end = bins[chunks];
-        for (std::size_t e = bins[0]; e < end;) {
-            const int count = int(std::min<std::size_t>(end - e, kSetupLanes));
-            const BinEntry* entries = frame.bin_entries.data() + e;
+        for (std::size_t first = bins[0]; first < end; first += kSetupLanes) {
+            const int count = int(std::min<std::size_t>(end - first, kSetupLanes));
+            const BinEntry* entries = frame.bin_entries.data() + first;
             for (int lane = 0; lane < count; ++lane)
                 for (int k = 0; k < 3; ++k)
                     vertices.set_vertex(k, lane, entries[lane].vertices[std::size_t(k)]);
-            setup_block(vertices, count, frame.setup_settings, lanes);
-            for (int lane = 0; lane < count; ++lane, ++e) {
+            setup_block(vertices, count, frame.setup_settings, lanes, kernel ? &window : nullptr);
+            for (int lane = 0; lane < count; ++lane) {
+                const std::size_t e = first + std::size_t(lane);
                 while (e >= bins[ci + 1]) ++ci;
                 const Chunk& chunk = frame.chunks[ci];
+                lane_chunk[lane] = &chunk;
                 const std::uint32_t local = entries[lane].ref & ~BinEntry::kClippedPiece;
-                if (load_setup(vertices, lanes, lane, frame.setup_settings, setup) !=
-                    SetupResult::Visible)
-                    continue;  // cannot happen: the front end made the same decision
-                const TriangleRef& ref = chunk.refs[local];
-                const std::uint32_t id = std::uint32_t(ci) << kLocalBits | local;
-                if (!kernel) {
-                    passed += rasterize_scalar(c, chunk, ref, setup, id, nullptr, nullptr, nullptr,
-                                               tile, c.x0, c.y0, c.x1, c.y1);
-                    continue;
-                }
+                jobs.ref[lane] = std::uint32_t(ci) << kLocalBits | local;
                 const CornerAttributes* with = nullptr;
                 const glm::vec3* piece = nullptr;
-                if (tagged) {
+                if (kernel && tagged) {
                     with = &frame.bin_corners[e];
                     if (with->tag == 0) {
                         with = nullptr;
                         untagged = true;
                     } else if (entries[lane].ref & BinEntry::kClippedPiece) {
-                        piece = chunk.pieces[ref.piece].weights.data();
+                        piece = chunk.pieces[chunk.refs[local].piece].weights.data();
                     }
                 }
                 // The deferred pass reads the ref of every pixel the triangle keeps (unless
                 // tagged); fetching it now, while the tile rasterizes, saves a cache miss there
                 // (refs are read in bin order here but in pixel order there).
-                if (shade && with == nullptr) __builtin_prefetch(&ref);
-                const PhongConstants* shade_now =
+                if (kernel && shade && with == nullptr) __builtin_prefetch(&chunk.refs[local]);
+                jobs.corners[lane] = with;
+                jobs.piece[lane] = piece;
+                jobs.shade_constants[lane] =
                     with != nullptr && forward_tile
                         ? &frame.phong_constants[(with->tag & ~kShadeFlip) - 1]
                         : nullptr;
+            }
+            for (int lane = 0; lane < count; ++lane) {
+                if (kernel && lanes_run()) {
+                    const LaneJobsDone done = run_lanes(jobs, lane, count, shared_lane_job, tile);
+                    passed += done.passed;
+                    shaded_forward += done.passed_shaded;
+                    lane = done.next;
+                    if (lane == count) break;
+                }
+                if (load_setup(vertices, lanes, lane, frame.setup_settings, setup) !=
+                    SetupResult::Visible)
+                    continue;  // cannot happen: the front end made the same decision
+                const Chunk& chunk = *lane_chunk[lane];
+                const std::uint32_t id = jobs.ref[lane];
+                const TriangleRef& ref = chunk.refs[id & ((1u << kLocalBits) - 1)];
+                if (!kernel) {
+                    passed += rasterize_scalar(c, chunk, ref, setup, id, nullptr, nullptr, nullptr,
+                                               tile, c.x0, c.y0, c.x1, c.y1);
+                    continue;
+                }
+                const PhongConstants* shade_now = jobs.shade_constants[lane];
                 const std::uint64_t kept =
-                    rasterize_blocks(c, chunk, ref, setup, id, with, piece, shade_now, tile);
+                    rasterize_blocks(c, chunk, ref, setup, id, jobs.corners[lane], jobs.piece[lane],
+                                     shade_now, tile);
                 passed += kept;
                 if (shade_now != nullptr) shaded_forward += kept;
             }

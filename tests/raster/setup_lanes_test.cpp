@@ -2,12 +2,14 @@
 // setup is setup_triangle's bit for bit, the lanes it leaves to the scalar setup are exactly
 // the ones it must (coordinates past the limit, triangles setup_triangle rejects), and the
 // cases with their own branches in setup_triangle (snapped planes for slivers whose unsnapped
-// orientation flips, the fill rule's ties, every cull mode and winding) are all exercised.
+// orientation flips, the fill rule's ties, every cull mode and winding) are all exercised; and
+// the single jobs it computes for a tile's window are the ones the triangle's setup gives.
 #include <zraster/scenes.hpp>
 
 #include <gtest/gtest.h>
 #include <hwy/targets.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstdlib>
 
@@ -45,6 +47,40 @@ void expect_same_setup(const TriangleSetup& a, const TriangleSetup& b,
     expect_same_plane(a.l2, b.l2, "l2");
 }
 
+// Checks lane `lane`'s single job against the setup (`visible`: setup_triangle accepted it), as
+// the tile rasterizer would run the triangle as one job in the window; returns whether it is one.
+bool expect_single_job(const VertexLanes& in, int lane, const SetupLanes& lanes,
+                       const TriangleSetup& t, bool visible, const JobWindow& w) {
+    bool small = visible;
+    for (int k = 0; k < 3; ++k)
+        small &= std::abs(std::int64_t{in.x[k][lane]}) < kSetupLanesCoordinateLimit &&
+                 std::abs(std::int64_t{in.y[k][lane]}) < kSetupLanesCoordinateLimit;
+    std::int64_t width = 0, height = 0;
+    for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) {
+            width = std::max(width, std::int64_t{in.x[a][lane]} - in.x[b][lane]);
+            height = std::max(height, std::int64_t{in.y[a][lane]} - in.y[b][lane]);
+        }
+    const int x0 = std::max(t.min_x, w.x0), x1 = std::min(t.max_x, w.x1 - 1);
+    const int y0 = std::max(t.min_y, w.y0), y1 = std::min(t.max_y, w.y1 - 1);
+    const bool single = small && width < kSingleJobExtent && height < kSingleJobExtent &&
+                        x0 <= x1 && y0 <= y1 && x1 - x0 + 1 <= w.max_columns;
+    EXPECT_EQ(lanes.single_job[lane], single ? 1 : 0) << lane;
+    if (!single) return false;
+    EXPECT_EQ(lanes.job_x0[lane], x0 - w.x0);
+    EXPECT_EQ(lanes.job_y0[lane], y0 - w.y0);
+    EXPECT_EQ(lanes.job_width[lane], x1 - x0 + 1);
+    EXPECT_EQ(lanes.job_height[lane], y1 - y0 + 1);
+    EXPECT_EQ(lanes.job_plane_dx[lane], x0 - t.min_x);
+    EXPECT_EQ(lanes.job_plane_dy[lane], y0 - t.min_y);
+    for (std::size_t k = 0; k < 3; ++k) {
+        EXPECT_EQ(lanes.job_e[k][lane], t.edge_a[k] * x0 + t.edge_b[k] * y0 + t.edge_c[k]) << k;
+        EXPECT_EQ(lanes.job_step_x[k][lane], t.edge_a[k]) << k;
+        EXPECT_EQ(lanes.job_step_y[k][lane], t.edge_b[k]) << k;
+    }
+    return true;
+}
+
 // A vertex around (cx, cy) pixels: snapped as to_screen does, the unsnapped position a little
 // off it (so slivers may flip orientation unsnapped), random depth and 1/w.
 ScreenVertex random_vertex(SplitMix64& rng, double cx, double cy, double extent) {
@@ -66,6 +102,7 @@ ScreenVertex random_vertex(SplitMix64& rng, double cx, double cy, double extent)
 TEST(SetupLanes, EveryLaneIsSetupTriangleBitForBit) {
     SplitMix64 rng(2026);
     std::uint64_t in_lanes = 0, left_to_scalar = 0, snapped_planes = 0, rejected = 0;
+    std::uint64_t single_jobs = 0, not_single = 0;
     for (int round = 0; round < 3000; ++round) {
         SetupSettings settings;
         settings.viewport = {1 + int(rng.next() % 2048), 1 + int(rng.next() % 2048)};
@@ -75,11 +112,21 @@ TEST(SetupLanes, EveryLaneIsSetupTriangleBitForBit) {
         settings.screen_linear_planes = rng.next() % 3 == 0;
         // Sub-pixel, a few pixels, or large triangles.
         const double extent = std::array{0.4, 3.0, 40.0, 900.0}[rng.next() % 4];
+        // A tile's window (its jobs are computed too), mostly with the triangles near it.
+        JobWindow window;
+        window.x0 = int(rng.next() % std::uint64_t(settings.viewport.width)) / 64 * 64;
+        window.y0 = int(rng.next() % std::uint64_t(settings.viewport.height)) / 64 * 64;
+        window.x1 = std::min(window.x0 + 64, settings.viewport.width);
+        window.y1 = std::min(window.y0 + 64, settings.viewport.height);
+        window.max_columns = rng.next() % 2 ? 32 : 1 + int(rng.next() % 40);
+        const bool near_window = rng.next() % 4 != 0;
         VertexLanes in{};
         const int count = 1 + int(rng.next() % kSetupLanes);
         for (int lane = 0; lane < count; ++lane) {
-            const double cx = rng.uniform(-50.0, settings.viewport.width + 50.0);
-            const double cy = rng.uniform(-50.0, settings.viewport.height + 50.0);
+            const double cx = near_window ? window.x0 + rng.uniform(-20.0, 84.0)
+                                          : rng.uniform(-50.0, settings.viewport.width + 50.0);
+            const double cy = near_window ? window.y0 + rng.uniform(-20.0, 84.0)
+                                          : rng.uniform(-50.0, settings.viewport.height + 50.0);
             for (int k = 0; k < 3; ++k) in.set_vertex(k, lane, random_vertex(rng, cx, cy, extent));
             switch (rng.next() % 16) {
                 case 0:  // degenerate
@@ -106,7 +153,7 @@ TEST(SetupLanes, EveryLaneIsSetupTriangleBitForBit) {
             hwy::SetSupportedTargetsForTest(target);
             for (const bool simd : {true, false}) {
                 SetupLanes lanes;
-                (simd ? setup_lanes : setup_lanes_scalar)(in, count, settings, lanes);
+                (simd ? setup_lanes : setup_lanes_scalar)(in, count, settings, lanes, &window);
                 for (int lane = 0; lane < count; ++lane) {
                     const std::array<ScreenVertex, 3> v{in.vertex(0, lane), in.vertex(1, lane),
                                                         in.vertex(2, lane)};
@@ -121,10 +168,14 @@ TEST(SetupLanes, EveryLaneIsSetupTriangleBitForBit) {
                     // Left to the scalar setup exactly when it must be.
                     EXPECT_EQ(lanes.scalar[lane] != 0, !small || result != SetupResult::Visible)
                         << lane;
+                    const bool single = expect_single_job(in, lane, lanes, expected,
+                                                          result == SetupResult::Visible, window);
+                    single_jobs += simd && single;
                     if (result != SetupResult::Visible) {
                         rejected += simd;
                         continue;
                     }
+                    if (simd && !single && !lanes.scalar[lane]) ++not_single;
                     expect_same_setup(got, expected, settings);
                     if (!simd) continue;
                     (lanes.scalar[lane] ? left_to_scalar : in_lanes) += 1;
@@ -146,6 +197,8 @@ TEST(SetupLanes, EveryLaneIsSetupTriangleBitForBit) {
     EXPECT_GT(left_to_scalar, 100u);
     EXPECT_GT(snapped_planes, 20u);
     EXPECT_GT(rejected, 1000u);
+    EXPECT_GT(single_jobs, 3000u);
+    EXPECT_GT(not_single, 1000u);
 }
 
 }  // namespace

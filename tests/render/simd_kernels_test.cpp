@@ -8,8 +8,12 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cstring>
+#include <memory>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "raster/visibility_kernel.hpp"
 #include "render/render_test_util.hpp"
@@ -23,23 +27,34 @@ bool same_bits(const T* a, const T* b, std::size_t n) {
     return std::memcmp(a, b, n * sizeof(T)) == 0;
 }
 
-void VisibilityBlockMatchesScalarOnRandomTriangles() {
-    std::mt19937 rng(99);
-    std::uniform_real_distribution<double> coord(-20.0, 84.0);
-    std::uniform_real_distribution<float> depth(0.0f, 1.0f), w(0.2f, 4.0f);
-    auto simd_tile = std::make_unique<TileBuffers>();
-    auto scalar_tile = std::make_unique<TileBuffers>();
-    for (TileBuffers* t : {simd_tile.get(), scalar_tile.get()}) {
-        std::fill(std::begin(t->depth), std::end(t->depth), 1.0f);
-        std::fill(std::begin(t->ref), std::end(t->ref), kNoTriangle);
-        std::fill(std::begin(t->b1), std::end(t->b1), 0.0f);
-        std::fill(std::begin(t->b2), std::end(t->b2), 0.0f);
-        for (float* a : {t->nx, t->ny, t->nz, t->wx, t->wy, t->wz})
-            std::fill_n(a, TileBuffers::kPixels, 0.0f);
-        std::fill(std::begin(t->shade_tag), std::end(t->shade_tag), 0u);
-        std::fill(std::begin(t->color), std::end(t->color), 0u);
-    }
-    // Forward shading (lit in the kernel) for some of the interpolating triangles.
+std::unique_ptr<TileBuffers> cleared_tile() {
+    auto t = std::make_unique<TileBuffers>();
+    std::fill(std::begin(t->depth), std::end(t->depth), 1.0f);
+    std::fill(std::begin(t->ref), std::end(t->ref), kNoTriangle);
+    std::fill(std::begin(t->b1), std::end(t->b1), 0.0f);
+    std::fill(std::begin(t->b2), std::end(t->b2), 0.0f);
+    for (float* a : {t->nx, t->ny, t->nz, t->wx, t->wy, t->wz})
+        std::fill_n(a, TileBuffers::kPixels, 0.0f);
+    std::fill(std::begin(t->shade_tag), std::end(t->shade_tag), 0u);
+    std::fill(std::begin(t->color), std::end(t->color), 0u);
+    return t;
+}
+
+// Every buffer of the two tiles, bit for bit.
+void expect_same_tiles(const TileBuffers& a, const TileBuffers& b) {
+    EXPECT_TRUE(same_bits(a.depth, b.depth, TileBuffers::kPixels));
+    EXPECT_TRUE(same_bits(a.ref, b.ref, TileBuffers::kPixels));
+    EXPECT_TRUE(same_bits(a.b1, b.b1, TileBuffers::kPixels));
+    EXPECT_TRUE(same_bits(a.b2, b.b2, TileBuffers::kPixels));
+    EXPECT_TRUE(same_bits(a.shade_tag, b.shade_tag, TileBuffers::kPixels));
+    for (const auto field : {&TileBuffers::nx, &TileBuffers::ny, &TileBuffers::nz, &TileBuffers::wx,
+                             &TileBuffers::wy, &TileBuffers::wz})
+        EXPECT_TRUE(same_bits(a.*field, b.*field, TileBuffers::kPixels));
+    EXPECT_TRUE(same_bits(a.color, b.color, TileBuffers::kPixels));
+}
+
+// Forward shading's constants (two lights) for the kernel tests.
+PhongConstants test_lighting() {
     LightingModel model;
     model.lights.push_back(Light{});
     model.lights.push_back(Light{});
@@ -48,9 +63,18 @@ void VisibilityBlockMatchesScalarOnRandomTriangles() {
     Material material;
     material.base_color = {0.8f, 0.6f, 0.3f};
     material.shininess = 24.0f;
-    ASSERT_TRUE(phong_kernel_applies(model, material));
-    const PhongConstants lighting =
-        make_phong_constants(model, material, {0.5f, 1.0f, 4.0f}, glm::vec3(0, 0, 1));
+    EXPECT_TRUE(phong_kernel_applies(model, material));
+    return make_phong_constants(model, material, {0.5f, 1.0f, 4.0f}, glm::vec3(0, 0, 1));
+}
+
+void VisibilityBlockMatchesScalarOnRandomTriangles() {
+    std::mt19937 rng(99);
+    std::uniform_real_distribution<double> coord(-20.0, 84.0);
+    std::uniform_real_distribution<float> depth(0.0f, 1.0f), w(0.2f, 4.0f);
+    auto simd_tile = cleared_tile();
+    auto scalar_tile = cleared_tile();
+    // Forward shading (lit in the kernel) for some of the interpolating triangles.
+    const PhongConstants lighting = test_lighting();
     int lit = 0;
     // Corner attributes for a third of the triangles, a clipped piece's weights for some.
     std::uniform_real_distribution<float> attribute(-3.0f, 3.0f);
@@ -77,7 +101,7 @@ void VisibilityBlockMatchesScalarOnRandomTriangles() {
         TriangleSetup setup;
         if (setup_triangle(v, settings, setup) != SetupResult::Visible) continue;
         BlockJob job;
-        job.setup = &setup;
+        job.planes = {setup.depth, setup.q, setup.p1, setup.p2, setup.l1, setup.l2};
         job.compare = compares[(tri / 3) % 6];
         job.perspective = tri % 5 != 0;
         job.write_depth = tri % 7 != 0;
@@ -127,20 +151,9 @@ void VisibilityBlockMatchesScalarOnRandomTriangles() {
     EXPECT_GT(blocks, 3000);
     EXPECT_GT(wide, 500);  // jobs wider than a block and taller than one, with pixels kept
     EXPECT_GT(passed, 10000);
-    EXPECT_TRUE(same_bits(simd_tile->depth, scalar_tile->depth, TileBuffers::kPixels));
-    EXPECT_TRUE(same_bits(simd_tile->ref, scalar_tile->ref, TileBuffers::kPixels));
-    EXPECT_TRUE(same_bits(simd_tile->b1, scalar_tile->b1, TileBuffers::kPixels));
-    EXPECT_TRUE(same_bits(simd_tile->b2, scalar_tile->b2, TileBuffers::kPixels));
     EXPECT_GT(interpolated, 1500);
-    EXPECT_TRUE(same_bits(simd_tile->shade_tag, scalar_tile->shade_tag, TileBuffers::kPixels));
-    EXPECT_TRUE(same_bits(simd_tile->nx, scalar_tile->nx, TileBuffers::kPixels));
-    EXPECT_TRUE(same_bits(simd_tile->ny, scalar_tile->ny, TileBuffers::kPixels));
-    EXPECT_TRUE(same_bits(simd_tile->nz, scalar_tile->nz, TileBuffers::kPixels));
-    EXPECT_TRUE(same_bits(simd_tile->wx, scalar_tile->wx, TileBuffers::kPixels));
-    EXPECT_TRUE(same_bits(simd_tile->wy, scalar_tile->wy, TileBuffers::kPixels));
-    EXPECT_TRUE(same_bits(simd_tile->wz, scalar_tile->wz, TileBuffers::kPixels));
     EXPECT_GT(lit, 3000);
-    EXPECT_TRUE(same_bits(simd_tile->color, scalar_tile->color, TileBuffers::kPixels));
+    expect_same_tiles(*simd_tile, *scalar_tile);
     // The interpolating triangles kept pixels to the end (their tags are there).
     int tagged = 0;
     for (int at = 0; at < TileBuffers::kStride * TileBuffers::kStride; ++at)
@@ -357,6 +370,125 @@ void ForwardEqualsDeferred() {
 
 // Each check on every instruction set this machine runs (AVX-512, AVX2, SSE4, ...), not only the
 // best one: another machine may lack AVX-512.
+// Triangles set up in lanes with a tile's window, their single jobs run by visibility_lanes
+// (SIMD and scalar twin), against each job built from its TriangleSetup as the tile rasterizer
+// builds a small triangle's one job and run by the scalar block kernel.
+void VisibilityLanesRunTheSingleJobs() {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> center(-10.0, 74.0), offset(-6.0, 6.0);
+    std::uniform_real_distribution<float> depth(0.0f, 1.0f), w(0.2f, 4.0f), attribute(-3.0f, 3.0f);
+    SetupSettings settings;
+    settings.viewport = {256, 256};
+    settings.cull = CullMode::None;
+    const JobWindow window{64, 128, 128, 192, 32};
+    const PhongConstants lighting = test_lighting();
+    const glm::vec3 piece[3] = {{0.7f, 0.2f, 0.1f}, {0.1f, 0.8f, 0.1f}, {0.3f, 0.3f, 0.4f}};
+    auto simd_tile = cleared_tile(), scalar_tile = cleared_tile(), block_tile = cleared_tile();
+    std::vector<CornerAttributes> corners(kSetupLanes);
+    int singles = 0, others = 0;
+    std::uint64_t passed = 0;
+    for (int batch = 0; batch < 400; ++batch) {
+        // Mostly small triangles around the window; some 20 times larger (not single jobs).
+        VertexLanes in{};
+        const int count = 1 + int(rng() % kSetupLanes);
+        for (int lane = 0; lane < count; ++lane) {
+            const double cx = window.x0 + center(rng), cy = window.y0 + center(rng);
+            const double scale = rng() % 8 == 0 ? 20.0 : 1.0;
+            for (int k = 0; k < 3; ++k) {
+                ScreenVertex v;
+                v.window_x = float(cx + scale * offset(rng));
+                v.window_y = float(cy + scale * offset(rng));
+                const auto snapped = snap_to_grid({v.window_x, v.window_y});
+                v.x = std::int32_t(snapped[0]);
+                v.y = std::int32_t(snapped[1]);
+                v.z = depth(rng);
+                v.inv_w = w(rng);
+                in.set_vertex(k, lane, v);
+            }
+        }
+        BlockJob shared;
+        shared.compare = batch % 3 ? CompareFunc::Less : CompareFunc::GreaterEqual;
+        shared.perspective = batch % 5 != 0;
+        shared.write_depth = batch % 7 != 0;
+        shared.attributes = shared.barycentrics = batch % 9 != 0;
+        LaneJobs simd_jobs, scalar_jobs;
+        SetupLanes simd_lanes, scalar_lanes;
+        setup_lanes(in, count, settings, simd_lanes, &window);
+        setup_lanes_scalar(in, count, settings, scalar_lanes, &window);
+        simd_jobs.lanes = &simd_lanes;
+        scalar_jobs.lanes = &scalar_lanes;
+        for (int lane = 0; lane < count; ++lane) {
+            CornerAttributes& a = corners[std::size_t(lane)];
+            for (int k = 0; k < 3; ++k) {
+                a.world[k] = {attribute(rng), attribute(rng), attribute(rng)};
+                a.normal[k] = {attribute(rng), attribute(rng), attribute(rng)};
+            }
+            a.tag = (1 + std::uint32_t(rng() % 4)) | (rng() % 3 == 0 ? kShadeFlip : 0u);
+            const int kind = int(rng() % 4);  // barycentrics, interpolated, piece, lit
+            for (LaneJobs* jobs : {&simd_jobs, &scalar_jobs}) {
+                jobs->ref[lane] = std::uint32_t(batch * kSetupLanes + lane);
+                jobs->corners[lane] = kind == 0 ? nullptr : &a;
+                jobs->piece[lane] = kind == 2 ? piece : nullptr;
+                jobs->shade_constants[lane] = kind == 3 ? &lighting : nullptr;
+            }
+        }
+        // Both twins, in runs of single jobs; the lanes that stop a run are left out.
+        const auto run = [&](const auto& function, const LaneJobs& jobs, TileBuffers& tile) {
+            std::vector<int> ran;
+            std::uint64_t total = 0;
+            for (int lane = 0; lane < count; ++lane) {
+                const LaneJobsDone done = function(jobs, lane, count, shared, tile);
+                for (int l = lane; l < done.next; ++l) ran.push_back(l);
+                total += done.passed;
+                lane = done.next;
+            }
+            return std::pair{ran, total};
+        };
+        const auto [simd_ran, simd_passed] = run(visibility_lanes, simd_jobs, *simd_tile);
+        const auto [scalar_ran, scalar_passed] =
+            run(visibility_lanes_scalar, scalar_jobs, *scalar_tile);
+        ASSERT_EQ(simd_ran, scalar_ran) << batch;
+        ASSERT_EQ(simd_passed, scalar_passed) << batch;
+        // The same jobs from the setups.
+        std::uint64_t block_passed = 0;
+        for (const int lane : simd_ran) {
+            TriangleSetup t;
+            ASSERT_EQ(setup_triangle({in.vertex(0, lane), in.vertex(1, lane), in.vertex(2, lane)},
+                                     settings, t),
+                      SetupResult::Visible);
+            BlockJob job = shared;
+            const int x0 = std::max(t.min_x, window.x0), y0 = std::max(t.min_y, window.y0);
+            const int x1 = std::min(t.max_x, window.x1 - 1), y1 = std::min(t.max_y, window.y1 - 1);
+            for (std::size_t k = 0; k < 3; ++k) {
+                job.e[k] = std::int32_t(t.edge_a[k] * x0 + t.edge_b[k] * y0 + t.edge_c[k]);
+                job.step_x[k] = std::int32_t(t.edge_a[k]);
+                job.step_y[k] = std::int32_t(t.edge_b[k]);
+            }
+            job.x0 = x0 - window.x0;
+            job.y0 = y0 - window.y0;
+            job.width = x1 - x0 + 1;
+            job.height = y1 - y0 + 1;
+            job.plane_dx = x0 - t.min_x;
+            job.plane_dy = y0 - t.min_y;
+            job.planes = {t.depth, t.q, t.p1, t.p2, t.l1, t.l2};
+            job.ref = simd_jobs.ref[lane];
+            job.corners = simd_jobs.corners[lane];
+            job.piece = simd_jobs.piece[lane];
+            job.shade_constants = simd_jobs.shade_constants[lane];
+            block_passed += std::uint64_t(visibility_block_scalar(job, *block_tile));
+        }
+        ASSERT_EQ(simd_passed, block_passed) << batch;
+        singles += int(simd_ran.size());
+        others += count - int(simd_ran.size());
+        passed += simd_passed;
+    }
+    EXPECT_GT(singles, 400);
+    EXPECT_GT(others, 100);
+    EXPECT_GT(passed, 5000u);
+    expect_same_tiles(*simd_tile, *scalar_tile);
+    expect_same_tiles(*simd_tile, *block_tile);
+}
+
 template <class Check>
 void on_every_target(Check check) {
     for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
@@ -371,6 +503,10 @@ void on_every_target(Check check) {
 
 TEST(SimdKernels, VisibilityBlockMatchesScalarOnRandomTriangles) {
     on_every_target(VisibilityBlockMatchesScalarOnRandomTriangles);
+}
+
+TEST(SimdKernels, VisibilityLanesRunTheSingleJobs) {
+    on_every_target(VisibilityLanesRunTheSingleJobs);
 }
 
 TEST(SimdKernels, PhongShadingMatchesScalarOnRandomInputs) {
