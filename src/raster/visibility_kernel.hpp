@@ -138,7 +138,7 @@ struct LaneJobsDone {
 };
 // Lane `lane`'s job into `job` (the fields all lanes share are left as they are); false if the
 // lane is not a single job.
-inline bool fill_lane_job(const LaneJobs& jobs, int lane, BlockJob& job) {
+[[gnu::always_inline]] inline bool fill_lane_job(const LaneJobs& jobs, int lane, BlockJob& job) {
     const SetupLanes& l = *jobs.lanes;
     if (!l.single_job[lane]) return false;
     for (int k = 0; k < 3; ++k) {
