@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <vector>
 
 #include <zraster/error.hpp>
@@ -277,46 +278,73 @@ void corner_attributes(const Frame& frame, const TriangleRef& ref, CornerAttribu
     }
 }
 
+std::size_t whole_lines(std::size_t bytes) {
+    return (bytes + kCacheLine - 1) / kCacheLine * kCacheLine;
+}
+
 // Binning is a counting sort of all chunks' refs into tiles, in two passes around a prefix sum
 // over (tile, chunk): the front end counts a chunk's refs per tile as it makes them
-// (count_in_bins), write_bins writes its entries at their final places.
+// (count_in_bins), write_bins writes its records at their final places (see Frame::bins).
 void write_bins(Frame& frame, std::size_t chunk_index) {
     const Chunk& chunk = frame.chunks[chunk_index];
     const std::size_t tiles = std::size_t(frame.tiles_x) * std::size_t(frame.tiles_y);
     const std::size_t chunks = frame.chunks.size();
-    thread_local std::vector<std::size_t> cursor;
+    const std::size_t record = frame.bin_record_bytes;
+    // The chunk's runs in a scratch buffer laid out like them (each on a cache line), kept
+    // from chunk to chunk so it stays in cache.
+    thread_local std::vector<std::size_t> run_start, cursor;
+    thread_local std::vector<std::byte> scratch_storage;
+    run_start.resize(tiles);
     cursor.resize(tiles);
-    for (std::size_t t = 0; t < tiles; ++t) cursor[t] = frame.bin_offsets[t * chunks + chunk_index];
-    BinEntry* entries = frame.bin_entries.data();
-    CornerAttributes* corners = frame.bin_corners.data();
+    std::size_t bytes = 0;
+    for (std::size_t t = 0; t < tiles; ++t) {
+        run_start[t] = cursor[t] = bytes;
+        bytes += whole_lines(chunk.bin_counts[t] * record);
+    }
+    if (scratch_storage.size() < bytes + kCacheLine) scratch_storage.resize(bytes + kCacheLine);
+    std::byte* scratch = align_to_cache_line(scratch_storage.data());
     for (std::uint32_t i = 0; i < chunk.refs.size(); ++i) {
         const TriangleRef& r = chunk.refs[i];
-        // The first bin's entry is written in place, the others copy it (a struct built on the
-        // stack and copied out stalls on store forwarding).
-        std::size_t first = ~std::size_t{0};
+        // The first bin's record is written in place, the others copy it (a struct built on
+        // the stack and copied out stalls on store forwarding).
+        const std::byte* first = nullptr;
         for (int ty = r.tile_y0; ty <= r.tile_y1; ++ty)
             for (int tx = r.tile_x0; tx <= r.tile_x1; ++tx) {
-                const std::size_t at = cursor[std::size_t(ty * frame.tiles_x + tx)]++;
-                BinEntry& entry = entries[at];
-                if (first != ~std::size_t{0}) {
-                    entry = entries[first];
-                    if (frame.tagged_shading) corners[at] = corners[first];
+                std::size_t& at = cursor[std::size_t(ty * frame.tiles_x + tx)];
+                std::byte* to = scratch + at;
+                at += record;
+                if (first != nullptr) {
+                    std::memcpy(to, first, record);
                     continue;
                 }
-                first = at;
+                first = to;
+                BinEntry& entry = *reinterpret_cast<BinEntry*>(to);
                 for (std::size_t k = 0; k < 3; ++k)
                     entry.vertices[k] = frame.screen_vertex(chunk, r, k);
                 entry.ref = i | (r.piece == TriangleRef::kNotClipped ? 0 : BinEntry::kClippedPiece);
-                if (frame.tagged_shading) corner_attributes(frame, r, corners[at]);
+                if (frame.tagged_shading)
+                    corner_attributes(frame, r,
+                                      *reinterpret_cast<CornerAttributes*>(to + sizeof(BinEntry)));
             }
     }
+    std::byte* records = frame.bin_records();
+    for (std::size_t t = 0; t < tiles; ++t)
+        if (cursor[t] != run_start[t])
+            stream_lines(records + frame.bin_run_offsets[t * chunks + chunk_index],
+                         scratch + run_start[t],
+                         whole_lines(cursor[t] - run_start[t]) / kCacheLine);
+    stream_fence();
 }
 
-// bin_offsets from the chunks' counts: tile-major, chunks in order inside a tile.
+// The runs' places from the chunks' counts: tile-major, chunks in order inside a tile, each
+// run on a cache line.
 void bin_offsets(Frame& frame) {
     const std::size_t tiles = std::size_t(frame.tiles_x) * std::size_t(frame.tiles_y);
     const std::size_t chunks = frame.chunks.size();
-    frame.bin_offsets.resize(tiles * chunks + 1);
+    const std::size_t record = frame.bin_record_bytes;
+    frame.bin_run_offsets.resize(tiles * chunks);
+    frame.bin_run_counts.resize(tiles * chunks);
+    frame.tile_bin_counts.resize(tiles);
     // Each loop over tiles writes only its tile's slots: in parallel unless the table is small
     // (then two parallel loops cost more than they save).
     const auto over_tiles = [&](const auto& body) {
@@ -326,21 +354,29 @@ void bin_offsets(Frame& frame) {
             tbb::parallel_for(std::size_t{0}, tiles, body);
     };
     // Per tile first, then the tiles' bases.
-    std::vector<std::size_t> tile_total(tiles);
+    std::vector<std::size_t> tile_bytes(tiles);
     over_tiles([&](std::size_t t) {
-        std::size_t sum = 0;
+        std::size_t bytes = 0, count = 0;
         for (std::size_t c = 0; c < chunks; ++c) {
-            frame.bin_offsets[t * chunks + c] = sum;
-            sum += frame.chunks[c].bin_counts[t];
+            const std::uint32_t n = frame.chunks[c].bin_counts[t];
+            frame.bin_run_offsets[t * chunks + c] = bytes;
+            frame.bin_run_counts[t * chunks + c] = n;
+            bytes += whole_lines(n * record);
+            count += n;
         }
-        tile_total[t] = sum;
+        tile_bytes[t] = bytes;
+        frame.tile_bin_counts[t] = count;
     });
     std::vector<std::size_t> tile_base(tiles + 1, 0);
-    for (std::size_t t = 0; t < tiles; ++t) tile_base[t + 1] = tile_base[t] + tile_total[t];
+    for (std::size_t t = 0; t < tiles; ++t) tile_base[t + 1] = tile_base[t] + tile_bytes[t];
     over_tiles([&](std::size_t t) {
-        for (std::size_t c = 0; c < chunks; ++c) frame.bin_offsets[t * chunks + c] += tile_base[t];
+        for (std::size_t c = 0; c < chunks; ++c)
+            frame.bin_run_offsets[t * chunks + c] += tile_base[t];
     });
-    frame.bin_offsets[tiles * chunks] = tile_base[tiles];
+    // (Grown empty: nothing of the old records is worth copying, and new storage is advised.)
+    const std::size_t bytes = tile_base[tiles] + kCacheLine;
+    if (bytes > frame.bin_storage.capacity()) frame.bin_storage = {};
+    memory::resize_on_huge_pages(frame.bin_storage, bytes);
 }
 
 }  // namespace
@@ -369,10 +405,9 @@ void assemble_and_bin(Frame& frame, RenderStats& stats) {
                       [&](std::size_t c) { process_chunk(frame, frame.chunks[c]); });
     const auto assembled = std::chrono::steady_clock::now();
     stats.assembly_ms = std::chrono::duration<double, std::milli>(assembled - start).count();
+    frame.bin_record_bytes =
+        sizeof(BinEntry) + (frame.tagged_shading ? sizeof(CornerAttributes) : 0);
     bin_offsets(frame);
-    const std::size_t entries = frame.bin_offsets.back();
-    memory::resize_on_huge_pages(frame.bin_entries, entries);
-    memory::resize_on_huge_pages(frame.bin_corners, frame.tagged_shading ? entries : 0);
     tbb::parallel_for(std::size_t{0}, frame.chunks.size(),
                       [&](std::size_t c) { write_bins(frame, c); });
     stats.binning_ms =

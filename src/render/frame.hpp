@@ -12,8 +12,10 @@
 #include "raster/visibility_kernel.hpp"
 #include "render/cluster_cache.hpp"
 #include "render/shade_kernel.hpp"
+#include "render/stream_lines.hpp"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -117,6 +119,13 @@ struct BinEntry {
     static constexpr std::uint32_t kClippedPiece = 0x80000000u;
 };
 
+// The first cache line boundary at or after p.
+template <class T>
+T* align_to_cache_line(T* p) {
+    const auto address = reinterpret_cast<std::uintptr_t>(p);
+    return p + ((kCacheLine - address % kCacheLine) % kCacheLine);
+}
+
 struct Chunk {
     std::size_t first_triangle = 0, end_triangle = 0;  // over all instances' triangles
     std::vector<TriangleRef> refs;
@@ -163,15 +172,21 @@ struct Frame {
     std::vector<std::size_t> instance_first_triangle;  // prefix sums, one more than instances
     FrameVertices vertices;
     std::vector<Chunk> chunks;
-    // Bins, tile-major: the entries of chunk c in tile t are
-    // bin_entries[bin_offsets[t * chunks.size() + c] .. bin_offsets[t * chunks.size() + c + 1]),
-    // so a tile's triangles of all chunks, in order, are one run of memory: the back end
-    // streams it (bins per chunk cost a cache and TLB miss per chunk in every tile).
-    std::vector<std::size_t> bin_offsets;
-    std::vector<BinEntry> bin_entries;
-    // With tagged shading, the corner attributes of each bin entry's triangle (tag 0: not a
-    // SIMD Phong instance's), written by the front end so the back end reads them in order.
-    std::vector<CornerAttributes> bin_corners;
+    // Bins, tile-major: the run of chunk c in tile t (i = t * chunks.size() + c) is
+    // bin_run_counts[i] records of bin_record_bytes from bin_records() + bin_run_offsets[i].
+    // A record is a BinEntry, followed with tagged shading by its triangle's CornerAttributes
+    // (tag 0: not a SIMD Phong instance's). A tile's triangles of all chunks, in order, are
+    // one stretch of memory the back end streams (bins per chunk cost a cache and TLB miss per
+    // chunk in every tile). Runs start on cache lines: the bin writer builds a chunk's runs in
+    // a scratch buffer that stays in cache and streams them out in whole lines (stores into
+    // 500 runs spread over 90 MB read every line from memory before writing it).
+    std::vector<std::size_t> bin_run_offsets;
+    std::vector<std::uint32_t> bin_run_counts;
+    std::vector<std::size_t> tile_bin_counts;  // records per tile, all chunks
+    std::size_t bin_record_bytes = 0;
+    std::vector<std::byte> bin_storage;  // the records, from its first cache line boundary
+    std::byte* bin_records() { return align_to_cache_line(bin_storage.data()); }
+    const std::byte* bin_records() const { return align_to_cache_line(bin_storage.data()); }
     std::vector<PhongConstants> phong_constants;
     ClearedTiles cleared_tiles;  // kept from frame to frame (see above)
     ClusterCache cluster_cache;  // kept from frame to frame

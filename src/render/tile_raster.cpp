@@ -484,8 +484,10 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
                             std::min(width, (tx + 1) * kTileSize),
                             std::min(height, (ty + 1) * kTileSize)};
         const std::size_t chunks = frame.chunks.size();
-        const std::size_t* bins = frame.bin_offsets.data() + tile_number * chunks;
-        const bool empty = bins[0] == bins[chunks];
+        // The tile's run in each chunk (see Frame::bin_run_offsets).
+        const std::size_t* run_offset = frame.bin_run_offsets.data() + tile_number * chunks;
+        const std::uint32_t* run_count = frame.bin_run_counts.data() + tile_number * chunks;
+        const bool empty = frame.tile_bin_counts[tile_number] == 0;
         if (empty) {
             // Nothing drawn here: write the cleared targets directly, unless they hold them.
             if (!cleared[tile_number]) clear_tile_targets(c, clear_row, background_row);
@@ -533,30 +535,53 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
             return hiz == HierarchicalZ::Off || bounded_blocks == 0 || !small_jobs.worth_testing();
         };
         const Chunk* lane_chunk[kSetupLanes];
-        std::size_t ci = 0;
-        const std::size_t end = bins[chunks];
-        for (std::size_t first = bins[0]; first < end; first += kSetupLanes) {
-            const int count = int(std::min<std::size_t>(end - first, kSetupLanes));
-            const BinEntry* entries = frame.bin_entries.data() + first;
+        const std::byte* lane_record[kSetupLanes];
+        std::uint32_t lane_chunk_index[kSetupLanes];
+        // A cursor over the tile's records: run by run, chunks in order.
+        const std::byte* records = frame.bin_records();
+        const std::size_t record_bytes = frame.bin_record_bytes;
+        std::size_t ci = 0, left = 0;
+        const std::byte* next_record = nullptr;
+        const auto next_run = [&] {
+            while (ci < chunks && run_count[ci] == 0) ++ci;
+            if (ci == chunks) return;
+            next_record = records + run_offset[ci];
+            left = run_count[ci];
+        };
+        next_run();
+        for (std::size_t remaining = frame.tile_bin_counts[tile_number]; remaining > 0;) {
+            const int count = int(std::min<std::size_t>(remaining, kSetupLanes));
+            remaining -= std::size_t(count);
+            for (int lane = 0; lane < count; ++lane) {
+                lane_record[lane] = next_record;
+                lane_chunk_index[lane] = std::uint32_t(ci);
+                next_record += record_bytes;
+                if (--left == 0) {
+                    ++ci;
+                    next_run();
+                }
+            }
+            const auto entry = [&](int lane) -> const BinEntry& {
+                return *reinterpret_cast<const BinEntry*>(lane_record[lane]);
+            };
             for (int lane = 0; lane < count; ++lane)
                 for (int k = 0; k < 3; ++k)
-                    vertices.set_vertex(k, lane, entries[lane].vertices[std::size_t(k)]);
+                    vertices.set_vertex(k, lane, entry(lane).vertices[std::size_t(k)]);
             setup_block(vertices, count, frame.setup_settings, lanes, kernel ? &window : nullptr);
             for (int lane = 0; lane < count; ++lane) {
-                const std::size_t e = first + std::size_t(lane);
-                while (e >= bins[ci + 1]) ++ci;
-                const Chunk& chunk = frame.chunks[ci];
+                const Chunk& chunk = frame.chunks[lane_chunk_index[lane]];
                 lane_chunk[lane] = &chunk;
-                const std::uint32_t local = entries[lane].ref & ~BinEntry::kClippedPiece;
-                jobs.ref[lane] = std::uint32_t(ci) << kLocalBits | local;
+                const std::uint32_t local = entry(lane).ref & ~BinEntry::kClippedPiece;
+                jobs.ref[lane] = lane_chunk_index[lane] << kLocalBits | local;
                 const CornerAttributes* with = nullptr;
                 const glm::vec3* piece = nullptr;
                 if (kernel && tagged) {
-                    with = &frame.bin_corners[e];
+                    with = reinterpret_cast<const CornerAttributes*>(lane_record[lane] +
+                                                                     sizeof(BinEntry));
                     if (with->tag == 0) {
                         with = nullptr;
                         untagged = true;
-                    } else if (entries[lane].ref & BinEntry::kClippedPiece) {
+                    } else if (entry(lane).ref & BinEntry::kClippedPiece) {
                         piece = chunk.pieces[chunk.refs[local].piece].weights.data();
                     }
                 }
