@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <type_traits>
 
 #include "raster/visibility_kernel.hpp"
 #include "render/shade_kernel.hpp"
@@ -126,7 +127,7 @@ HWY_INLINE void store_where(DF df, M pass, V v, T* to) {
 template <int kCompare, class DF>
 int VisibilityRows(DF df, const BlockJob& job, TileBuffers& tile) {
     const JobPlanes& t = job.planes;
-    // (Flags in locals: see VisibilityRowPairs.)
+    // (Flags in locals: see VisibilityRowGroups.)
     const bool attributes = job.attributes, write_depth = job.write_depth;
     const CompareFunc compare = depth_test<kCompare>(job);
     const hn::RebindToSigned<decltype(df)> di;
@@ -160,7 +161,7 @@ int VisibilityRows(DF df, const BlockJob& job, TileBuffers& tile) {
             const auto stored = hn::LoadU(df, tile.depth + at);
             const auto pass =
                 hn::And(hn::RebindMask(df, covered), depth_passes(df, z, stored, compare));
-            // Depth only: no branch (see VisibilityRowPairs).
+            // Depth only: no branch (see VisibilityRowGroups).
             if (attributes && hn::AllFalse(df, pass)) continue;
             passed += static_cast<int>(hn::CountTrue(df, pass));
             if (write_depth) hn::StoreU(hn::IfThenElse(pass, z, stored), df, tile.depth + at);
@@ -190,14 +191,51 @@ int VisibilityRows(DF df, const BlockJob& job, TileBuffers& tile) {
     return passed;
 }
 
-// Two rows of up to 8 pixels per step in 16 lanes (AVX-512), or of up to 4 in 8 (AVX2): small
-// triangles span few rows, so this halves the steps. The low half of the lanes is row y, the
-// high half row y + 1; the same operations per lane as VisibilityRows.
+// kRows rows of a block at a time in one vector, each row in kRows-th of the lanes: rows of up
+// to 8 pixels in pairs or of up to 4 in fours (16 lanes, AVX-512), rows of up to 4 in pairs (8
+// lanes, AVX2). Small triangles span few rows, so this cuts the steps; the same operations
+// per lane as VisibilityRows.
 #if HWY_MAX_BYTES >= 32 && HWY_TARGET != HWY_SCALAR
-template <int kCompare, class D16>
-int VisibilityRowPairs(D16 d, const BlockJob& job, TileBuffers& tile) {
-    constexpr int kRowLanes = static_cast<int>(hn::MaxLanes(D16())) / 2;
-    static_assert(kRowLanes == 8 || kRowLanes == 4, "AVX-512 or AVX2 vectors");
+// The kRows rows of a tile buffer from `at` (row r at at + r * kStride) in one vector, and
+// back. The rows past the block (or the tile: TileBuffers has room) go back unchanged.
+template <int kRows, class D, class T>
+HWY_INLINE hn::Vec<D> LoadRows(D d, const T* from) {
+    constexpr std::size_t kNext = TileBuffers::kStride;
+    const hn::Half<D> dh;
+    if constexpr (kRows == 2) {
+        return hn::Combine(d, hn::LoadU(dh, from + kNext), hn::LoadU(dh, from));
+    } else {
+        const hn::Half<decltype(dh)> dq;
+        return hn::Combine(
+            d, hn::Combine(dh, hn::LoadU(dq, from + 3 * kNext), hn::LoadU(dq, from + 2 * kNext)),
+            hn::Combine(dh, hn::LoadU(dq, from + kNext), hn::LoadU(dq, from)));
+    }
+}
+// Calls part(row, v) with the lanes of each row of v.
+template <int kRows, class D, class Part>
+HWY_INLINE void ForEachRow(D d, hn::Vec<D> v, const Part& part) {
+    const hn::Half<D> dh;
+    const auto low = hn::LowerHalf(dh, v), high = hn::UpperHalf(dh, v);
+    if constexpr (kRows == 2) {
+        part(0, low);
+        part(1, high);
+    } else {
+        const hn::Half<decltype(dh)> dq;
+        part(0, hn::LowerHalf(dq, low));
+        part(1, hn::UpperHalf(dq, low));
+        part(2, hn::LowerHalf(dq, high));
+        part(3, hn::UpperHalf(dq, high));
+    }
+    (void)d;
+}
+
+template <int kRows, int kCompare, class D16>
+int VisibilityRowGroups(D16 d, const BlockJob& job, TileBuffers& tile) {
+    constexpr int kRowLanes = static_cast<int>(hn::MaxLanes(D16())) / kRows;
+    static_assert(kRowLanes == 8 || kRowLanes == 4, "rows of 8 or 4 lanes");
+    constexpr int kRowShift = kRowLanes == 8 ? 3 : 2;
+    using RowTag = std::conditional_t<kRows == 2, hn::Half<D16>, hn::Half<hn::Half<D16>>>;
+    const RowTag dr;
     const JobPlanes& t = job.planes;
     // The flags the loop tests, in locals: the tile stores could alias the job, so read
     // through it they were loaded again in every step. (A copy of the whole job and setup was
@@ -211,18 +249,17 @@ int VisibilityRowPairs(D16 d, const BlockJob& job, TileBuffers& tile) {
     const auto one_f = hn::Set(d, 1.0f);
     const auto lane = hn::Iota(di, 0);
     const auto column = hn::And(lane, hn::Set(di, kRowLanes - 1));
-    const auto second_row = hn::ShiftRight < kRowLanes == 8 ? 3 : 2 > (lane);  // 0 or 1
+    const auto row_in_group = hn::ShiftRight<kRowShift>(lane);  // 0 .. kRows - 1
     const auto in_width = hn::Lt(column, hn::Set(di, job.width));
     hn::Vec<decltype(di)> off[3];
     for (int k = 0; k < 3; ++k)
         off[k] = hn::Add(hn::Mul(column, hn::Set(di, job.step_x[k])),
-                         hn::Mul(second_row, hn::Set(di, job.step_y[k])));
+                         hn::Mul(row_in_group, hn::Set(di, job.step_y[k])));
     const auto dx = hn::ConvertTo(d, hn::Add(column, hn::Set(di, job.plane_dx)));
     const auto ref = hn::Set(du, job.ref);
     int passed = 0;
-    constexpr std::size_t kNext = TileBuffers::kStride;  // the second row's offset
-    for (int y = 0; y < job.height; y += 2) {
-        auto covered = hn::And(in_width, hn::Lt(second_row, hn::Set(di, job.height - y)));
+    for (int y = 0; y < job.height; y += kRows) {
+        auto covered = hn::And(in_width, hn::Lt(row_in_group, hn::Set(di, job.height - y)));
         if (!job.full) {
             // Row y's edge values fit 32 bits (it is inside the block); a running sum would
             // step past the block's last row, where they need not.
@@ -232,7 +269,7 @@ int VisibilityRowPairs(D16 d, const BlockJob& job, TileBuffers& tile) {
             const auto e2 = hn::Add(row(2), off[2]);
             covered = hn::AndNot(hn::Lt(hn::Or(e0, hn::Or(e1, e2)), zero_i), covered);
         }
-        const auto dy = hn::ConvertTo(d, hn::Add(second_row, hn::Set(di, job.plane_dy + y)));
+        const auto dy = hn::ConvertTo(d, hn::Add(row_in_group, hn::Set(di, job.plane_dy + y)));
         // plane_at with a per-lane dy: (c + a * dx) + (b * dy).
         const auto plane = [&](const PlaneEquation& p) {
             return hn::Add(hn::Add(hn::Set(d, p.c), hn::Mul(hn::Set(d, p.a), dx)),
@@ -242,37 +279,27 @@ int VisibilityRowPairs(D16 d, const BlockJob& job, TileBuffers& tile) {
         z = hn::Add(hn::Min(hn::Max(z, zero_f), one_f), zero_f);
         const std::size_t at =
             static_cast<std::size_t>((job.y0 + y) * TileBuffers::kStride + job.x0);
-        // Both rows' values (the second may be past the block or the tile: then its lanes are
-        // not covered and the same values go back; TileBuffers has room for that).
-        const auto load_pair = [&](auto dtag, const auto* from) {
-            const hn::Half<decltype(dtag)> half;
-            return hn::Combine(dtag, hn::LoadU(half, from + at + kNext),
-                               hn::LoadU(half, from + at));
-        };
-        const auto store_pair = [&](auto dtag, auto v, auto* to) {
-            const hn::Half<decltype(dtag)> half;
-            hn::StoreU(hn::LowerHalf(half, v), half, to + at);
-            hn::StoreU(hn::UpperHalf(half, v), half, to + at + kNext);
-        };
-        const auto stored = load_pair(d, tile.depth);
+        const auto stored = LoadRows<kRows>(d, tile.depth + at);
         const auto pass = hn::And(hn::RebindMask(d, covered), depth_passes(d, z, stored, compare));
-        // Depth only, the rows go through without a branch: whether a row pair has pixels
+        // Depth only, the rows go through without a branch: whether a group has pixels
         // covered or passing is data the branch predictor cannot guess, and a mispredicted
         // branch costs more than the loads and stores it saves (city:20000 raster -25%). With
-        // attributes, the work a failing pair skips is worth that branch, not the coverage one.
+        // attributes, the work a failing group skips is worth that branch, not the coverage one.
         if (attributes && hn::AllFalse(d, pass)) continue;
         passed += static_cast<int>(hn::CountTrue(d, pass));
-        if (write_depth) store_pair(d, hn::IfThenElse(pass, z, stored), tile.depth);
+        if (write_depth)
+            ForEachRow<kRows>(d, hn::IfThenElse(pass, z, stored), [&](int r, auto v) {
+                hn::StoreU(v, dr, tile.depth + at + std::size_t(r) * TileBuffers::kStride);
+            });
         if (!attributes) continue;
         // Arrays only written here (see store_where), a row at a time.
-        const hn::Half<D16> dh;
-        const auto pass_v = hn::VecFromMask(d, pass);
-        const auto pass_lo = hn::MaskFromVec(hn::LowerHalf(dh, pass_v));
-        const auto pass_hi = hn::MaskFromVec(hn::UpperHalf(dh, pass_v));
+        hn::Mask<RowTag> row_pass[kRows];
+        ForEachRow<kRows>(d, hn::VecFromMask(d, pass),
+                          [&](int r, auto v) { row_pass[r] = hn::MaskFromVec(v); });
         const auto store = [&](auto v, auto* to) {
-            const auto as_float = hn::BitCast(d, v);
-            store_where(dh, pass_lo, hn::LowerHalf(dh, as_float), to + at);
-            store_where(dh, pass_hi, hn::UpperHalf(dh, as_float), to + at + kNext);
+            ForEachRow<kRows>(d, hn::BitCast(d, v), [&](int r, auto row) {
+                store_where(dr, row_pass[r], row, to + at + std::size_t(r) * TileBuffers::kStride);
+            });
         };
         store(ref, tile.ref);
         if (!job.barycentrics) continue;
@@ -301,12 +328,16 @@ template <int kCompare>
 int VisibilityBlockWith(const BlockJob& job, TileBuffers& tile) {
 #if HWY_MAX_BYTES >= 64 && HWY_TARGET != HWY_SCALAR
     const hn::CappedTag<float, 16> d16;
-    if (hn::Lanes(d16) == 16 && job.width <= 8) return VisibilityRowPairs<kCompare>(d16, job, tile);
+    if (hn::Lanes(d16) == 16 && job.width <= 4 && job.height > 2)
+        return VisibilityRowGroups<4, kCompare>(d16, job, tile);
+    if (hn::Lanes(d16) == 16 && job.width <= 8)
+        return VisibilityRowGroups<2, kCompare>(d16, job, tile);
     if (hn::Lanes(d16) == 16) return VisibilityRows<kCompare>(d16, job, tile);
 #endif
     const hn::CappedTag<float, 8> d8;
 #if HWY_MAX_BYTES >= 32 && HWY_TARGET != HWY_SCALAR
-    if (hn::Lanes(d8) == 8 && job.width <= 4) return VisibilityRowPairs<kCompare>(d8, job, tile);
+    if (hn::Lanes(d8) == 8 && job.width <= 4)
+        return VisibilityRowGroups<2, kCompare>(d8, job, tile);
 #endif
     return VisibilityRows<kCompare>(d8, job, tile);
 }

@@ -27,8 +27,8 @@ struct PhongConstants;  // render/shade_kernel.hpp
 // a row (into the next row or the padding) without leaving the buffer.
 struct TileBuffers {
     static constexpr int kStride = 64;
-    // (The 16-lane kernel reads and writes back a row below the tile's last: one more row.)
-    static constexpr int kPixels = kStride * kStride + kStride + 32;
+    // (The kernel reads and writes back up to three rows below the tile's last, unchanged.)
+    static constexpr int kPixels = kStride * kStride + 3 * kStride + 32;
     alignas(64) float depth[kPixels];  // D32F depth, or the D24/D16 unorm code as a float
     alignas(64) std::uint32_t ref[kPixels];
     alignas(64) float b1[kPixels];
