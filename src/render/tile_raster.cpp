@@ -30,6 +30,8 @@ constexpr int kLocalBits = 20;  // a pixel's triangle reference: chunk << 20 | i
 constexpr int kRefreshAfterFragments = 8;
 // A small triangle at most this many pixels wide in the tile is one kernel job (see below).
 constexpr int kSingleJobColumns = 32;
+// How far ahead of the record being set up the back end prefetches the tile's records.
+constexpr std::size_t kRecordPrefetchBytes = 2048;
 
 // Round to nearest (+ 0.5 and truncate: much cheaper than lround), as the SIMD shader does.
 std::uint8_t to_unorm8(float v) {
@@ -554,6 +556,16 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
             remaining -= std::size_t(count);
             for (int lane = 0; lane < count; ++lane) {
                 lane_record[lane] = next_record;
+                // Every line of the record 2 KiB ahead: the runs were streamed out past the
+                // caches, and the hardware prefetcher stops at each 4 KiB page. (Measured
+                // 2026-11-24, raster time: sphere:1000000 Phong -1 ms, soup:1000000 -2.3 ms;
+                // one line per record gained nothing.)
+                const std::byte* ahead = next_record + kRecordPrefetchBytes;
+                static_assert(sizeof(BinEntry) + sizeof(CornerAttributes) <= 3 * kCacheLine);
+                __builtin_prefetch(ahead);
+                __builtin_prefetch(ahead + kCacheLine);
+                __builtin_prefetch(ahead + 2 * kCacheLine);
+                __builtin_prefetch(ahead + record_bytes - 1);
                 lane_chunk_index[lane] = std::uint32_t(ci);
                 next_record += record_bytes;
                 if (--left == 0) {
