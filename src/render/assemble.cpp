@@ -278,6 +278,8 @@ void corner_attributes(const Frame& frame, const TriangleRef& ref, CornerAttribu
     }
 }
 
+constexpr std::size_t kTaggedRecord = sizeof(BinEntry) + sizeof(CornerAttributes);
+
 std::size_t whole_lines(std::size_t bytes) {
     return (bytes + kCacheLine - 1) / kCacheLine * kCacheLine;
 }
@@ -314,7 +316,11 @@ void write_bins(Frame& frame, std::size_t chunk_index) {
                 std::byte* to = scratch + at;
                 at += record;
                 if (first != nullptr) {
-                    std::memcpy(to, first, record);
+                    // (Sizes the compiler knows: a copy of a run-time size is a library call.)
+                    if (record == kTaggedRecord)
+                        std::memcpy(to, first, kTaggedRecord);
+                    else
+                        std::memcpy(to, first, sizeof(BinEntry));
                     continue;
                 }
                 first = to;
@@ -353,13 +359,13 @@ void bin_offsets(Frame& frame) {
         else
             tbb::parallel_for(std::size_t{0}, tiles, body);
     };
-    // Per tile first, then the tiles' bases.
+    // Per tile first (its runs' counts, in the tile-major table), then the tiles' bases, then
+    // the runs' places.
     std::vector<std::size_t> tile_bytes(tiles);
     over_tiles([&](std::size_t t) {
         std::size_t bytes = 0, count = 0;
         for (std::size_t c = 0; c < chunks; ++c) {
             const std::uint32_t n = frame.chunks[c].bin_counts[t];
-            frame.bin_run_offsets[t * chunks + c] = bytes;
             frame.bin_run_counts[t * chunks + c] = n;
             bytes += whole_lines(n * record);
             count += n;
@@ -370,8 +376,11 @@ void bin_offsets(Frame& frame) {
     std::vector<std::size_t> tile_base(tiles + 1, 0);
     for (std::size_t t = 0; t < tiles; ++t) tile_base[t + 1] = tile_base[t] + tile_bytes[t];
     over_tiles([&](std::size_t t) {
-        for (std::size_t c = 0; c < chunks; ++c)
-            frame.bin_run_offsets[t * chunks + c] += tile_base[t];
+        std::size_t at = tile_base[t];
+        for (std::size_t c = 0; c < chunks; ++c) {
+            frame.bin_run_offsets[t * chunks + c] = at;
+            at += whole_lines(frame.bin_run_counts[t * chunks + c] * record);
+        }
     });
     // (Grown empty: nothing of the old records is worth copying, and new storage is advised.)
     const std::size_t bytes = tile_base[tiles] + kCacheLine;
@@ -405,8 +414,7 @@ void assemble_and_bin(Frame& frame, RenderStats& stats) {
                       [&](std::size_t c) { process_chunk(frame, frame.chunks[c]); });
     const auto assembled = std::chrono::steady_clock::now();
     stats.assembly_ms = std::chrono::duration<double, std::milli>(assembled - start).count();
-    frame.bin_record_bytes =
-        sizeof(BinEntry) + (frame.tagged_shading ? sizeof(CornerAttributes) : 0);
+    frame.bin_record_bytes = frame.tagged_shading ? kTaggedRecord : sizeof(BinEntry);
     bin_offsets(frame);
     tbb::parallel_for(std::size_t{0}, frame.chunks.size(),
                       [&](std::size_t c) { write_bins(frame, c); });
