@@ -367,20 +367,9 @@ int VisibilityBlock(const BlockJob& job, TileBuffers& tile) {
 LaneJobsDone VisibilityLanes(const LaneJobs& jobs, int first, int count, const BlockJob& shared,
                              TileBuffers& tile) {
     return WithCompare(shared.compare, [&]<int kCompare>() {
-        LaneJobsDone done;
-        BlockJob job = shared;
-        for (int lane = first; lane < count; ++lane) {
-            if (!fill_lane_job(jobs, lane, job)) {
-                done.next = lane;
-                return done;
-            }
-            const int passed = VisibilityBlockWith<kCompare>(job, tile);
-            done.passed += static_cast<std::uint64_t>(passed);
-            if (job.shade_constants != nullptr)
-                done.passed_shaded += static_cast<std::uint64_t>(passed);
-        }
-        done.next = count;
-        return done;
+        return run_lane_jobs(jobs, first, count, shared, [&](const BlockJob& job) {
+            return VisibilityBlockWith<kCompare>(job, tile);
+        });
     });
 }
 
@@ -438,20 +427,8 @@ LaneJobsDone visibility_lanes(const LaneJobs& jobs, int first, int count, const 
 
 LaneJobsDone visibility_lanes_scalar(const LaneJobs& jobs, int first, int count,
                                      const BlockJob& shared, TileBuffers& tile) {
-    LaneJobsDone done;
-    BlockJob job = shared;
-    for (int lane = first; lane < count; ++lane) {
-        if (!fill_lane_job(jobs, lane, job)) {
-            done.next = lane;
-            return done;
-        }
-        const int passed = visibility_block_scalar(job, tile);
-        done.passed += static_cast<std::uint64_t>(passed);
-        if (job.shade_constants != nullptr)
-            done.passed_shaded += static_cast<std::uint64_t>(passed);
-    }
-    done.next = count;
-    return done;
+    return run_lane_jobs(jobs, first, count, shared,
+                         [&](const BlockJob& job) { return visibility_block_scalar(job, tile); });
 }
 
 const char* visibility_kernel_target() {

@@ -172,6 +172,27 @@ struct LaneJobsDone {
     return true;
 }
 
+// Runs lanes first, first + 1, ... (below count) while they are single jobs, each with
+// run_job(job) returning its passed fragments: visibility_lanes and its scalar twin.
+template <class RunJob>
+[[gnu::always_inline]] inline LaneJobsDone run_lane_jobs(const LaneJobs& jobs, int first, int count,
+                                                         const BlockJob& shared,
+                                                         const RunJob& run_job) {
+    LaneJobsDone done;
+    BlockJob job = shared;
+    for (int lane = first; lane < count; ++lane) {
+        if (!fill_lane_job(jobs, lane, job)) {
+            done.next = lane;
+            return done;
+        }
+        const auto passed = static_cast<std::uint64_t>(run_job(job));
+        done.passed += passed;
+        if (job.shade_constants != nullptr) done.passed_shaded += passed;
+    }
+    done.next = count;
+    return done;
+}
+
 // Runs lanes first, first + 1, ... (below count) while they are single jobs, each as
 // visibility_block would run that job: `shared` gives what all lanes share (the depth test,
 // perspective, write_depth, attributes, barycentrics), the lanes the rest.

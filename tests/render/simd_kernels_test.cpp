@@ -235,8 +235,10 @@ void TaggedRowShadingMatchesScalar() {
             tile->wx[i] = u(rng);
             tile->wy[i] = u(rng);
             tile->wz[i] = u(rng);
-            // Runs of one material, as triangles leave them, with gaps and other materials.
-            const std::uint32_t material = (i / (1 + round % 7)) % 5;  // 0: untagged
+            // Runs of one material, as triangles leave them, with gaps and other materials;
+            // every third round runs longer than a vector (a row's usual material).
+            const int run = (1 + round % 7) * (round % 3 == 0 ? 9 : 1);
+            const std::uint32_t material = std::uint32_t(i / run) % 5;  // 0: untagged
             tile->shade_tag[i] = material | (i % 3 == 0 ? kShadeFlip : 0u);
         }
         const int row = round % 64, count = 1 + (round * 13) % 64;
