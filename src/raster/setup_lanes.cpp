@@ -102,8 +102,8 @@ void SetupLanesImpl(const VertexLanes& in, int count, const SetupSettings& setti
         const auto sign = hn::IfThenElse(negative, hn::Set(dd, -1.0), one);
         // (Inline: GCC kept it a call, its vectors passed through memory.)
         const auto edge = [&](int k, hn::Vec<decltype(dd)> ax, hn::Vec<decltype(dd)> ay,
-                              hn::Vec<decltype(dd)> bx,
-                              hn::Vec<decltype(dd)> by) HWY_ATTR __attribute__((always_inline)) {
+                              hn::Vec<decltype(dd)> bx, hn::Vec<decltype(dd)> by) HWY_ATTR
+            __attribute__((always_inline)) {
             const auto dx = hn::Mul(sign, hn::Sub(bx, ax)), dy = hn::Mul(sign, hn::Sub(by, ay));
             const auto top_left =
                 hn::Or(hn::Lt(dy, zero), hn::And(hn::Eq(dy, zero), hn::Gt(dx, zero)));
