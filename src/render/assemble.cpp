@@ -382,10 +382,11 @@ void bin_offsets(Frame& frame) {
             at += whole_lines(frame.bin_run_counts[t * chunks + c] * record);
         }
     });
-    // (Grown empty: nothing of the old records is worth copying, and new storage is advised.)
+    // Grown empty (nothing of the old records is worth copying, and new storage is advised),
+    // never shrunk (a smaller frame then a larger one would zero the difference again).
     const std::size_t bytes = tile_base[tiles] + kCacheLine;
     if (bytes > frame.bin_storage.capacity()) frame.bin_storage = {};
-    memory::resize_on_huge_pages(frame.bin_storage, bytes);
+    if (bytes > frame.bin_storage.size()) memory::resize_on_huge_pages(frame.bin_storage, bytes);
 }
 
 }  // namespace
