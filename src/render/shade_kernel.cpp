@@ -55,7 +55,8 @@ int ShadeTaggedRow(const PhongConstants* constants, const TileBuffers& tile, std
         // Usually one material per vector; otherwise one pass per material present.
         do {
             const auto first = static_cast<std::size_t>(hn::FindFirstTrue(du, pending));
-            const std::uint32_t which = hn::ExtractLane(kernel, first);
+            // (From memory: a lane extracted at a run-time index goes through the stack.)
+            const std::uint32_t which = tile.shade_tag[p + first] & ~kShadeFlip;
             const auto mine = hn::And(pending, hn::Eq(kernel, hn::Set(du, which)));
             const auto color =
                 pack_rgba(du, shade_lanes(d, constants[which - 1], nx, ny, nz, px, py, pz, flip));
