@@ -2,16 +2,16 @@
 //   triangle setup, front-end classification (SIMD and scalar), cluster culling (the per-cluster
 //   test, building the bounds, the hash that checks them), the visibility kernel on 8x8
 //   blocks (SIMD and scalar), the Phong shading kernel, and whole frames of the benchmark scenes
-//   in depth-only and Phong modes at several resolutions and thread counts (binning, tile
-//   raster and deferred shading together; `zraster bench --verbose` splits a frame further).
+//   in depth-only and Phong modes at several resolutions and thread counts, with the stages'
+//   mean times as counters (vertex stage, assembly, binning, tile raster with shading).
 // Run: build-bench/pipeline_bench [--benchmark_filter=...]. Speed is measured here, never in
 // unit tests.
 #include <benchmark/benchmark.h>
-#include <algorithm>
 
 #include <zraster/render.hpp>
 #include <zraster/scenes.hpp>
 
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <string>
