@@ -286,7 +286,8 @@ std::size_t whole_lines(std::size_t bytes) {
 
 // Binning is a counting sort of all chunks' refs into tiles, in two passes around a prefix sum
 // over (tile, chunk): the front end counts a chunk's refs per tile as it makes them
-// (count_in_bins), write_bins writes its records at their final places (see Frame::bins).
+// (count_in_bins), write_bins writes its records at their final places (see
+// Frame::bin_run_offsets).
 void write_bins(Frame& frame, std::size_t chunk_index) {
     const Chunk& chunk = frame.chunks[chunk_index];
     const std::size_t tiles = std::size_t(frame.tiles_x) * std::size_t(frame.tiles_y);

@@ -537,7 +537,6 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
         const auto lanes_run = [&] {
             return hiz == HierarchicalZ::Off || bounded_blocks == 0 || !small_jobs.worth_testing();
         };
-        const Chunk* lane_chunk[kSetupLanes];
         const std::byte* lane_record[kSetupLanes];
         std::uint32_t lane_chunk_index[kSetupLanes];
         // A cursor over the tile's records: run by run, chunks in order.
@@ -585,7 +584,6 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
             setup_block(vertices, count, frame.setup_settings, lanes, kernel ? &window : nullptr);
             for (int lane = 0; lane < count; ++lane) {
                 const Chunk& chunk = frame.chunks[lane_chunk_index[lane]];
-                lane_chunk[lane] = &chunk;
                 const std::uint32_t local = entry(lane).ref & ~BinEntry::kClippedPiece;
                 jobs.ref[lane] = lane_chunk_index[lane] << kLocalBits | local;
                 const CornerAttributes* with = nullptr;
@@ -622,7 +620,7 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
                 if (load_setup(vertices, lanes, lane, frame.setup_settings, setup) !=
                     SetupResult::Visible)
                     continue;  // cannot happen: the front end made the same decision
-                const Chunk& chunk = *lane_chunk[lane];
+                const Chunk& chunk = frame.chunks[lane_chunk_index[lane]];
                 const std::uint32_t id = jobs.ref[lane];
                 const TriangleRef& ref = chunk.refs[id & ((1u << kLocalBits) - 1)];
                 if (!kernel) {
