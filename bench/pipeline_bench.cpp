@@ -7,11 +7,13 @@
 // Run: build-bench/pipeline_bench [--benchmark_filter=...]. Speed is measured here, never in
 // unit tests.
 #include <benchmark/benchmark.h>
+#include <hwy/targets.h>
 
 #include <zraster/render.hpp>
 #include <zraster/scenes.hpp>
 
 #include <algorithm>
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <string>
@@ -317,4 +319,14 @@ BENCHMARK(BM_Frame)
 }  // namespace
 }  // namespace zraster
 
-BENCHMARK_MAIN();
+// ZRASTER_BENCH_AVX2=1 runs the AVX2 kernels on an AVX-512 machine (what a machine without
+// AVX-512 would run).
+int main(int argc, char** argv) {
+    if (const char* avx2 = std::getenv("ZRASTER_BENCH_AVX2"); avx2 != nullptr && *avx2 == '1')
+        hwy::DisableTargets(HWY_AVX2 - 1);  // the targets better than AVX2
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}
