@@ -15,13 +15,13 @@
 #include <zraster/occlusion_buffer.hpp>
 
 #include <benchmark/benchmark.h>
-#include <hwy/targets.h>
 
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <numbers>
 #include <vector>
+
+#include "benchmark_main.hpp"
 
 namespace {
 
@@ -257,14 +257,7 @@ BENCHMARK(BM_TestBox_InFrontOfWall);
 
 }  // namespace
 
-// ZRASTER_BENCH_AVX2=1 runs the AVX2 kernels on an AVX-512 machine: Intel's published MSOC
-// figures are for AVX2.
+// (ZRASTER_BENCH_AVX2=1: the AVX2 kernels; see benchmark_main.hpp.)
 int main(int argc, char** argv) {
-    if (const char* avx2 = std::getenv("ZRASTER_BENCH_AVX2"); avx2 != nullptr && *avx2 == '1')
-        hwy::DisableTargets(HWY_AVX2 - 1);  // the targets better than AVX2
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return zraster::bench::run_benchmarks(argc, argv);
 }

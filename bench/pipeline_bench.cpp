@@ -7,18 +7,17 @@
 // Run: build-bench/pipeline_bench [--benchmark_filter=...]. Speed is measured here, never in
 // unit tests.
 #include <benchmark/benchmark.h>
-#include <hwy/targets.h>
 
 #include <zraster/render.hpp>
 #include <zraster/scenes.hpp>
 
 #include <algorithm>
-#include <cstdlib>
 #include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "benchmark_main.hpp"
 #include "raster/setup_lanes.hpp"
 #include "raster/visibility_kernel.hpp"
 #include "render/classify_kernel.hpp"
@@ -319,14 +318,7 @@ BENCHMARK(BM_Frame)
 }  // namespace
 }  // namespace zraster
 
-// ZRASTER_BENCH_AVX2=1 runs the AVX2 kernels on an AVX-512 machine (what a machine without
-// AVX-512 would run).
+// (ZRASTER_BENCH_AVX2=1: the AVX2 kernels; see benchmark_main.hpp.)
 int main(int argc, char** argv) {
-    if (const char* avx2 = std::getenv("ZRASTER_BENCH_AVX2"); avx2 != nullptr && *avx2 == '1')
-        hwy::DisableTargets(HWY_AVX2 - 1);  // the targets better than AVX2
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return zraster::bench::run_benchmarks(argc, argv);
 }
