@@ -264,6 +264,43 @@ void BM_PhongShading(benchmark::State& state) {
 }
 BENCHMARK(BM_PhongShading)->Arg(1)->Arg(0);
 
+// The deferred row shader over whole tiles of tagged pixels (one material, every pixel): one
+// tile (in L1 and L2), or 64 in turn (from L3 and memory).
+void BM_TaggedTileShading(benchmark::State& state) {
+    const int tiles = int(state.range(0));
+    Material material;
+    LightingModel lighting;
+    const auto constants = detail::make_phong_constants(lighting, material, {0, 0, 5}, {0, 0, 1});
+    std::vector<std::unique_ptr<detail::TileBuffers>> all(static_cast<std::size_t>(tiles));
+    SplitMix64 rng(4);
+    for (auto& tile : all) {
+        tile = std::make_unique<detail::TileBuffers>();
+        for (int i = 0; i < detail::TileBuffers::kPixels; ++i) {
+            tile->nx[i] = float(rng.uniform(-1, 1));
+            tile->ny[i] = float(rng.uniform(-1, 1));
+            tile->nz[i] = float(rng.uniform(0, 1));
+            tile->wx[i] = float(rng.uniform(-1, 1));
+            tile->wy[i] = float(rng.uniform(-1, 1));
+            tile->wz[i] = float(rng.uniform(-1, 1));
+            tile->shade_tag[i] = 1;
+        }
+    }
+    int next = 0;
+    std::uint32_t rgba[detail::TileBuffers::kStride];
+    for (auto _ : state) {
+        const auto& tile = all[std::size_t(next)];
+        next = (next + 1) % tiles;
+        for (int row = 0; row < detail::TileBuffers::kStride; ++row)
+            detail::shade_tagged_row(&constants, *tile,
+                                     std::size_t(row) * detail::TileBuffers::kStride,
+                                     detail::TileBuffers::kStride, rgba);
+        benchmark::DoNotOptimize(rgba[0]);
+    }
+    state.SetItemsProcessed(std::int64_t(state.iterations()) * 64 * 64);
+    state.SetLabel("pixels");
+}
+BENCHMARK(BM_TaggedTileShading)->Arg(1)->Arg(64);
+
 // Whole frames: scene index, mode (0 depth, 1 phong), width, threads.
 const char* const kScenes[] = {"sphere:1000000", "city:20000", "soup:1000000", "sphere:20000"};
 

@@ -1,4 +1,4 @@
-// The SIMD Phong lighting of one vector of pixels, shared by the deferred row shader
+// The SIMD Phong lighting of vectors of pixels, shared by the deferred row shader
 // (shade_kernel.cpp) and the visibility kernel's forward shading (visibility_kernel.cpp). It
 // reproduces the scalar path (unit normal, two-sided flip, evaluate_lighting, combine, 8-bit
 // rounding) operation for operation.
@@ -19,117 +19,236 @@ HWY_BEFORE_NAMESPACE();
 namespace zraster::detail::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-template <class D, class V>
-HWY_INLINE V dot3(D, V ax, V ay, V az, V bx, V by, V bz) {
-    return hn::Add(hn::Add(hn::Mul(ax, bx), hn::Mul(ay, by)), hn::Mul(az, bz));
+// Vectors of pixels lit together, their operations interleaved: a Pair of two vectors, or a
+// Pair of Pairs (four). One vector's lighting is a long dependency chain (square root,
+// division, square root, division, the specular power), and the FP scheduler holds too few
+// operations to overlap it with the next vector's by itself: one, two or four lanes wide (SSE4,
+// AVX2, AVX-512), a vector took the same ~50 ns. Four at a time shade AVX2 2x faster (eight
+// spill registers and are slower).
+template <class V>
+struct Pair {
+    V a, b;
+};
+template <class T>
+inline constexpr bool kIsPair = false;
+template <class V>
+inline constexpr bool kIsPair<Pair<V>> = true;
+
+// Part I (0 or 1) of a pair; a single vector (a constant) stands for both parts.
+template <int I, class T>
+HWY_INLINE const T& part(const T& v) {
+    return v;
+}
+template <int I, class V>
+HWY_INLINE const V& part(const Pair<V>& v) {
+    if constexpr (I == 0)
+        return v.a;
+    else
+        return v.b;
 }
 
-template <class D, class V>
-HWY_INLINE V positive_part(D d, V x) {
-    return hn::IfThenElse(hn::Gt(x, hn::Zero(d)), x, hn::Zero(d));
-}
-
-template <class D, class V>
-HWY_INLINE V power(D d, V x, int n) {
-    V result = hn::Set(d, 1.0f), base = x;
-    for (int e = n; e > 0; e >>= 1) {
-        if (e & 1) result = hn::Mul(result, base);
-        base = hn::Mul(base, base);
+// f applied to each part, first to part 0 of every argument, then to part 1.
+template <class F, class... X>
+HWY_INLINE auto lanewise(F f, const X&... x) {
+    if constexpr ((kIsPair<X> || ...)) {
+        using R = decltype(lanewise(f, part<0>(x)...));
+        return Pair<R>{lanewise(f, part<0>(x)...), lanewise(f, part<1>(x)...)};
+    } else {
+        return f(x...);
     }
-    return result;
 }
 
-template <class D, class V>
-HWY_INLINE hn::Vec<hn::RebindToSigned<D>> to_unorm8(D d, V v) {
-    v = hn::IfThenElse(hn::Gt(v, hn::Zero(d)), v, hn::Zero(d));
-    v = hn::IfThenElse(hn::Lt(v, hn::Set(d, 1.0f)), v, hn::Set(d, 1.0f));
-    return hn::ConvertTo(hn::RebindToSigned<D>(),
-                         hn::Add(hn::Mul(v, hn::Set(d, 255.0f)), hn::Set(d, 0.5f)));
+template <class X, class Y>
+HWY_INLINE auto add(const X& x, const Y& y) {
+    return lanewise([](const auto& a, const auto& b) { return hn::Add(a, b); }, x, y);
+}
+template <class X, class Y>
+HWY_INLINE auto sub(const X& x, const Y& y) {
+    return lanewise([](const auto& a, const auto& b) { return hn::Sub(a, b); }, x, y);
+}
+template <class X, class Y>
+HWY_INLINE auto mul(const X& x, const Y& y) {
+    return lanewise([](const auto& a, const auto& b) { return hn::Mul(a, b); }, x, y);
+}
+template <class X, class Y>
+HWY_INLINE auto div(const X& x, const Y& y) {
+    return lanewise([](const auto& a, const auto& b) { return hn::Div(a, b); }, x, y);
+}
+template <class X>
+HWY_INLINE auto sqrt(const X& x) {
+    return lanewise([](const auto& a) { return hn::Sqrt(a); }, x);
+}
+template <class X>
+HWY_INLINE auto neg(const X& x) {
+    return lanewise([](const auto& a) { return hn::Neg(a); }, x);
+}
+template <class X, class Y>
+HWY_INLINE auto greater(const X& x, const Y& y) {
+    return lanewise([](const auto& a, const auto& b) { return hn::Gt(a, b); }, x, y);
+}
+template <class X, class Y>
+HWY_INLINE auto less(const X& x, const Y& y) {
+    return lanewise([](const auto& a, const auto& b) { return hn::Lt(a, b); }, x, y);
+}
+template <class M, class X, class Y>
+HWY_INLINE auto select(const M& m, const X& x, const Y& y) {
+    return lanewise(
+        [](const auto& c, const auto& a, const auto& b) { return hn::IfThenElse(c, a, b); }, m, x,
+        y);
 }
 
-// 8-bit channels (0..255) of a vector of pixels.
-template <class DI>
+// `value` in every lane, shaped like `like` (one vector or a pair).
+template <class D, class X>
+HWY_INLINE X broadcast(D d, float value, const X& like) {
+    return lanewise([&](const auto&) { return hn::Set(d, value); }, like);
+}
+
+template <class X, class Y>
+HWY_INLINE auto dot3(const X& ax, const X& ay, const X& az, const Y& bx, const Y& by, const Y& bz) {
+    return add(add(mul(ax, bx), mul(ay, by)), mul(az, bz));
+}
+
+template <class D, class X>
+HWY_INLINE X positive_part(D d, const X& x) {
+    return select(greater(x, hn::Zero(d)), x, hn::Zero(d));
+}
+
+// x^n by squaring, the multiplications of specular_power (lighting.cpp) minus its exact ones:
+// the first factor is taken as it is instead of multiplied by 1, and no square is formed after
+// the highest bit.
+template <class D, class X>
+HWY_INLINE X power(D d, const X& x, int n) {
+    if (n == 0) return broadcast(d, 1.0f, x);
+    X result{}, base = x;
+    bool have_result = false;
+    for (int e = n;;) {
+        if (e & 1) {
+            result = have_result ? mul(result, base) : base;
+            have_result = true;
+        }
+        e >>= 1;
+        if (e == 0) return result;
+        base = mul(base, base);
+    }
+}
+
+template <class D, class X>
+HWY_INLINE auto to_unorm8(D d, X v) {
+    v = select(greater(v, hn::Zero(d)), v, hn::Zero(d));
+    v = select(less(v, hn::Set(d, 1.0f)), v, hn::Set(d, 1.0f));
+    const auto scaled = add(mul(v, hn::Set(d, 255.0f)), hn::Set(d, 0.5f));
+    return lanewise([](const auto& a) { return hn::ConvertTo(hn::RebindToSigned<D>(), a); },
+                    scaled);
+}
+
+// 8-bit channels (0..255) of a vector of pixels (or of a Pair of vectors).
+template <class VI>
 struct RgbLanes {
-    hn::Vec<DI> r, g, b;
+    VI r, g, b;
 };
 
-// One vector of pixels: the normal (not yet unit), the world position, and the lanes whose
-// normal is negated.
-template <class D, class V, class M>
-HWY_INLINE RgbLanes<hn::RebindToSigned<D>> shade_lanes(D d, const PhongConstants& k, V nx, V ny,
-                                                       V nz, V px, V py, V pz, M flip) {
+// One vector of pixels (X = hn::Vec<D>), or two (X = Pair): the normal (not yet unit), the
+// world position, and the lanes whose normal is negated.
+template <class D, class X, class M>
+HWY_INLINE auto shade_lanes(D d, const PhongConstants& k, X nx, X ny, X nz, const X& px,
+                            const X& py, const X& pz, const M& flip) {
     const auto zero = hn::Zero(d), one = hn::Set(d, 1.0f);
     // Unit normal, or (0, 1, 0); negated for back faces.
-    const auto len = hn::Sqrt(dot3(d, nx, ny, nz, nx, ny, nz));
-    const auto has_length = hn::Gt(len, zero);
-    nx = hn::IfThenElse(has_length, hn::Div(nx, len), zero);
-    ny = hn::IfThenElse(has_length, hn::Div(ny, len), one);
-    nz = hn::IfThenElse(has_length, hn::Div(nz, len), zero);
-    nx = hn::IfThenElse(flip, hn::Neg(nx), nx);
-    ny = hn::IfThenElse(flip, hn::Neg(ny), ny);
-    nz = hn::IfThenElse(flip, hn::Neg(nz), nz);
+    const X len = sqrt(dot3(nx, ny, nz, nx, ny, nz));
+    const auto has_length = greater(len, zero);
+    nx = select(has_length, div(nx, len), zero);
+    ny = select(has_length, div(ny, len), one);
+    nz = select(has_length, div(nz, len), zero);
+    nx = select(flip, neg(nx), nx);
+    ny = select(flip, neg(ny), ny);
+    nz = select(flip, neg(nz), nz);
 
-    V vx, vy, vz;
+    X vx, vy, vz;
     if (k.local_viewer) {
-        vx = hn::Sub(hn::Set(d, k.eye.x), px);
-        vy = hn::Sub(hn::Set(d, k.eye.y), py);
-        vz = hn::Sub(hn::Set(d, k.eye.z), pz);
-        const auto inv = hn::Div(one, hn::Sqrt(dot3(d, vx, vy, vz, vx, vy, vz)));
-        vx = hn::Mul(vx, inv);
-        vy = hn::Mul(vy, inv);
-        vz = hn::Mul(vz, inv);
+        vx = sub(hn::Set(d, k.eye.x), px);
+        vy = sub(hn::Set(d, k.eye.y), py);
+        vz = sub(hn::Set(d, k.eye.z), pz);
+        const X inv = div(one, sqrt(dot3(vx, vy, vz, vx, vy, vz)));
+        vx = mul(vx, inv);
+        vy = mul(vy, inv);
+        vz = mul(vz, inv);
     } else {
-        vx = hn::Set(d, k.view_axis.x);
-        vy = hn::Set(d, k.view_axis.y);
-        vz = hn::Set(d, k.view_axis.z);
+        vx = broadcast(d, k.view_axis.x, px);
+        vy = broadcast(d, k.view_axis.y, px);
+        vz = broadcast(d, k.view_axis.z, px);
     }
 
-    auto dr = zero, dg = zero, db = zero, sr = zero, sg = zero, sb = zero;
+    X dr = broadcast(d, 0.0f, px), dg = dr, db = dr, sr = dr, sg = dr, sb = dr;
     for (int l = 0; l < k.light_count; ++l) {
         const glm::vec3 L = k.light_direction[l], c = k.light_color[l];
         const auto lx = hn::Set(d, L.x), ly = hn::Set(d, L.y), lz = hn::Set(d, L.z);
-        const auto n_dot_l = dot3(d, nx, ny, nz, lx, ly, lz);
-        const auto lambert = positive_part(d, n_dot_l);
-        dr = hn::Add(dr, hn::Mul(hn::Set(d, c.x), lambert));
-        dg = hn::Add(dg, hn::Mul(hn::Set(d, c.y), lambert));
-        db = hn::Add(db, hn::Mul(hn::Set(d, c.z), lambert));
-        V cos_lobe;
+        const X n_dot_l = dot3(nx, ny, nz, lx, ly, lz);
+        const X lambert = positive_part(d, n_dot_l);
+        dr = add(dr, mul(hn::Set(d, c.x), lambert));
+        dg = add(dg, mul(hn::Set(d, c.y), lambert));
+        db = add(db, mul(hn::Set(d, c.z), lambert));
+        X cos_lobe;
         if (k.reflection == ReflectionModel::BlinnPhong) {
-            const auto hx = hn::Add(lx, vx), hy = hn::Add(ly, vy), hz = hn::Add(lz, vz);
-            const auto len2 = dot3(d, hx, hy, hz, hx, hy, hz);
-            const auto inv = hn::Div(one, hn::Sqrt(len2));
-            cos_lobe = dot3(d, nx, ny, nz, hn::Mul(hx, inv), hn::Mul(hy, inv), hn::Mul(hz, inv));
-            cos_lobe = hn::IfThenElse(hn::Gt(len2, zero), cos_lobe, zero);
+            const X hx = add(lx, vx), hy = add(ly, vy), hz = add(lz, vz);
+            const X len2 = dot3(hx, hy, hz, hx, hy, hz);
+            const X inv = div(one, sqrt(len2));
+            cos_lobe = dot3(nx, ny, nz, mul(hx, inv), mul(hy, inv), mul(hz, inv));
+            cos_lobe = select(greater(len2, zero), cos_lobe, zero);
         } else {
-            const auto twice = hn::Mul(n_dot_l, hn::Set(d, 2.0f));
-            const auto rx = hn::Sub(hn::Mul(nx, twice), lx);
-            const auto ry = hn::Sub(hn::Mul(ny, twice), ly);
-            const auto rz = hn::Sub(hn::Mul(nz, twice), lz);
-            cos_lobe = dot3(d, rx, ry, rz, vx, vy, vz);
+            const X twice = mul(n_dot_l, hn::Set(d, 2.0f));
+            const X rx = sub(mul(nx, twice), lx);
+            const X ry = sub(mul(ny, twice), ly);
+            const X rz = sub(mul(nz, twice), lz);
+            cos_lobe = dot3(rx, ry, rz, vx, vy, vz);
         }
-        const auto spec = power(d, positive_part(d, cos_lobe), k.shininess);
-        sr = hn::Add(sr, hn::Mul(hn::Set(d, c.x), spec));
-        sg = hn::Add(sg, hn::Mul(hn::Set(d, c.y), spec));
-        sb = hn::Add(sb, hn::Mul(hn::Set(d, c.z), spec));
+        const X spec = power(d, positive_part(d, cos_lobe), k.shininess);
+        sr = add(sr, mul(hn::Set(d, c.x), spec));
+        sg = add(sg, mul(hn::Set(d, c.y), spec));
+        sb = add(sb, mul(hn::Set(d, c.z), spec));
     }
     // diffuse = ambient + kd * sum; specular = ks * sum; color = base * diffuse + specular.
     const auto ambient = hn::Set(d, k.ambient), kd = hn::Set(d, k.diffuse);
-    const auto red = hn::Add(hn::Mul(hn::Set(d, k.base_color.x), hn::Add(ambient, hn::Mul(kd, dr))),
-                             hn::Mul(hn::Set(d, k.specular.x), sr));
-    const auto green =
-        hn::Add(hn::Mul(hn::Set(d, k.base_color.y), hn::Add(ambient, hn::Mul(kd, dg))),
-                hn::Mul(hn::Set(d, k.specular.y), sg));
-    const auto blue =
-        hn::Add(hn::Mul(hn::Set(d, k.base_color.z), hn::Add(ambient, hn::Mul(kd, db))),
-                hn::Mul(hn::Set(d, k.specular.z), sb));
-    return {to_unorm8(d, red), to_unorm8(d, green), to_unorm8(d, blue)};
+    const X red = add(mul(hn::Set(d, k.base_color.x), add(ambient, mul(kd, dr))),
+                      mul(hn::Set(d, k.specular.x), sr));
+    const X green = add(mul(hn::Set(d, k.base_color.y), add(ambient, mul(kd, dg))),
+                        mul(hn::Set(d, k.specular.y), sg));
+    const X blue = add(mul(hn::Set(d, k.base_color.z), add(ambient, mul(kd, db))),
+                       mul(hn::Set(d, k.specular.z), sb));
+    using VI = decltype(to_unorm8(d, red));
+    return RgbLanes<VI>{to_unorm8(d, red), to_unorm8(d, green), to_unorm8(d, blue)};
+}
+
+// N (1, 2 or 4) vectors as nested Pairs, vector j loaded by load(j).
+template <int N, class Load>
+HWY_INLINE auto group_of(const Load& load, int first = 0) {
+    if constexpr (N == 1) {
+        return load(first);
+    } else {
+        using Half = decltype(group_of<N / 2>(load, first));
+        return Pair<Half>{group_of<N / 2>(load, first), group_of<N / 2>(load, first + N / 2)};
+    }
+}
+
+// Calls visit(vector, j) for the vectors j = 0..N-1 of a group_of<N>.
+template <int N, class X, class Visit>
+HWY_INLINE void for_each_of(const X& group, const Visit& visit, int first = 0) {
+    if constexpr (N == 1) {
+        visit(group, first);
+    } else {
+        for_each_of<N / 2>(group.a, visit, first);
+        for_each_of<N / 2>(group.b, visit, first + N / 2);
+    }
 }
 
 // RGBA8 words (R in the low byte, alpha 255) of shaded lanes.
-template <class DU, class DI>
-HWY_INLINE hn::Vec<DU> pack_rgba(DU du, const RgbLanes<DI>& c) {
-    return hn::Or(hn::Or(hn::BitCast(du, c.r), hn::ShiftLeft<8>(hn::BitCast(du, c.g))),
-                  hn::Or(hn::ShiftLeft<16>(hn::BitCast(du, c.b)), hn::Set(du, 0xff000000u)));
+template <class DU, class VI>
+HWY_INLINE auto pack_rgba(DU du, const RgbLanes<VI>& c) {
+    return lanewise(
+        [du](const auto& r, const auto& g, const auto& b) {
+            return hn::Or(hn::Or(hn::BitCast(du, r), hn::ShiftLeft<8>(hn::BitCast(du, g))),
+                          hn::Or(hn::ShiftLeft<16>(hn::BitCast(du, b)), hn::Set(du, 0xff000000u)));
+        },
+        c.r, c.g, c.b);
 }
 
 }  // namespace zraster::detail::HWY_NAMESPACE

@@ -11,6 +11,10 @@ inline constexpr std::size_t kCacheLine = 64;
 // Copies `lines` cache lines from `from` to `to`, both aligned to kCacheLine.
 void stream_lines(std::byte* to, const std::byte* from, std::size_t lines);
 
+// Copies `bytes` bytes, any alignment: the cache lines of `to` it fills whole with
+// non-temporal stores, the others (at most one at each end) as memcpy does.
+void stream_copy(void* to, const void* from, std::size_t bytes);
+
 // Orders the streamed stores before later stores (and before another thread, synchronized
 // after this, reads them).
 void stream_fence();

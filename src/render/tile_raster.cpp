@@ -21,6 +21,7 @@
 #include "render/frame.hpp"
 #include "render/hierarchical_z.hpp"
 #include "render/shade_fragment.hpp"
+#include "render/stream_lines.hpp"
 
 namespace zraster::detail {
 namespace {
@@ -284,8 +285,8 @@ void clear_tile_targets(const TileContext& c, const float* clear_row,
     const auto n = static_cast<std::size_t>(c.x1 - c.x0);
     for (int py = c.y0; py < c.y1; ++py) {
         const std::size_t row = std::size_t(py) * std::size_t(t.width) + std::size_t(c.x0);
-        std::memcpy(t.depth.data() + row, clear_row, n * sizeof(float));
-        if (!t.color.empty()) std::memcpy(&t.color[row * 4], background_row, n * 4);
+        stream_copy(t.depth.data() + row, clear_row, n * sizeof(float));
+        if (!t.color.empty()) stream_copy(&t.color[row * 4], background_row, n * 4);
         if (!t.normal.empty()) std::fill_n(t.normal.data() + row, n, glm::vec3(0.0f));
         if (!t.instance_id.empty()) {
             std::fill_n(t.instance_id.data() + row, n, -1);
@@ -338,7 +339,7 @@ std::uint64_t finish_tile(const TileContext& c, const TileBuffers& tile, std::ui
         const std::size_t row = std::size_t(py) * std::size_t(t.width);
         const std::size_t at_row = tile_index(0, py - c.y0);
         if (d32) {
-            std::memcpy(t.depth.data() + row + std::size_t(c.x0), tile.depth + at_row,
+            stream_copy(t.depth.data() + row + std::size_t(c.x0), tile.depth + at_row,
                         std::size_t(n) * sizeof(float));
         } else {
             for (int i = 0; i < n; ++i)
@@ -346,14 +347,14 @@ std::uint64_t finish_tile(const TileContext& c, const TileBuffers& tile, std::ui
                     c.codec.decode(static_cast<std::uint32_t>(tile.depth[at_row + std::size_t(i)]));
         }
         if (tagged && forward_tile) {  // lit as they passed
-            std::memcpy(&t.color[(row + std::size_t(c.x0)) * 4], tile.color + at_row,
+            stream_copy(&t.color[(row + std::size_t(c.x0)) * 4], tile.color + at_row,
                         std::size_t(n) * sizeof(std::uint32_t));
         } else if (tagged) {
             // (A copy, not a fill: GCC at -O2 fills element by element.)
             std::memcpy(row_rgba, background_row, std::size_t(n) * sizeof(std::uint32_t));
             shaded += std::uint64_t(
                 shade_tagged_row(c.frame.phong_constants.data(), tile, at_row, n, row_rgba));
-            std::memcpy(&t.color[(row + std::size_t(c.x0)) * 4], row_rgba,
+            stream_copy(&t.color[(row + std::size_t(c.x0)) * 4], row_rgba,
                         std::size_t(n) * sizeof(std::uint32_t));
         }
         if (!per_pixel) continue;
@@ -462,6 +463,11 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
         hidden_per_tile(tiles, 0);
     std::vector<std::uint8_t> deferred_per_tile(tiles, 0);  // some pixels shaded deferred
     tbb::parallel_for(std::size_t{0}, tiles, [&](std::size_t tile_number) {
+        // The targets are written with non-temporal stores (stream_copy): ordered before
+        // whatever reads them after the loop.
+        struct FenceOnExit {
+            ~FenceOnExit() { stream_fence(); }
+        } fence_on_exit;
         thread_local std::unique_ptr<TileBuffers> buffers;
         if (!buffers) buffers = std::make_unique<TileBuffers>();
         TileBuffers& tile = *buffers;
