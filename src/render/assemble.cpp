@@ -385,6 +385,7 @@ void bin_offsets(Frame& frame) {
     });
     // Grown empty (nothing of the old records is worth copying, and new storage is advised),
     // never shrunk (a smaller frame then a larger one would zero the difference again).
+    frame.bin_bytes = tile_base[tiles];
     const std::size_t bytes = tile_base[tiles] + kCacheLine;
     if (bytes > frame.bin_storage.capacity()) frame.bin_storage = {};
     if (bytes > frame.bin_storage.size()) memory::resize_on_huge_pages(frame.bin_storage, bytes);

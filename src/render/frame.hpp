@@ -184,6 +184,7 @@ struct Frame {
     std::vector<std::uint32_t> bin_run_counts;
     std::vector<std::size_t> tile_bin_counts;  // records per tile, all chunks
     std::size_t bin_record_bytes = 0;
+    std::size_t bin_bytes = 0;           // this frame's runs, from bin_records()
     std::vector<std::byte> bin_storage;  // the records, from its first cache line boundary
     std::byte* bin_records() { return align_to_cache_line(bin_storage.data()); }
     const std::byte* bin_records() const { return align_to_cache_line(bin_storage.data()); }
@@ -207,6 +208,12 @@ void run_vertex_stage(Frame& frame, RenderStats& stats);
 void attach_clusters(Frame& frame);  // cluster_cache.cpp
 void assemble_and_bin(Frame& frame, RenderStats& stats);
 void drop_stale_clusters(Frame& frame);
+// The size above which a frame's data (bins, vertices, targets) is taken not to stay in the
+// last-level cache from one frame to the next: rasterize_tiles then writes the targets with
+// non-temporal stores. Initially the L3's size (32 MiB if unknown); tests set it to force
+// either way.
+std::size_t& target_stream_threshold();
+
 void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& stats,
                      ClearedTiles& cleared_tiles);
 void draw_edges(const Frame& frame, RenderTargets& targets);
