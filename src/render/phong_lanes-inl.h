@@ -14,99 +14,18 @@
 #include <hwy/highway.h>
 
 #include "render/shade_kernel.hpp"
+#include "simd/lane_pairs-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace zraster::detail::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// Vectors of pixels lit together, their operations interleaved: a Pair of two vectors, or a
-// Pair of Pairs (four). One vector's lighting is a long dependency chain (square root,
-// division, square root, division, the specular power), and the FP scheduler holds too few
-// operations to overlap it with the next vector's by itself: one, two or four lanes wide (SSE4,
-// AVX2, AVX-512), a vector took the same ~50 ns. Four at a time shade AVX2 2x faster (eight
-// spill registers and are slower).
-template <class V>
-struct Pair {
-    V a, b;
-};
-template <class T>
-inline constexpr bool kIsPair = false;
-template <class V>
-inline constexpr bool kIsPair<Pair<V>> = true;
-
-// Part I (0 or 1) of a pair; a single vector (a constant) stands for both parts.
-template <int I, class T>
-HWY_INLINE const T& part(const T& v) {
-    return v;
-}
-template <int I, class V>
-HWY_INLINE const V& part(const Pair<V>& v) {
-    if constexpr (I == 0)
-        return v.a;
-    else
-        return v.b;
-}
-
-// f applied to each part, first to part 0 of every argument, then to part 1.
-template <class F, class... X>
-HWY_INLINE auto lanewise(F f, const X&... x) {
-    if constexpr ((kIsPair<X> || ...)) {
-        using R = decltype(lanewise(f, part<0>(x)...));
-        return Pair<R>{lanewise(f, part<0>(x)...), lanewise(f, part<1>(x)...)};
-    } else {
-        return f(x...);
-    }
-}
-
-template <class X, class Y>
-HWY_INLINE auto add(const X& x, const Y& y) {
-    return lanewise([](const auto& a, const auto& b) { return hn::Add(a, b); }, x, y);
-}
-template <class X, class Y>
-HWY_INLINE auto sub(const X& x, const Y& y) {
-    return lanewise([](const auto& a, const auto& b) { return hn::Sub(a, b); }, x, y);
-}
-template <class X, class Y>
-HWY_INLINE auto mul(const X& x, const Y& y) {
-    return lanewise([](const auto& a, const auto& b) { return hn::Mul(a, b); }, x, y);
-}
-template <class X, class Y>
-HWY_INLINE auto div(const X& x, const Y& y) {
-    return lanewise([](const auto& a, const auto& b) { return hn::Div(a, b); }, x, y);
-}
-template <class X>
-HWY_INLINE auto sqrt(const X& x) {
-    return lanewise([](const auto& a) { return hn::Sqrt(a); }, x);
-}
-template <class X>
-HWY_INLINE auto neg(const X& x) {
-    return lanewise([](const auto& a) { return hn::Neg(a); }, x);
-}
-template <class X, class Y>
-HWY_INLINE auto greater(const X& x, const Y& y) {
-    return lanewise([](const auto& a, const auto& b) { return hn::Gt(a, b); }, x, y);
-}
-template <class X, class Y>
-HWY_INLINE auto less(const X& x, const Y& y) {
-    return lanewise([](const auto& a, const auto& b) { return hn::Lt(a, b); }, x, y);
-}
-template <class M, class X, class Y>
-HWY_INLINE auto select(const M& m, const X& x, const Y& y) {
-    return lanewise(
-        [](const auto& c, const auto& a, const auto& b) { return hn::IfThenElse(c, a, b); }, m, x,
-        y);
-}
-
-// `value` in every lane, shaped like `like` (one vector or a pair).
-template <class D, class X>
-HWY_INLINE X broadcast(D d, float value, const X& like) {
-    return lanewise([&](const auto&) { return hn::Set(d, value); }, like);
-}
-
-template <class X, class Y>
-HWY_INLINE auto dot3(const X& ax, const X& ay, const X& az, const Y& bx, const Y& by, const Y& bz) {
-    return add(add(mul(ax, bx), mul(ay, by)), mul(az, bz));
-}
+// The lighting works on one vector of pixels (X = hn::Vec<D>) or on a Pair of them (see
+// lane_pairs-inl.h): one vector's lighting is a long dependency chain (square root, division,
+// square root, division, the specular power), and the FP scheduler holds too few operations to
+// overlap it with the next vector's by itself: one, two or four lanes wide (SSE4, AVX2,
+// AVX-512), a vector took the same ~50 ns. Four at a time shade AVX2 2x faster (eight spill
+// registers and are slower).
 
 template <class D, class X>
 HWY_INLINE X positive_part(D d, const X& x) {
@@ -216,28 +135,6 @@ HWY_INLINE auto shade_lanes(D d, const PhongConstants& k, X nx, X ny, X nz, cons
                        mul(hn::Set(d, k.specular.z), sb));
     using VI = decltype(to_unorm8(d, red));
     return RgbLanes<VI>{to_unorm8(d, red), to_unorm8(d, green), to_unorm8(d, blue)};
-}
-
-// N (1, 2 or 4) vectors as nested Pairs, vector j loaded by load(j).
-template <int N, class Load>
-HWY_INLINE auto group_of(const Load& load, int first = 0) {
-    if constexpr (N == 1) {
-        return load(first);
-    } else {
-        using Half = decltype(group_of<N / 2>(load, first));
-        return Pair<Half>{group_of<N / 2>(load, first), group_of<N / 2>(load, first + N / 2)};
-    }
-}
-
-// Calls visit(vector, j) for the vectors j = 0..N-1 of a group_of<N>.
-template <int N, class X, class Visit>
-HWY_INLINE void for_each_of(const X& group, const Visit& visit, int first = 0) {
-    if constexpr (N == 1) {
-        visit(group, first);
-    } else {
-        for_each_of<N / 2>(group.a, visit, first);
-        for_each_of<N / 2>(group.b, visit, first + N / 2);
-    }
 }
 
 // RGBA8 words (R in the low byte, alpha 255) of shaded lanes.
