@@ -235,6 +235,19 @@ void BM_VisibilityBlock(benchmark::State& state) {
 }
 BENCHMARK(BM_VisibilityBlock)->Args({1, 0})->Args({1, 1})->Args({0, 0})->Args({0, 1});
 
+// Random normals (facing +z) and positions in [-1, 1]^3, for `count` pixels.
+void random_shading_inputs(SplitMix64& rng, int count, float* nx, float* ny, float* nz, float* px,
+                           float* py, float* pz) {
+    for (int i = 0; i < count; ++i) {
+        nx[i] = float(rng.uniform(-1, 1));
+        ny[i] = float(rng.uniform(-1, 1));
+        nz[i] = float(rng.uniform(0, 1));
+        px[i] = float(rng.uniform(-1, 1));
+        py[i] = float(rng.uniform(-1, 1));
+        pz[i] = float(rng.uniform(-1, 1));
+    }
+}
+
 void BM_PhongShading(benchmark::State& state) {
     const bool simd = state.range(0) != 0;
     Material material;
@@ -242,15 +255,9 @@ void BM_PhongShading(benchmark::State& state) {
     const auto constants = detail::make_phong_constants(lighting, material, {0, 0, 5}, {0, 0, 1});
     auto batch = std::make_unique<detail::PhongBatch>();
     SplitMix64 rng(4);
-    for (int i = 0; i < detail::kShadeBatch; ++i) {
-        batch->nx[i] = float(rng.uniform(-1, 1));
-        batch->ny[i] = float(rng.uniform(-1, 1));
-        batch->nz[i] = float(rng.uniform(0, 1));
-        batch->px[i] = float(rng.uniform(-1, 1));
-        batch->py[i] = float(rng.uniform(-1, 1));
-        batch->pz[i] = float(rng.uniform(-1, 1));
-        batch->flip[i] = 0;
-    }
+    detail::PhongBatch& b = *batch;
+    random_shading_inputs(rng, detail::kShadeBatch, b.nx, b.ny, b.nz, b.px, b.py, b.pz);
+    std::fill_n(b.flip, detail::kShadeBatch, 0u);
     for (auto _ : state) {
         batch->count = detail::kShadeBatch;
         if (simd)
@@ -275,15 +282,9 @@ void BM_TaggedTileShading(benchmark::State& state) {
     SplitMix64 rng(4);
     for (auto& tile : all) {
         tile = std::make_unique<detail::TileBuffers>();
-        for (int i = 0; i < detail::TileBuffers::kPixels; ++i) {
-            tile->nx[i] = float(rng.uniform(-1, 1));
-            tile->ny[i] = float(rng.uniform(-1, 1));
-            tile->nz[i] = float(rng.uniform(0, 1));
-            tile->wx[i] = float(rng.uniform(-1, 1));
-            tile->wy[i] = float(rng.uniform(-1, 1));
-            tile->wz[i] = float(rng.uniform(-1, 1));
-            tile->shade_tag[i] = 1;
-        }
+        random_shading_inputs(rng, detail::TileBuffers::kPixels, tile->nx, tile->ny, tile->nz,
+                              tile->wx, tile->wy, tile->wz);
+        std::fill_n(tile->shade_tag, detail::TileBuffers::kPixels, 1u);
     }
     int next = 0;
     std::uint32_t rgba[detail::TileBuffers::kStride];
