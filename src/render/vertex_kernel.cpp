@@ -62,7 +62,9 @@ void TransformVertices(const VertexJob& job) {
     // of tag d; rows: attribute_rows(d)).
     const auto attributes = [&](auto d, const auto& rows, std::size_t k, const auto& x,
                                 const auto& y, const auto& z) {
-        const auto& [wr, nr] = rows;
+        // (Not a structured binding: Clang before 16 does not let lambdas capture those.)
+        const auto& wr = rows.first;
+        const auto& nr = rows.second;
         const auto transform = [&](int r) {
             return hn::Add(hn::Add(hn::Mul(wr[r][0], x), hn::Mul(wr[r][1], y)),
                            hn::Add(hn::Mul(wr[r][2], z), wr[r][3]));
