@@ -208,11 +208,10 @@ void run_vertex_stage(Frame& frame, RenderStats& stats);
 void attach_clusters(Frame& frame);  // cluster_cache.cpp
 void assemble_and_bin(Frame& frame, RenderStats& stats);
 void drop_stale_clusters(Frame& frame);
-// The size above which a frame's data (bins, vertices, targets) is taken not to stay in the
-// last-level cache from one frame to the next: rasterize_tiles then writes the targets with
-// non-temporal stores. Initially the L3's size (32 MiB if unknown); tests set it to force
-// either way.
-std::size_t& target_stream_threshold();
+// The size above which a frame's data is taken not to stay in the last-level cache from one
+// frame to the next: rasterize_tiles then writes the targets with non-temporal stores.
+// Initially the L3's size (32 MiB if unknown); tests set it to force either way.
+std::size_t& streaming_threshold();
 
 void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& stats,
                      ClearedTiles& cleared_tiles);

@@ -121,19 +121,18 @@ int ShadeTaggedRow(const PhongConstants* constants, const TileBuffers& tile, std
             continue;
         }
         // Several materials: one pass per material present.
-        const hn::ScalableTag<float> df;
-        const auto nx = hn::LoadU(df, tile.nx + p), ny = hn::LoadU(df, tile.ny + p),
-                   nz = hn::LoadU(df, tile.nz + p);
-        const auto px = hn::LoadU(df, tile.wx + p), py = hn::LoadU(df, tile.wy + p),
-                   pz = hn::LoadU(df, tile.wz + p);
-        const auto flip = hn::RebindMask(df, hn::Ne(hn::And(tag, flip_bit), hn::Zero(du)));
+        const auto nx = hn::LoadU(d, tile.nx + p), ny = hn::LoadU(d, tile.ny + p),
+                   nz = hn::LoadU(d, tile.nz + p);
+        const auto px = hn::LoadU(d, tile.wx + p), py = hn::LoadU(d, tile.wy + p),
+                   pz = hn::LoadU(d, tile.wz + p);
+        const auto flip = hn::RebindMask(d, hn::Ne(hn::And(tag, flip_bit), hn::Zero(du)));
         auto out = hn::LoadU(du, rgba + i);
         do {
             const auto lane = static_cast<std::size_t>(hn::FindFirstTrue(du, pending));
             const std::uint32_t material = tile.shade_tag[p + lane] & ~kShadeFlip;
             const auto these = hn::And(pending, hn::Eq(kernel, hn::Set(du, material)));
             const auto color = pack_rgba(
-                du, shade_lanes(df, constants[material - 1], nx, ny, nz, px, py, pz, flip));
+                du, shade_lanes(d, constants[material - 1], nx, ny, nz, px, py, pz, flip));
             out = hn::IfThenElse(these, color, out);
             pending = hn::AndNot(these, pending);
         } while (!hn::AllFalse(du, pending));

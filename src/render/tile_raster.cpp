@@ -95,7 +95,7 @@ bool stream_targets(const Frame& frame, std::size_t target_bytes) {
     const std::size_t vertex_bytes = v.screen.size() * sizeof(ScreenVertex) +
                                      v.outcode.size() * sizeof(std::uint32_t) +
                                      (v.world.size() + v.normal.size()) * sizeof(glm::vec3);
-    return frame.bin_bytes + vertex_bytes + target_bytes > target_stream_threshold();
+    return frame.bin_bytes + vertex_bytes + target_bytes > streaming_threshold();
 }
 
 std::size_t tile_index(int x, int y) {
@@ -440,7 +440,7 @@ std::size_t last_level_cache_bytes() {
 
 }  // namespace
 
-std::size_t& target_stream_threshold() {
+std::size_t& streaming_threshold() {
     static std::size_t threshold = last_level_cache_bytes();
     return threshold;
 }

@@ -1,5 +1,5 @@
-// Target rows written with non-temporal stores (large frames, see target_stream_threshold) give
-// the same images as ordinary copies: every target, rows of any alignment (a width that is not
+// Large frames (see streaming_threshold) write the target rows with non-temporal stores: the
+// images are those of ordinary copies. Every target, rows of any alignment (a width that is not
 // a multiple of the tile), tiles drawn and tiles left clear, forward and deferred shading.
 #include <gtest/gtest.h>
 #include <zraster/render.hpp>
@@ -15,9 +15,9 @@ namespace {
 
 // Restores the threshold when a test ends, however it ends.
 struct ThresholdOverride {
-    std::size_t saved = detail::target_stream_threshold();
-    explicit ThresholdOverride(std::size_t value) { detail::target_stream_threshold() = value; }
-    ~ThresholdOverride() { detail::target_stream_threshold() = saved; }
+    std::size_t saved = detail::streaming_threshold();
+    explicit ThresholdOverride(std::size_t value) { detail::streaming_threshold() = value; }
+    ~ThresholdOverride() { detail::streaming_threshold() = saved; }
 };
 
 RenderResult render_with_threshold(const Scene& scene, const RenderOptions& o,
@@ -38,7 +38,7 @@ void expect_same_targets(const Scene& scene, const RenderOptions& o) {
     EXPECT_EQ(copied.targets.primitive_id, streamed.targets.primitive_id);
 }
 
-TEST(TargetStream, StreamedRowsGiveTheSameImages) {
+TEST(Streaming, StreamedStoresGiveTheSameImages) {
     const Scene sphere = make_procedural_scene("sphere:20000");
     RenderOptions o;
     o.width = 333;  // rows start at every alignment
@@ -50,6 +50,13 @@ TEST(TargetStream, StreamedRowsGiveTheSameImages) {
     o.strategy = ShadingStrategy::Auto;
     o.color_target = false;  // depth only
     expect_same_targets(sphere, o);
+    // Close up, most vertices outside the view (their outcodes matter).
+    Camera close;
+    close.eye = {0.4, 0.3, 1.3};
+    close.fovy_degrees = 30.0;
+    o.camera = close;
+    expect_same_targets(sphere, o);
+    o.camera.reset();
     o.color_target = true;
     o.id_targets = true;  // the pixel-by-pixel path beside the rows
     expect_same_targets(make_procedural_scene("city:300"), o);
