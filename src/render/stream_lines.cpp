@@ -16,15 +16,6 @@ HWY_BEFORE_NAMESPACE();
 namespace zraster::detail::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-void StreamLines(std::byte* to, const std::byte* from, std::size_t lines) {
-    const hn::CappedTag<std::uint8_t, kCacheLine> d;
-    const std::size_t lanes = hn::Lanes(d);
-    auto* out = reinterpret_cast<std::uint8_t*>(to);
-    const auto* in = reinterpret_cast<const std::uint8_t*>(from);
-    for (std::size_t i = 0; i < lines * kCacheLine; i += lanes)
-        hn::Stream(hn::Load(d, in + i), d, out + i);
-}
-
 void StreamCopy(std::byte* to, const std::byte* from, std::size_t bytes) {
     const hn::CappedTag<std::uint8_t, kCacheLine> d;
     const std::size_t lanes = hn::Lanes(d);
@@ -45,7 +36,6 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace zraster::detail {
 
-HWY_EXPORT(StreamLines);
 HWY_EXPORT(StreamCopy);
 
 void stream_copy(void* to, const void* from, std::size_t bytes) {
@@ -54,7 +44,7 @@ void stream_copy(void* to, const void* from, std::size_t bytes) {
 }
 
 void stream_lines(std::byte* to, const std::byte* from, std::size_t lines) {
-    HWY_DYNAMIC_DISPATCH(StreamLines)(to, from, lines);
+    stream_copy(to, from, lines * kCacheLine);  // (aligned: no partial lines)
 }
 
 void stream_fence() {

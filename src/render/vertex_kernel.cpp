@@ -9,7 +9,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <type_traits>
 #include <utility>
 
 #include "render/frame.hpp"
@@ -180,12 +179,12 @@ void TransformVertices(const VertexJob& job) {
                               word(hn::DemoteTo(df, wx), hn::DemoteTo(df, wy)), dw, screen_words);
     };
     const auto rows_m = clip_rows(df);
-    // One step: the vertices at k (float lanes of df), their attributes too if asked.
-    const auto step = [&](std::size_t k, bool with_attributes) {
+    // One step: the vertices at k (float lanes of df) and their attributes.
+    const auto step = [&](std::size_t k) {
         hn::Vec<decltype(df)> x, y, z;
         hn::LoadInterleaved3(df, &job.positions[k].x, x, y, z);
         const auto c = clip(df, rows_m, x, y, z);
-        if (with_attributes && job.world_out != nullptr) attributes(df, rows_f, k, x, y, z);
+        if (job.world_out != nullptr) attributes(df, rows_f, k, x, y, z);
         snap(k, c);
     };
     std::size_t k = 0;
@@ -216,7 +215,7 @@ void TransformVertices(const VertexJob& job) {
         }
     }
 #endif
-    for (; k + lanes <= job.count; k += lanes) step(k, true);
+    for (; k + lanes <= job.count; k += lanes) step(k);
     if (k < job.count) {
         VertexJob tail = job;
         tail.positions += k;
