@@ -43,6 +43,12 @@ void TransformVertices(const VertexJob& job) {
     const bool zero_to_one_window = job.setup.depth_range != ClipDepthRange::NegativeOneToOne;
     const hn::Rebind<std::uint32_t, decltype(dd)> du;
     const hn::Rebind<std::uint64_t, decltype(dd)> dw;
+    // (r0 x + r1 y) + (r2 z + r3) for a matrix row r broadcast to vectors: clip_position()'s
+    // operations, and world_attributes()'s for the world position.
+    const auto affine = [](const auto& r, const auto& x, const auto& y, const auto& z) {
+        return hn::Add(hn::Add(hn::Mul(r[0], x), hn::Mul(r[1], y)),
+                       hn::Add(hn::Mul(r[2], z), r[3]));
+    };
     // The model and normal matrices' rows, broadcast to vectors of tag d.
     const auto attribute_rows = [&](auto d) {
         const glm::mat4& w = job.model;
@@ -64,11 +70,8 @@ void TransformVertices(const VertexJob& job) {
         // (Not a structured binding: Clang before 16 does not let lambdas capture those.)
         const auto& wr = rows.first;
         const auto& nr = rows.second;
-        const auto transform = [&](int r) {
-            return hn::Add(hn::Add(hn::Mul(wr[r][0], x), hn::Mul(wr[r][1], y)),
-                           hn::Add(hn::Mul(wr[r][2], z), wr[r][3]));
-        };
-        hn::StoreInterleaved3(transform(0), transform(1), transform(2), d, &job.world_out[k].x);
+        hn::StoreInterleaved3(affine(wr[0], x, y, z), affine(wr[1], x, y, z),
+                              affine(wr[2], x, y, z), d, &job.world_out[k].x);
         if (job.normal_out == nullptr) return;
         const auto zero = hn::Zero(d), one = hn::Set(d, 1.0f);
         auto nx = zero, ny = one, nz = zero;
@@ -101,13 +104,8 @@ void TransformVertices(const VertexJob& job) {
     // are finite (~0 or 0), in 32-bit lanes.
     const auto clip = [&](auto d, const auto& rows, const auto& x, const auto& y, const auto& z) {
         const hn::RebindToSigned<decltype(d)> ds;
-        // (m0 x + m1 y) + (m2 z + m3)
-        const auto apply = [&](const auto& r) {
-            return hn::Add(hn::Add(hn::Mul(r[0], x), hn::Mul(r[1], y)),
-                           hn::Add(hn::Mul(r[2], z), r[3]));
-        };
-        const auto cx = apply(rows[0]), cy = apply(rows[1]), cz = apply(rows[2]),
-                   cw = apply(rows[3]);
+        const auto cx = affine(rows[0], x, y, z), cy = affine(rows[1], x, y, z),
+                   cz = affine(rows[2], x, y, z), cw = affine(rows[3], x, y, z);
         const auto finite = hn::VecFromMask(
             ds, hn::RebindMask(ds, hn::And(hn::And(hn::IsFinite(cx), hn::IsFinite(cy)),
                                            hn::And(hn::IsFinite(cz), hn::IsFinite(cw)))));
