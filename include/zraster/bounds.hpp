@@ -35,7 +35,7 @@ struct BoundingSphere {
 };
 
 // Center = center of the axis-aligned box, radius = max distance of a point from it, computed in
-// double (as BENCH-SCENES.md frames its scenes).
+// double (as docs/bench-scenes.md frames its scenes).
 BoundingSphere bounding_sphere(std::span<const glm::vec3> points);
 
 }  // namespace zraster

@@ -59,14 +59,15 @@ struct Camera {
     ClipDepthRange clip_depth_range() const {
         return reversed_z ? ClipDepthRange::ZeroToOne : ClipDepthRange::NegativeOneToOne;
     }
-    // P * V rounded as BENCH-SCENES.md does it: V and P rounded to float, multiplied in double,
-    // rounded to float. Using this everywhere makes zraster and the llvmpipe harness agree.
+    // P * V rounded as docs/bench-scenes.md does it: V and P rounded to float, multiplied in
+    // double, rounded to float. Using this everywhere makes zraster and the llvmpipe harness agree.
     glm::mat4 view_projection(double aspect) const;
 };
 
-// The benchmark framing (BENCH-SCENES.md): center = middle of the axis-aligned box of the points,
-// radius = max |p - center| (double), fovy = 60 degrees, eye = center + dist * normalize(1, 1, 2)
-// with dist = radius / sin(fovy / 2), up = +y, near = dist - 1.01 r, far = dist + 1.01 r.
+// The benchmark framing (docs/bench-scenes.md): center = middle of the axis-aligned box of the
+// points, radius = max |p - center| (double), fovy = 60 degrees, eye = center + dist *
+// normalize(1, 1, 2) with dist = radius / sin(fovy / 2), up = +y, near = dist - 1.01 r,
+// far = dist + 1.01 r.
 // An empty or degenerate point set (radius 0) gets radius 1.
 Camera fit_camera(std::span<const glm::vec3> world_points, double fovy_degrees = 60.0);
 

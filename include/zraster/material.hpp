@@ -9,7 +9,7 @@ namespace zraster {
 
 // color = base * (ambient + diffuse * sum(light * max(N.L, 0))) + specular * sum(light *
 // spec^shininess) where base = base_color * texture(uv) when a texture is bound. The defaults
-// reproduce the benchmark scenes' "phong" shading (BENCH-SCENES.md).
+// reproduce the benchmark scenes' "phong" shading (docs/bench-scenes.md).
 struct Material {
     std::string name = "default";
     glm::vec3 base_color{0.8f, 0.75f, 0.7f};

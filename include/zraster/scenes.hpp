@@ -1,4 +1,4 @@
-// Procedural scenes: the benchmark scenes of BENCH-SCENES.md (bit-exact generators), simple
+// Procedural scenes: the benchmark scenes of docs/bench-scenes.md (bit-exact generators), simple
 // primitives, and the built-in default scene.
 #pragma once
 #include <zraster/camera.hpp>
@@ -10,7 +10,7 @@
 
 namespace zraster {
 
-// splitmix64 (Steele, Lea, Flood 2014), exactly as BENCH-SCENES.md specifies.
+// splitmix64 (Steele, Lea, Flood 2014), exactly as docs/bench-scenes.md specifies.
 struct SplitMix64 {
     std::uint64_t state;
     explicit SplitMix64(std::uint64_t seed) : state(seed) {}
@@ -24,13 +24,14 @@ struct SplitMix64 {
     double uniform(double a, double b) { return a + (b - a) * unit(); }
 };
 
-// The benchmark generators: exactly the geometry of BENCH-SCENES.md (checked by geometry_hash).
+// The benchmark generators: exactly the geometry of docs/bench-scenes.md (checked by
+// geometry_hash).
 Mesh make_bench_sphere(long n);
 Mesh make_bench_city(long n, std::uint64_t seed = 1);
 Mesh make_bench_soup(long n, std::uint64_t seed = 1);
 
 // FNV-1a 64 over the float32 little-endian x, y, z bytes of the 3 corners of every triangle in
-// draw order (BENCH-SCENES.md).
+// draw order (docs/bench-scenes.md).
 std::uint64_t geometry_hash(const Mesh& mesh);
 
 // Primitives with normals and UVs, counter-clockwise front faces seen from outside.

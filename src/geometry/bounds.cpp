@@ -28,7 +28,7 @@ BoundingSphere bounding_sphere(std::span<const glm::vec3> points) {
     BoundingSphere s;
     if (points.empty()) return s;
     const Bounds3f box = Bounds3f::of(points);
-    // In double, as BENCH-SCENES.md frames its scenes: the camera must match the reference's.
+    // In double, as docs/bench-scenes.md frames its scenes: the camera must match the reference's.
     s.center = (glm::dvec3(box.lo) + glm::dvec3(box.hi)) / 2.0;
     double r2 = 0.0;
     for (const glm::vec3& p : points) {

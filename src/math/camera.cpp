@@ -1,4 +1,4 @@
-// Viewing transform (gluLookAt), the Camera and the benchmark framing of BENCH-SCENES.md.
+// Viewing transform (gluLookAt), the Camera and the benchmark framing of docs/bench-scenes.md.
 // The framing reproduces the reference harness (../shared/tools/glbench) bit for bit: same
 // operations in the same order in double, normalization by division by the length, rounding to
 // float only where it rounds.

@@ -11,7 +11,7 @@ namespace zraster {
 namespace {
 
 // The x and y rows shared by every perspective variant. 1 / tan rather than cot so that the
-// result is bit-for-bit the one of BENCH-SCENES.md's reference harness.
+// result is bit-for-bit the one of docs/bench-scenes.md's reference harness.
 glm::dmat4 perspective_xy(double fovy, double aspect) {
     const double t = 1.0 / std::tan(fovy / 2.0);
     glm::dmat4 m(0.0);

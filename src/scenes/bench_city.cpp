@@ -1,4 +1,4 @@
-// The benchmark city, "city:N[:SEED]" of BENCH-SCENES.md: random boxes on a ground quad.
+// The benchmark city, "city:N[:SEED]" of docs/bench-scenes.md: random boxes on a ground quad.
 // Every random draw and every arithmetic step follows the document's order exactly (in double,
 // rounded to float when stored); changing either changes the geometry_hash.
 #include <zraster/scenes.hpp>

@@ -1,4 +1,4 @@
-// The benchmark triangle soup, "soup:N[:SEED]" of BENCH-SCENES.md: small random triangles in
+// The benchmark triangle soup, "soup:N[:SEED]" of docs/bench-scenes.md: small random triangles in
 // [-1, 1]^3, in random orientations (about half are back-facing).
 #include <zraster/scenes.hpp>
 

@@ -1,4 +1,4 @@
-// The benchmark UV sphere, "sphere:N" of BENCH-SCENES.md. Computed in double in the order the
+// The benchmark UV sphere, "sphere:N" of docs/bench-scenes.md. Computed in double in the order the
 // document writes it and rounded to float only when stored, so that the geometry (and its
 // geometry_hash) is bit-identical to the llvmpipe harness's.
 #include <zraster/scenes.hpp>

@@ -1,5 +1,6 @@
 // FNV-1a 64 (Fowler, Noll, Vo) over the triangles' corner positions in draw order, as
-// BENCH-SCENES.md defines it: it identifies the drawn geometry independently of vertex indexing.
+// docs/bench-scenes.md defines it: it identifies the drawn geometry independently of vertex
+// indexing.
 #include <zraster/scenes.hpp>
 
 #include <bit>

@@ -2,8 +2,8 @@
 // around the mirror direction R), and Blinn 1977, "Models of Light Reflection for Computer
 // Synthesized Pictures" (the half vector H instead of R).
 //
-// As in the benchmark shader (BENCH-SCENES.md) the specular term is not gated by N.L: a highlight
-// can appear on a point the light does not reach directly when V and L are both grazing.
+// As in the benchmark shader (docs/bench-scenes.md) the specular term is not gated by N.L: a
+// highlight can appear on a point the light does not reach directly when V and L are both grazing.
 //
 // The arithmetic is written out component by component, in a fixed order and with explicit
 // selects instead of std::max, because the SIMD shading kernel (src/render/shade_kernel.cpp)
