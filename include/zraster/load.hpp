@@ -12,7 +12,7 @@ namespace zraster {
 // Where the Assimp importer runs. zraster's own OBJ reader always runs in the calling process
 // (it is fuzzed and sanitizer-clean); Assimp (every other format, and OBJ files the built-in
 // reader leaves to it) is not: Debian's libassimp 5.2.5 corrupts memory on some malformed PLY and
-// glTF files (RELIABILITY.md, findings 16 and 17).
+// glTF files (see RELIABILITY.md).
 enum class LoadIsolation {
     // Assimp runs in the calling process: fastest, but a crash in Assimp ends the process.
     InProcess,
