@@ -25,6 +25,7 @@
 // same options, box-filtered down. Cost: factor^2 times a frame's memory and work (every
 // subsample is shaded). Opaque only (the z-buffer keeps the nearest surface; opacity is ignored).
 #pragma once
+#include <zraster/export.hpp>
 #include <zraster/render.hpp>
 #include <zraster/visibility.hpp>
 
@@ -63,8 +64,9 @@ struct PixelCoverage {
 // top-left rule, so polygons sharing an edge partition the samples on it (none covered twice,
 // none missed). With samples_per_side = 1 the covered pixels are exactly those render() fills.
 // Throws InputError for an unsupported samples_per_side.
-std::vector<PixelCoverage> polygon_coverage(const ScreenPolygon& polygon, const Viewport& viewport,
-                                            int samples_per_side);
+ZRASTER_API std::vector<PixelCoverage> polygon_coverage(const ScreenPolygon& polygon,
+                                                        const Viewport& viewport,
+                                                        int samples_per_side);
 
 // One frame through the A-buffer. Geometry is project_scene's with keep_subpixel (the renderer's
 // camera, clipping, back-face culling per options.cull; slivers between pixel centers are kept,
@@ -93,7 +95,7 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
 // and normal targets take the sample (factor / 2, factor / 2) of each block; no coverage counts.
 // Stats are the big frame's. factor = 1 is render(). Throws InputError for factor < 1 or a
 // supersampled size render() refuses.
-RenderResult render_supersampled(const Scene& scene, RenderOptions options, int factor);
+ZRASTER_API RenderResult render_supersampled(const Scene& scene, RenderOptions options, int factor);
 
 // Multisampling (MSAA): project_scene's polygons (slivers kept) rasterized into
 // samples_per_side^2 samples per pixel (the A-buffer's grid and exact masks), each sample keeping
@@ -105,7 +107,7 @@ RenderResult render_supersampled(const Scene& scene, RenderOptions options, int 
 // sample (n / 2, n / 2). Throws InputError as project_scene does, for samples_per_side other
 // than 1, 2, 4, 8, or when width x height x samples exceeds options.limits.max_pixels (the sample
 // buffers take 8 bytes per sample). Bit-identical for any thread count.
-RenderResult render_multisampled(const Scene& scene, const RenderOptions& options,
-                                 int samples_per_side);
+ZRASTER_API RenderResult render_multisampled(const Scene& scene, const RenderOptions& options,
+                                             int samples_per_side);
 
 }  // namespace zraster

@@ -1,13 +1,14 @@
 // Axis-aligned bounding boxes and bounding spheres.
 #pragma once
 #include <glm/glm.hpp>
+#include <zraster/export.hpp>
 
 #include <limits>
 #include <span>
 
 namespace zraster {
 
-struct Bounds3f {
+struct ZRASTER_API Bounds3f {
     glm::vec3 lo{std::numeric_limits<float>::infinity()};
     glm::vec3 hi{-std::numeric_limits<float>::infinity()};
 
@@ -36,6 +37,6 @@ struct BoundingSphere {
 
 // Center = center of the axis-aligned box, radius = max distance of a point from it, computed in
 // double (as docs/bench-scenes.md frames its scenes).
-BoundingSphere bounding_sphere(std::span<const glm::vec3> points);
+ZRASTER_API BoundingSphere bounding_sphere(std::span<const glm::vec3> points);
 
 }  // namespace zraster

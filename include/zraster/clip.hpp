@@ -13,6 +13,7 @@
 // polygon_clip.hpp, for line segments line_clip.hpp.
 #pragma once
 #include <zraster/camera.hpp>
+#include <zraster/export.hpp>
 
 #include <glm/glm.hpp>
 
@@ -92,17 +93,18 @@ inline std::uint32_t frustum_outcode(const glm::vec4& v, const ClipSettings& s) 
 
 // Outcode of one vertex. user_distances holds the vertex's signed distance to each user plane
 // (inside when >= 0).
-std::uint32_t clip_outcode(const glm::vec4& v, const ClipSettings& settings,
-                           std::span<const float> user_distances);
+ZRASTER_API std::uint32_t clip_outcode(const glm::vec4& v, const ClipSettings& settings,
+                                       std::span<const float> user_distances);
 
 // Clips triangle (v[0], v[1], v[2]) against every plane named in `planes` (a mask of
 // ClipPlaneBit). user_distances[k][i] is vertex i's distance to user plane k.
 // Result: a convex polygon (count may be 0). Intersections on an edge are always computed from
 // the inside vertex towards the outside one, so two triangles sharing an edge produce
 // bit-identical new vertices on it (no cracks after clipping).
-void clip_triangle(const std::array<glm::vec4, 3>& v, std::uint32_t planes,
-                   const ClipSettings& settings,
-                   std::span<const std::array<float, 3>> user_distances, ClippedPolygon& out);
+ZRASTER_API void clip_triangle(const std::array<glm::vec4, 3>& v, std::uint32_t planes,
+                               const ClipSettings& settings,
+                               std::span<const std::array<float, 3>> user_distances,
+                               ClippedPolygon& out);
 
 // Sutherland-Hodgman against one homogeneous plane (keep dot(plane, v) >= 0); the building block,
 // also usable on its own. Writes the clipped polygon to out and returns its vertex count. The
@@ -111,8 +113,8 @@ void clip_triangle(const std::array<glm::vec4, 3>& v, std::uint32_t planes,
 // vertices each between two crossings, e.g. a comb whose teeth cross the plane), so `out` must
 // hold max_clip_output(n) = n + n / 2 + 1 vertices unless the input is known to be convex
 // (the count may exceed out.size() otherwise: a precondition, checked by assert only).
-int clip_polygon_against_plane(std::span<const ClipVertex> in, const glm::vec4& plane,
-                               std::span<ClipVertex> out);
+ZRASTER_API int clip_polygon_against_plane(std::span<const ClipVertex> in, const glm::vec4& plane,
+                                           std::span<ClipVertex> out);
 
 // Output capacity that clip_polygon_against_plane needs for any input of n vertices.
 constexpr std::size_t max_clip_output(std::size_t n) {

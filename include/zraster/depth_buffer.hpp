@@ -8,13 +8,14 @@
 #include <cstdint>
 #include <string_view>
 #include <vector>
+#include <zraster/export.hpp>
 
 namespace zraster {
 
 enum class DepthFormat { D32F, D24, D16 };
 enum class CompareFunc { Never, Less, LessEqual, Equal, NotEqual, GreaterEqual, Greater, Always };
 
-class DepthBuffer {
+class ZRASTER_API DepthBuffer {
   public:
     DepthBuffer() = default;
     DepthBuffer(int width, int height, DepthFormat format);
@@ -76,7 +77,7 @@ class DepthBuffer {
 };
 
 // Parsing helpers for the command line and scene files ("d32f", "d24", "d16"; "less", ...).
-bool parse_depth_format(std::string_view text, DepthFormat& out);
-bool parse_compare_func(std::string_view text, CompareFunc& out);
+ZRASTER_API bool parse_depth_format(std::string_view text, DepthFormat& out);
+ZRASTER_API bool parse_compare_func(std::string_view text, CompareFunc& out);
 
 }  // namespace zraster

@@ -6,26 +6,27 @@
 #include <filesystem>
 #include <span>
 #include <vector>
+#include <zraster/export.hpp>
 
 namespace zraster {
 
 // 8-bit PNG, rows top to bottom, `channels` in {1, 2, 3, 4}.
-void write_png8(const std::filesystem::path& path, int width, int height, int channels,
-                std::span<const std::uint8_t> pixels);
+ZRASTER_API void write_png8(const std::filesystem::path& path, int width, int height, int channels,
+                            std::span<const std::uint8_t> pixels);
 // 16-bit grayscale PNG (big-endian in the file, as PNG requires).
-void write_png16_gray(const std::filesystem::path& path, int width, int height,
-                      std::span<const std::uint16_t> pixels);
+ZRASTER_API void write_png16_gray(const std::filesystem::path& path, int width, int height,
+                                  std::span<const std::uint16_t> pixels);
 // NumPy .npy version 1.0, C order, shape (height, width).
-void write_npy(const std::filesystem::path& path, int width, int height,
-               std::span<const float> values);
-void write_npy(const std::filesystem::path& path, int width, int height,
-               std::span<const std::int32_t> values);
+ZRASTER_API void write_npy(const std::filesystem::path& path, int width, int height,
+                           std::span<const float> values);
+ZRASTER_API void write_npy(const std::filesystem::path& path, int width, int height,
+                           std::span<const std::int32_t> values);
 
 // Reads an 8-bit image (PNG, JPEG, ... via stb_image) as RGBA8. Throws InputError.
 struct ImageRGBA8 {
     int width = 0, height = 0;
     std::vector<std::uint8_t> rgba;
 };
-ImageRGBA8 read_image_rgba8(const std::filesystem::path& path);
+ZRASTER_API ImageRGBA8 read_image_rgba8(const std::filesystem::path& path);
 
 }  // namespace zraster

@@ -12,6 +12,7 @@
 #pragma once
 #include <zraster/bounds.hpp>
 #include <zraster/camera.hpp>
+#include <zraster/export.hpp>
 
 #include <array>
 #include <cstdint>
@@ -23,14 +24,15 @@ namespace zraster {
 // The six planes (n.x, n.y, n.z, d) of the view frustum of a view-projection matrix, world
 // space; points with dot(n, p) + d >= 0 are inside (Gribb & Hartmann 2001). Order: left, right,
 // bottom, top, near, far.
-std::array<glm::vec4, 6> frustum_planes(const glm::mat4& view_projection, ClipDepthRange range);
+ZRASTER_API std::array<glm::vec4, 6> frustum_planes(const glm::mat4& view_projection,
+                                                    ClipDepthRange range);
 
 // True when `box` lies entirely on the outside of one of `planes` by more than a slack of
 // 2^-16 * (2 |n| . max(|lo|, |hi|) + |d|) (covers float rounding of transforms and plane
 // extraction). Empty or non-finite boxes are never outside (the caller decides about them).
-bool outside_planes(const Bounds3f& box, std::span<const glm::vec4> planes);
+ZRASTER_API bool outside_planes(const Bounds3f& box, std::span<const glm::vec4> planes);
 
-class InstanceBvh {
+class ZRASTER_API InstanceBvh {
   public:
     static constexpr int kLeafSize = 4;
 

@@ -1,5 +1,6 @@
 // Lights and the Phong / Blinn-Phong reflection models (Phong 1975, Blinn 1977).
 #pragma once
+#include <zraster/export.hpp>
 #include <zraster/material.hpp>
 
 #include <vector>
@@ -46,14 +47,14 @@ struct LightTerms {
 
 // position: world-space point; normal: unit world-space normal facing the viewer side;
 // eye: world-space eye; view_axis: unit direction from the scene towards the eye (infinite viewer).
-LightTerms evaluate_lighting(const LightingModel& model, const Material& material,
-                             const glm::vec3& position, const glm::vec3& normal,
-                             const glm::vec3& eye, const glm::vec3& view_axis);
+ZRASTER_API LightTerms evaluate_lighting(const LightingModel& model, const Material& material,
+                                         const glm::vec3& position, const glm::vec3& normal,
+                                         const glm::vec3& eye, const glm::vec3& view_axis);
 
 // x^shininess for x >= 0. Integer exponents up to kMaxIntegerShininess use exponentiation by
 // squaring (exactly reproducible by SIMD code), others std::pow.
 inline constexpr int kMaxIntegerShininess = 4096;
-float specular_power(float x, float shininess);
+ZRASTER_API float specular_power(float x, float shininess);
 
 inline glm::vec3 combine(const LightTerms& terms, const glm::vec3& base) {
     return base * terms.diffuse + terms.specular;

@@ -16,6 +16,7 @@
 #pragma once
 #include <zraster/camera.hpp>
 #include <zraster/clip.hpp>
+#include <zraster/export.hpp>
 
 #include <glm/glm.hpp>
 
@@ -43,8 +44,8 @@ struct ConvexWindow {
 // repeated consecutive vertices; collinear ones are allowed and merely redundant). Throws
 // std::invalid_argument otherwise. Axis-aligned edges get exactly axis-aligned normals, so a
 // rectangle window clips with exactly Liang-Barsky's arithmetic.
-ConvexWindow make_convex_window(std::span<const glm::dvec2> polygon);
-ConvexWindow make_convex_window(const ClipRect& rect);
+ZRASTER_API ConvexWindow make_convex_window(std::span<const glm::dvec2> polygon);
+ZRASTER_API ConvexWindow make_convex_window(const ClipRect& rect);
 
 struct LineClipStats {
     long long segments = 0;         // calls
@@ -78,24 +79,26 @@ enum OutcodeBit : std::uint32_t {
     kOutBottom = 1u << 2,  // y < y_min
     kOutTop = 1u << 3,     // y > y_max
 };
-std::uint32_t outcode(const glm::dvec2& p, const ClipRect& window);
+ZRASTER_API std::uint32_t outcode(const glm::dvec2& p, const ClipRect& window);
 
 // Cohen-Sutherland: trivial accept (both outcodes 0) and reject (a common bit), otherwise move an
 // outside endpoint onto the boundary of one of its bits and repeat. Clipped endpoints are inside
 // the closed window exactly (the boundary coordinate is set, not computed).
-ClippedLine2 clip_line_cohen_sutherland(glm::dvec2 a, glm::dvec2 b, const ClipRect& window,
-                                        LineClipStats* stats = nullptr);
+ZRASTER_API ClippedLine2 clip_line_cohen_sutherland(glm::dvec2 a, glm::dvec2 b,
+                                                    const ClipRect& window,
+                                                    LineClipStats* stats = nullptr);
 
 // Liang-Barsky: the parametric interval [t0, t1] of a + t (b - a) inside each slab, intersected,
 // after the same outcode pre-test. Clipped endpoints are inside the closed window exactly.
-ClippedLine2 clip_line_liang_barsky(glm::dvec2 a, glm::dvec2 b, const ClipRect& window,
-                                    LineClipStats* stats = nullptr);
+ZRASTER_API ClippedLine2 clip_line_liang_barsky(glm::dvec2 a, glm::dvec2 b, const ClipRect& window,
+                                                LineClipStats* stats = nullptr);
 
 // Cyrus-Beck against any convex window. For a rectangle window (make_convex_window(rect)) it
 // computes the same parameters as Liang-Barsky bit for bit; its endpoints may differ in the last
 // bits because it does not snap them onto the boundary.
-ClippedLine2 clip_line_cyrus_beck(glm::dvec2 a, glm::dvec2 b, const ConvexWindow& window,
-                                  LineClipStats* stats = nullptr);
+ZRASTER_API ClippedLine2 clip_line_cyrus_beck(glm::dvec2 a, glm::dvec2 b,
+                                              const ConvexWindow& window,
+                                              LineClipStats* stats = nullptr);
 
 // 3D: the segment between clip-space points a and b (before the perspective divide) against the
 // view volume -w <= x <= w, -w <= y <= w and -w <= z <= w (NegativeOneToOne) or 0 <= z <= w
@@ -109,12 +112,12 @@ struct ClippedLine4 {
 
 // 6-bit outcode of a clip-space point: the ClipPlaneBit bits of clip.hpp (kClipDepthMin ..
 // kClipTop) of the planes it is outside of, against the view volume itself (no guard band).
-std::uint32_t outcode(const glm::dvec4& p, ClipDepthRange range);
+ZRASTER_API std::uint32_t outcode(const glm::dvec4& p, ClipDepthRange range);
 
 // Blinn & Newell's homogeneous Liang-Barsky: outcodes for the trivial cases, then the parameter
 // interval from the boundary coordinates (w + x, w - x, ...), which are linear in t.
-ClippedLine4 clip_line_homogeneous(const glm::dvec4& a, const glm::dvec4& b,
-                                   ClipDepthRange range = ClipDepthRange::NegativeOneToOne,
-                                   LineClipStats* stats = nullptr);
+ZRASTER_API ClippedLine4 clip_line_homogeneous(
+    const glm::dvec4& a, const glm::dvec4& b,
+    ClipDepthRange range = ClipDepthRange::NegativeOneToOne, LineClipStats* stats = nullptr);
 
 }  // namespace zraster

@@ -23,6 +23,7 @@
 // many lines reuses one buffer and allocates nothing in steady state.
 #pragma once
 #include <glm/glm.hpp>
+#include <zraster/export.hpp>
 
 #include <vector>
 
@@ -30,16 +31,16 @@ namespace zraster {
 
 // Bresenham: integer arithmetic only, exact for any endpoints whose coordinate differences fit
 // in an int.
-void bresenham_line(glm::ivec2 a, glm::ivec2 b, std::vector<glm::ivec2>& out);
-std::vector<glm::ivec2> bresenham_line(glm::ivec2 a, glm::ivec2 b);
+ZRASTER_API void bresenham_line(glm::ivec2 a, glm::ivec2 b, std::vector<glm::ivec2>& out);
+ZRASTER_API std::vector<glm::ivec2> bresenham_line(glm::ivec2 a, glm::ivec2 b);
 
 // DDA on real endpoints: one pixel per major coordinate from round(a.major) to round(b.major)
 // (rounded half up), minor coordinate = floor(y + 0.5) of the ideal line there, accumulated
 // incrementally in double. For integer endpoints it draws max(|dx|, |dy|) + 1 pixels and agrees
 // with Bresenham except possibly on exact ties: there the accumulated value is k + 0.5 only up to
 // rounding error, and may land on either side.
-void dda_line(glm::dvec2 a, glm::dvec2 b, std::vector<glm::ivec2>& out);
-std::vector<glm::ivec2> dda_line(glm::dvec2 a, glm::dvec2 b);
+ZRASTER_API void dda_line(glm::dvec2 a, glm::dvec2 b, std::vector<glm::ivec2>& out);
+ZRASTER_API std::vector<glm::ivec2> dda_line(glm::dvec2 a, glm::dvec2 b);
 
 // A wireframe pixel with its interpolated window depth.
 struct LinePixel {
@@ -52,9 +53,9 @@ struct LinePixel {
 // linear interpolation is exact here, not an approximation. The depth is always computed from
 // the lexicographically smaller endpoint, so the line from b to a gives bit-identical depths (a
 // shared wireframe edge does not z-fight with itself). A zero-length line gets the smaller depth.
-void bresenham_line_depth(glm::ivec2 a, float depth_a, glm::ivec2 b, float depth_b,
-                          std::vector<LinePixel>& out);
-std::vector<LinePixel> bresenham_line_depth(glm::ivec2 a, float depth_a, glm::ivec2 b,
-                                            float depth_b);
+ZRASTER_API void bresenham_line_depth(glm::ivec2 a, float depth_a, glm::ivec2 b, float depth_b,
+                                      std::vector<LinePixel>& out);
+ZRASTER_API std::vector<LinePixel> bresenham_line_depth(glm::ivec2 a, float depth_a, glm::ivec2 b,
+                                                        float depth_b);
 
 }  // namespace zraster

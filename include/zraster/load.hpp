@@ -1,6 +1,7 @@
 // Loading scenes from mesh files (OBJ with MTL, PLY, STL, glTF 2.0, 3DS, OFF and the other
 // formats Assimp reads).
 #pragma once
+#include <zraster/export.hpp>
 #include <zraster/scene.hpp>
 
 #include <cstddef>
@@ -58,6 +59,6 @@ Scene load_scene(const std::filesystem::path& path, const LoadOptions& options =
 // source, meshes (name, triangles, vertices, material, mesh-space bounds), instances, totals
 // over instances, exact world bounds, materials (name, base color, texture size) and warnings.
 // Long lists are cut after 50 entries with a count of the rest.
-std::string describe_scene(const Scene& scene);
+ZRASTER_API std::string describe_scene(const Scene& scene);
 
 }  // namespace zraster

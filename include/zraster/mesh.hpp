@@ -1,6 +1,7 @@
 // Triangle meshes as plain arrays: what the pipeline consumes. No file format leaks in here.
 #pragma once
 #include <zraster/bounds.hpp>
+#include <zraster/export.hpp>
 
 #include <cstdint>
 #include <span>
@@ -25,12 +26,12 @@ struct Mesh {
 // Angle-weighted vertex normals (Thürmer & Wüthrich 1998): each triangle adds its unit face normal
 // weighted by its interior angle at the vertex. Degenerate triangles add nothing; a vertex that
 // gets no contribution gets (0, 1, 0). Replaces mesh.normals.
-void compute_angle_weighted_normals(Mesh& mesh);
+ZRASTER_API void compute_angle_weighted_normals(Mesh& mesh);
 
 // Unit face normal of each triangle, (0, 1, 0) for a degenerate one.
-std::vector<glm::vec3> compute_face_normals(const Mesh& mesh);
+ZRASTER_API std::vector<glm::vec3> compute_face_normals(const Mesh& mesh);
 
 // Recomputes mesh.bounds from mesh.positions.
-void update_bounds(Mesh& mesh);
+ZRASTER_API void update_bounds(Mesh& mesh);
 
 }  // namespace zraster

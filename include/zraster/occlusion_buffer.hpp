@@ -47,6 +47,7 @@
 // path give bit-identical buffers and answers.
 #pragma once
 #include <zraster/bounds.hpp>
+#include <zraster/export.hpp>
 
 #include <glm/glm.hpp>
 
@@ -78,7 +79,7 @@ struct OccluderOptions {
     float subpixel_margin = 0.0f;
 };
 
-class OcclusionBuffer {
+class ZRASTER_API OcclusionBuffer {
   public:
     static constexpr int kTileWidth = 16;
     static constexpr int kTileHeight = 16;

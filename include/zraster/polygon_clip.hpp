@@ -10,6 +10,7 @@
 // what it is not is a simple polygon, so split it first if that matters (e.g. for outlines).
 #pragma once
 #include <zraster/clip.hpp>
+#include <zraster/export.hpp>
 #include <zraster/line_clip.hpp>
 
 #include <glm/glm.hpp>
@@ -26,8 +27,8 @@ namespace zraster {
 // boundary coordinate exactly. Returns an empty vector when fewer than 3 vertices remain (the
 // polygon misses the window or only touches it).
 // Cost: O(polygon vertices x window edges).
-std::vector<glm::dvec2> clip_polygon_sutherland_hodgman(std::span<const glm::dvec2> polygon,
-                                                        const ConvexWindow& window);
+ZRASTER_API std::vector<glm::dvec2> clip_polygon_sutherland_hodgman(
+    std::span<const glm::dvec2> polygon, const ConvexWindow& window);
 
 // The six planes of the view volume (keep dot(plane, v) >= 0), in ClipPlaneBit order.
 inline std::array<glm::vec4, 6> view_volume_planes(ClipDepthRange range) {

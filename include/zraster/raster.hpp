@@ -8,6 +8,8 @@
 // use): see precision.hpp for the exactness argument and the limits.
 #pragma once
 #include <zraster/camera.hpp>
+#include <zraster/compiler.hpp>
+#include <zraster/export.hpp>
 #include <zraster/precision.hpp>
 
 #include <glm/glm.hpp>
@@ -89,7 +91,7 @@ struct SetupSettings {
 
 // Snaps a window-space position (pixels, y down) to the fixed-point grid: nearest 1/256 pixel,
 // ties to even (what to_screen does after the viewport transform).
-std::array<std::int64_t, 2> snap_to_grid(const glm::dvec2& window);
+ZRASTER_API std::array<std::int64_t, 2> snap_to_grid(const glm::dvec2& window);
 
 // Divide by w, viewport transform and snap: window x = (ndc_x + 1) / 2 * width,
 // y = (1 - ndc_y) / 2 * height (flipped so row 0 is the top), rounded to the nearest 1/256 pixel
@@ -101,8 +103,9 @@ inline bool to_screen(const glm::vec4& clip, const SetupSettings& settings, Scre
 // Sets up a triangle from snapped vertices: orients the edges, applies the fill rule and the
 // cull mode, bounds its pixel centers, and computes the plane equations. `planes` = false skips
 // the plane equations (enough for coverage-only work and early rejection).
-SetupResult setup_triangle(const std::array<ScreenVertex, 3>& v, const SetupSettings& settings,
-                           TriangleSetup& out, bool planes = true);
+ZRASTER_API SetupResult setup_triangle(const std::array<ScreenVertex, 3>& v,
+                                       const SetupSettings& settings, TriangleSetup& out,
+                                       bool planes = true);
 
 // Front-end test of a triangle of snapped vertices: degenerate, culled, or the inclusive pixel
 // box of the pixel centers it may cover (empty box: NoCoverage). Exactly the decisions
@@ -111,8 +114,8 @@ struct TriangleBounds {
     int min_x, min_y, max_x, max_y;
     bool front_facing;
 };
-SetupResult classify_triangle(const std::array<ScreenVertex, 3>& v, const SetupSettings& settings,
-                              TriangleBounds& out);
+ZRASTER_API SetupResult classify_triangle(const std::array<ScreenVertex, 3>& v,
+                                          const SetupSettings& settings, TriangleBounds& out);
 // The same on three vertices in place (inline: the front end calls it once per triangle).
 inline SetupResult classify_triangle(const ScreenVertex& v0, const ScreenVertex& v1,
                                      const ScreenVertex& v2, const SetupSettings& settings,
@@ -120,14 +123,15 @@ inline SetupResult classify_triangle(const ScreenVertex& v0, const ScreenVertex&
 
 // Convenience: to_screen on each vertex (all must be inside the guard band with w > 0, what
 // the clipper guarantees; otherwise Degenerate), then setup_triangle.
-SetupResult setup_triangle(const std::array<glm::vec4, 3>& clip, const SetupSettings& settings,
-                           TriangleSetup& out);
+ZRASTER_API SetupResult setup_triangle(const std::array<glm::vec4, 3>& clip,
+                                       const SetupSettings& settings, TriangleSetup& out);
 
 // Barycentric weights of the input vertices at pixel (px, py) of a set-up triangle.
-glm::vec3 barycentrics(const TriangleSetup& t, int px, int py, Interpolation interpolation);
+ZRASTER_API glm::vec3 barycentrics(const TriangleSetup& t, int px, int py,
+                                   Interpolation interpolation);
 
 // Window depth at pixel (px, py), clamped to [0, 1].
-float depth_at(const TriangleSetup& t, int px, int py);
+ZRASTER_API float depth_at(const TriangleSetup& t, int px, int py);
 
 // Calls fn(px, py) for every covered pixel of t inside [x0, x1) x [y0, y1), row by row, left to
 // right. This is the reference (scalar) coverage loop: every faster kernel must agree with it.
@@ -152,11 +156,10 @@ void for_each_covered_pixel(const TriangleSetup& t, int x0, int y0, int x1, int 
 
 // (Always inlined: as a call, its results come back through memory, and triangle setup stalls
 // on them.)
-[[gnu::always_inline]] inline SetupResult classify_triangle(const ScreenVertex& v0,
-                                                            const ScreenVertex& v1,
-                                                            const ScreenVertex& v2,
-                                                            const SetupSettings& settings,
-                                                            TriangleBounds& out) {
+ZRASTER_FORCE_INLINE SetupResult classify_triangle(const ScreenVertex& v0, const ScreenVertex& v1,
+                                                   const ScreenVertex& v2,
+                                                   const SetupSettings& settings,
+                                                   TriangleBounds& out) {
     // Twice the signed area in y-down window space; negative means counter-clockwise as seen with
     // y up, i.e. OpenGL's default front face.
     const std::int64_t x0 = v0.x, y0 = v0.y;
@@ -207,8 +210,8 @@ inline bool to_screen(const glm::vec4& clip, const SetupSettings& settings, Scre
     constexpr double limit = kGuardBand + double(kMaxViewport);
     if (!(wx >= -limit && wx <= limit && wy >= -limit && wy <= limit)) return false;
     // Nearest 1/256 pixel, ties to even (cvtsd2si), as snap_to_grid.
-    out.x = static_cast<std::int32_t>(__builtin_lrint(wx * double(kSubpixelScale)));
-    out.y = static_cast<std::int32_t>(__builtin_lrint(wy * double(kSubpixelScale)));
+    out.x = static_cast<std::int32_t>(round_to_long(wx * double(kSubpixelScale)));
+    out.y = static_cast<std::int32_t>(round_to_long(wy * double(kSubpixelScale)));
     const double z = double(clip.z) * rw;
     out.z = static_cast<float>(
         settings.depth_range == ClipDepthRange::NegativeOneToOne ? 0.5 * z + 0.5 : z);

@@ -1,5 +1,6 @@
 // A scene: meshes, their materials, instances placing them in the world, lights.
 #pragma once
+#include <zraster/export.hpp>
 #include <zraster/lighting.hpp>
 #include <zraster/mesh.hpp>
 
@@ -16,7 +17,7 @@ struct Instance {
     std::string name;
 };
 
-struct Scene {
+struct ZRASTER_API Scene {
     std::vector<Mesh> meshes;
     std::vector<Material> materials{Material{}};  // index 0 is the default material
     std::vector<Instance> instances;
@@ -32,6 +33,6 @@ struct Scene {
 };
 
 // A scene with one instance (identity transform) of each mesh.
-Scene scene_from_meshes(std::vector<Mesh> meshes);
+ZRASTER_API Scene scene_from_meshes(std::vector<Mesh> meshes);
 
 }  // namespace zraster

@@ -2,6 +2,7 @@
 // primitives, and the built-in default scene.
 #pragma once
 #include <zraster/camera.hpp>
+#include <zraster/export.hpp>
 #include <zraster/scene.hpp>
 
 #include <cstdint>
@@ -26,31 +27,31 @@ struct SplitMix64 {
 
 // The benchmark generators: exactly the geometry of docs/bench-scenes.md (checked by
 // geometry_hash).
-Mesh make_bench_sphere(long n);
-Mesh make_bench_city(long n, std::uint64_t seed = 1);
-Mesh make_bench_soup(long n, std::uint64_t seed = 1);
+ZRASTER_API Mesh make_bench_sphere(long n);
+ZRASTER_API Mesh make_bench_city(long n, std::uint64_t seed = 1);
+ZRASTER_API Mesh make_bench_soup(long n, std::uint64_t seed = 1);
 
 // FNV-1a 64 over the float32 little-endian x, y, z bytes of the 3 corners of every triangle in
 // draw order (docs/bench-scenes.md).
-std::uint64_t geometry_hash(const Mesh& mesh);
+ZRASTER_API std::uint64_t geometry_hash(const Mesh& mesh);
 
 // Primitives with normals and UVs, counter-clockwise front faces seen from outside.
-Mesh make_uv_sphere(float radius, int stacks, int slices);
-Mesh make_box(const glm::vec3& half_extent);
-Mesh make_torus(float major_radius, float minor_radius, int rings, int sides);
+ZRASTER_API Mesh make_uv_sphere(float radius, int stacks, int slices);
+ZRASTER_API Mesh make_box(const glm::vec3& half_extent);
+ZRASTER_API Mesh make_torus(float major_radius, float minor_radius, int rings, int sides);
 // A square in the xz plane facing +y, side `size`, UVs repeated `uv_repeat` times.
-Mesh make_ground_plane(float size, float uv_repeat);
+ZRASTER_API Mesh make_ground_plane(float size, float uv_repeat);
 
 // True if spec names a procedural scene: "sphere:N", "city:N[:SEED]", "soup:N[:SEED]" or
 // "builtin:NAME".
-bool is_procedural_spec(std::string_view spec);
+ZRASTER_API bool is_procedural_spec(std::string_view spec);
 // Builds the scene for such a spec; throws InputError for a malformed spec or absurd N.
 // builtin names: "default" (the showcase scene), "sphere", "cube".
-Scene make_procedural_scene(std::string_view spec);
+ZRASTER_API Scene make_procedural_scene(std::string_view spec);
 
 // The recommended camera for a builtin scene, framed for a 16:9 image: for "builtin:default" a
 // low eye looking slightly down, the ground receding to the horizon. nullopt for other specs
 // (frame those with fit_camera).
-std::optional<Camera> builtin_camera(std::string_view spec);
+ZRASTER_API std::optional<Camera> builtin_camera(std::string_view spec);
 
 }  // namespace zraster

@@ -29,6 +29,7 @@
 // Without edges, runs of consecutive paths of one color are further written as one <path> with
 // several subpaths (all loops have the same orientation, so the nonzero rule unions them).
 #pragma once
+#include <zraster/export.hpp>
 #include <zraster/render.hpp>
 #include <zraster/visibility.hpp>
 
@@ -65,8 +66,9 @@ struct SvgStats {
 // walk for the frame's eye with each stored polygon projected fan triangle by fan triangle as
 // render_bsp draws it; for the painter's order, painter_sort over project_scene. Filled with
 // paint_polygons they give render_with_visibility's image for that algorithm.
-std::vector<ScreenPolygon> svg_polygons(const Scene& scene, const RenderOptions& options,
-                                        SvgOptions::Order order);
+ZRASTER_API std::vector<ScreenPolygon> svg_polygons(const Scene& scene,
+                                                    const RenderOptions& options,
+                                                    SvgOptions::Order order);
 
 // The document. Throws InputError for unusable options (as render_with_visibility, and a
 // precision outside 0..6 or a negative or non-finite width).

@@ -5,6 +5,7 @@
 // further level halves the size (box filter, odd sizes rounded down, minimum 1) down to 1x1.
 #pragma once
 #include <glm/glm.hpp>
+#include <zraster/export.hpp>
 
 #include <cstdint>
 #include <span>
@@ -14,7 +15,7 @@ namespace zraster {
 
 enum class TextureFilter { Nearest, Bilinear, Trilinear };
 
-class Texture {
+class ZRASTER_API Texture {
   public:
     // rgba holds width*height*4 bytes, rows top to bottom. Builds the mip chain.
     // Throws std::invalid_argument for non-positive sizes or a short buffer.
@@ -53,6 +54,6 @@ class Texture {
 };
 
 // A two-colour checkerboard of `squares` x `squares` cells, each `cell` texels wide.
-Texture make_checkerboard_texture(int squares, int cell, glm::u8vec4 a, glm::u8vec4 b);
+ZRASTER_API Texture make_checkerboard_texture(int squares, int cell, glm::u8vec4 a, glm::u8vec4 b);
 
 }  // namespace zraster

@@ -12,6 +12,7 @@
 // primitive-id images agree with render()'s except where visibility is decided differently (ties,
 // and pixels whose centers lie within rounding of an intersection or split line).
 #pragma once
+#include <zraster/export.hpp>
 #include <zraster/render.hpp>
 
 #include <array>
@@ -58,7 +59,7 @@ struct ScreenPolygon {
 };
 
 // The camera a frame uses: options.camera, else fit_camera() over the scene (as render() does).
-Camera effective_camera(const Scene& scene, const RenderOptions& options);
+ZRASTER_API Camera effective_camera(const Scene& scene, const RenderOptions& options);
 
 // Runs the renderer's vertex stage math on every triangle of every instance: object -> clip space
 // by Camera::view_projection, trivial reject by clip_outcode, clip_triangle against the near/far,
@@ -71,16 +72,17 @@ Camera effective_camera(const Scene& scene, const RenderOptions& options);
 // (those whose snapped bounding box meets the viewport): what the A-buffer's subsamples need;
 // the list-priority algorithms and Warnock sample pixel centers only and leave it off.
 // Throws InputError for an image size out of range or too many user clip planes.
-std::vector<ScreenPolygon> project_scene(const Scene& scene, const RenderOptions& options,
-                                         bool keep_subpixel = false);
+ZRASTER_API std::vector<ScreenPolygon> project_scene(const Scene& scene,
+                                                     const RenderOptions& options,
+                                                     bool keep_subpixel = false);
 
 // Draws polygons in the given order with NO depth test (the last one drawn wins), with the
 // renderer's coverage rule: each polygon is fan-triangulated from its first vertex and every
 // triangle goes through setup_triangle (options.cull, options.front_face) and
 // for_each_covered_pixel. Produces the targets options asks for: color, depth (the drawn
 // polygon's depth), id targets, normal (the flat face normal). Coverage counts are not produced.
-RenderTargets paint_polygons(std::span<const ScreenPolygon> back_to_front,
-                             const RenderOptions& options, const Camera& camera);
+ZRASTER_API RenderTargets paint_polygons(std::span<const ScreenPolygon> back_to_front,
+                                         const RenderOptions& options, const Camera& camera);
 
 // ---------------------------------------------------------------------------------------------
 // Painter's algorithm (src/visibility/painter.cpp).
@@ -124,7 +126,7 @@ PainterResult painter_sort(std::vector<ScreenPolygon> polygons, const Viewport& 
 
 // The naive order the classic algorithm starts from: farthest depth first, nothing resolved.
 // Wrong for cyclic overlap and interpenetration (kept for comparison).
-std::vector<ScreenPolygon> sort_by_farthest_depth(std::vector<ScreenPolygon> polygons);
+ZRASTER_API std::vector<ScreenPolygon> sort_by_farthest_depth(std::vector<ScreenPolygon> polygons);
 
 // ---------------------------------------------------------------------------------------------
 // BSP tree (src/visibility/bsp_tree.cpp).
@@ -166,7 +168,7 @@ struct BspStats {
     std::uint64_t classifications = 0;  // polygon-vs-plane tests, scoring included
 };
 
-class BspTree {
+class ZRASTER_API BspTree {
   public:
     struct Node {
         glm::dvec4 plane{0.0};
@@ -194,14 +196,15 @@ class BspTree {
 };
 
 // Every triangle of every instance in world space (degenerate ones dropped), in submission order.
-std::vector<BspPolygon> bsp_polygons_from_scene(const Scene& scene);
+ZRASTER_API std::vector<BspPolygon> bsp_polygons_from_scene(const Scene& scene);
 
 // The viewer as BspTree::back_to_front wants it.
-glm::dvec4 bsp_eye(const Camera& camera);
+ZRASTER_API glm::dvec4 bsp_eye(const Camera& camera);
 
 // Draws a frame of `scene` through a prebuilt tree (built from bsp_polygons_from_scene(scene)):
 // the walk's order through paint_polygons.
-RenderResult render_bsp(const BspTree& tree, const Scene& scene, const RenderOptions& options);
+ZRASTER_API RenderResult render_bsp(const BspTree& tree, const Scene& scene,
+                                    const RenderOptions& options);
 
 // ---------------------------------------------------------------------------------------------
 // Warnock's area subdivision (src/visibility/warnock.cpp).
@@ -222,7 +225,8 @@ enum class RegionRelation {
 // pixel centers (the only points the rasterizer samples). Disjoint: the polygon and the rectangle
 // spanned by the region's pixel centers do not meet. Surrounding: all four corner centers are
 // covered (then, by convexity, every center is).
-RegionRelation classify_polygon(const ScreenPolygon& polygon, const PixelRegion& region);
+ZRASTER_API RegionRelation classify_polygon(const ScreenPolygon& polygon,
+                                            const PixelRegion& region);
 
 struct WarnockStats {
     std::vector<std::uint64_t> regions_per_level;       // regions examined at each level
@@ -242,8 +246,8 @@ struct WarnockResult {
 // Warnock's algorithm over the whole viewport. Depth comparisons use each polygon's plane in
 // window space evaluated at pixel centers; equal depths go to the earlier polygon (as the
 // z-buffer's LESS test keeps the first one drawn).
-WarnockResult warnock_render(std::span<const ScreenPolygon> polygons, const RenderOptions& options,
-                             const Camera& camera);
+ZRASTER_API WarnockResult warnock_render(std::span<const ScreenPolygon> polygons,
+                                         const RenderOptions& options, const Camera& camera);
 
 // ---------------------------------------------------------------------------------------------
 
@@ -262,8 +266,8 @@ struct VisibilityStats {
 // (options.depth_compare, depth_test and depth_write do not apply) and produce no coverage
 // counts; Bsp builds its tree for this frame (use render_bsp to reuse one). Stats: camera,
 // triangles_in and the total time are filled in.
-RenderResult render_with_visibility(const Scene& scene, const RenderOptions& options,
-                                    VisibilityAlgorithm algorithm,
-                                    VisibilityStats* stats = nullptr);
+ZRASTER_API RenderResult render_with_visibility(const Scene& scene, const RenderOptions& options,
+                                                VisibilityAlgorithm algorithm,
+                                                VisibilityStats* stats = nullptr);
 
 }  // namespace zraster

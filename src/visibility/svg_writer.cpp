@@ -9,12 +9,11 @@
 #include <zraster/precision.hpp>
 #include <zraster/svg.hpp>
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <iterator>
 
 #include "visibility/frame_context.hpp"
@@ -206,10 +205,18 @@ void drop_collinear(Outline& o) {
     }
 }
 
+// value with `decimals` digits after the point, correctly rounded (as printf does).
+std::string fixed(double value, int decimals) {
+    char text[64];
+    const int n = std::snprintf(text, sizeof text, "%.*f", decimals, value);
+    return n > 0 && n < int(sizeof text) ? std::string(text, std::size_t(n))
+                                         : std::to_string(value);
+}
+
 // A coordinate with at most `precision` decimals, trailing zeros dropped.
 void append_number(std::string& out, std::int64_t snapped, int precision) {
     const double value = double(snapped) / double(kSubpixelScale);
-    std::string text = fmt::format("{:.{}f}", value, precision);
+    std::string text = fixed(value, precision);
     if (text.find('.') != std::string::npos) {
         while (text.back() == '0') text.pop_back();
         if (text.back() == '.') text.pop_back();
@@ -267,14 +274,16 @@ std::size_t append_edges(std::string& out, const Outline& o, int precision) {
 }
 
 std::string hex(std::uint32_t rgb) {
-    return fmt::format("#{:06x}", rgb);
+    char text[8];
+    std::snprintf(text, sizeof text, "#%06x", static_cast<unsigned>(rgb & 0xffffffu));
+    return text;
 }
 std::string hex(const glm::vec3& c) {
     return hex(rgb8(c));
 }
 
 std::string number(float v) {
-    std::string text = fmt::format("{:.3f}", v);
+    std::string text = fixed(v, 3);
     while (text.back() == '0') text.pop_back();
     if (text.back() == '.') text.pop_back();
     return text;
@@ -342,29 +351,25 @@ std::string render_svg(const Scene& scene, const RenderOptions& options,
     out.reserve(outlines.size() * 48 + 512);
     const int w = options.width, h = options.height;
     out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-    out += fmt::format(
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"{0}\" height=\"{1}\" "
-        "viewBox=\"0 0 {0} {1}\">\n",
-        w, h);
-    out +=
-        fmt::format("<!-- zraster: {} polygons ({} after merging), {} order -->\n", polygons.size(),
-                    outlines.size(), o.order == SvgOptions::Order::Bsp ? "BSP" : "painter's");
-    out += fmt::format("<rect width=\"{}\" height=\"{}\" fill=\"{}\"/>\n", w, h,
-                       hex(options.background));
+    const std::string ws = std::to_string(w), hs = std::to_string(h);
+    out += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + ws +
+           "\" height=\"" + hs + "\" viewBox=\"0 0 " + ws + " " + hs + "\">\n";
+    out += "<!-- zraster: " + std::to_string(polygons.size()) + " polygons (" +
+           std::to_string(outlines.size()) + " after merging), " +
+           (o.order == SvgOptions::Order::Bsp ? "BSP" : "painter's") + " order -->\n";
+    out += "<rect width=\"" + ws + "\" height=\"" + hs + "\" fill=\"" + hex(options.background) +
+           "\"/>\n";
     // With edges the group's style is the edges' (an edge path is then just its d); fills carry
     // their own fill and seam stroke.
     const bool seams = o.seam_width > 0.0f;
     std::string seam_width;  // on each fill when it differs from the group's stroke width
     if (o.edges) {
-        out += fmt::format(
-            "<g fill=\"none\" stroke=\"{}\" stroke-width=\"{}\" stroke-linejoin=\"round\" "
-            "stroke-linecap=\"round\">\n",
-            hex(o.edge_color), number(o.edge_width));
+        out += "<g fill=\"none\" stroke=\"" + hex(o.edge_color) + "\" stroke-width=\"" +
+               number(o.edge_width) + "\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
         if (seams && number(o.seam_width) != number(o.edge_width))
-            seam_width = fmt::format(" stroke-width=\"{}\"", number(o.seam_width));
+            seam_width = " stroke-width=\"" + number(o.seam_width) + "\"";
     } else if (seams) {
-        out += fmt::format("<g stroke-width=\"{}\" stroke-linejoin=\"round\">\n",
-                           number(o.seam_width));
+        out += "<g stroke-width=\"" + number(o.seam_width) + "\" stroke-linejoin=\"round\">\n";
     } else {
         out += "<g>\n";
     }
@@ -389,25 +394,25 @@ std::string render_svg(const Scene& scene, const RenderOptions& options,
         if (all_edges) {
             // Its whole outline is mesh edges: the group's edge stroke draws them and covers the
             // seams, in one element.
-            out += fmt::format("\" fill=\"{}\"/>\n", fill);
+            out += "\" fill=\"" + fill + "\"/>\n";
             ++paths;
             ++edge_paths;
             i = end;
             continue;
         }
         if (seams)
-            out += fmt::format("\" fill=\"{0}\" stroke=\"{0}\"{1}/>\n", fill, seam_width);
+            out += "\" fill=\"" + fill + "\" stroke=\"" + fill + "\"" + seam_width + "/>\n";
         else if (o.edges)
-            out += fmt::format("\" fill=\"{}\" stroke=\"none\"/>\n", fill);
+            out += "\" fill=\"" + fill + "\" stroke=\"none\"/>\n";
         else
-            out += fmt::format("\" fill=\"{}\"/>\n", fill);
+            out += "\" fill=\"" + fill + "\"/>\n";
         ++paths;
         if (o.edges) {
             // Only sides on mesh edges: split lines, fan diagonals and clipping lines are not
             // edges of the model.
             std::string d;
             if (append_edges(d, outlines[i], o.precision) > 0) {
-                out += fmt::format("<path d=\"{}\"/>\n", d);
+                out += "<path d=\"" + d + "\"/>\n";
                 ++paths;
                 ++edge_paths;
             }
