@@ -53,7 +53,7 @@ struct LoadOptions {
 // an unknown format, malformed or truncated content, no triangles, or NaN/Inf coordinates, and
 // with LoadIsolation::WorkerProcess when the importer process crashes, times out or runs out of
 // memory.
-Scene load_scene(const std::filesystem::path& path, const LoadOptions& options = {});
+ZRASTER_API Scene load_scene(const std::filesystem::path& path, const LoadOptions& options = {});
 
 // A human-readable summary (for `zraster info`), one item per line, each line ending in '\n':
 // source, meshes (name, triangles, vertices, material, mesh-space bounds), instances, totals
