@@ -6,8 +6,10 @@
 #      asan, build-asan/),
 #   2. the multithreaded paths under ThreadSanitizer (scripts/sanitize.sh tsan, build-tsan/,
 #      with an instrumented oneTBB built from Debian's source package),
-#   3. a short run of every libFuzzer target, about 60 s in all (scripts/fuzz.sh, in the
-#      build-asan/ build), with the loaders in the command's worker-process configuration.
+#   3. a short run of every libFuzzer target, about 70 s in all (scripts/fuzz.sh, in the
+#      build-asan/ build), with the loaders in the command's worker-process configuration,
+#   4. zraster as a subproject of another CMake project, built as shared libraries
+#      (scripts/consumer_check.sh subproject; the installed-package check is a ctest test).
 # Then the main (Release) suite, whose ctest summary ends the output. Any failure makes the exit
 # status non-zero; a failed extra step is reported before the main suite runs.
 set -euo pipefail
@@ -35,6 +37,7 @@ if [ "${ZRASTER_QUICK:-0}" != 1 ]; then
     step "tsan multithreaded tests" bash "$root/scripts/sanitize.sh" tsan
     step "short fuzz runs" env ZRASTER_FUZZ_LOAD_ISOLATION=worker \
         bash "$root/scripts/fuzz.sh" "${ZRASTER_FUZZ_SECONDS:-7}"
+    step "shared-library subproject check" bash "$root/scripts/consumer_check.sh" subproject
     if [ -n "$failed" ]; then echo "test.sh: FAILED:$failed"; fi
 else
     echo "test.sh: ZRASTER_QUICK=1: sanitizer builds and fuzz runs skipped"

@@ -11,6 +11,8 @@
 #include <iterator>
 #include <string>
 
+#include <zraster/version.hpp>
+
 #include "support/test_support.hpp"
 
 namespace zraster::test {
@@ -38,6 +40,12 @@ TEST(Cli, HelpOnEverySubcommand) {
         EXPECT_EQ(r.exit_code, 0) << sub;
         EXPECT_NE(r.output.find("Usage"), std::string::npos) << sub;
     }
+}
+
+TEST(Cli, VersionIsTheLibrarysVersion) {
+    const CommandResult r = run("--version");
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_EQ(r.output, std::string("zraster ") + ZRASTER_VERSION_STRING + "\n");
 }
 
 TEST(Cli, MissingFileIsExitTwoWithTheFileNamed) {

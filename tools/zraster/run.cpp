@@ -2,6 +2,7 @@
 #include "run.hpp"
 
 #include <zraster/error.hpp>
+#include <zraster/version.hpp>
 
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
@@ -21,6 +22,7 @@ namespace zraster::cli {
 int run_zraster(std::vector<std::string> args) {
     CLI::App app{"zraster: an exact, fast CPU rasterizer", "zraster"};
     app.require_subcommand(0, 1);
+    app.set_version_flag("--version", std::string("zraster ") + kVersionString);
     RenderArguments render_args;
     add_render_command(app, render_args);
     InfoArguments info_args;
@@ -47,6 +49,8 @@ int run_zraster(std::vector<std::string> args) {
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
     } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         fmt::print(stderr, "zraster: {}\n", e.what());
