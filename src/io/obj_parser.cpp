@@ -32,6 +32,8 @@
 #include <zraster/error.hpp>
 
 #include "io/assimp_material.hpp"
+#include "io/obj_numbers.hpp"
+#include "io/obj_scan.hpp"
 #include "io/text_util.hpp"
 #include "io/texture_loader.hpp"
 #include "io/weld_vertices.hpp"
@@ -68,79 +70,19 @@ namespace zraster::io {
 
 namespace {
 
+// The file, its chunks and its numbers (obj_scan.hpp, obj_numbers.hpp).
+using obj::encode_index;
+using obj::FileBytes;
+using obj::has_control;
+using obj::IndexParse;
+using obj::is_blank;
+using obj::parse_float;
+using obj::parse_index;
+using obj::resolve_index;
+using obj::skip_blanks;
+using obj::skip_word;
+
 constexpr std::uint32_t kNone = ~0u;
-
-// ------------------------------------------------------------------------------------------
-// The file's bytes, mapped (no copy) or, where mapping fails, read, and followed by at least
-// kPadding zero bytes: the parsers read up to 8 bytes at a time without checking for the end.
-
-constexpr std::size_t kPadding = 64;
-
-class FileBytes {
-  public:
-    explicit FileBytes(const std::filesystem::path& path) {
-        const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-        if (fd < 0) throw InputError(path.string(), "cannot read: " + error_text(errno));
-        struct stat info {};
-        if (::fstat(fd, &info) != 0) {
-            const int error = errno;
-            ::close(fd);
-            throw InputError(path.string(), "cannot read: " + error_text(error));
-        }
-        size_ = static_cast<std::size_t>(info.st_size);
-        if (!map(fd)) read_all(fd, path);
-        ::close(fd);
-    }
-    FileBytes(const FileBytes&) = delete;
-    FileBytes& operator=(const FileBytes&) = delete;
-    ~FileBytes() {
-        if (map_ != nullptr) ::munmap(map_, map_size_);
-    }
-
-    const char* data() const {
-        return map_ != nullptr ? static_cast<const char*>(map_) : copy_.data();
-    }
-    std::size_t size() const { return size_; }
-
-  private:
-    static std::string error_text(int error) { return std::generic_category().message(error); }
-
-    // The file over the start of a zeroed anonymous mapping one page longer: the bytes after
-    // the file read as zeros, also when its size is a multiple of the page size.
-    bool map(int fd) {
-        const auto page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
-        map_size_ = (size_ + page - 1) / page * page + page;
-        void* area = ::mmap(nullptr, map_size_, PROT_READ, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-        if (area == MAP_FAILED) return false;
-        if (size_ > 0 && ::mmap(area, size_, PROT_READ, MAP_PRIVATE | MAP_FIXED | MAP_POPULATE, fd,
-                                0) == MAP_FAILED) {
-            ::munmap(area, map_size_);
-            return false;
-        }
-        map_ = area;
-        return true;
-    }
-
-    void read_all(int fd, const std::filesystem::path& path) {
-        copy_.assign(size_ + kPadding, '\0');
-        std::size_t done = 0;
-        while (done < size_) {
-            const ssize_t n = ::read(fd, copy_.data() + done, size_ - done);
-            if (n < 0 && errno == EINTR) continue;
-            if (n <= 0) {
-                const int error = n < 0 ? errno : EIO;
-                ::close(fd);
-                throw InputError(path.string(), "cannot read: " + error_text(error));
-            }
-            done += static_cast<std::size_t>(n);
-        }
-    }
-
-    void* map_ = nullptr;
-    std::size_t map_size_ = 0;
-    std::size_t size_ = 0;
-    std::vector<char> copy_;
-};
 
 // ------------------------------------------------------------------------------------------
 // Stage 1: chunks.
@@ -173,11 +115,6 @@ struct Problem {
     std::uint32_t line = 0;  // chunk-local
     std::string what;
 };
-
-// A negative (relative) index is stored as -1 - (count before the line in this chunk + index +
-// kRelativeBias), below every absolute index (written index - 1, at most 999'999'998).
-constexpr std::int64_t kRelativeBias = 1'000'000'000;
-
 struct Chunk {
     const char* begin = nullptr;
     const char* end = nullptr;
@@ -198,184 +135,6 @@ struct Chunk {
     std::optional<Problem> problem;
 };
 
-bool is_blank(char c) {
-    return c == ' ' || c == '\t';
-}
-
-const char* skip_blanks(const char* q, const char* e) {
-    while (q != e && is_blank(*q)) ++q;
-    return q;
-}
-
-const char* skip_word(const char* q, const char* e) {
-    while (q != e && !is_blank(*q)) ++q;
-    return q;
-}
-
-// Control characters other than tab: a lone CR (a line break to Assimp), NUL, form feed, ...
-bool has_control(const char* q, const char* e) {
-    for (; q != e; ++q) {
-        const auto c = static_cast<unsigned char>(*q);
-        if (c < 0x20 && c != '\t') return true;
-    }
-    return false;
-}
-
-// A number too large or too small for a float: strtof rounds it to infinity or to zero (or a
-// denormal) correctly, as from_chars would if it returned a value.
-std::optional<float> out_of_range_value(const char* s, const char* end) {
-    char buffer[128];
-    const std::size_t n = static_cast<std::size_t>(end - s);
-    if (n >= sizeof buffer) return std::nullopt;
-    std::memcpy(buffer, s, n);
-    buffer[n] = '\0';
-    return std::strtof(buffer, nullptr);
-}
-
-bool is_digit(char c) {
-    return static_cast<unsigned>(static_cast<unsigned char>(c) - '0') <= 9;
-}
-
-// Digits eight at a time (SWAR: the eight bytes as one little-endian integer).
-[[gnu::always_inline]] inline std::uint64_t load8(const char* p) {
-    std::uint64_t v;
-    std::memcpy(&v, p, 8);
-    return v;
-}
-
-// How many of the eight bytes are digits, counting from the first. (A byte's additions and
-// subtractions only carry into the bytes after it, which are not looked at once it is a
-// non-digit.)
-[[gnu::always_inline]] inline unsigned leading_digits(std::uint64_t v) {
-    const std::uint64_t outside =
-        ((v + 0x4646464646464646ull) | (v - 0x3030303030303030ull)) & 0x8080808080808080ull;
-    return outside == 0 ? 8 : static_cast<unsigned>(std::countr_zero(outside)) / 8;
-}
-
-// The value of the first n (1 to 8) digits: the others are shifted out and zeros (leading
-// digits of the number) shifted in, then the usual three multiply-and-shift steps.
-[[gnu::always_inline]] inline std::uint32_t digits_value(std::uint64_t v, unsigned n) {
-    std::uint64_t d = (v - 0x3030303030303030ull) << (8 * (8 - n));
-    d = d * 10 + (d >> 8);
-    d = ((d & 0x000000FF000000FFull) * 0x000F424000000064ull +
-         ((d >> 16) & 0x000000FF000000FFull) * 0x0000271000000001ull) >>
-        32;
-    return static_cast<std::uint32_t>(d);
-}
-
-constexpr std::uint64_t kPowersOf10[] = {1,      10,      100,      1000,     10000,
-                                         100000, 1000000, 10000000, 100000000};
-
-// Appends the digits at s to `value`, moving s past them; returns how many there were. The
-// value is only meaningful for at most 19 digits.
-[[gnu::always_inline]] inline int read_digits(const char*& s, std::uint64_t& value) {
-    int count = 0;
-    while (true) {
-        const std::uint64_t v = load8(s);
-        const unsigned n = leading_digits(v);
-        if (n == 0) return count;
-        value = value * kPowersOf10[n] + digits_value(v, n);
-        s += n;
-        count += static_cast<int>(n);
-        if (n < 8) return count;
-    }
-}
-
-// Powers of ten that float and double represent exactly.
-constexpr float kFloatPowers[] = {1e0f, 1e1f, 1e2f, 1e3f, 1e4f, 1e5f,
-                                  1e6f, 1e7f, 1e8f, 1e9f, 1e10f};
-constexpr double kDoublePowers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
-                                    1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
-                                    1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
-
-// The common case of parse_float, several times faster than from_chars: a plain decimal of at
-// most 19 digits whose value is one exact integer times or divided by one exact power of ten.
-// In float (integer below 2^24, power at most 10^10) that one operation rounds correctly; in
-// double (below 2^53, 10^22) too, and converting that double to float rounds correctly unless
-// it lies exactly halfway between two floats, which is left to from_chars. Returns false when
-// from_chars has to decide.
-[[gnu::always_inline]] inline bool parse_plain_float(const char*& q, const char* e, float& out) {
-    const char* s = q;
-    bool negative = false;
-    if (*s == '-' || *s == '+') {
-        negative = *s == '-';
-        ++s;
-    }
-    std::uint64_t digits = 0;
-    int count = read_digits(s, digits), exponent = 0;
-    if (*s == '.') {
-        ++s;
-        exponent = -read_digits(s, digits);
-        count -= exponent;
-    }
-    if (count == 0 || count > 19) return false;
-    if (*s == 'e' || *s == 'E') {
-        ++s;
-        bool negative_exponent = false;
-        if (*s == '+' || *s == '-') negative_exponent = *s++ == '-';
-        if (!is_digit(*s)) return false;
-        int written = 0;
-        for (; is_digit(*s); ++s) written = std::min(written * 10 + (*s - '0'), 100000);
-        exponent += negative_exponent ? -written : written;
-    }
-    if (s != e && !is_blank(*s) && *s != '#') return false;
-    float value = 0.0f;
-    if (digits == 0) {
-        value = 0.0f;
-    } else if (digits <= (std::uint64_t{1} << 24) && exponent >= -10 && exponent <= 10) {
-        const auto w = static_cast<float>(digits);
-        value = exponent < 0 ? w / kFloatPowers[-exponent] : w * kFloatPowers[exponent];
-    } else if (digits <= (std::uint64_t{1} << 53) && exponent >= -22 && exponent <= 22) {
-        const auto w = static_cast<double>(digits);
-        const double d = exponent < 0 ? w / kDoublePowers[-exponent] : w * kDoublePowers[exponent];
-        if (!(d >= 1.1754943508222875e-38 && d <= 3.4028234663852886e+38)) return false;
-        if ((std::bit_cast<std::uint64_t>(d) & 0x1FFFFFFF) == 0x10000000) return false;
-        value = static_cast<float>(d);
-    } else {
-        return false;
-    }
-    out = negative ? -value : value;
-    q = s;
-    return true;
-}
-
-// parse_float when parse_plain_float cannot decide.
-[[gnu::noinline]] bool parse_float_slowly(const char*& q, const char* e, float& out) {
-    const char* s = q;
-    bool negative = false;
-    if (*s == '-' || *s == '+') {
-        negative = *s == '-';
-        if (++s == e) return false;
-    } else if (*s == '.') {
-        return false;
-    }
-    const char c = *s;
-    if (!((c >= '0' && c <= '9') || c == '.' || c == 'n' || c == 'N' || c == 'i' || c == 'I'))
-        return false;
-    float value = 0.0f;
-    const auto [ptr, ec] = std::from_chars(s, e, value);
-    if (ec == std::errc::result_out_of_range) {
-        const std::optional<float> v = out_of_range_value(s, ptr);
-        if (!v) return false;
-        value = *v;
-    } else if (ec != std::errc()) {
-        return false;
-    }
-    if (ptr != e && !is_blank(*ptr) && *ptr != '#') return false;
-    out = negative ? -value : value;
-    q = ptr;
-    return true;
-}
-
-// One number: an optional sign, then what std::from_chars reads (decimal, exponent, nan, inf),
-// correctly rounded. The token must end at a blank, a '#' or the end of the line. A token
-// starting with '.' is refused: Assimp does not count it as a component.
-[[gnu::always_inline]] inline bool parse_float(const char*& q, const char* e, float& out) {
-    if (*q == '.') return false;
-    return parse_plain_float(q, e, out) || parse_float_slowly(q, e, out);
-}
-
-// The numbers of a v, vt or vn statement up to the end of the line or a '#'. Returns how many
 // (at most max), or -1 if a token is not a number or there are more than max.
 int parse_floats(const char* q, const char* e, float* out, int max) {
     int count = 0;
@@ -385,45 +144,6 @@ int parse_floats(const char* q, const char* e, float* out, int max) {
         if (count == max || !parse_float(q, e, out[count])) return -1;
         ++count;
     }
-}
-
-enum class IndexParse { Ok, Zero, Bad };
-
-// A face index: an optional '-', then 1 to 9 digits without a leading zero. (Assimp reads
-// indices with atoi and skips as many characters as the value has digits: "+1" or "01" would
-// be read twice.)
-[[gnu::always_inline]] inline IndexParse parse_index(const char*& q, std::int32_t& out) {
-    const bool negative = *q == '-';
-    q += negative;
-    if (!is_digit(*q)) return IndexParse::Bad;
-    if (*q == '0') {
-        ++q;
-        return is_digit(*q) ? IndexParse::Bad : IndexParse::Zero;
-    }
-    const std::uint64_t v = load8(q);
-    const unsigned n = leading_digits(v);
-    std::uint32_t value = digits_value(v, n);
-    q += n;
-    if (n == 8 && is_digit(*q)) {
-        value = value * 10 + static_cast<unsigned>(*q++ - '0');
-        if (is_digit(*q)) return IndexParse::Bad;
-    }
-    out = negative ? -static_cast<std::int32_t>(value) : static_cast<std::int32_t>(value);
-    return IndexParse::Ok;
-}
-
-std::int32_t encode_index(std::int32_t written, std::size_t count_before) {
-    if (written > 0) return written - 1;
-    const std::int64_t relative = static_cast<std::int64_t>(count_before) + written;
-    return static_cast<std::int32_t>(-1 - (relative + kRelativeBias));
-}
-
-// The global 0-based index, or -1 when it is outside [0, total).
-std::int64_t resolve_index(std::int32_t raw, std::size_t prefix, std::size_t total) {
-    std::int64_t index = raw;
-    if (raw < 0)
-        index = static_cast<std::int64_t>(prefix) + (-1 - std::int64_t{raw}) - kRelativeBias;
-    return index >= 0 && index < static_cast<std::int64_t>(total) ? index : -1;
 }
 
 class ChunkParser {
@@ -679,25 +399,14 @@ class ChunkParser {
     std::size_t positions_ = 0, uvs_ = 0, normals_ = 0;  // read so far
 };
 
-// Line-aligned chunks of about `target` bytes.
+// Line-aligned chunks, to be parsed.
 std::vector<Chunk> make_chunks(const char* data, std::size_t size) {
-    const std::size_t target =
-        std::clamp<std::size_t>(size / 256, std::size_t{256} << 10, std::size_t{16} << 20);
     std::vector<Chunk> chunks;
-    std::size_t at = 0;
-    while (at < size) {
-        std::size_t end = std::min(size, at + target);
-        if (end < size) {
-            const void* newline = std::memchr(data + end, '\n', size - end);
-            end = newline != nullptr
-                      ? static_cast<std::size_t>(static_cast<const char*>(newline) - data) + 1
-                      : size;
-        }
+    for (const obj::ByteRange& range : obj::line_aligned_chunks(data, size)) {
         Chunk chunk;
-        chunk.begin = data + at;
-        chunk.end = data + end;
+        chunk.begin = range.begin;
+        chunk.end = range.end;
         chunks.push_back(std::move(chunk));
-        at = end;
     }
     return chunks;
 }
