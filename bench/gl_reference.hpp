@@ -3,6 +3,7 @@
 // shaders, state and frame = clear + draw + glFinish). Used by llvmpipe_compare and by the
 // cross-check test, so both compare against the same GL code.
 #pragma once
+#include <zraster/bench_workload.hpp>
 #include <zraster/camera.hpp>
 #include <zraster/render.hpp>
 #include <zraster/scene.hpp>
@@ -13,11 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "tools/zraster/bench_command.hpp"
-
 namespace zraster::bench {
-
-using cli::BenchMode;
 
 // Thrown when no llvmpipe context can be made (no EGL_MESA_platform_surfaceless, no Mesa driver).
 class GlUnavailable : public std::runtime_error {

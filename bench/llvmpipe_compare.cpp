@@ -1,5 +1,5 @@
 // llvmpipe_compare: zraster against Mesa llvmpipe in ONE process, on the scenes, camera and
-// shading of ../shared/docs/BENCH-SCENES.md. Both render the same float geometry; batches of
+// shading of docs/bench-scenes.md. Both render the same float geometry; batches of
 // frames alternate between the two (interleaved rounds, the side that goes first alternating),
 // so machine noise hits both alike; each side's time is its best round (median of the batch).
 //
@@ -7,7 +7,10 @@
 //   SCENE: bunny (../shared/data/meshes/obj/bunny.obj) | mesh path | sphere:N | city:N[:SEED] |
 //          soup:N[:SEED]
 //   --check renders one frame of each case with both and compares the depth (and color) buffers.
+#include <zraster/bench_workload.hpp>
 #include <zraster/camera.hpp>
+#include <zraster/error.hpp>
+#include <zraster/load.hpp>
 #include <zraster/render.hpp>
 #include <zraster/scenes.hpp>
 
@@ -18,6 +21,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -28,7 +32,6 @@
 #include <vector>
 
 #include "bench/gl_reference.hpp"
-#include "tools/zraster/command_line.hpp"
 
 namespace zraster::bench {
 namespace {
@@ -144,6 +147,22 @@ double process_cpu_s() {
            1e-6 * double(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
 }
 
+// "WxH" with 1 <= W, H <= kMaxViewport.
+glm::ivec2 parse_size(const std::string& text) {
+    const std::size_t x = text.find('x');
+    int w = 0, h = 0;
+    if (x != std::string::npos) {
+        const auto r1 = std::from_chars(text.data(), text.data() + x, w);
+        const auto r2 = std::from_chars(text.data() + x + 1, text.data() + text.size(), h);
+        if (r1.ec == std::errc() && r1.ptr == text.data() + x && r2.ec == std::errc() &&
+            r2.ptr == text.data() + text.size() && w >= 1 && h >= 1 && w <= kMaxViewport &&
+            h <= kMaxViewport)
+            return {w, h};
+    }
+    throw InputError("--size", "expected WIDTHxHEIGHT with sides 1.." +
+                                   std::to_string(kMaxViewport) + ", got '" + text + "'");
+}
+
 std::string resolve_scene_path(const std::string& spec) {
     if (spec == "bunny") return std::string(ZRASTER_SHARED_DATA) + "/meshes/obj/bunny.obj";
     return spec;
@@ -154,7 +173,7 @@ std::vector<BenchMode> parse_modes(const std::string& list) {
     std::size_t start = 0;
     for (;;) {
         const std::size_t comma = list.find(',', start);
-        modes.push_back(cli::parse_bench_mode("mode", list.substr(start, comma - start)));
+        modes.push_back(parse_bench_mode("mode", list.substr(start, comma - start)));
         if (comma == std::string::npos) return modes;
         start = comma + 1;
     }
@@ -163,7 +182,8 @@ std::vector<BenchMode> parse_modes(const std::string& list) {
 std::unique_ptr<BenchScene> load_bench_scene(const std::string& spec) {
     auto s = std::make_unique<BenchScene>();
     s->spec = spec;
-    s->scene = cli::load_scene_or_procedural(resolve_scene_path(spec));
+    const std::string path = resolve_scene_path(spec);
+    s->scene = is_procedural_spec(path) ? make_procedural_scene(path) : load_scene(path);
     for (const std::string& w : s->scene.warnings) fmt::print("warning: {}\n", w);
     // The same framing render() does for an unset camera, computed once outside the timing.
     s->camera = fit_camera(s->scene.world_positions());
@@ -193,12 +213,12 @@ std::unique_ptr<BenchScene> load_bench_scene(const std::string& spec) {
 RenderResult render_zraster(Case& c) {
     // Materials are per scene and the modes of a scene share it: set them before each frame
     // (a few assignments, outside the timing).
-    cli::apply_bench_shading(c.scene->scene, c.mode);
+    apply_bench_shading(c.scene->scene, c.mode);
     return render(c.scene->scene, c.options);
 }
 
 double time_zraster_frame(Case& c) {
-    cli::apply_bench_shading(c.scene->scene, c.mode);
+    apply_bench_shading(c.scene->scene, c.mode);
     // One Renderer per case, as an application keeps one: llvmpipe keeps its context too.
     const auto t0 = Clock::now();
     c.renderer->render(c.scene->scene, c.options);
@@ -284,14 +304,14 @@ int run_timing(std::vector<Case>& cases, const Options& o) {
     for (const Case& c : cases) {
         const double gl = c.gl_times.best(), zr = c.zraster_times.best();
         fmt::print("| {} | {} | {} | {:.2f} | {:.2f} | {:.2f} |\n", c.scene->spec,
-                   bench_mode_name(c.mode), cli::effective_thread_count(c.options.threads), gl, zr,
+                   bench_mode_name(c.mode), effective_thread_count(c.options.threads), gl, zr,
                    gl / zr);
     }
     return 0;
 }
 
 int run(const Options& o) {
-    const glm::ivec2 size = cli::parse_size("--size", o.size, kMaxViewport);
+    const glm::ivec2 size = parse_size(o.size);
     if (o.rounds < 1 || o.frames < 1 || o.warmup < 0 || o.threads < 0)
         throw InputError("", "--rounds and --frames must be >= 1, --warmup and --threads >= 0");
     if (o.no_avx512) hwy::DisableTargets(HWY_AVX2 - 1);  // the targets better than AVX2
@@ -301,7 +321,7 @@ int run(const Options& o) {
     fmt::print("GL_RENDERER: {}\nGL_VERSION: {}\nLP_NUM_THREADS={}, zraster threads {}\n",
                context.renderer(), context.version(),
                o.threads > 0 ? std::to_string(o.threads) : "(llvmpipe default)",
-               cli::effective_thread_count(o.threads));
+               effective_thread_count(o.threads));
 
     std::vector<std::unique_ptr<BenchScene>> scenes;
     std::vector<Case> cases;
@@ -321,7 +341,7 @@ int run(const Options& o) {
             Case c;
             c.scene = scene;
             c.mode = mode;
-            c.options = cli::bench_render_options(mode, size.x, size.y, o.threads, !o.no_cull);
+            c.options = bench_render_options(mode, size.x, size.y, o.threads, !o.no_cull);
             c.options.camera = scene->camera;
             c.gl = std::make_unique<GlRenderer>(*scene->gl_mesh, mode, size.x, size.y, !o.no_cull,
                                                 scene->camera);

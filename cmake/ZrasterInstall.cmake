@@ -42,6 +42,11 @@ endforeach()
 if(BUILD_SHARED_LIBS)
   string(APPEND ZRASTER_PC_CFLAGS " -DZRASTER_SHARED")
 endif()
+# The prefix is found relative to the .pc file itself, so an installed tree can be moved (and
+# `cmake --install --prefix P` gives files that are right for P).
+file(RELATIVE_PATH ZRASTER_PC_UP "/prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "/prefix")
+string(REGEX REPLACE "/$" "" ZRASTER_PC_UP "${ZRASTER_PC_UP}")
+set(ZRASTER_PC_PREFIX "\${pcfiledir}/${ZRASTER_PC_UP}")
 if(IS_ABSOLUTE "${CMAKE_INSTALL_LIBDIR}")
   set(ZRASTER_PC_LIBDIR "${CMAKE_INSTALL_LIBDIR}")
 else()

@@ -1,7 +1,9 @@
 // zraster against Mesa llvmpipe, pixel for pixel: the same float geometry and MVP drawn by both
 // (bench/gl_reference.cpp draws it as ../shared/tools/glbench does) must cover the same pixels,
 // up to edge pixels where the two break ties differently, at the same depth.
+#include <zraster/bench_workload.hpp>
 #include <zraster/camera.hpp>
+#include <zraster/load.hpp>
 #include <zraster/render.hpp>
 #include <zraster/scenes.hpp>
 
@@ -13,12 +15,9 @@
 
 #include "bench/gl_reference.hpp"
 #include "support/test_support.hpp"
-#include "tools/zraster/command_line.hpp"
 
 namespace zraster::test {
 namespace {
-
-using bench::BenchMode;
 
 constexpr int kWidth = 320, kHeight = 240;
 
@@ -50,9 +49,9 @@ struct Outcome {
 };
 
 Outcome render_both(const std::string& spec, BenchMode mode) {
-    Scene scene = cli::load_scene_or_procedural(spec);
-    cli::apply_bench_shading(scene, mode);
-    RenderOptions options = cli::bench_render_options(mode, kWidth, kHeight, 1, true);
+    Scene scene = is_procedural_spec(spec) ? make_procedural_scene(spec) : load_scene(spec);
+    apply_bench_shading(scene, mode);
+    RenderOptions options = bench_render_options(mode, kWidth, kHeight, 1, true);
     const Camera camera = fit_camera(scene.world_positions());
     options.camera = camera;
 
