@@ -32,6 +32,7 @@ set(ZRASTER_INCLUDE_DIRS $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>
 # zraster_module_NAME of src/NAME/*.cpp. DEPS name the modules it builds on (the layering of
 # docs/architecture.md); PRIVATE_DEPS the external libraries its sources use.
 set_property(GLOBAL PROPERTY ZRASTER_MODULES "")
+file(WRITE ${PROJECT_BINARY_DIR}/module_layers.txt "")
 function(zraster_module name)
   cmake_parse_arguments(M "" "" "DEPS;PRIVATE_DEPS" ${ARGN})
   file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/${name}/*.cpp)
@@ -52,6 +53,9 @@ function(zraster_module name)
   target_link_libraries(${target} PUBLIC glm::glm ${module_deps}
                                   PRIVATE zraster_flags ${M_PRIVATE_DEPS})
   set_property(GLOBAL APPEND PROPERTY ZRASTER_MODULES ${name})
+  # The layering the tests check on the sources (tests/layering/check_layering.sh).
+  string(REPLACE ";" " " deps_line "${M_DEPS}")
+  file(APPEND ${PROJECT_BINARY_DIR}/module_layers.txt "${name} ${deps_line}\n")
   set_property(GLOBAL PROPERTY ZRASTER_MODULE_DEPS_${name} "${M_DEPS}")
   set_property(GLOBAL PROPERTY ZRASTER_MODULE_EXTERNAL_${name} "${M_PRIVATE_DEPS}")
 endfunction()

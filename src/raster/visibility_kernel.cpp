@@ -10,10 +10,9 @@
 #include <type_traits>
 
 #include "raster/visibility_kernel.hpp"
-#include "render/shade_kernel.hpp"
 
 // Per target, like this file.
-#include "render/phong_lanes-inl.h"
+#include "shade/phong_lanes-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace zraster::detail::HWY_NAMESPACE {

@@ -16,12 +16,11 @@
 #include <cstdint>
 
 #include "raster/setup_lanes.hpp"
+#include "shade/phong_kernel.hpp"
 
 namespace zraster::detail {
 
 inline constexpr std::uint32_t kNoTriangle = 0xffffffffu;
-
-struct PhongConstants;  // render/shade_kernel.hpp
 
 // Tile-local buffers with row stride kStride and padding, so a vector may run past the end of
 // a row (into the next row or the padding) without leaving the buffer.
@@ -119,6 +118,12 @@ struct BlockJob {
 // Returns the number of fragments that passed the depth test. D32F only.
 int visibility_block(const BlockJob& job, TileBuffers& tile);
 int visibility_block_scalar(const BlockJob& job, TileBuffers& tile);
+
+// The scalar twin of the kernel's forward shading (forward_shading_scalar.cpp): the corner
+// attributes interpolated at (b1, b2) as store_interpolated does, lit, as RGBA8.
+std::uint32_t shade_interpolated_scalar(const PhongConstants& constants,
+                                        const CornerAttributes& corners, const glm::vec3* piece,
+                                        float b1, float b2);
 
 // Set-up lanes whose triangles are single jobs (setup_lanes with a JobWindow: small triangles,
 // one kernel job each), with what their jobs need beyond the setup. The tile rasterizer spent

@@ -1,24 +1,27 @@
 // The SIMD Phong lighting of vectors of pixels, shared by the deferred row shader
-// (shade_kernel.cpp) and the visibility kernel's forward shading (visibility_kernel.cpp). It
-// reproduces the scalar path (unit normal, two-sided flip, evaluate_lighting, combine, 8-bit
-// rounding) operation for operation.
+// (render/shade_kernel.cpp), the batch shader (phong_kernel.cpp) and the visibility kernel's
+// forward shading (visibility_kernel.cpp). It reproduces the scalar path (unit normal, two-sided
+// flip, evaluate_lighting, combine, 8-bit rounding) operation for operation.
 //
 // Highway "-inl" header: included once per instruction set by files that use foreach_target.
-#if defined(ZRASTER_RENDER_PHONG_LANES_INL_H_) == defined(HWY_TARGET_TOGGLE)
-#ifdef ZRASTER_RENDER_PHONG_LANES_INL_H_
-#undef ZRASTER_RENDER_PHONG_LANES_INL_H_
+#if defined(ZRASTER_SHADE_PHONG_LANES_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef ZRASTER_SHADE_PHONG_LANES_INL_H_
+#undef ZRASTER_SHADE_PHONG_LANES_INL_H_
 #else
-#define ZRASTER_RENDER_PHONG_LANES_INL_H_
+#define ZRASTER_SHADE_PHONG_LANES_INL_H_
 #endif
 
 #include <hwy/highway.h>
 
-#include "render/shade_kernel.hpp"
+#include "shade/phong_kernel.hpp"
 #include "simd/lane_pairs-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace zraster::detail::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
+
+// Vectors shaded together (see Pair): four lit the fastest on AVX2 and AVX-512 (eight spill).
+constexpr int kShadeGroup = 4;
 
 // The lighting works on one vector of pixels (X = hn::Vec<D>) or on a Pair of them (see
 // lane_pairs-inl.h): one vector's lighting is a long dependency chain (square root, division,
