@@ -1,0 +1,177 @@
+// Materials of an OBJ file (see obj_materials.hpp).
+#include "io/obj_materials.hpp"
+
+#include "io/assimp_material.hpp"
+#include "io/obj_scan.hpp"
+#include "io/text_util.hpp"
+
+#include <assimp/material.h>
+#include <assimp/scene.h>
+#include <assimp/Importer.hpp>
+
+#include <fstream>
+#include <system_error>
+
+namespace zraster::io::obj {
+
+namespace {
+
+// `line` is the rest of a line after `keyword` and blanks, when the trimmed line starts with it.
+bool directive(const std::string& line, std::string_view keyword, std::string& argument) {
+    const std::string_view text = trim(line);
+    if (!text.starts_with(keyword) || text.size() <= keyword.size()) return false;
+    if (text[keyword.size()] != ' ' && text[keyword.size()] != '\t') return false;
+    argument = std::string(trim(text.substr(keyword.size())));
+    return !argument.empty();
+}
+
+bool is_file(const std::filesystem::path& p) {
+    std::error_code ec;
+    return std::filesystem::is_regular_file(p, ec);
+}
+
+// The `newmtl` names of an MTL file as both Assimp's MTL reader and the Assimp path's library
+// check take them. nullopt where they could differ ("Newmtl", an indented newmtl, a lone CR),
+// or where Assimp would apply a statement before the first newmtl to the current material.
+std::optional<std::vector<std::string>> library_materials(const std::filesystem::path& mtl) {
+    std::ifstream in(mtl, std::ios::binary);
+    std::string line, name;
+    std::vector<std::string> names;
+    while (std::getline(in, line)) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (has_control(line.data(), line.data() + line.size())) return std::nullopt;
+        if (line.empty() || line[0] == '#') continue;
+        const bool checked = directive(line, "newmtl", name);
+        const bool read = line.size() >= 2 && (line[0] == 'n' || line[0] == 'N') && line[1] == 'e';
+        if (checked != read) return std::nullopt;
+        if (read)
+            names.push_back(name);
+        else if (names.empty() && !is_blank(line[0]))
+            return std::nullopt;
+    }
+    return names;
+}
+
+}  // namespace
+
+std::optional<ObjFallback> read_statements(const std::filesystem::path& obj_path,
+                                           const std::vector<Chunk>& chunks, Statements& out) {
+    const std::filesystem::path dir = obj_path.parent_path();
+    std::filesystem::path substitute = obj_path;
+    substitute.replace_extension(".mtl");
+    std::map<std::filesystem::path, std::vector<std::string>> read;
+    for (const Chunk& chunk : chunks) {
+        for (const Event& e : chunk.events) {
+            out.events.push_back(&e);
+            if (e.kind != EventKind::Library) continue;
+            LibraryLoad l{e.text, std::nullopt, false, {}};
+            if (is_file(dir / e.text)) {
+                l.file = dir / e.text;
+            } else if (is_file(substitute)) {
+                l.file = substitute;
+                l.substitute = true;
+            }
+            if (l.file) {
+                auto it = read.find(*l.file);
+                if (it == read.end()) {
+                    std::optional<std::vector<std::string>> names = library_materials(*l.file);
+                    if (!names)
+                        return ObjFallback{chunk.first_line + e.line + 1,
+                                           "material library " + l.file->string() +
+                                               " that Assimp may read differently"};
+                    it = read.emplace(*l.file, std::move(*names)).first;
+                }
+                l.materials = it->second;
+            }
+            out.libraries.push_back(std::move(l));
+        }
+    }
+    return std::nullopt;
+}
+
+Materials::Materials(const std::filesystem::path& obj_path, const Statements& statements,
+                     Scene& scene, std::vector<std::string>& warnings)
+    : path_(obj_path),
+      events_(statements.events),
+      libraries_(statements.libraries),
+      scene_(scene),
+      warnings_(warnings) {
+    // As scan_obj_material_libraries: each library name once.
+    std::filesystem::path substitute = obj_path;
+    substitute.replace_extension(".mtl");
+    std::set<std::string> seen;
+    for (const LibraryLoad& l : libraries_) {
+        if (!seen.insert(l.name).second) continue;
+        if (l.file && !l.substitute) {
+            defined_.insert(l.materials.begin(), l.materials.end());
+        } else if (l.file) {
+            warnings_.push_back("material library '" + l.name + "' not found, using '" +
+                                substitute.filename().string() + "'");
+            missing_library_ = true;
+            defined_.insert(l.materials.begin(), l.materials.end());
+        } else {
+            warnings_.push_back("material library '" + l.name +
+                                "' not found, using the default material");
+            missing_library_ = true;
+        }
+    }
+}
+
+Materials::~Materials() = default;
+
+std::optional<std::uint32_t> Materials::index_of(const std::optional<std::string>& name) {
+    if (!name) return 0;
+    if (auto it = map_.find(*name); it != map_.end()) return it->second;
+    std::uint32_t index = 0;
+    if (*name == AI_DEFAULT_MATERIAL_NAME || *name == "%%%DEFAULT") {
+        index = 0;  // Assimp's placeholders
+    } else if (!defined_.contains(*name)) {
+        if (!missing_library_)
+            warnings_.push_back("material '" + *name +
+                                "' is not defined, using the default material");
+    } else {
+        const aiMaterial* source = assimp_material(*name);
+        if (source == nullptr) return std::nullopt;
+        if (!is_placeholder_material(*source)) {
+            Material material = convert_material(*source);
+            if (auto reference = base_color_texture_reference(*source))
+                material.base_color_texture = textures_->load(*reference);
+            index = static_cast<std::uint32_t>(scene_.materials.size());
+            scene_.materials.push_back(std::move(material));
+        }
+    }
+    map_[*name] = index;
+    return index;
+}
+
+// The material as Assimp's OBJ importer makes it: it reads the libraries from a generated OBJ
+// that repeats the file's mtllib (resolved) and usemtl statements in order.
+const aiMaterial* Materials::assimp_material(const std::string& name) {
+    if (!importer_) {
+        std::size_t library = 0;
+        std::string text;
+        for (const Event* e : events_) {
+            if (e->kind == EventKind::Library) {
+                const LibraryLoad& l = libraries_[library++];
+                if (l.file) text += "mtllib " + std::filesystem::absolute(*l.file).string() + "\n";
+            } else if (e->kind == EventKind::Material) {
+                text += "usemtl " + e->text + "\n";
+            }
+        }
+        text += "v 0 0 0\nf 1 1 1\n";
+        importer_ = std::make_unique<Assimp::Importer>();
+        try {
+            ai_ = importer_->ReadFileFromMemory(text.data(), text.size(), 0, "obj");
+        } catch (const std::exception&) {
+            ai_ = nullptr;
+        }
+        if (ai_ != nullptr) textures_.emplace(*ai_, path_, warnings_);
+    }
+    if (ai_ == nullptr) return nullptr;
+    for (unsigned i = 0; i < ai_->mNumMaterials; ++i)
+        if (ai_->mMaterials[i] != nullptr && material_name(*ai_->mMaterials[i]) == name)
+            return ai_->mMaterials[i];
+    return nullptr;
+}
+
+}  // namespace zraster::io::obj

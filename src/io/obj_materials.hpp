@@ -1,0 +1,87 @@
+// Materials: the MTL libraries an OBJ file names, and the scene's materials made from them.
+//
+// The MTL files themselves are read by Assimp, so that a material is exactly what the Assimp path
+// makes of it: on first use of a material, Assimp reads a small generated OBJ that repeats the
+// file's mtllib (resolved) and usemtl statements in order, and its material is converted as the
+// Assimp path converts it. What is decided here is what Assimp's importer does not tell: which
+// file each mtllib statement reads (as written, relative to the OBJ's directory, else
+// "<obj name>.mtl"), the names it defines (which change the current material, see
+// obj_structure.hpp), and the warnings the Assimp path gives for missing libraries and undefined
+// materials (as scan_obj_material_libraries and load_scene's MaterialTable give them).
+#pragma once
+#include <zraster/scene.hpp>
+
+#include "io/obj_chunk_parser.hpp"
+#include "io/obj_parser.hpp"
+#include "io/texture_loader.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+struct aiMaterial;
+struct aiScene;
+namespace Assimp {
+class Importer;
+}
+
+namespace zraster::io::obj {
+
+// What Assimp reads for one mtllib statement: the library as named (relative to the OBJ's
+// directory), else "<obj name>.mtl", else nothing; and the materials it defines, in order.
+struct LibraryLoad {
+    std::string name;
+    std::optional<std::filesystem::path> file;
+    bool substitute = false;  // file is "<obj name>.mtl"
+    std::vector<std::string> materials;
+};
+
+// The o, g, usemtl and mtllib statements of the whole file, in order, and what each mtllib
+// statement reads.
+struct Statements {
+    std::vector<const Event*> events;    // into the chunks
+    std::vector<LibraryLoad> libraries;  // one per mtllib statement
+};
+
+// Collects the statements of `chunks` (whose first_line is set) and resolves and scans the
+// libraries, each file once. Returns the mtllib line when a library's `newmtl` names could be
+// read differently by Assimp's MTL reader and the Assimp path's library check.
+std::optional<ObjFallback> read_statements(const std::filesystem::path& obj_path,
+                                           const std::vector<Chunk>& chunks, Statements& out);
+
+// The scene's materials, made on first use of each usemtl name. The constructor adds the
+// warnings for missing libraries.
+class Materials {
+  public:
+    Materials(const std::filesystem::path& obj_path, const Statements& statements, Scene& scene,
+              std::vector<std::string>& warnings);
+    ~Materials();
+    Materials(const Materials&) = delete;
+    Materials& operator=(const Materials&) = delete;
+
+    // Our index for a usemtl name (nullopt: none), converting it on first use. Returns
+    // nullopt when Assimp cannot read the material libraries (its error is then the file's).
+    std::optional<std::uint32_t> index_of(const std::optional<std::string>& name);
+
+  private:
+    const aiMaterial* assimp_material(const std::string& name);
+
+    std::filesystem::path path_;
+    const std::vector<const Event*>& events_;
+    const std::vector<LibraryLoad>& libraries_;
+    Scene& scene_;
+    std::vector<std::string>& warnings_;
+    std::set<std::string> defined_;
+    bool missing_library_ = false;
+    std::map<std::string, std::uint32_t> map_;
+    std::unique_ptr<Assimp::Importer> importer_;
+    const aiScene* ai_ = nullptr;
+    std::optional<TextureLoader> textures_;
+};
+
+}  // namespace zraster::io::obj
