@@ -1,32 +1,15 @@
-// The fast OBJ reader (see obj_parser.hpp). Stages:
-//  1. The file is mapped and cut into line-aligned chunks, parsed in parallel: each chunk keeps
-//     its own v/vt/vn arrays, faces (corner indices as written, negative ones relative to the
-//     chunk's own counts) and the o/g/usemtl/mtllib statements between them.
-//  2. Prefix sums give every chunk its global offsets; a second parallel pass resolves and
-//     range-checks the corner indices in place.
-//  3. The statements replay Assimp's object/mesh bookkeeping in file order, which cuts the face
-//     sequence into meshes.
-//  4. Meshes are built in parallel: one vertex per distinct (position, normal, uv) value, in
-//     first-corner order, exactly as welding Assimp's per-corner vertices gives; quads are split
-//     as Assimp's triangulation splits them.
-//  5. Materials: the MTL libraries are resolved and read by Assimp (from a small generated OBJ
-//     that repeats the file's mtllib and usemtl statements in order), then converted as the
-//     Assimp path converts them.
-//
-// How Assimp 5.2's OBJ importer reads a line (the behaviour reproduced here, found by feeding it
-// small files): the first character picks the statement; lines starting with a blank are
-// ignored; `o` names an object by the first word of the rest, reusing an existing object of that
-// name without changing the current mesh; `g` creates an object named by the whole rest of the
-// line (trailing blanks included) when it differs from the active group; `usemtl` (trimmed name)
-// starts a mesh named after the material when the current mesh has faces and another material,
-// otherwise it sets the current mesh's material; reading an MTL library makes its last material
-// the current one (so later objects get it) and gives each new material to the current mesh;
-// faces before any object create "defaultobject"; `l` and `p` elements count as faces of the
-// current mesh but are dropped later; a non-finite texture coordinate reads as 0.
-//
-// Welding: each v, vt and vn value gets the index of the first equal value (after
-// normalisation, the v flip, -0 == +0), and a mesh vertex is one distinct triple of those, so
-// that equal values written twice weld as they do in the Assimp path.
+// Reading an OBJ file (see obj_parser.hpp, and docs/obj-format.md for the format as read): the
+// steps, in order. Each part has its own file:
+//   obj_scan          the file's bytes, cut into line-aligned chunks
+//   obj_numbers       floats and face indices
+//   obj_chunk_parser  the lines of each chunk, chunks in parallel
+//   (here)            chunk offsets; corner indices resolved and values gathered, in parallel
+//   obj_materials     the mtllib statements, the libraries they read, the scene's materials
+//   obj_structure     objects, groups and meshes, as the statements replayed in file order give
+//   obj_mesh_builder  meshes built in parallel, welded and triangulated as the Assimp path does
+// A step that finds an error of the file throws an InputError; one that finds a line the reader
+// leaves to Assimp returns an ObjFallback, which read_obj returns. docs/obj-format.md gives the
+// order in which problems are reported.
 #include "io/obj_parser.hpp"
 
 #include <zraster/error.hpp>
@@ -42,147 +25,173 @@
 #include <tbb/parallel_for.h>
 
 #include <cstring>
-#include <optional>
 
 namespace zraster::io {
 
-std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
-                                          const LoadOptions& options) {
-    const std::string file = path.string();
-    const obj::FileBytes bytes(path);
-    if (bytes.size() == 0) throw InputError(file, "empty file");
-    if (bytes.size() < 16) return ObjFallback{0, "Assimp refuses OBJ files under 16 bytes"};
+namespace obj {
+namespace {
 
-    // Stage 1.
-    std::vector<obj::Chunk> chunks = obj::parse_chunks(bytes.data(), bytes.size());
+std::string at_line(std::size_t line, const std::string& what) {
+    return "line " + std::to_string(line) + ": " + what;
+}
 
+// Where each chunk's values and faces start among the file's: how many the chunks before it
+// hold (one more entry than chunks, the last one the file's total).
+struct Offsets {
+    std::vector<std::size_t> positions, uvs, normals, faces;
+};
+
+// Gives each chunk its first line and its offsets. The first chunk that stopped at a problem
+// stops reading: its error is thrown, or its fallback returned.
+std::optional<ObjFallback> count_chunks(std::vector<Chunk>& chunks, const std::string& file,
+                                        Offsets& offsets) {
     const std::size_t n = chunks.size();
-    std::vector<std::size_t> v_prefix(n + 1), t_prefix(n + 1), n_prefix(n + 1), face_prefix(n + 1);
+    offsets.positions.assign(n + 1, 0);
+    offsets.uvs.assign(n + 1, 0);
+    offsets.normals.assign(n + 1, 0);
+    offsets.faces.assign(n + 1, 0);
     for (std::size_t k = 0; k < n; ++k) {
-        obj::Chunk& c = chunks[k];
+        Chunk& c = chunks[k];
         if (k > 0) c.first_line = chunks[k - 1].first_line + chunks[k - 1].lines;
         if (c.problem) {
             const std::size_t line = c.first_line + c.problem->line + 1;
-            if (c.problem->error)
-                throw InputError(file, "line " + std::to_string(line) + ": " + c.problem->what);
+            if (c.problem->error) throw InputError(file, at_line(line, c.problem->what));
             return ObjFallback{line, c.problem->what};
         }
-        v_prefix[k + 1] = v_prefix[k] + c.positions.size() / 3;
-        t_prefix[k + 1] = t_prefix[k] + c.uvs.size() / 2;
-        n_prefix[k + 1] = n_prefix[k] + c.normals.size() / 3;
-        face_prefix[k + 1] = face_prefix[k] + c.faces.size();
+        offsets.positions[k + 1] = offsets.positions[k] + c.positions.size() / 3;
+        offsets.uvs[k + 1] = offsets.uvs[k] + c.uvs.size() / 2;
+        offsets.normals[k + 1] = offsets.normals[k] + c.normals.size() / 3;
+        offsets.faces[k + 1] = offsets.faces[k] + c.faces.size();
     }
-    const std::size_t total_v = v_prefix[n], total_t = t_prefix[n], total_n = n_prefix[n];
-    if (total_v >= obj::kNone || total_t >= obj::kNone || total_n >= obj::kNone)
+    if (offsets.positions[n] >= kNone || offsets.uvs[n] >= kNone || offsets.normals[n] >= kNone)
         return ObjFallback{0, "more than 2^32 - 1 vertices"};
+    return std::nullopt;
+}
 
-    // Stage 2: resolve indices in place, gather the attributes.
-    obj::Attributes attributes;
-    attributes.positions.resize(total_v);
-    attributes.uvs.resize(total_t);
-    attributes.normals.resize(total_n);
-    struct Resolution {
-        std::optional<std::pair<std::uint32_t, std::string>> error, fallback;  // line, what
-    };
-    std::vector<Resolution> resolutions(n);
-    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t k) {
-        obj::Chunk& c = chunks[k];
-        // The arrays may be empty: memcpy from a null data() is undefined even for 0 bytes
-        // (UBSan, found by fuzz_load_obj).
-        if (!c.positions.empty())
-            std::memcpy(attributes.positions.data() + v_prefix[k], c.positions.data(),
-                        c.positions.size() * sizeof(float));
-        if (!c.uvs.empty())
-            std::memcpy(attributes.uvs.data() + t_prefix[k], c.uvs.data(),
-                        c.uvs.size() * sizeof(float));
-        if (!c.normals.empty())
-            std::memcpy(attributes.normals.data() + n_prefix[k], c.normals.data(),
-                        c.normals.size() * sizeof(float));
-        Resolution& r = resolutions[k];
-        if (c.uv_slot_without_uvs && t_prefix[k] == 0)
-            r.fallback = {*c.uv_slot_without_uvs,
-                          "texture index before any texture coordinate (Assimp reads it as a "
-                          "normal index)"};
-        for (const obj::Face& face : c.faces) {
-            for (std::size_t corner = face.first; corner < face.first + face.corners; ++corner) {
-                const std::int64_t v = obj::resolve_index(c.corner_v[corner], v_prefix[k], total_v);
-                if (v < 0) {
-                    const std::int32_t raw = c.corner_v[corner];
-                    r.error = {face.line,
-                               raw >= 0
-                                   ? "vertex index out of range (" + std::to_string(raw + 1) +
-                                         "; the file has " + std::to_string(total_v) + " vertices)"
-                                   : "vertex index out of range (a negative index before "
-                                     "the first vertex)"};
-                    return;
-                }
-                c.corner_v[corner] = static_cast<std::int32_t>(v);
-                if (face.attributes & obj::kHasUv) {
-                    const std::int64_t t =
-                        obj::resolve_index(c.corner_t[corner], t_prefix[k], total_t);
-                    if (t < 0 && !r.fallback)
-                        r.fallback = {face.line, "texture coordinate index out of range"};
-                    c.corner_t[corner] = static_cast<std::int32_t>(t);
-                }
-                if (face.attributes & obj::kHasNormal) {
-                    const std::int64_t m =
-                        obj::resolve_index(c.corner_n[corner], n_prefix[k], total_n);
-                    if (m < 0 && !r.fallback) r.fallback = {face.line, "normal index out of range"};
-                    c.corner_n[corner] = static_cast<std::int32_t>(m);
-                }
+// Chunk k's values, copied to their place among the file's.
+void gather_values(const Chunk& c, std::size_t k, const Offsets& offsets, Attributes& attributes) {
+    // The arrays may be empty: memcpy from a null data() is undefined even for 0 bytes (UBSan,
+    // found by fuzz_load_obj).
+    if (!c.positions.empty())
+        std::memcpy(attributes.positions.data() + offsets.positions[k], c.positions.data(),
+                    c.positions.size() * sizeof(float));
+    if (!c.uvs.empty())
+        std::memcpy(attributes.uvs.data() + offsets.uvs[k], c.uvs.data(),
+                    c.uvs.size() * sizeof(float));
+    if (!c.normals.empty())
+        std::memcpy(attributes.normals.data() + offsets.normals[k], c.normals.data(),
+                    c.normals.size() * sizeof(float));
+}
+
+// What resolving a chunk's corner indices found: its first error and its first fallback.
+struct Resolution {
+    std::optional<std::pair<std::uint32_t, std::string>> error, fallback;  // line, what
+};
+
+// Replaces chunk k's corner indices by global ones; an out-of-range vertex index is an error, an
+// out-of-range uv or normal index (which Assimp reads in its own way) a fallback.
+Resolution resolve_corners(Chunk& c, std::size_t k, const Offsets& offsets) {
+    const std::size_t total_v = offsets.positions.back(), total_t = offsets.uvs.back(),
+                      total_n = offsets.normals.back();
+    Resolution r;
+    if (c.uv_slot_without_uvs && offsets.uvs[k] == 0)
+        r.fallback = {*c.uv_slot_without_uvs,
+                      "texture index before any texture coordinate (Assimp reads it as a "
+                      "normal index)"};
+    for (const Face& face : c.faces) {
+        for (std::size_t corner = face.first; corner < face.first + face.corners; ++corner) {
+            const std::int64_t v = resolve_index(c.corner_v[corner], offsets.positions[k], total_v);
+            if (v < 0) {
+                const std::int32_t raw = c.corner_v[corner];
+                r.error = {face.line, raw >= 0 ? "vertex index out of range (" +
+                                                     std::to_string(raw + 1) + "; the file has " +
+                                                     std::to_string(total_v) + " vertices)"
+                                               : "vertex index out of range (a negative index "
+                                                 "before the first vertex)"};
+                return r;
+            }
+            c.corner_v[corner] = static_cast<std::int32_t>(v);
+            if (face.attributes & kHasUv) {
+                const std::int64_t t = resolve_index(c.corner_t[corner], offsets.uvs[k], total_t);
+                if (t < 0 && !r.fallback)
+                    r.fallback = {face.line, "texture coordinate index out of range"};
+                c.corner_t[corner] = static_cast<std::int32_t>(t);
+            }
+            if (face.attributes & kHasNormal) {
+                const std::int64_t m =
+                    resolve_index(c.corner_n[corner], offsets.normals[k], total_n);
+                if (m < 0 && !r.fallback) r.fallback = {face.line, "normal index out of range"};
+                c.corner_n[corner] = static_cast<std::int32_t>(m);
             }
         }
+    }
+    return r;
+}
+
+// Every chunk's values gathered and corner indices resolved, in parallel; then the first error
+// (thrown) and else the first fallback, in file order.
+std::optional<ObjFallback> resolve_indices(std::vector<Chunk>& chunks, const Offsets& offsets,
+                                           const std::string& file, Attributes& attributes) {
+    attributes.positions.resize(offsets.positions.back());
+    attributes.uvs.resize(offsets.uvs.back());
+    attributes.normals.resize(offsets.normals.back());
+    const std::size_t n = chunks.size();
+    std::vector<Resolution> resolutions(n);
+    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t k) {
+        gather_values(chunks[k], k, offsets, attributes);
+        resolutions[k] = resolve_corners(chunks[k], k, offsets);
     });
     for (std::size_t k = 0; k < n; ++k) {
-        if (resolutions[k].error)
-            throw InputError(
-                file, "line " +
-                          std::to_string(chunks[k].first_line + resolutions[k].error->first + 1) +
-                          ": " + resolutions[k].error->second);
+        if (const auto& error = resolutions[k].error)
+            throw InputError(file, at_line(chunks[k].first_line + error->first + 1, error->second));
     }
     for (std::size_t k = 0; k < n; ++k) {
-        if (resolutions[k].fallback)
-            return ObjFallback{chunks[k].first_line + resolutions[k].fallback->first + 1,
-                               resolutions[k].fallback->second};
+        if (const auto& fallback = resolutions[k].fallback)
+            return ObjFallback{chunks[k].first_line + fallback->first + 1, fallback->second};
     }
+    return std::nullopt;
+}
 
-    // Stage 3. The material libraries first: reading them changes Assimp's current material.
-    obj::Statements statements;
-    if (auto fallback = obj::read_statements(path, chunks, statements)) return *fallback;
-    obj::Structure structure = obj::replay_statements(chunks, face_prefix, statements.libraries);
-    const obj::OutputMeshes output = obj::output_meshes(structure, chunks, face_prefix);
-    if (output.triangles == 0) throw InputError(file, "no triangles");
-    if (output.triangles > options.max_triangles)
-        throw InputError(file, "too many triangles (" + std::to_string(output.triangles) +
-                                   ", limit " + std::to_string(options.max_triangles) + ")");
+void check_triangle_count(std::size_t triangles, const std::string& file,
+                          const LoadOptions& options) {
+    if (triangles == 0) throw InputError(file, "no triangles");
+    if (triangles > options.max_triangles)
+        throw InputError(file, "too many triangles (" + std::to_string(triangles) + ", limit " +
+                                   std::to_string(options.max_triangles) + ")");
+}
 
-    // Stage 4.
-    obj::index_equal_values(chunks, attributes);
-    std::vector<obj::MeshOutcome> built =
-        obj::build_meshes(chunks, face_prefix, attributes, structure.meshes, output.meshes);
+// The first mesh with a non-finite position, as convert_mesh reports it, and the line of its `v`.
+void check_finite_positions(const std::vector<MeshOutcome>& built, const std::vector<Chunk>& chunks,
+                            const Offsets& offsets, const Structure& structure,
+                            const std::vector<std::uint32_t>& output, const std::string& file) {
     for (std::size_t i = 0; i < built.size(); ++i) {
         if (!built[i].non_finite) continue;
-        // The first mesh with one, as convert_mesh reports it, and the line of its `v`.
         const auto [position, vertex] = *built[i].non_finite;
-        const std::size_t k = static_cast<std::size_t>(
-            std::upper_bound(v_prefix.begin(), v_prefix.end(), position) - v_prefix.begin() - 1);
+        const std::size_t k = chunk_holding(offsets.positions, position);
         std::size_t line = 0;
         for (const auto& [index, local_line] : chunks[k].non_finite_positions)
-            if (v_prefix[k] + index == position) line = chunks[k].first_line + local_line + 1;
-        const std::string& name = structure.meshes[output.meshes[i]].name;
-        throw InputError(file, "line " + std::to_string(line) +
-                                   ": non-finite vertex coordinates (mesh " +
-                                   (name.empty() ? "#" + std::to_string(i) : name) + ", vertex " +
-                                   std::to_string(vertex) + ")");
+            if (offsets.positions[k] + index == position)
+                line = chunks[k].first_line + local_line + 1;
+        const std::string& name = structure.meshes[output[i]].name;
+        throw InputError(file, at_line(line, "non-finite vertex coordinates (mesh " +
+                                                 (name.empty() ? "#" + std::to_string(i) : name) +
+                                                 ", vertex " + std::to_string(vertex) + ")"));
     }
+}
 
-    // Stage 5.
+// The scene: the built meshes with their materials, one instance each, named after its object.
+std::variant<Scene, ObjFallback> assemble_scene(const std::filesystem::path& path,
+                                                std::vector<MeshOutcome>& built,
+                                                const Structure& structure,
+                                                const std::vector<std::uint32_t>& output,
+                                                const Statements& statements) {
+    const std::string file = path.string();
     Scene scene;
     scene.source = file;
     std::vector<std::string> warnings;
-    obj::Materials materials(path, statements, scene, warnings);
+    Materials materials(path, statements, scene, warnings);
     for (std::size_t i = 0; i < built.size(); ++i) {
-        const obj::MeshPlan& plan = structure.meshes[output.meshes[i]];
+        const MeshPlan& plan = structure.meshes[output[i]];
         const std::optional<std::uint32_t> material = materials.index_of(plan.material);
         if (!material) return ObjFallback{0, "Assimp cannot read the material libraries"};
         Mesh& mesh = built[i].mesh;
@@ -197,6 +206,37 @@ std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
     // One line each, as load_scene_with_assimp makes them.
     for (const std::string& w : warnings) scene.warnings.push_back(file + ": " + one_line(w));
     return scene;
+}
+
+}  // namespace
+}  // namespace obj
+
+std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
+                                          const LoadOptions& options) {
+    const std::string file = path.string();
+    const obj::FileBytes bytes(path);
+    if (bytes.size() == 0) throw InputError(file, "empty file");
+    if (bytes.size() < 16) return ObjFallback{0, "Assimp refuses OBJ files under 16 bytes"};
+
+    std::vector<obj::Chunk> chunks = obj::parse_chunks(bytes.data(), bytes.size());
+    obj::Offsets offsets;
+    if (auto fallback = obj::count_chunks(chunks, file, offsets)) return *fallback;
+    obj::Attributes attributes;
+    if (auto fallback = obj::resolve_indices(chunks, offsets, file, attributes)) return *fallback;
+
+    // The material libraries before the structure: reading one changes Assimp's current
+    // material.
+    obj::Statements statements;
+    if (auto fallback = obj::read_statements(path, chunks, statements)) return *fallback;
+    obj::Structure structure = obj::replay_statements(chunks, offsets.faces, statements.libraries);
+    const obj::OutputMeshes output = obj::output_meshes(structure, chunks, offsets.faces);
+    obj::check_triangle_count(output.triangles, file, options);
+
+    obj::index_equal_values(chunks, attributes);
+    std::vector<obj::MeshOutcome> built =
+        obj::build_meshes(chunks, offsets.faces, attributes, structure.meshes, output.meshes);
+    obj::check_finite_positions(built, chunks, offsets, structure, output.meshes, file);
+    return obj::assemble_scene(path, built, structure, output.meshes, statements);
 }
 
 }  // namespace zraster::io

@@ -1,16 +1,20 @@
-// A fast, parallel reader for Wavefront OBJ files, used by load_scene for .obj files.
+// zraster's reader for Wavefront OBJ files, used by load_scene for .obj files. Its
+// specification is docs/obj-format.md: the statements it reads (v, vt, vn, f, l, p, o, g,
+// usemtl, mtllib), the index forms, how quads become triangles, what it refuses with which
+// message, and the lines it leaves to Assimp.
 //
-// It builds the same Scene as load_scene's Assimp path (Assimp 5.2's OBJ importer, its
-// triangulation and FlipUVs, then zraster's conversion and vertex welding): the same meshes,
-// names, materials (the MTL files themselves are still read by Assimp), instances, warnings,
-// triangles, welded vertices in the same order, and the same errors, with line numbers.
-// Coordinates are parsed with correct rounding (std::from_chars), where Assimp's fast_atof is
-// sometimes one unit in the last place off: that is the only intended difference.
+// Assimp 5.2's OBJ importer is the test oracle, not the specification: for a file the reader
+// accepts, the scene is the one load_scene's Assimp path makes (Assimp's importer, its
+// triangulation and FlipUVs, then zraster's conversion and vertex welding: the same meshes,
+// names, materials, instances, warnings, triangles and welded vertices in the same order), and
+// tests/io compare the two. Coordinates are correctly rounded (std::from_chars) where Assimp's
+// fast_atof is sometimes one unit in the last place off: the only intended difference.
 //
-// Lines whose meaning Assimp's importer bends (polygons of more than four corners, which it
+// Lines Assimp reads in ways of its own (polygons of five or more corners, which it
 // triangulates by ear clipping; faces mixing corner forms; curves and surfaces; line
-// continuations; numbers it does not count as numbers, ...) are left to the Assimp path: the
-// reader then answers with the first such line instead of a scene.
+// continuations; numbers it does not count as numbers, ...) are not guessed at: the reader
+// answers with the first such line instead of a scene, and load_scene reads the file through
+// the Assimp path.
 #pragma once
 #include <zraster/load.hpp>
 #include <zraster/scene.hpp>
