@@ -13,8 +13,8 @@ namespace zraster {
 namespace {
 
 template <typename T>
-void write_npy_array(const std::filesystem::path& path, int width, int height,
-                     std::span<const T> values, const char* descr) {
+std::vector<std::uint8_t> npy_file(int width, int height, std::span<const T> values,
+                                   const char* descr) {
     static_assert(sizeof(T) == 4);
     io::check_image_size("write_npy", width, height, 1, values.size());
 
@@ -38,19 +38,27 @@ void write_npy_array(const std::filesystem::path& path, int width, int height,
         for (int shift = 0; shift < 32; shift += 8)
             out.push_back(static_cast<std::uint8_t>(bits >> shift));
     }
-    io::write_file_atomically(path, out);
+    return out;
 }
 
 }  // namespace
 
+std::vector<std::uint8_t> encode_npy(int width, int height, std::span<const float> values) {
+    return npy_file(width, height, values, "<f4");
+}
+
+std::vector<std::uint8_t> encode_npy(int width, int height, std::span<const std::int32_t> values) {
+    return npy_file(width, height, values, "<i4");
+}
+
 void write_npy(const std::filesystem::path& path, int width, int height,
                std::span<const float> values) {
-    write_npy_array(path, width, height, values, "<f4");
+    io::write_file_atomically(path, encode_npy(width, height, values));
 }
 
 void write_npy(const std::filesystem::path& path, int width, int height,
                std::span<const std::int32_t> values) {
-    write_npy_array(path, width, height, values, "<i4");
+    io::write_file_atomically(path, encode_npy(width, height, values));
 }
 
 }  // namespace zraster

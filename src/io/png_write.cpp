@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <cstring>
 #include <memory>
+#include <stdexcept>
 #include <string_view>
 
 namespace zraster {
@@ -61,9 +62,10 @@ struct CompressorDeleter {
 };
 
 // `filtered` holds the scanlines, each a filter byte and the row's bytes. Compresses them into
-// a complete PNG file and writes it atomically.
-void write_png(const std::filesystem::path& path, int width, int height, std::uint8_t bit_depth,
-               std::uint8_t color_type, std::span<const std::uint8_t> filtered) {
+// a complete PNG file.
+std::vector<std::uint8_t> png_file(int width, int height, std::uint8_t bit_depth,
+                                   std::uint8_t color_type,
+                                   std::span<const std::uint8_t> filtered) {
     std::unique_ptr<libdeflate_compressor, CompressorDeleter> compressor(
         libdeflate_alloc_compressor(kCompressionLevel));
     if (!compressor) throw std::bad_alloc();
@@ -72,7 +74,7 @@ void write_png(const std::filesystem::path& path, int width, int height, std::ui
                                  libdeflate_zlib_compress_bound(compressor.get(), filtered.size()));
     const std::size_t zlib_size = libdeflate_zlib_compress(
         compressor.get(), filtered.data(), filtered.size(), zlib.data(), zlib.size());
-    if (zlib_size == 0) throw InputError(path.string(), "cannot write: PNG compression failed");
+    if (zlib_size == 0) throw std::runtime_error("PNG compression failed");
 
     std::vector<std::uint8_t> png;
     memory::reserve_on_huge_pages(png, zlib_size + 64 + 12 * (zlib_size / kMaxIdatBytes));
@@ -91,7 +93,7 @@ void write_png(const std::filesystem::path& path, int width, int height, std::ui
                   std::span<const std::uint8_t>(zlib.data() + at,
                                                 std::min(kMaxIdatBytes, zlib_size - at)));
     put_chunk(png, "IEND", {});
-    io::write_file_atomically(path, png);
+    return png;
 }
 
 // Filter "Up": each byte minus the byte above it (the row above the first is zero).
@@ -109,8 +111,8 @@ void filter_up(std::uint8_t* out, const std::uint8_t* row, const std::uint8_t* a
 
 }  // namespace
 
-void write_png8(const std::filesystem::path& path, int width, int height, int channels,
-                std::span<const std::uint8_t> pixels) {
+std::vector<std::uint8_t> encode_png8(int width, int height, int channels,
+                                      std::span<const std::uint8_t> pixels) {
     if (channels < 1 || channels > 4)
         throw std::invalid_argument("write_png8: channels must be 1, 2, 3 or 4");
     io::check_image_size("write_png8", width, height, channels, pixels.size());
@@ -125,11 +127,11 @@ void write_png8(const std::filesystem::path& path, int width, int height, int ch
         filter_up(filtered.data() + y * (row_bytes + 1), row, y > 0 ? row - row_bytes : nullptr,
                   row_bytes);
     }
-    write_png(path, width, height, 8, kColorType[channels], filtered);
+    return png_file(width, height, 8, kColorType[channels], filtered);
 }
 
-void write_png16_gray(const std::filesystem::path& path, int width, int height,
-                      std::span<const std::uint16_t> pixels) {
+std::vector<std::uint8_t> encode_png16_gray(int width, int height,
+                                            std::span<const std::uint16_t> pixels) {
     io::check_image_size("write_png16_gray", width, height, 1, pixels.size());
     const std::size_t row_bytes = static_cast<std::size_t>(width) * 2;
 
@@ -147,7 +149,17 @@ void write_png16_gray(const std::filesystem::path& path, int width, int height,
                   y > 0 ? previous.data() : nullptr, row_bytes);
         previous.swap(current);
     }
-    write_png(path, width, height, 16, 0, filtered);
+    return png_file(width, height, 16, 0, filtered);
+}
+
+void write_png8(const std::filesystem::path& path, int width, int height, int channels,
+                std::span<const std::uint8_t> pixels) {
+    io::write_file_atomically(path, encode_png8(width, height, channels, pixels));
+}
+
+void write_png16_gray(const std::filesystem::path& path, int width, int height,
+                      std::span<const std::uint16_t> pixels) {
+    io::write_file_atomically(path, encode_png16_gray(width, height, pixels));
 }
 
 }  // namespace zraster

@@ -119,6 +119,42 @@ TEST(Cli, BadOptionsAreExitTwoAndWriteNothing) {
     }
 }
 
+// A run's outputs appear together or not at all: two outputs naming one file, a name the file
+// system refuses, or a write failing after the first output was ready leave no file behind.
+TEST(Cli, OutputsAreAllOrNothing) {
+    const auto dir = temp_dir("cli-outputs-transaction");
+    const CommandResult same =
+        run("render builtin:cube --size 32x24 -o x.png --depth-out x.png", dir);
+    EXPECT_EQ(same.exit_code, 2) << same.output;
+    EXPECT_TRUE(single_line(same.output)) << same.output;
+    EXPECT_NE(same.output.find("--depth-out x.png: is the same file as -o x.png"),
+              std::string::npos)
+        << same.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+
+    const std::string long_name(300, 'n');
+    const CommandResult too_long =
+        run("render builtin:cube --size 32x24 -o c.png --depth-out " + long_name + ".npy", dir);
+    EXPECT_EQ(too_long.exit_code, 2) << too_long.output;
+    EXPECT_NE(too_long.output.find("more than the file system's limit"), std::string::npos)
+        << too_long.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "c.png"));
+
+    // The normal map's place is taken by a directory holding a file: its rename fails after the
+    // color and depth files were written to temporaries; none of them may stay.
+    std::filesystem::create_directory(dir / "n.png");
+    std::ofstream(dir / "n.png" / "keep") << "x";
+    const CommandResult late =
+        run("render builtin:cube --size 32x24 -o c.png --depth-out d.npy --normal-out n.png", dir);
+    EXPECT_EQ(late.exit_code, 2) << late.output;
+    EXPECT_NE(late.output.find("n.png: cannot write: is a directory"), std::string::npos)
+        << late.output;
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+        names.push_back(entry.path().filename().string());
+    EXPECT_EQ(names, std::vector<std::string>{"n.png"});
+}
+
 TEST(Cli, DepthNormalAndIdOutputs) {
     const auto dir = temp_dir("cli-outputs");
     const CommandResult r =

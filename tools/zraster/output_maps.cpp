@@ -22,18 +22,18 @@ std::uint8_t unorm8(float v) {
 
 }  // namespace
 
-void write_depth_map(const std::string& path, const RenderTargets& t) {
+std::vector<std::uint8_t> encode_depth_map(const std::string& path, const RenderTargets& t) {
     const std::string ext = extension(path);
-    if (ext == ".npy") return write_npy(path, t.width, t.height, std::span<const float>(t.depth));
+    if (ext == ".npy") return encode_npy(t.width, t.height, std::span<const float>(t.depth));
     if (ext != ".png") throw InputError(path, "depth output must end in .npy or .png");
     std::vector<std::uint16_t> gray(t.depth.size());
     for (std::size_t i = 0; i < gray.size(); ++i)
         gray[i] =
             static_cast<std::uint16_t>(std::lround(std::clamp(t.depth[i], 0.0f, 1.0f) * 65535.0f));
-    write_png16_gray(path, t.width, t.height, gray);
+    return encode_png16_gray(t.width, t.height, gray);
 }
 
-void write_normal_map(const std::string& path, const RenderTargets& t) {
+std::vector<std::uint8_t> encode_normal_map(const std::string& path, const RenderTargets& t) {
     if (extension(path) != ".png") throw InputError(path, "normal output must end in .png");
     std::vector<std::uint8_t> rgb(t.normal.size() * 3);
     for (std::size_t i = 0; i < t.normal.size(); ++i) {
@@ -42,11 +42,11 @@ void write_normal_map(const std::string& path, const RenderTargets& t) {
         for (int c = 0; c < 3; ++c)
             rgb[i * 3 + std::size_t(c)] = empty ? 0 : unorm8(n[c] * 0.5f + 0.5f);
     }
-    write_png8(path, t.width, t.height, 3, rgb);
+    return encode_png8(t.width, t.height, 3, rgb);
 }
 
-void write_id_map(const std::string& path, const RenderTargets& t,
-                  const std::vector<std::int64_t>& instance_first_triangle) {
+std::vector<std::uint8_t> encode_id_map(const std::string& path, const RenderTargets& t,
+                                        const std::vector<std::int64_t>& instance_first_triangle) {
     const std::string ext = extension(path);
     if (ext != ".npy" && ext != ".png")
         throw InputError(path, "id output must end in .npy or .png");
@@ -57,8 +57,7 @@ void write_id_map(const std::string& path, const RenderTargets& t,
             instance_first_triangle[std::size_t(t.instance_id[i])] + t.primitive_id[i];
         ids[i] = static_cast<std::int32_t>(std::min<std::int64_t>(id, INT32_MAX));
     }
-    if (ext == ".npy")
-        return write_npy(path, t.width, t.height, std::span<const std::int32_t>(ids));
+    if (ext == ".npy") return encode_npy(t.width, t.height, std::span<const std::int32_t>(ids));
     std::vector<std::uint8_t> rgb(ids.size() * 3, 0);
     for (std::size_t i = 0; i < ids.size(); ++i) {
         if (ids[i] < 0) continue;
@@ -69,7 +68,7 @@ void write_id_map(const std::string& path, const RenderTargets& t,
         rgb[i * 3 + 1] = static_cast<std::uint8_t>(64 + ((h >> 8) & 0xff) % 192);
         rgb[i * 3 + 2] = static_cast<std::uint8_t>(64 + ((h >> 16) & 0xff) % 192);
     }
-    write_png8(path, t.width, t.height, 3, rgb);
+    return encode_png8(t.width, t.height, 3, rgb);
 }
 
 }  // namespace zraster::cli

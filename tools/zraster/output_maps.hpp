@@ -1,19 +1,23 @@
-// Extra outputs of `zraster render`: depth, normal and id maps.
+// Extra outputs of `zraster render`: depth, normal and id maps, encoded as files' bytes (for
+// OutputFiles: all of a run's outputs are written together or not at all).
 #pragma once
 #include <zraster/render.hpp>
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace zraster::cli {
 
 // .npy: float32 (height, width) window depth, top row first; .png: 16-bit gray, 65535 = far.
-void write_depth_map(const std::string& path, const RenderTargets& targets);
+std::vector<std::uint8_t> encode_depth_map(const std::string& path, const RenderTargets& targets);
 // PNG, RGB = world normal * 0.5 + 0.5, background black.
-void write_normal_map(const std::string& path, const RenderTargets& targets);
+std::vector<std::uint8_t> encode_normal_map(const std::string& path,
+                                            const RenderTargets& targets);
 // .npy: int32 (height, width) id of the visible triangle, -1 for background. The id is the
 // triangle's index in draw order over the scene: the sum of the triangle counts of the instances
 // before it plus its index in its mesh. .png: a false-color picture of the same ids.
-void write_id_map(const std::string& path, const RenderTargets& targets,
-                  const std::vector<std::int64_t>& instance_first_triangle);
+std::vector<std::uint8_t> encode_id_map(const std::string& path, const RenderTargets& targets,
+                                        const std::vector<std::int64_t>& instance_first_triangle);
 
 }  // namespace zraster::cli

@@ -4,6 +4,7 @@
 #include <zraster/abuffer.hpp>
 #include <zraster/depth_buffer.hpp>
 #include <zraster/image_io.hpp>
+#include <zraster/output_files.hpp>
 #include <zraster/render.hpp>
 #include <zraster/scenes.hpp>
 #include <zraster/visibility.hpp>
@@ -268,9 +269,12 @@ std::string lower_extension(const std::string& path) {
     return e;
 }
 
-// Checks every output path before any work, so a bad one fails without leaving other outputs.
-void validate_output(const std::string& path, std::initializer_list<const char*> extensions,
-                     const char* what) {
+// Checks an output path before any work (its extension, then OutputFiles::check: writable,
+// within the name limits, distinct from the run's other outputs), so that a bad one fails the
+// run before anything is rendered or written.
+void check_output(OutputFiles& outputs, const std::string& path,
+                  std::initializer_list<const char*> extensions, const char* option,
+                  const char* what) {
     if (path.empty()) return;
     const std::string ext = lower_extension(path);
     bool ok = false;
@@ -280,10 +284,7 @@ void validate_output(const std::string& path, std::initializer_list<const char*>
         names += names.empty() ? e : std::string(" or ") + e;
     }
     if (!ok) throw InputError(path, std::string(what) + " must end in " + names);
-    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-    if (!parent.empty() && !std::filesystem::is_directory(parent))
-        throw InputError(path, "cannot write: directory '" + parent.string() + "' does not exist");
-    if (std::filesystem::is_directory(path)) throw InputError(path, "cannot write: is a directory");
+    outputs.check(path, option);
 }
 
 }  // namespace
@@ -306,10 +307,12 @@ void warn_if_transparent(const Scene& scene, const std::string& what) {
 }
 
 int run_render(const RenderArguments& a) {
-    validate_output(a.output, {".png"}, "the color output");
-    validate_output(a.depth_out, {".npy", ".png"}, "the depth output");
-    validate_output(a.normal_out, {".png"}, "the normal output");
-    validate_output(a.id_out, {".npy", ".png"}, "the id output");
+    OutputFiles outputs;  // written together at the end, or not at all
+    if (a.output.empty()) throw InputError("-o", "the output path is empty");
+    check_output(outputs, a.output, {".png"}, "-o", "the color output");
+    check_output(outputs, a.depth_out, {".npy", ".png"}, "--depth-out", "the depth output");
+    check_output(outputs, a.normal_out, {".png"}, "--normal-out", "the normal output");
+    check_output(outputs, a.id_out, {".npy", ".png"}, "--id-out", "the id output");
     // Wall-clock times of the stages, for --stats.
     using Clock = std::chrono::steady_clock;
     const auto since = [](Clock::time_point start) {
@@ -359,9 +362,9 @@ int run_render(const RenderArguments& a) {
     std::vector<std::uint8_t> rgb(std::size_t(t.width) * std::size_t(t.height) * 3);
     for (std::size_t i = 0, n = rgb.size() / 3; i < n; ++i)
         std::copy_n(&t.color[i * 4], 3, &rgb[i * 3]);
-    write_png8(a.output, t.width, t.height, 3, rgb);
-    if (!a.depth_out.empty()) write_depth_map(a.depth_out, t);
-    if (!a.normal_out.empty()) write_normal_map(a.normal_out, t);
+    outputs.add(a.output, encode_png8(t.width, t.height, 3, rgb));
+    if (!a.depth_out.empty()) outputs.add(a.depth_out, encode_depth_map(a.depth_out, t));
+    if (!a.normal_out.empty()) outputs.add(a.normal_out, encode_normal_map(a.normal_out, t));
     if (!a.id_out.empty()) {
         std::vector<std::int64_t> first_triangle;
         std::int64_t total = 0;
@@ -369,8 +372,9 @@ int run_render(const RenderArguments& a) {
             first_triangle.push_back(total);
             total += static_cast<std::int64_t>(scene.meshes[instance.mesh].triangle_count());
         }
-        write_id_map(a.id_out, t, first_triangle);
+        outputs.add(a.id_out, encode_id_map(a.id_out, t, first_triangle));
     }
+    outputs.commit();
     const double write_ms = since(write_start);
 
     if (a.print_stats && a.visibility == "abuffer")
