@@ -80,6 +80,37 @@ TEST(CliLimits, ImageSizes) {
     EXPECT_EQ(ok.exit_code, 0) << ok.output;
 }
 
+// Every numeric option has a range: past it, a clear refusal (or, for thread counts, a clamp
+// with a warning), never a crash inside a library.
+TEST(CliLimits, NumbersOutOfRange) {
+    const auto dir = temp_dir("cli-limits-numbers");
+    for (const char* threads : {"2147483647", "10000000", "100000000"}) {
+        const CommandResult r = run_limited(
+            std::string("render builtin:cube --size 32x24 -o out.png --threads ") + threads, dir);
+        EXPECT_EQ(r.exit_code, 0) << threads << ": " << r.output;
+        EXPECT_NE(r.output.find(std::string("warning: --threads ") + threads +
+                                " is more than 4 times the"),
+                  std::string::npos)
+            << r.output;
+        EXPECT_TRUE(std::filesystem::exists(dir / "out.png"));
+        std::filesystem::remove(dir / "out.png");
+    }
+    expect_refused(dir, "render builtin:cube -o out.png --threads -1",
+                   "zraster: --threads: must be >= 0 (0: every hardware thread), not -1");
+    expect_refused(dir, "bench builtin:cube --frames 1 --warmup 2147483647",
+                   "zraster: --warmup: must be in 0..1000000, not 2147483647");
+    expect_refused(dir, "bench builtin:cube --frames 2000000", "zraster: --frames: must be in");
+    const CommandResult bench = run_limited(
+        "bench builtin:cube --frames 1 --warmup 0 --threads 2147483647 --size 16x16", dir);
+    EXPECT_EQ(bench.exit_code, 0) << bench.output;
+    EXPECT_NE(bench.output.find("warning: --threads 2147483647"), std::string::npos)
+        << bench.output;
+    expect_refused(dir, "render builtin:cube -o out.png --orbit 30,20,3 --eye 1,2,3",
+                   "zraster: --orbit: and --eye both place the camera");
+    expect_refused(dir, "render builtin:cube -o out.png --clip-plane 0,0,0,-1",
+                   "zraster: --clip-plane: the normal A,B,C of '0,0,0,-1' is zero");
+}
+
 TEST(CliLimits, FilesClaimingTwoToTheFortyFaces) {
     const auto dir = temp_dir("cli-limits-faces");
     write(dir / "huge.ply",

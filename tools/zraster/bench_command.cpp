@@ -55,6 +55,9 @@ void add_bench_command(CLI::App& app, BenchArguments& a) {
 
 namespace {
 
+// Timed and warm-up frames each: a million frames is days of a 1080p scene; more is a mistake.
+constexpr int kMaxBenchFrames = 1'000'000;
+
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     const std::size_t n = v.size();
@@ -91,9 +94,13 @@ void write_frame(const std::string& path, const RenderTargets& t, BenchMode mode
 int run_bench(const BenchArguments& a) {
     const BenchMode mode = parse_bench_mode("--mode", a.mode);
     const glm::ivec2 size = parse_size("--size", a.size, kMaxViewport);
-    if (a.frames < 1) throw InputError("--frames", "must be >= 1");
-    if (a.warmup < 0) throw InputError("--warmup", "must be >= 0");
-    if (a.threads < 0) throw InputError("--threads", "must be >= 0");
+    if (a.frames < 1 || a.frames > kMaxBenchFrames)
+        throw InputError("--frames", "must be in 1.." + std::to_string(kMaxBenchFrames) + ", not " +
+                                         std::to_string(a.frames));
+    if (a.warmup < 0 || a.warmup > kMaxBenchFrames)
+        throw InputError("--warmup", "must be in 0.." + std::to_string(kMaxBenchFrames) + ", not " +
+                                         std::to_string(a.warmup));
+    const int threads = checked_thread_count("--threads", a.threads);
     validate_png_output(a.out);
     if (a.no_avx512) hwy::DisableTargets(HWY_AVX2 - 1);  // the targets better than AVX2
 
@@ -101,7 +108,7 @@ int run_bench(const BenchArguments& a) {
     Scene scene = load_scene_or_procedural(a.scene);
     for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
     apply_bench_shading(scene, mode);
-    RenderOptions options = bench_render_options(mode, size.x, size.y, a.threads, !a.no_cull);
+    RenderOptions options = bench_render_options(mode, size.x, size.y, threads, !a.no_cull);
     options.hierarchical_z = !a.no_hierarchical_z;
     options.cluster_culling = !a.no_cluster_culling;
     options.static_meshes = !a.check_meshes;
@@ -155,7 +162,7 @@ int run_bench(const BenchArguments& a) {
     fmt::print(
         "RESULT scene={} mode={} w={} h={} threads={} tris={} ms_median={:.3f} "
         "ms_min={:.3f}\n",
-        a.scene, bench_mode_name(mode), size.x, size.y, effective_thread_count(a.threads), tris,
+        a.scene, bench_mode_name(mode), size.x, size.y, effective_thread_count(threads), tris,
         median(frame_ms), *std::min_element(frame_ms.begin(), frame_ms.end()));
     return kExitOk;
 }

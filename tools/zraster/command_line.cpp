@@ -3,8 +3,12 @@
 #include <zraster/load.hpp>
 #include <zraster/scenes.hpp>
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <thread>
 #include <vector>
 
 namespace zraster::cli {
@@ -64,6 +68,22 @@ glm::ivec2 parse_size(const std::string& option, const std::string& text, int li
         throw InputError(
             option, "size " + text + " out of range (1.." + std::to_string(limit) + " per side)");
     return {w, h};
+}
+
+int checked_thread_count(const std::string& option, int requested) {
+    if (requested < 0)
+        throw InputError(
+            option, "must be >= 0 (0: every hardware thread), not " + std::to_string(requested));
+    const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    const int limit = kThreadsPerCore * hardware;
+    if (requested > limit) {
+        fmt::print(stderr,
+                   "warning: {} {} is more than {} times the {} hardware threads; using "
+                   "{}\n",
+                   option, requested, kThreadsPerCore, hardware, limit);
+        return limit;
+    }
+    return requested;
 }
 
 namespace {

@@ -20,6 +20,12 @@ glm::dvec4 parse_vec4(const std::string& option, const std::string& text);
 // "WxH" with 1 <= W, H <= limit.
 glm::ivec2 parse_size(const std::string& option, const std::string& text, int limit);
 
+// --threads: 0 (every hardware thread) up to kThreadsPerCore times the hardware threads. More
+// is clamped to that with a warning on stderr (oneTBB's arena cannot be made that large, and
+// the extra threads would only compete for the cores); negative is an InputError.
+inline constexpr int kThreadsPerCore = 4;
+int checked_thread_count(const std::string& option, int requested);
+
 // "auto" | "forward" | "deferred" (CLI11 checks the value first).
 ShadingStrategy shading_strategy(const std::string& name);
 

@@ -152,6 +152,9 @@ Camera make_camera(const RenderArguments& a, const Scene& scene, double aspect) 
         camera = fit_camera(scene.world_positions());
     const BoundingSphere sphere = bounding_sphere(scene.world_positions());
     const double radius = sphere.radius > 0.0 ? sphere.radius : 1.0;
+    if (!a.orbit.empty() && (!a.eye.empty() || !a.target.empty()))
+        throw InputError("--orbit", std::string("and ") + (a.eye.empty() ? "--target" : "--eye") +
+                                        " both place the camera: give one or the other");
     if (!a.orbit.empty()) {
         const glm::dvec3 o = parse_vec3("--orbit", a.orbit);
         if (!(o.z > 0.0)) throw InputError("--orbit", "distance must be positive");
@@ -195,8 +198,7 @@ RenderOptions make_render_options(const RenderArguments& a, const Scene& scene) 
     o.width = size.x;
     o.height = size.y;
     o.limits.max_pixels = a.max_pixels;
-    if (a.threads < 0) throw InputError("--threads", "must be >= 0");
-    o.threads = a.threads;
+    o.threads = checked_thread_count("--threads", a.threads);
     o.camera = make_camera(a, scene, double(o.width) / double(o.height));
     const std::map<std::string, ShadingMode> shading{{"flat", ShadingMode::Flat},
                                                      {"gouraud", ShadingMode::Gouraud},
@@ -241,8 +243,14 @@ RenderOptions make_render_options(const RenderArguments& a, const Scene& scene) 
                        : a.texture_filter == "bilinear" ? TextureFilter::Bilinear
                                                         : TextureFilter::Trilinear;
     o.textures = !a.no_textures;
-    for (const std::string& text : a.clip_planes)
-        o.clip_planes.push_back(glm::vec4(parse_vec4("--clip-plane", text)));
+    for (const std::string& text : a.clip_planes) {
+        const glm::dvec4 plane = parse_vec4("--clip-plane", text);
+        if (glm::dvec3(plane) == glm::dvec3(0.0))
+            throw InputError("--clip-plane", "the normal A,B,C of '" + text +
+                                                 "' is zero: the plane keeps everything or "
+                                                 "nothing");
+        o.clip_planes.push_back(glm::vec4(plane));
+    }
     const glm::dvec3 bg = parse_vec3("--background", a.background);
     if (glm::any(glm::lessThan(bg, glm::dvec3(0.0))) ||
         glm::any(glm::greaterThan(bg, glm::dvec3(255.0))))
