@@ -12,8 +12,7 @@ namespace zraster::cli {
 // .npy: float32 (height, width) window depth, top row first; .png: 16-bit gray, 65535 = far.
 std::vector<std::uint8_t> encode_depth_map(const std::string& path, const RenderTargets& targets);
 // PNG, RGB = world normal * 0.5 + 0.5, background black.
-std::vector<std::uint8_t> encode_normal_map(const std::string& path,
-                                            const RenderTargets& targets);
+std::vector<std::uint8_t> encode_normal_map(const std::string& path, const RenderTargets& targets);
 // .npy: int32 (height, width) id of the visible triangle, -1 for background. The id is the
 // triangle's index in draw order over the scene: the sum of the triangle counts of the instances
 // before it plus its index in its mesh. .png: a false-color picture of the same ids.
