@@ -37,6 +37,13 @@ struct LoadOptions {
     std::size_t max_triangles = 50'000'000;
     std::size_t max_file_bytes = std::size_t{4} << 30;
 
+    // External references (glTF buffers and images, OBJ material libraries and textures) must be
+    // regular files inside the model's folder, once symbolic links are followed: a buffer URI
+    // like "../../etc/passwd" is refused (an InputError when geometry depends on it, a warning
+    // for a texture or material library, which are then not read). True reads them anywhere.
+    // FIFOs, devices and directories are refused either way.
+    bool allow_outside_references = false;
+
     LoadIsolation isolation = LoadIsolation::InProcess;
     // WorkerProcess only: wall-clock limit of the child (its CPU time limit is this, rounded up,
     // plus one second), and the address space it may add to what it inherits (0: no limit). The

@@ -6,11 +6,13 @@
 #include "io/assimp_material.hpp"
 #include "io/assimp_mesh.hpp"
 #include "io/assimp_nodes.hpp"
+#include "io/confined_io_system.hpp"
 #include "io/declared_counts_check.hpp"
 #include "io/input_file_check.hpp"
 #include "io/load_worker.hpp"
 #include "io/obj_material_libraries.hpp"
 #include "io/obj_parser.hpp"
+#include "io/reference_policy.hpp"
 #include "io/text_util.hpp"
 #include "io/texture_loader.hpp"
 
@@ -74,15 +76,15 @@ bool is_obj(const std::filesystem::path& path) {
 
 class MaterialTable {
   public:
-    MaterialTable(const aiScene& scene, const std::filesystem::path& path, Scene& out,
-                  std::vector<std::string>& warnings)
+    MaterialTable(const aiScene& scene, const std::filesystem::path& path,
+                  const io::ReferencePolicy& policy, Scene& out, std::vector<std::string>& warnings)
         : scene_(scene),
           out_(out),
           warnings_(warnings),
-          textures_(scene, path, warnings),
+          textures_(scene, path, policy, warnings),
           map_(scene.mNumMaterials, kUnset) {
         if (is_obj(path)) {
-            io::ObjMaterialLibraries libraries = io::scan_obj_material_libraries(path);
+            io::ObjMaterialLibraries libraries = io::scan_obj_material_libraries(path, policy);
             warnings.insert(warnings.end(), libraries.warnings.begin(), libraries.warnings.end());
             obj_missing_library_ = !libraries.warnings.empty();
             obj_defined_ = std::move(libraries.defined_materials);
@@ -162,6 +164,9 @@ Scene io::import_with_assimp(const std::filesystem::path& path, const LoadOption
     if (!prechecked) io::precheck_assimp_input(path, options);
 
     Assimp::Importer importer;
+    const io::ReferencePolicy policy(path, options.allow_outside_references);
+    std::vector<std::string> refusals;
+    importer.SetIOHandler(new io::ConfinedIOSystem(policy, refusals));  // the importer owns it
     // Points and lines are not drawn: drop them while sorting primitives by type.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);
@@ -171,6 +176,9 @@ Scene io::import_with_assimp(const std::filesystem::path& path, const LoadOption
     const aiScene* ai = nullptr;
     try {
         ai = importer.ReadFile(file, 0);
+        if (ai == nullptr && !refusals.empty())
+            throw InputError(
+                file, refusals.front() + ": refused (" + io::ReferencePolicy::how_to_allow() + ")");
         if (ai == nullptr) throw malformed(importer.GetErrorString());
         // Checked before post-processing, which rejects faceless meshes as "invalid".
         if (count_polygons(*ai) == 0) throw InputError(file, "no triangles");
@@ -204,7 +212,12 @@ Scene io::import_with_assimp(const std::filesystem::path& path, const LoadOption
     Scene scene;
     scene.source = file;
     std::vector<std::string> warnings;
-    MaterialTable materials(*ai, path, scene, warnings);
+    // (An OBJ's refused material libraries are warned about by the library scan instead.)
+    if (!is_obj(path))
+        for (const std::string& refusal : refusals)
+            warnings.push_back(refusal + ": not read (" + io::ReferencePolicy::how_to_allow() +
+                               ")");
+    MaterialTable materials(*ai, path, policy, scene, warnings);
     std::vector<unsigned> our_mesh(ai->mNumMeshes, kUnset);
     std::vector<std::string> labels(ai->mNumMeshes);
     for (unsigned m = 0; m < ai->mNumMeshes; ++m) {

@@ -24,35 +24,40 @@ void read_material_names(const std::filesystem::path& mtl, std::set<std::string>
         if (directive(line, "newmtl", name)) names.insert(name);
 }
 
-bool is_file(const std::filesystem::path& p) {
-    std::error_code ec;
-    return std::filesystem::is_regular_file(p, ec);
-}
-
 }  // namespace
 
-ObjMaterialLibraries scan_obj_material_libraries(const std::filesystem::path& obj_path) {
+MaterialLibraryChoice resolve_material_library(const std::filesystem::path& obj_path,
+                                               const std::string& library,
+                                               const ReferencePolicy& policy) {
+    const std::filesystem::path named = obj_path.parent_path() / library;
+    const ReferencePolicy::Check check = policy.check(named);
+    if (check.verdict == ReferencePolicy::Verdict::Readable) return {named, false, {}};
+    const std::string cause = check.verdict == ReferencePolicy::Verdict::Refused
+                                  ? "not read: " + named.string() + " " + check.reason + " (" +
+                                        ReferencePolicy::how_to_allow() + ")"
+                                  : "not found";
+    std::filesystem::path substitute = obj_path;
+    substitute.replace_extension(".mtl");
+    if (policy.check(substitute).verdict == ReferencePolicy::Verdict::Readable)
+        return {substitute, true,
+                "material library '" + library + "' " + cause + ", using '" +
+                    substitute.filename().string() + "'"};
+    return {std::nullopt, false,
+            "material library '" + library + "' " + cause + ", using the default material"};
+}
+
+ObjMaterialLibraries scan_obj_material_libraries(const std::filesystem::path& obj_path,
+                                                 const ReferencePolicy& policy) {
     ObjMaterialLibraries result;
-    const std::filesystem::path dir = obj_path.parent_path();
-    std::filesystem::path fallback = obj_path;
-    fallback.replace_extension(".mtl");
 
     std::ifstream in(obj_path);
     std::string line, library;
     std::set<std::string> seen;
     while (std::getline(in, line)) {
         if (!directive(line, "mtllib", library) || !seen.insert(library).second) continue;
-        const std::filesystem::path candidate = dir / library;
-        if (is_file(candidate)) {
-            read_material_names(candidate, result.defined_materials);
-        } else if (is_file(fallback)) {
-            result.warnings.push_back("material library '" + library + "' not found, using '" +
-                                      fallback.filename().string() + "'");
-            read_material_names(fallback, result.defined_materials);
-        } else {
-            result.warnings.push_back("material library '" + library +
-                                      "' not found, using the default material");
-        }
+        const MaterialLibraryChoice choice = resolve_material_library(obj_path, library, policy);
+        if (!choice.warning.empty()) result.warnings.push_back(choice.warning);
+        if (choice.file) read_material_names(*choice.file, result.defined_materials);
     }
     return result;
 }

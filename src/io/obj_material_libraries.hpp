@@ -2,9 +2,12 @@
 // (it only logs a missing one and invents placeholder materials for the `usemtl` names).
 #pragma once
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
+
+#include "io/reference_policy.hpp"
 
 namespace zraster::io {
 
@@ -13,8 +16,23 @@ struct ObjMaterialLibraries {
     std::set<std::string> defined_materials;  // `newmtl` names of the libraries found
 };
 
+// Where an `mtllib` statement's library is read from, as Assimp 5.2 resolves it (the name
+// relative to the OBJ's directory, else "<obj name>.mtl" beside it) within what `policy`
+// allows, and the warning to give when it is not the library named (empty when it is).
+struct MaterialLibraryChoice {
+    std::optional<std::filesystem::path> file;  // none: the default material
+    bool substitute = false;                    // file is "<obj name>.mtl"
+    std::string warning;
+};
+MaterialLibraryChoice resolve_material_library(const std::filesystem::path& obj_path,
+                                               const std::string& library,
+                                               const ReferencePolicy& policy);
+
 // Scans the OBJ's `mtllib` lines and the libraries they name, resolving them as Assimp 5.2 does:
 // the rest of the line relative to the OBJ's directory, else "<obj name>.mtl" beside it.
-ObjMaterialLibraries scan_obj_material_libraries(const std::filesystem::path& obj_path);
+// Libraries `policy` refuses (outside the model's folder, not regular files) are not read, with
+// a warning.
+ObjMaterialLibraries scan_obj_material_libraries(const std::filesystem::path& obj_path,
+                                                 const ReferencePolicy& policy);
 
 }  // namespace zraster::io

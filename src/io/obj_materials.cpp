@@ -1,6 +1,9 @@
 // Materials of an OBJ file (see obj_materials.hpp).
 #include "io/obj_materials.hpp"
 
+#include "io/confined_io_system.hpp"
+#include "io/obj_material_libraries.hpp"
+
 #include "io/assimp_material.hpp"
 #include "io/obj_scan.hpp"
 #include "io/text_util.hpp"
@@ -23,11 +26,6 @@ bool directive(const std::string& line, std::string_view keyword, std::string& a
     if (text[keyword.size()] != ' ' && text[keyword.size()] != '\t') return false;
     argument = std::string(trim(text.substr(keyword.size())));
     return !argument.empty();
-}
-
-bool is_file(const std::filesystem::path& p) {
-    std::error_code ec;
-    return std::filesystem::is_regular_file(p, ec);
 }
 
 // The `newmtl` names of an MTL file as both Assimp's MTL reader and the Assimp path's library
@@ -55,22 +53,16 @@ std::optional<std::vector<std::string>> library_materials(const std::filesystem:
 }  // namespace
 
 std::optional<ObjFallback> read_statements(const std::filesystem::path& obj_path,
-                                           const std::vector<Chunk>& chunks, Statements& out) {
-    const std::filesystem::path dir = obj_path.parent_path();
-    std::filesystem::path substitute = obj_path;
-    substitute.replace_extension(".mtl");
+                                           const std::vector<Chunk>& chunks,
+                                           const ReferencePolicy& policy, Statements& out) {
+    out.policy = policy;
     std::map<std::filesystem::path, std::vector<std::string>> read;
     for (const Chunk& chunk : chunks) {
         for (const Event& e : chunk.events) {
             out.events.push_back(&e);
             if (e.kind != EventKind::Library) continue;
-            LibraryLoad l{e.text, std::nullopt, false, {}};
-            if (is_file(dir / e.text)) {
-                l.file = dir / e.text;
-            } else if (is_file(substitute)) {
-                l.file = substitute;
-                l.substitute = true;
-            }
+            const MaterialLibraryChoice choice = resolve_material_library(obj_path, e.text, policy);
+            LibraryLoad l{e.text, choice.file, choice.substitute, choice.warning, {}};
             if (l.file) {
                 auto it = read.find(*l.file);
                 if (it == read.end()) {
@@ -94,26 +86,18 @@ Materials::Materials(const std::filesystem::path& obj_path, const Statements& st
     : path_(obj_path),
       events_(statements.events),
       libraries_(statements.libraries),
+      policy_(statements.policy),
       scene_(scene),
       warnings_(warnings) {
     // As scan_obj_material_libraries: each library name once.
-    std::filesystem::path substitute = obj_path;
-    substitute.replace_extension(".mtl");
     std::set<std::string> seen;
     for (const LibraryLoad& l : libraries_) {
         if (!seen.insert(l.name).second) continue;
-        if (l.file && !l.substitute) {
-            defined_.insert(l.materials.begin(), l.materials.end());
-        } else if (l.file) {
-            warnings_.push_back("material library '" + l.name + "' not found, using '" +
-                                substitute.filename().string() + "'");
-            missing_library_ = true;
-            defined_.insert(l.materials.begin(), l.materials.end());
-        } else {
-            warnings_.push_back("material library '" + l.name +
-                                "' not found, using the default material");
+        if (!l.warning.empty()) {
+            warnings_.push_back(l.warning);
             missing_library_ = true;
         }
+        if (l.file) defined_.insert(l.materials.begin(), l.materials.end());
     }
 }
 
@@ -160,12 +144,13 @@ const aiMaterial* Materials::assimp_material(const std::string& name) {
         }
         text += "v 0 0 0\nf 1 1 1\n";
         importer_ = std::make_unique<Assimp::Importer>();
+        importer_->SetIOHandler(new ConfinedIOSystem(policy_, refusals_));  // owned by importer_
         try {
             ai_ = importer_->ReadFileFromMemory(text.data(), text.size(), 0, "obj");
         } catch (const std::exception&) {
             ai_ = nullptr;
         }
-        if (ai_ != nullptr) textures_.emplace(*ai_, path_, warnings_);
+        if (ai_ != nullptr) textures_.emplace(*ai_, path_, policy_, warnings_);
     }
     if (ai_ == nullptr) return nullptr;
     for (unsigned i = 0; i < ai_->mNumMaterials; ++i)

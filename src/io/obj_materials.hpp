@@ -13,6 +13,7 @@
 
 #include "io/obj_chunk_parser.hpp"
 #include "io/obj_parser.hpp"
+#include "io/reference_policy.hpp"
 #include "io/texture_loader.hpp"
 
 #include <cstdint>
@@ -38,6 +39,7 @@ struct LibraryLoad {
     std::string name;
     std::optional<std::filesystem::path> file;
     bool substitute = false;  // file is "<obj name>.mtl"
+    std::string warning;      // when file is not the library named
     std::vector<std::string> materials;
 };
 
@@ -46,13 +48,15 @@ struct LibraryLoad {
 struct Statements {
     std::vector<const Event*> events;    // into the chunks
     std::vector<LibraryLoad> libraries;  // one per mtllib statement
+    ReferencePolicy policy;              // which library and texture files may be read
 };
 
 // Collects the statements of `chunks` (whose first_line is set) and resolves and scans the
 // libraries, each file once. Returns the mtllib line when a library's `newmtl` names could be
 // read differently by Assimp's MTL reader and the Assimp path's library check.
 std::optional<ObjFallback> read_statements(const std::filesystem::path& obj_path,
-                                           const std::vector<Chunk>& chunks, Statements& out);
+                                           const std::vector<Chunk>& chunks,
+                                           const ReferencePolicy& policy, Statements& out);
 
 // The scene's materials, made on first use of each usemtl name. The constructor adds the
 // warnings for missing libraries.
@@ -74,6 +78,7 @@ class Materials {
     std::filesystem::path path_;
     const std::vector<const Event*>& events_;
     const std::vector<LibraryLoad>& libraries_;
+    ReferencePolicy policy_;
     Scene& scene_;
     std::vector<std::string>& warnings_;
     std::set<std::string> defined_;
@@ -82,6 +87,7 @@ class Materials {
     std::unique_ptr<Assimp::Importer> importer_;
     const aiScene* ai_ = nullptr;
     std::optional<TextureLoader> textures_;
+    std::vector<std::string> refusals_;  // files the confined Assimp was refused
 };
 
 }  // namespace zraster::io::obj

@@ -227,7 +227,8 @@ std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
     // The material libraries before the structure: reading one changes Assimp's current
     // material.
     obj::Statements statements;
-    if (auto fallback = obj::read_statements(path, chunks, statements)) return *fallback;
+    const ReferencePolicy policy(path, options.allow_outside_references);
+    if (auto fallback = obj::read_statements(path, chunks, policy, statements)) return *fallback;
     obj::Structure structure = obj::replay_statements(chunks, offsets.faces, statements.libraries);
     const obj::OutputMeshes output = obj::output_meshes(structure, chunks, offsets.faces);
     obj::check_triangle_count(output.triangles, file, options);

@@ -38,16 +38,14 @@ std::optional<std::string> percent_decoded(const std::string& s) {
     return out;
 }
 
-bool is_file(const std::filesystem::path& p) {
-    std::error_code ec;
-    return std::filesystem::is_regular_file(p, ec);
-}
-
 }  // namespace
 
 TextureLoader::TextureLoader(const aiScene& scene, const std::filesystem::path& model_path,
-                             std::vector<std::string>& warnings)
-    : scene_(scene), model_dir_(model_path.parent_path()), warnings_(warnings) {}
+                             ReferencePolicy policy, std::vector<std::string>& warnings)
+    : scene_(scene),
+      model_dir_(model_path.parent_path()),
+      policy_(std::move(policy)),
+      warnings_(warnings) {}
 
 std::shared_ptr<const Texture> TextureLoader::load(const std::string& reference) {
     if (scene_.GetEmbeddedTexture(reference.c_str()) != nullptr) return load_embedded(reference);
@@ -119,11 +117,15 @@ std::shared_ptr<const Texture> TextureLoader::load_external(const std::string& r
     }
 
     std::filesystem::path found;
+    std::string refused;  // the first candidate the policy refused, with the reason
     for (const auto& c : candidates) {
-        if (is_file(c)) {
+        const ReferencePolicy::Check check = policy_.check(c);
+        if (check.verdict == ReferencePolicy::Verdict::Readable) {
             found = c;
             break;
         }
+        if (check.verdict == ReferencePolicy::Verdict::Refused && refused.empty())
+            refused = c.string() + " " + check.reason;
     }
     std::error_code ec;
     const std::string key = found.empty() ? "missing:" + reference
@@ -131,7 +133,10 @@ std::shared_ptr<const Texture> TextureLoader::load_external(const std::string& r
     if (auto it = cache_.find(key); it != cache_.end()) return it->second;
 
     std::shared_ptr<const Texture> result;
-    if (found.empty()) {
+    if (found.empty() && !refused.empty()) {
+        warnings_.push_back("texture '" + reference + "' not read: " + refused +
+                            ", using the material color (" + ReferencePolicy::how_to_allow() + ")");
+    } else if (found.empty()) {
         warnings_.push_back("texture '" + reference + "' not found, using the material color");
     } else {
         try {

@@ -9,15 +9,18 @@
 #include <string>
 #include <vector>
 
+#include "io/reference_policy.hpp"
+
 struct aiScene;
 
 namespace zraster::io {
 
 class TextureLoader {
   public:
-    // Problems are appended to `warnings` (as causes, without the model's name).
+    // Problems are appended to `warnings` (as causes, without the model's name). Image files
+    // are read only where `policy` allows (the model's folder by default).
     TextureLoader(const aiScene& scene, const std::filesystem::path& model_path,
-                  std::vector<std::string>& warnings);
+                  ReferencePolicy policy, std::vector<std::string>& warnings);
 
     // The texture a material refers to, or null (with a warning) when it is missing or
     // unreadable: the material's color is used then.
@@ -29,6 +32,7 @@ class TextureLoader {
 
     const aiScene& scene_;
     std::filesystem::path model_dir_;
+    ReferencePolicy policy_;
     std::vector<std::string>& warnings_;
     std::map<std::string, std::shared_ptr<const Texture>> cache_;  // null entries: warned once
 };

@@ -88,16 +88,22 @@ int checked_thread_count(const std::string& option, int requested) {
 
 namespace {
 bool g_load_in_process = false;
+bool g_allow_outside_references = false;
 }  // namespace
 
 void set_load_in_process(bool in_process) {
     g_load_in_process = in_process;
 }
 
+void set_allow_outside_references(bool allow) {
+    g_allow_outside_references = allow;
+}
+
 Scene load_scene_or_procedural(const std::string& spec) {
     if (is_procedural_spec(spec)) return make_procedural_scene(spec);
     LoadOptions options;
     options.isolation = g_load_in_process ? LoadIsolation::InProcess : LoadIsolation::WorkerProcess;
+    options.allow_outside_references = g_allow_outside_references;
     return load_scene(spec, options);
 }
 

@@ -34,5 +34,8 @@ ShadingStrategy shading_strategy(const std::string& name);
 // (the --load-in-process flag; run_zraster sets it for every run).
 Scene load_scene_or_procedural(const std::string& spec);
 void set_load_in_process(bool in_process);
+// The --allow-outside-references flag: a model's external files may be read from anywhere
+// (LoadOptions::allow_outside_references).
+void set_allow_outside_references(bool allow);
 
 }  // namespace zraster::cli

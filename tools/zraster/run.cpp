@@ -38,6 +38,10 @@ int run_zraster(std::vector<std::string> args) {
     app.add_flag("--load-in-process", load_in_process,
                  "Run the Assimp importer in this process instead of a worker process (faster "
                  "for many small files; a crash in Assimp then ends zraster)");
+    bool allow_outside_references = false;
+    app.add_flag("--allow-outside-references", allow_outside_references,
+                 "Read a model's external files (glTF buffers and images, OBJ material libraries "
+                 "and textures) outside its folder too; by default they are refused");
     for (CLI::App* sub : app.get_subcommands({})) sub->fallthrough();
 
     // `zraster -o x.png --size ...` means `zraster render -o x.png --size ...`.
@@ -58,6 +62,7 @@ int run_zraster(std::vector<std::string> args) {
     }
 
     set_load_in_process(load_in_process);
+    set_allow_outside_references(allow_outside_references);
     try {
         if (app.got_subcommand("info")) return run_info(info_args);
         if (app.got_subcommand("bench")) return run_bench(bench_args);

@@ -1,0 +1,27 @@
+#include "io/confined_io_system.hpp"
+
+#include <algorithm>
+
+namespace zraster::io {
+
+bool ConfinedIOSystem::allowed(const char* file) const {
+    const ReferencePolicy::Check check = policy_.check(file);
+    if (check.verdict == ReferencePolicy::Verdict::Refused) {
+        const std::string line = "'" + std::string(file) + "' " + check.reason;
+        if (std::find(refusals_.begin(), refusals_.end(), line) == refusals_.end())
+            refusals_.push_back(line);
+    }
+    return check.verdict == ReferencePolicy::Verdict::Readable;
+}
+
+bool ConfinedIOSystem::Exists(const char* file) const {
+    return allowed(file);
+}
+
+Assimp::IOStream* ConfinedIOSystem::Open(const char* file, const char* mode) {
+    // Only reading is confined; Assimp's importers never write.
+    if (!allowed(file)) return nullptr;
+    return Assimp::DefaultIOSystem::Open(file, mode);
+}
+
+}  // namespace zraster::io

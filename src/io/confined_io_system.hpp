@@ -1,0 +1,30 @@
+// Assimp's file access, confined by a ReferencePolicy: every file an importer opens besides the
+// model (glTF buffers, OBJ material libraries, ...) must be one the policy allows. A refused file
+// looks missing to Assimp, and its refusal is kept so that the error (or warning) names it.
+#pragma once
+#include <assimp/DefaultIOSystem.h>
+
+#include <string>
+#include <vector>
+
+#include "io/reference_policy.hpp"
+
+namespace zraster::io {
+
+class ConfinedIOSystem : public Assimp::DefaultIOSystem {
+  public:
+    // `refusals` collects one line per refused file ("'path' is outside ..."); it must outlive
+    // the importer that owns this IOSystem.
+    ConfinedIOSystem(ReferencePolicy policy, std::vector<std::string>& refusals)
+        : policy_(std::move(policy)), refusals_(refusals) {}
+
+    bool Exists(const char* file) const override;
+    Assimp::IOStream* Open(const char* file, const char* mode = "rb") override;
+
+  private:
+    bool allowed(const char* file) const;
+    ReferencePolicy policy_;
+    std::vector<std::string>& refusals_;
+};
+
+}  // namespace zraster::io

@@ -1,0 +1,50 @@
+#include "io/reference_policy.hpp"
+
+#include <algorithm>
+#include <system_error>
+
+namespace zraster::io {
+
+ReferencePolicy::ReferencePolicy(const std::filesystem::path& model_path, bool allow_outside) {
+    if (allow_outside) return;
+    std::error_code ec;
+    const std::filesystem::path folder =
+        model_path.parent_path().empty() ? std::filesystem::path(".") : model_path.parent_path();
+    root_ = std::filesystem::canonical(folder, ec);
+    // A model whose folder cannot be resolved reads nothing besides itself.
+    if (ec) root_ = "/nonexistent-zraster-model-folder";
+    model_ = std::filesystem::canonical(model_path, ec);
+}
+
+ReferencePolicy::Check ReferencePolicy::check(const std::filesystem::path& file) const {
+    std::error_code ec;
+    const std::filesystem::file_status link = std::filesystem::symlink_status(file, ec);
+    if (ec || !std::filesystem::exists(link)) return {Verdict::Missing, {}};
+    const std::filesystem::path resolved = std::filesystem::canonical(file, ec);
+    if (ec) {
+        // A dangling link, or a loop of links.
+        if (ec == std::errc::too_many_symbolic_link_levels)
+            return {Verdict::Refused, "is a loop of symbolic links"};
+        return {Verdict::Missing, {}};
+    }
+    if (!root_.empty() && resolved != model_) {
+        const auto [end, _] =
+            std::mismatch(root_.begin(), root_.end(), resolved.begin(), resolved.end());
+        if (end != root_.end())
+            return {Verdict::Refused, "is outside the model's folder (" + resolved.string() +
+                                          " is not under " + root_.string() + ")"};
+    }
+    const std::filesystem::file_status status = std::filesystem::status(resolved, ec);
+    if (ec) return {Verdict::Missing, {}};
+    if (std::filesystem::is_directory(status)) return {Verdict::Refused, "is a directory"};
+    if (!std::filesystem::is_regular_file(status))
+        return {Verdict::Refused, "is not a regular file (a FIFO, socket or device)"};
+    return {Verdict::Readable, {}};
+}
+
+const char* ReferencePolicy::how_to_allow() {
+    return "--allow-outside-references or LoadOptions::allow_outside_references reads files "
+           "outside the model's folder";
+}
+
+}  // namespace zraster::io

@@ -1,0 +1,37 @@
+// Where a model's external references (glTF buffers and images, OBJ material libraries and
+// textures, any file an importer opens besides the model) may be read from. A service rendering
+// uploaded files must not read /etc/passwd because a glTF buffer names it, nor block forever on
+// a FIFO: by default a reference must be a regular file inside the model's folder, once
+// symbolic links are followed (LoadOptions::allow_outside_references lifts the folder rule).
+#pragma once
+#include <filesystem>
+#include <string>
+
+namespace zraster::io {
+
+class ReferencePolicy {
+  public:
+    enum class Verdict { Readable, Missing, Refused };
+    struct Check {
+        Verdict verdict = Verdict::Missing;
+        std::string reason;  // for Refused: why, in the user's words
+    };
+
+    // Allows every regular file (for callers with no model).
+    ReferencePolicy() = default;
+    ReferencePolicy(const std::filesystem::path& model_path, bool allow_outside);
+
+    // Whether `file` (as an importer would open it: relative to the working directory) may be
+    // read. Missing: it does not exist (or is a dangling link); Refused: it exists but is not a
+    // regular file, or lies outside the model's folder.
+    Check check(const std::filesystem::path& file) const;
+
+    // The advice appended to a refusal's message.
+    static const char* how_to_allow();
+
+  private:
+    std::filesystem::path root_;   // the model's folder, canonical; empty: anywhere
+    std::filesystem::path model_;  // the model itself, canonical (readable wherever it is)
+};
+
+}  // namespace zraster::io

@@ -1,0 +1,136 @@
+// A model's external references (glTF buffers, OBJ material libraries and textures) are read
+// only from regular files inside the model's folder, once symbolic links are followed, unless
+// LoadOptions::allow_outside_references says otherwise; FIFOs and devices never.
+#include <zraster/load.hpp>
+
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <string>
+
+#include "io/io_test_util.hpp"
+#include "io/obj_parser.hpp"
+#include "support/test_support.hpp"
+
+namespace zraster {
+namespace {
+
+// One triangle whose positions are the 36 bytes of `uri`.
+std::string triangle_gltf(const std::string& uri) {
+    return R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
+           R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],)"
+           R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3",)"
+           R"("min":[0,0,0],"max":[1,1,0]}],"bufferViews":[{"buffer":0,"byteLength":36}],)"
+           R"("buffers":[{"uri":")" +
+           uri + R"(","byteLength":36}]})";
+}
+
+std::string triangle_bytes() {
+    const float xyz[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    return std::string(reinterpret_cast<const char*>(xyz), sizeof xyz);
+}
+
+// dir/model/ holds the models; dir/outside.bin, dir/outside.mtl and dir/outside.png lie beside.
+std::filesystem::path fixture(const std::string& name) {
+    const auto dir = test::temp_dir(name);
+    std::filesystem::create_directory(dir / "model");
+    test::write_bytes(dir / "outside.bin", triangle_bytes());
+    test::write_bytes(dir / "model" / "inside.bin", triangle_bytes());
+    test::write_bytes(dir / "outside.mtl", "newmtl red\nKd 1 0 0\n");
+    return dir;
+}
+
+LoadOptions in_process(bool allow_outside = false) {
+    LoadOptions o;
+    o.isolation = LoadIsolation::InProcess;
+    o.allow_outside_references = allow_outside;
+    return o;
+}
+
+TEST(LoadReferences, GltfBufferInsideTheFolderLoads) {
+    const auto dir = fixture("refs-inside");
+    test::write_bytes(dir / "model" / "m.gltf", triangle_gltf("inside.bin"));
+    EXPECT_EQ(load_scene(dir / "model" / "m.gltf", in_process()).triangle_count(), 1u);
+}
+
+TEST(LoadReferences, GltfBufferOutsideTheFolderIsRefusedByName) {
+    const auto dir = fixture("refs-outside");
+    const auto model = dir / "model" / "m.gltf";
+    test::write_bytes(model, triangle_gltf("../outside.bin"));
+    for (const LoadIsolation isolation : {LoadIsolation::InProcess, LoadIsolation::WorkerProcess}) {
+        LoadOptions o = in_process();
+        o.isolation = isolation;
+        test::expect_input_error([&] { load_scene(model, o); }, model,
+                                 "../outside.bin' is outside the model's folder");
+        test::expect_input_error([&] { load_scene(model, o); }, model,
+                                 "--allow-outside-references");
+    }
+    EXPECT_EQ(load_scene(model, in_process(true)).triangle_count(), 1u);
+}
+
+TEST(LoadReferences, AbsolutePathsAndSymbolicLinksOutAreRefused) {
+    const auto dir = fixture("refs-links");
+    // An absolute URI (Assimp 5.2 joins it to the model's folder when the model's path is
+    // absolute, so it is then merely missing): never read.
+    const auto absolute = dir / "model" / "absolute.gltf";
+    test::write_bytes(absolute, triangle_gltf((dir / "outside.bin").string()));
+    EXPECT_THROW(load_scene(absolute, in_process()), InputError);
+    std::filesystem::create_symlink(dir / "outside.bin", dir / "model" / "link.bin");
+    const auto linked = dir / "model" / "linked.gltf";
+    test::write_bytes(linked, triangle_gltf("link.bin"));
+    test::expect_input_error([&] { load_scene(linked, in_process()); }, linked,
+                             "is outside the model's folder");
+    // A link that stays inside is fine.
+    std::filesystem::create_symlink(dir / "model" / "inside.bin", dir / "model" / "in-link.bin");
+    const auto inner = dir / "model" / "inner.gltf";
+    test::write_bytes(inner, triangle_gltf("in-link.bin"));
+    EXPECT_EQ(load_scene(inner, in_process()).triangle_count(), 1u);
+}
+
+TEST(LoadReferences, AFifoIsRefusedNotWaitedOn) {
+    const auto dir = fixture("refs-fifo");
+    ASSERT_EQ(::mkfifo((dir / "model" / "fifo.bin").c_str(), 0600), 0);
+    const auto model = dir / "model" / "fifo.gltf";
+    test::write_bytes(model, triangle_gltf("fifo.bin"));
+    for (const bool allow : {false, true})
+        test::expect_input_error([&] { load_scene(model, in_process(allow)); }, model,
+                                 "is not a regular file");
+}
+
+TEST(LoadReferences, ObjLibrariesAndTexturesOutsideAreNotReadWithAWarning) {
+    const auto dir = fixture("refs-obj");
+    const auto model = dir / "model" / "m.obj";
+    test::write_bytes(model,
+                      "mtllib ../outside.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n");
+    const Scene fast = load_scene(model, in_process());
+    const Scene assimp = io::load_scene_with_assimp(model, in_process());
+    for (const Scene* scene : {&fast, &assimp}) {
+        ASSERT_FALSE(scene->warnings.empty());
+        EXPECT_NE(scene->warnings[0].find("material library '../outside.mtl' not read"),
+                  std::string::npos)
+            << scene->warnings[0];
+        EXPECT_NE(scene->warnings[0].find("is outside the model's folder"), std::string::npos)
+            << scene->warnings[0];
+        EXPECT_EQ(scene->materials.size(), 1u);  // the default material only
+    }
+    EXPECT_EQ(fast.warnings, assimp.warnings);
+    // Allowed: the library's red material is read.
+    const Scene allowed = load_scene(model, in_process(true));
+    EXPECT_EQ(allowed.materials.size(), 2u);
+    EXPECT_TRUE(allowed.warnings.empty()) << allowed.warnings[0];
+
+    // A texture outside: the material keeps its color, with a warning naming the file.
+    test::write_bytes(dir / "model" / "tex.mtl", "newmtl t\nKd 1 1 1\nmap_Kd ../outside.png\n");
+    test::write_bytes(dir / "outside.png", "not read anyway");
+    const auto textured = dir / "model" / "t.obj";
+    test::write_bytes(
+        textured, "mtllib tex.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nusemtl t\nf 1/1 2/1 3/1\n");
+    const Scene t = load_scene(textured, in_process());
+    ASSERT_EQ(t.warnings.size(), 1u);
+    EXPECT_NE(t.warnings[0].find("texture '../outside.png' not read"), std::string::npos)
+        << t.warnings[0];
+    EXPECT_EQ(t.materials.at(1).base_color_texture, nullptr);
+}
+
+}  // namespace
+}  // namespace zraster
