@@ -36,6 +36,9 @@ struct LoadOptions {
     // Larger files are refused before their geometry is allocated.
     std::size_t max_triangles = 50'000'000;
     std::size_t max_file_bytes = std::size_t{4} << 30;
+    // Meshes placed by the node hierarchy (instances). Nodes that share children multiply: a
+    // 1.5 KB glTF can place billions; it is refused before the hierarchy is expanded.
+    std::size_t max_instances = 1'000'000;
 
     // External references (glTF buffers and images, OBJ material libraries and textures) must be
     // regular files inside the model's folder, once symbolic links are followed: a buffer URI

@@ -1,6 +1,10 @@
 #include "io/assimp_nodes.hpp"
 
+#include <zraster/error.hpp>
+
 #include <assimp/scene.h>
+
+#include <string>
 
 #include <utility>
 
@@ -13,7 +17,8 @@ glm::mat4 to_glm(const aiMatrix4x4& m) {
                      m.a4, m.b4, m.c4, m.d4);  // column 3: translation
 }
 
-std::vector<NodeMesh> collect_node_meshes(const aiScene& scene) {
+std::vector<NodeMesh> collect_node_meshes(const aiScene& scene, std::size_t max_instances,
+                                          const std::string& file) {
     std::vector<NodeMesh> out;
     if (scene.mRootNode == nullptr) return out;
     // An explicit stack: a hostile file can nest nodes deeper than the call stack allows.
@@ -22,6 +27,11 @@ std::vector<NodeMesh> collect_node_meshes(const aiScene& scene) {
         const auto [node, parent] = stack.back();
         stack.pop_back();
         const glm::mat4 transform = parent * to_glm(node->mTransformation);
+        if (node->mNumMeshes > max_instances - out.size())
+            throw InputError(file, "the node hierarchy places more than " +
+                                       std::to_string(max_instances) +
+                                       " meshes; the limit is LoadOptions::max_instances "
+                                       "(--max-instances)");
         for (unsigned i = 0; i < node->mNumMeshes; ++i)
             out.push_back({node->mMeshes[i], transform, node->mName.C_Str()});
         for (unsigned c = node->mNumChildren; c-- > 0;)

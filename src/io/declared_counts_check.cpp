@@ -146,7 +146,8 @@ void check_ply_lists(const std::filesystem::path& path, std::size_t header_bytes
 
 // GLB (binary glTF): Assimp allocates each chunk's declared length before reading it (a JSON
 // chunk claiming 1.9 GB in a 3 KB file, found by fuzz_load_gltf). Chunks must fit in the file.
-void check_glb(const std::filesystem::path& path, std::uintmax_t file_size) {
+void check_glb(const std::filesystem::path& path, std::uintmax_t file_size,
+               const LoadOptions& options) {
     std::ifstream in(path, std::ios::binary);
     std::uint64_t at = 12;
     std::string json;
@@ -171,7 +172,7 @@ void check_glb(const std::filesystem::path& path, std::uintmax_t file_size) {
         }
         at += 8 + length;
     }
-    check_gltf_bounds(path, json, binary);
+    check_gltf_bounds(path, json, binary, options);
 }
 
 // Binary records hold every scalar and each list's length; ASCII records at least one digit and
@@ -391,7 +392,8 @@ bool is_ply(const std::string& head) {
 
 }  // namespace
 
-void check_declared_counts(const std::filesystem::path& path, std::uintmax_t file_size) {
+void check_declared_counts(const std::filesystem::path& path, std::uintmax_t file_size,
+                           const LoadOptions& options) {
     // Headers are short; 64 KiB leaves room for long comment blocks.
     const std::string head = read_prefix(path, std::size_t{64} * 1024);
     if (is_ply(head)) {
@@ -399,7 +401,7 @@ void check_declared_counts(const std::filesystem::path& path, std::uintmax_t fil
         return;
     }
     if (head.size() >= 12 && head.starts_with("glTF")) {
-        check_glb(path, file_size);
+        check_glb(path, file_size, options);
         return;
     }
     // Assimp picks the importer by extension for the formats below; for an unknown one it asks
@@ -411,7 +413,7 @@ void check_declared_counts(const std::filesystem::path& path, std::uintmax_t fil
         std::ifstream in(path, std::ios::binary);
         check_gltf_bounds(
             path, std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()),
-            std::nullopt);
+            std::nullopt, options);
         return;
     }
     for (const char* other : {".obj", ".ply", ".stl", ".glb", ".3ds"})

@@ -1,8 +1,13 @@
 #include "io/gltf_bounds_check.hpp"
 
+#include "io/reference_policy.hpp"
+
 #include <zraster/error.hpp>
 
 #include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <utility>
 
 #include <system_error>
 #include <vector>
@@ -68,13 +73,18 @@ std::optional<std::uint64_t> data_uri_bytes(const std::string& uri) {
 class Checker {
   public:
     Checker(const std::filesystem::path& path, const json& document,
-            std::optional<std::uint64_t> glb_binary)
-        : path_(path), document_(document), glb_binary_(glb_binary) {}
+            std::optional<std::uint64_t> glb_binary, const LoadOptions& options)
+        : path_(path),
+          document_(document),
+          glb_binary_(glb_binary),
+          options_(options),
+          policy_(path, options.allow_outside_references) {}
 
     void run() {
         buffers();
         views();
         accessors();
+        instances();
     }
 
   private:
@@ -105,9 +115,11 @@ class Checker {
                 const std::string text = uri->get<std::string>();
                 if (text.starts_with("data:")) {
                     data = data_uri_bytes(text);
-                } else {
+                } else if (const auto file = path_.parent_path() / text;
+                           policy_.check(file).verdict == ReferencePolicy::Verdict::Readable) {
+                    // (A refused file is left to the loader, which names it.)
                     std::error_code ec;
-                    const auto size = std::filesystem::file_size(path_.parent_path() / text, ec);
+                    const auto size = std::filesystem::file_size(file, ec);
                     if (!ec) data = size;
                 }
             }
@@ -189,19 +201,89 @@ class Checker {
         }
     }
 
+    // Meshes placed by the scene's node graph, counted without expanding it: a node places its
+    // own mesh once per path from a root to it. Refuses a cycle and a count past the budget.
+    void instances() {
+        const json& nodes = array("nodes");
+        const json& meshes = array("meshes");
+        const std::uint64_t limit = options_.max_instances;
+        std::vector<std::uint64_t> placed(nodes.size(), 0);
+        std::vector<std::uint8_t> state(nodes.size(), 0);  // 0 new, 1 on the path, 2 done
+        const auto child_list = [&](std::size_t n) -> const json* {
+            const auto it = nodes[n].is_object() ? nodes[n].find("children") : nodes[n].end();
+            return it != nodes[n].end() && it->is_array() ? &*it : nullptr;
+        };
+        for (std::size_t root = 0; root < nodes.size(); ++root) {
+            // Post-order with an explicit stack: a hostile file can nest deeper than the call
+            // stack allows.
+            std::vector<std::pair<std::size_t, std::size_t>> stack;  // node, next child
+            if (state[root] == 0) stack.emplace_back(root, 0);
+            while (!stack.empty()) {
+                auto& [n, next] = stack.back();
+                if (next == 0 && state[n] == 0) state[n] = 1;
+                const json* children = child_list(n);
+                if (children && next < children->size()) {
+                    const json& c = (*children)[next++];
+                    if (!c.is_number_unsigned() || c.get<std::uint64_t>() >= nodes.size())
+                        continue;  // Assimp reports it
+                    const auto child = static_cast<std::size_t>(c.get<std::uint64_t>());
+                    if (state[child] == 1)
+                        refuse("node " + std::to_string(child) + " is its own ancestor");
+                    if (state[child] == 0) stack.emplace_back(child, 0);
+                    continue;
+                }
+                std::uint64_t total = 0;
+                const auto mesh = nodes[n].is_object() ? nodes[n].find("mesh") : nodes[n].end();
+                if (mesh != nodes[n].end() && mesh->is_number_unsigned() &&
+                    mesh->get<std::uint64_t>() < meshes.size()) {
+                    const json& m = meshes[mesh->get<std::size_t>()];
+                    const auto primitives = m.is_object() ? m.find("primitives") : m.end();
+                    total = primitives != m.end() && primitives->is_array()
+                                ? std::max<std::uint64_t>(1, primitives->size())
+                                : 1;
+                }
+                if (children)
+                    for (const json& c : *children)
+                        if (c.is_number_unsigned() && c.get<std::uint64_t>() < nodes.size())
+                            total = std::min(limit + 1, total + placed[c.get<std::size_t>()]);
+                placed[n] = std::min(limit + 1, total);
+                state[n] = 2;
+                stack.pop_back();
+            }
+        }
+        // What the scene places: its root nodes (every node if it names no scene).
+        std::uint64_t total = 0;
+        const json& scenes = array("scenes");
+        const auto scene_index = unsigned_member(document_, "scene", 0).value_or(0);
+        if (scene_index < scenes.size() && scenes[scene_index].is_object()) {
+            const auto roots = scenes[scene_index].find("nodes");
+            if (roots != scenes[scene_index].end() && roots->is_array())
+                for (const json& r : *roots)
+                    if (r.is_number_unsigned() && r.get<std::uint64_t>() < nodes.size())
+                        total = std::min(limit + 1, total + placed[r.get<std::size_t>()]);
+        }
+        if (total > limit)
+            throw InputError(path_.string(),
+                             "the node graph places more than " + std::to_string(limit) +
+                                 " meshes (nodes sharing children multiply); the limit is "
+                                 "LoadOptions::max_instances (--max-instances)");
+    }
+
     const std::filesystem::path& path_;
     const json& document_;
     std::optional<std::uint64_t> glb_binary_;
+    const LoadOptions& options_;
+    ReferencePolicy policy_;
     std::vector<std::uint64_t> buffer_bytes_, view_bytes_, view_stride_;
 };
 
 }  // namespace
 
 void check_gltf_bounds(const std::filesystem::path& path, const std::string& json_text,
-                       std::optional<std::uint64_t> glb_binary) {
+                       std::optional<std::uint64_t> glb_binary, const LoadOptions& options) {
     const json document = json::parse(json_text, nullptr, false);
     if (document.is_discarded() || !document.is_object()) return;
-    Checker(path, document, glb_binary).run();
+    Checker(path, document, glb_binary, options).run();
 }
 
 }  // namespace zraster::io

@@ -3,6 +3,8 @@
 // heap-buffer-overflow found by fuzz_load_gltf), and allocates a GLB chunk's declared length
 // before reading it.
 #pragma once
+#include <zraster/load.hpp>
+
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -14,8 +16,11 @@ namespace zraster::io {
 // a GLB's BIN chunk, if any. Buffers with a uri are sized from their data: URI or from the file
 // beside `path`. Throws InputError("unsupported or malformed file: ...") for a buffer view
 // outside its buffer, an accessor (sparse parts included) outside its buffer view, or a buffer
-// declaring more bytes than its data holds. Leaves documents it cannot parse to Assimp.
+// declaring more bytes than its data holds, and for a node graph that places more than
+// options.max_instances meshes (nodes sharing children multiply: a small file can describe
+// billions) or holds a cycle. Buffer files are sized only where options' reference policy lets
+// them be read (reference_policy.hpp). Leaves documents it cannot parse to Assimp.
 void check_gltf_bounds(const std::filesystem::path& path, const std::string& json,
-                       std::optional<std::uint64_t> glb_binary);
+                       std::optional<std::uint64_t> glb_binary, const LoadOptions& options);
 
 }  // namespace zraster::io

@@ -154,7 +154,7 @@ Scene io::load_scene_with_assimp(const std::filesystem::path& path, const LoadOp
 std::uintmax_t io::precheck_assimp_input(const std::filesystem::path& path,
                                          const LoadOptions& options) {
     const std::uintmax_t size = io::check_input_file(path, options.max_file_bytes);
-    io::check_declared_counts(path, size);
+    io::check_declared_counts(path, size, options);
     return size;
 }
 
@@ -194,7 +194,8 @@ Scene io::import_with_assimp(const std::filesystem::path& path, const LoadOption
         throw malformed(e.what());
     }
 
-    const std::vector<io::NodeMesh> placements = io::collect_node_meshes(*ai);
+    const std::vector<io::NodeMesh> placements =
+        io::collect_node_meshes(*ai, options.max_instances, file);
     std::size_t triangles = 0;
     std::vector<bool> referenced(ai->mNumMeshes, false);
     for (const io::NodeMesh& p : placements) {

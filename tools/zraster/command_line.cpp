@@ -89,7 +89,12 @@ int checked_thread_count(const std::string& option, int requested) {
 namespace {
 bool g_load_in_process = false;
 bool g_allow_outside_references = false;
+std::size_t g_max_instances = LoadOptions{}.max_instances;
 }  // namespace
+
+void set_max_instances(std::size_t max_instances) {
+    g_max_instances = max_instances;
+}
 
 void set_load_in_process(bool in_process) {
     g_load_in_process = in_process;
@@ -104,6 +109,7 @@ Scene load_scene_or_procedural(const std::string& spec) {
     LoadOptions options;
     options.isolation = g_load_in_process ? LoadIsolation::InProcess : LoadIsolation::WorkerProcess;
     options.allow_outside_references = g_allow_outside_references;
+    options.max_instances = g_max_instances;
     return load_scene(spec, options);
 }
 

@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cstddef>
 #include <string>
 
 namespace zraster::cli {
@@ -37,5 +38,7 @@ void set_load_in_process(bool in_process);
 // The --allow-outside-references flag: a model's external files may be read from anywhere
 // (LoadOptions::allow_outside_references).
 void set_allow_outside_references(bool allow);
+// The --max-instances option (LoadOptions::max_instances).
+void set_max_instances(std::size_t max_instances);
 
 }  // namespace zraster::cli

@@ -2,6 +2,7 @@
 #include "run.hpp"
 
 #include <zraster/error.hpp>
+#include <zraster/load.hpp>
 #include <zraster/version.hpp>
 
 #include <fmt/format.h>
@@ -42,6 +43,12 @@ int run_zraster(std::vector<std::string> args) {
     app.add_flag("--allow-outside-references", allow_outside_references,
                  "Read a model's external files (glTF buffers and images, OBJ material libraries "
                  "and textures) outside its folder too; by default they are refused");
+    std::size_t max_instances = LoadOptions{}.max_instances;
+    app.add_option("--max-instances", max_instances,
+                   "Refuse models whose node hierarchy places more meshes than this (nodes that "
+                   "share children multiply them)")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{1'000'000'000}))
+        ->capture_default_str();
     for (CLI::App* sub : app.get_subcommands({})) sub->fallthrough();
 
     // `zraster -o x.png --size ...` means `zraster render -o x.png --size ...`.
@@ -63,6 +70,7 @@ int run_zraster(std::vector<std::string> args) {
 
     set_load_in_process(load_in_process);
     set_allow_outside_references(allow_outside_references);
+    set_max_instances(max_instances);
     try {
         if (app.got_subcommand("info")) return run_info(info_args);
         if (app.got_subcommand("bench")) return run_bench(bench_args);

@@ -1,0 +1,72 @@
+// What a small file can expand into is bounded before it is expanded: a node graph whose shared
+// children multiply the placed meshes is refused by its count, a cycle by name.
+#include <zraster/load.hpp>
+
+#include <string>
+
+#include "io/io_test_util.hpp"
+#include "support/test_support.hpp"
+
+namespace zraster {
+namespace {
+
+// A triangle mesh (data URI), node 0 placing it, and `levels` nodes above, each holding the node
+// below `fan_out` times: fan_out^levels placements from a 1-2 KB file.
+std::string shared_children_gltf(int levels, int fan_out) {
+    std::string nodes = R"({"mesh":0})";
+    for (int level = 1; level <= levels; ++level) {
+        std::string children;
+        for (int i = 0; i < fan_out; ++i) children += (i ? "," : "") + std::to_string(level - 1);
+        nodes += R"(,{"children":[)" + children + "]}";
+    }
+    // Three float3 positions: (0,0,0), (1,0,0), (0,1,0).
+    const std::string data =
+        "data:application/octet-stream;base64,"
+        "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA";
+    return R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[)" + std::to_string(levels) +
+           R"(]}],"nodes":[)" + nodes +
+           R"(],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],)"
+           R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3",)"
+           R"("min":[0,0,0],"max":[1,1,0]}],"bufferViews":[{"buffer":0,"byteLength":36}],)"
+           R"("buffers":[{"uri":")" +
+           data + R"(","byteLength":36}]})";
+}
+
+TEST(LoadBudgets, SharedChildrenArePlacedEachTimeWithinTheBudget) {
+    const auto dir = test::temp_dir("budgets-shared");
+    const auto model = dir / "shared.gltf";
+    test::write_bytes(model, shared_children_gltf(2, 3));
+    const Scene scene = load_scene(model);
+    EXPECT_EQ(scene.instances.size(), 9u);
+    LoadOptions tight;
+    tight.max_instances = 8;
+    test::expect_input_error([&] { load_scene(model, tight); }, model,
+                             "the node graph places more than 8 meshes");
+}
+
+TEST(LoadBudgets, AGraphOfBillionsIsRefusedBeforeItIsExpanded) {
+    const auto dir = test::temp_dir("budgets-billions");
+    const auto model = dir / "billions.gltf";
+    test::write_bytes(model, shared_children_gltf(10, 10));  // 10^10 placements
+    for (const LoadIsolation isolation : {LoadIsolation::InProcess, LoadIsolation::WorkerProcess}) {
+        LoadOptions o;
+        o.isolation = isolation;
+        test::expect_input_error([&] { load_scene(model, o); }, model,
+                                 "the node graph places more than 1000000 meshes (nodes sharing "
+                                 "children multiply); the limit is LoadOptions::max_instances");
+    }
+}
+
+TEST(LoadBudgets, ACycleOfNodesIsRefusedByName) {
+    const auto dir = test::temp_dir("budgets-cycle");
+    const auto model = dir / "cycle.gltf";
+    std::string text = shared_children_gltf(2, 1);
+    // Node 0 (the mesh) becomes a child of node 2, its own grandparent.
+    const std::string mesh_node = R"({"mesh":0})";
+    text.replace(text.find(mesh_node), mesh_node.size(), R"({"mesh":0,"children":[2]})");
+    test::write_bytes(model, text);
+    test::expect_input_error([&] { load_scene(model); }, model, "is its own ancestor");
+}
+
+}  // namespace
+}  // namespace zraster
