@@ -47,6 +47,26 @@ printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"missing.bi
 printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"%s"}],"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],"images":[{"uri":"missing.png"}],"textures":[{"source":0}],"materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}}],"meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0}' "$b64" >notexture.gltf
 printf 'glTF\x02\0\0\0\xff' >truncated.glb
 printf 'MM\x10\0\0\0\x02\0\x0a\0' >truncated.3ds
+# External references that leave the model's folder, a FIFO as a buffer, a node graph whose
+# shared children place 10^10 meshes, and a cycle of nodes.
+mkdir -p model
+printf '\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x80\x3f\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x80\x3f\0\0\0\0' >secret.bin
+buffer_gltf() {
+    printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"%s"}],"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0}' "$1"
+}
+buffer_gltf ../secret.bin >model/outside.gltf
+ln -s ../secret.bin model/link.bin
+buffer_gltf link.bin >model/symlink.gltf
+mkfifo model/fifo.bin
+buffer_gltf fifo.bin >model/fifo.gltf
+printf 'mtllib ../outside.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' >model/outside-mtl.obj
+printf 'newmtl m\nKd 1 0 0\n' >outside.mtl
+shared_nodes='{"mesh":0}'
+for level in 1 2 3 4 5 6 7 8 9 10; do
+    shared_nodes+=",{\"children\":[$(printf "$((level - 1)),%.0s" 1 2 3 4 5 6 7 8 9)$((level - 1))]}"
+done
+printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"%s"}],"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[%s],"scenes":[{"nodes":[10]}],"scene":0}' "$b64" "$shared_nodes" >shared-nodes.gltf
+printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"%s"}],"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0,"children":[1]},{"children":[0]}],"scenes":[{"nodes":[0]}],"scene":0}' "$b64" >cycle.gltf
 if [ -f "$shared/gltf/BoxWithInfinites.glb" ]; then
     cp "$shared/gltf/BoxWithInfinites.glb" infinites.glb
 fi
@@ -65,7 +85,7 @@ row() {
     local rc=0
     "$zraster" "$@" >stdout.txt 2>stderr.txt </dev/null || rc=$?
     local left
-    left=$(find . -maxdepth 2 \( -name 'out.*' -o -name '*.tmp-*' -o -name 'depth.txt' -o \
+    left=$(find . -maxdepth 2 \( -name 'out.*' -o -name '*.tmp-*' -o -name '.zraster-*' -o -name 'depth.txt' -o \
         -path './outdir.png/*' \) 2>/dev/null | sort | tr '\n' ' ')
     [ -z "$left" ] && left="none"
     [ "$rc" -eq 0 ] && left="$left(success)"
@@ -140,6 +160,16 @@ row "unknown builtin scene" render builtin:nothing -o out.png
 row "unknown option" render builtin:cube --no-such-option -o out.png
 row "unknown subcommand" frobnicate
 row "bench with 0 frames" bench builtin:cube --frames 0
+row "bench warm-up of 2^31 - 1 frames" bench builtin:cube --frames 1 --warmup 2147483647
+row "glTF buffer outside the model's folder" render model/outside.gltf -o out.png
+row "glTF buffer: a symbolic link out of the folder" render model/symlink.gltf -o out.png
+row "glTF buffer that is a FIFO" render model/fifo.gltf -o out.png
+row "glTF nodes sharing children: 10^10 placements" render shared-nodes.gltf -o out.png
+row "glTF nodes in a cycle" render cycle.gltf -o out.png
+row "two outputs naming one file" render builtin:cube --size 8x8 -o out.png --depth-out ./out.png
+row "output name over the file system's limit" render builtin:cube --size 8x8 -o out.png --depth-out "$(printf 'n%.0s' $(seq 300)).npy"
+row "clip plane with a zero normal" render builtin:cube --clip-plane 0,0,0,-1 -o out.png
+row "--orbit together with --eye" render builtin:cube --orbit 30,20,3 --eye 1,2,3 -o out.png
 echo
 echo "$n inputs; $failures broke the contract (exit 2, one line, nothing left)."
 [ "$failures" -eq 0 ]

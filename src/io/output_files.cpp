@@ -79,7 +79,10 @@ void OutputFiles::check(const std::filesystem::path& path, const std::string& wh
     if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
         throw InputError(label, "cannot write: exists and is not a regular file");
     std::error_code canonical_error, equivalent_error;
-    std::filesystem::path identity = std::filesystem::weakly_canonical(path, canonical_error);
+    // Absolute first: weakly_canonical leaves a relative path whose first part does not exist
+    // as it is ("out.png"), but resolves "./out.png".
+    std::filesystem::path identity = std::filesystem::weakly_canonical(
+        std::filesystem::absolute(path, canonical_error), canonical_error);
     if (canonical_error)
         identity = std::filesystem::absolute(path, canonical_error).lexically_normal();
     for (const Output& earlier : outputs_) {

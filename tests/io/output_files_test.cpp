@@ -58,6 +58,16 @@ TEST(OutputFiles, TheSameFileTwiceIsRefusedWhateverItsSpelling) {
     EXPECT_NE(same.find("--depth-out"), std::string::npos) << same;
     EXPECT_NE(same.find("is the same file as -o"), std::string::npos) << same;
     EXPECT_NE(error_of([&] { out.check(dir / "sub" / ".." / "x.png", "--normal-out"); }), "");
+    {
+        // Relative spellings of one new file.
+        const auto cwd = std::filesystem::current_path();
+        std::filesystem::current_path(dir);
+        OutputFiles relative;
+        relative.check("new.png", "-o");
+        const std::string dot = error_of([&] { relative.check("./new.png", "--depth-out"); });
+        std::filesystem::current_path(cwd);
+        EXPECT_NE(dot.find("is the same file as -o new.png"), std::string::npos) << dot;
+    }
     out.check(dir / "sub" / "y.png", "--normal-out");
     EXPECT_NE(error_of([&] { out.check(dir / "link" / "y.png", "--id-out"); }), "");
     // An existing file reached through a symbolic link to it.
@@ -65,8 +75,7 @@ TEST(OutputFiles, TheSameFileTwiceIsRefusedWhateverItsSpelling) {
     std::filesystem::create_symlink(dir / "z.npy", dir / "z-link.npy");
     out.check(dir / "z.npy", "--id-out");
     EXPECT_NE(error_of([&] { out.check(dir / "z-link.npy", "--extra"); }), "");
-    EXPECT_EQ(names_in(dir),
-              (std::vector<std::string>{"link", "sub", "z-link.npy", "z.npy"}));
+    EXPECT_EQ(names_in(dir), (std::vector<std::string>{"link", "sub", "z-link.npy", "z.npy"}));
 }
 
 TEST(OutputFiles, BadPathsAreRefusedByNameBeforeAnyWork) {
