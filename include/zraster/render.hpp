@@ -1,18 +1,41 @@
-// The Renderer: one frame of a Scene through the whole pipeline.
+// The Renderer: one frame of a scene through the whole pipeline.
 //
 //   instances --frustum cull--> vertex stage --assemble/cull--> clip --> setup --> bin into
 //   tiles --> per tile, in parallel: coverage, depth test, shading --> targets
 //
 // Tiles own their pixels and process their triangles in submission order, so the images are
 // bit-identical for any thread count.
+//
+// Two entry points, one pipeline:
+//  - render(const Scene&, options) and Renderer::render(const Scene&, options): an owning Scene
+//    in, RenderTargets (std::vectors) out. The scene is viewed (view_of in mesh_view.hpp) and
+//    the targets are the Renderer's own; nothing is copied.
+//  - Renderer::render(const SceneView&, options, const TargetViews&): the caller's vertex and
+//    index buffers in (mesh_view.hpp), the caller's images out (TargetViews: pointer and row
+//    pitch each). Zero copy both ways; the images are bit for bit the owning path's.
+//
+// Ownership: views and target memory belong to the caller. They must stay valid (and the scene
+// unchanged) for the duration of the call; the Renderer keeps nothing of them between calls
+// except their addresses and sizes as cache keys (the bounds of RenderOptions::cluster_culling),
+// checked against the data before use unless RenderOptions::static_meshes says they need not be.
+//
+// Threading: a Renderer draws one frame at a time (calls must not overlap); it runs the frame
+// on its own oneTBB arena of options.threads threads. Different Renderers may run concurrently.
+//
+// Memory: a Renderer keeps its working memory from frame to frame. After the first frame of a
+// given size, options and scene shape it makes no heap allocation, except once more in the
+// second frame that sees a large mesh unchanged, when cluster culling builds its bounds.
 #pragma once
 #include <zraster/camera.hpp>
 #include <zraster/depth_buffer.hpp>
+#include <zraster/export.hpp>
 #include <zraster/lighting.hpp>
+#include <zraster/mesh_view.hpp>
 #include <zraster/raster.hpp>
 #include <zraster/scene.hpp>
 #include <zraster/texture.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -113,7 +136,8 @@ struct RenderOptions {
     Edges edges = Edges::None;
     glm::vec3 edge_color{0.0f};
 
-    // Which targets to produce; depth is always kept.
+    // Which targets render(const Scene&, ...) produces; depth is always kept. (With TargetViews
+    // the non-null pointers choose, and these four are not read.)
     bool color_target = true;
     bool normal_target = false;
     bool id_targets = false;
@@ -134,6 +158,35 @@ struct RenderTargets {
     std::vector<std::int32_t> primitive_id;  // triangle index within its mesh, -1 where empty
     std::vector<std::uint32_t> front_hits, back_hits;
 };
+
+// The caller's images, for Renderer::render(const SceneView&, ...): each a pointer to the first
+// (top) row and the row pitch in bytes (0: rows tightly packed, width elements), the same
+// layouts and values as RenderTargets. Null: not wanted (and not computed where nothing else
+// needs it). width and height must equal RenderOptions::width and height. float, vec3 and
+// 32-bit targets must be 4-byte aligned, with pitches multiples of 4. Every pixel of every given
+// target is written every frame (nothing is assumed about what the memory held before); bytes
+// between a row's end and the next row (a pitch's padding) are never touched.
+struct TargetViews {
+    int width = 0, height = 0;
+    std::uint8_t* color = nullptr;  // RGBA8
+    std::size_t color_pitch = 0;
+    float* depth = nullptr;  // window-space depth as stored (decoded)
+    std::size_t depth_pitch = 0;
+    glm::vec3* normal = nullptr;  // world-space shading normal, (0,0,0) where empty
+    std::size_t normal_pitch = 0;
+    std::int32_t* instance_id = nullptr;  // -1 where empty
+    std::size_t instance_id_pitch = 0;
+    std::int32_t* primitive_id = nullptr;  // triangle index within its mesh, -1 where empty
+    std::size_t primitive_id_pitch = 0;
+    // Per-pixel counts of front- and back-facing fragments (RenderOptions::coverage_counts).
+    std::uint32_t* front_hits = nullptr;
+    std::size_t front_hits_pitch = 0;
+    std::uint32_t* back_hits = nullptr;
+    std::size_t back_hits_pitch = 0;
+};
+
+// Views of RenderTargets' arrays (null where an array is empty), rows tightly packed.
+ZRASTER_API TargetViews view_of(RenderTargets& targets);
 
 struct RenderStats {
     std::uint64_t instances = 0, instances_frustum_culled = 0;
@@ -170,12 +223,15 @@ struct RenderResult {
 // planes than supported, a non-finite camera), a request past options.limits, or an inconsistent
 // scene (an instance naming a missing mesh, a vertex index past the mesh's positions, normals or
 // uvs not one per position, no materials).
-RenderResult render(const Scene& scene, const RenderOptions& options);
+ZRASTER_API RenderResult render(const Scene& scene, const RenderOptions& options);
+// The same from views into the caller's targets (see Renderer::render below), for one frame.
+ZRASTER_API RenderStats render(const SceneView& scene, const RenderOptions& options,
+                               const TargetViews& targets);
 
 // The same, keeping its working memory (vertex arrays, bins, image targets) and its thread arena
 // from frame to frame: what an application rendering many frames wants. Not thread-safe: one
 // frame at a time.
-class Renderer {
+class ZRASTER_API Renderer {
   public:
     Renderer();
     ~Renderer();
@@ -187,13 +243,25 @@ class Renderer {
     // (So the targets are const: read or copy them, do not change them.)
     const RenderResult& render(const Scene& scene, const RenderOptions& options);
 
+    // One frame of the caller's scene into the caller's targets (see TargetViews), the same
+    // images as the call above for the same scene and options. Throws InputError, before
+    // anything is read or written, for what the call above refuses and for unusable views: a
+    // null pointer with a non-zero count, a stride shorter than its element, normals or uvs
+    // neither absent nor one per position, an index past the positions, an instance naming a
+    // missing mesh, a mesh naming a missing material, no materials, targets of another size
+    // than the options', a pitch shorter than a row, a misaligned target. The messages name
+    // the field ("mesh 2 'wall': positions.stride 8 is smaller than a position (12 bytes)").
+    // The statistics stay valid until the next call.
+    const RenderStats& render(const SceneView& scene, const RenderOptions& options,
+                              const TargetViews& targets);
+
   private:
     struct State;
     std::unique_ptr<State> state_;
 };
 
 // The options' effective depth compare function and clear value.
-CompareFunc effective_depth_compare(const RenderOptions& options);
-float depth_clear_value(const RenderOptions& options);
+ZRASTER_API CompareFunc effective_depth_compare(const RenderOptions& options);
+ZRASTER_API float depth_clear_value(const RenderOptions& options);
 
 }  // namespace zraster

@@ -4,6 +4,7 @@
 // into screen tiles. Runs in parallel over chunks of triangles; each chunk keeps its own refs
 // and bins, and the tiles visit the chunks in order.
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <chrono>
@@ -20,6 +21,12 @@
 
 namespace zraster::detail {
 namespace {
+
+constexpr std::size_t kTaggedRecord = sizeof(BinEntry) + sizeof(CornerAttributes);
+
+std::size_t whole_lines(std::size_t bytes) {
+    return (bytes + kCacheLine - 1) / kCacheLine * kCacheLine;
+}
 
 // Counts a new ref in the bins of the tiles it touches (binning's first pass, done as refs are
 // made: they are still in cache).
@@ -102,19 +109,18 @@ void clip_and_emit(const Frame& frame, TriangleRef ref, const std::array<glm::ve
 // clipping.
 void assemble_triangle(const Frame& frame, std::uint32_t instance, std::size_t t, Chunk& chunk) {
     const FrameInstance& fi = frame.instances[instance];
-    const Mesh& mesh = *fi.mesh;
+    const FrameMesh& mesh = *fi.mesh;
     const RenderOptions& options = *frame.options;
     const FrameVertices& vertices = frame.vertices;
     const int user_planes = frame.clip_settings.user_plane_count;
-    const auto vertex_total = static_cast<std::uint32_t>(mesh.positions.size());
-    const std::uint32_t* indices = mesh.indices.data();
+    const auto vertex_total = static_cast<std::uint32_t>(mesh.vertex_count());
     TriangleRef ref;
     ref.instance = instance;
     ref.primitive = static_cast<std::uint32_t>(t);
     std::array<std::uint32_t, 3> code{}, local{};
     bool valid = true, finite = true;
     for (std::size_t k = 0; k < 3; ++k) {
-        local[k] = indices[3 * t + k];
+        local[k] = mesh.index(3 * t + k);
         valid &= local[k] < vertex_total;
         const std::uint32_t global = fi.first_vertex + (local[k] < vertex_total ? local[k] : 0);
         ref.vertex[k] = global;
@@ -147,9 +153,7 @@ void assemble_triangle(const Frame& frame, std::uint32_t instance, std::size_t t
     }
     ++chunk.stats.triangles_clipped;
     // The clip positions the vertex stage computed (and did not keep), bit for bit.
-    const auto clip = [&](std::size_t k) {
-        return clip_position(fi.mvp, mesh.positions[local[k]]);
-    };
+    const auto clip = [&](std::size_t k) { return clip_position(fi.mvp, mesh.position(local[k])); };
     clip_and_emit(frame, ref, {clip(0), clip(1), clip(2)}, crossing, chunk);
 }
 
@@ -173,7 +177,8 @@ void classify_range(const Frame& frame, std::uint32_t instance, const ClassifyIn
             TriangleRef& ref = chunk.refs.emplace_back();
             ref.instance = instance;
             ref.primitive = out.triangle[k];
-            const std::uint32_t* corner = in.indices + 3 * std::size_t{out.triangle[k]};
+            const std::uint32_t* corner =
+                in.indices + 3 * (std::size_t{out.triangle[k]} - in.first_triangle);
             for (std::size_t c = 0; c < 3; ++c) ref.vertex[c] = fi.first_vertex + corner[c];
             ref.front_facing = (out.flags[k] & ClassifyOutput::kFront) != 0;
             ref.tile_x0 = static_cast<std::uint8_t>(out.min_x[k] / kTileSize);
@@ -187,9 +192,9 @@ void classify_range(const Frame& frame, std::uint32_t instance, const ClassifyIn
 }
 
 void process_instance_range(const Frame& frame, std::uint32_t instance, std::size_t first,
-                            std::size_t end, Chunk& chunk) {
+                            std::size_t end, Chunk& chunk, ClassifyOutput& out) {
     const FrameInstance& fi = frame.instances[instance];
-    const Mesh& mesh = *fi.mesh;
+    const FrameMesh& mesh = *fi.mesh;
     const FrameVertices& vertices = frame.vertices;
     // The batch classifier computes frame vertex indices in 32-bit lanes.
     const bool batch = frame.clip_settings.user_plane_count == 0 &&
@@ -199,13 +204,21 @@ void process_instance_range(const Frame& frame, std::uint32_t instance, std::siz
         return;
     }
     ClassifyInput in;
-    in.indices = mesh.indices.data();
-    in.triangle_total = mesh.triangle_count();
-    in.vertex_total = static_cast<std::uint32_t>(mesh.positions.size());
+    if (mesh.indices != nullptr) {
+        in.indices = mesh.indices;
+        in.triangle_total = mesh.triangle_count();
+    } else {  // 16-bit: the range's indices widened, in the chunk's kept scratch
+        chunk.widened_indices.resize(3 * (end - first));
+        widen_indices(mesh.view->indices, 3 * first, 3 * (end - first),
+                      chunk.widened_indices.data());
+        in.indices = chunk.widened_indices.data();
+        in.first_triangle = first;
+        in.triangle_total = end;
+    }
+    in.vertex_total = static_cast<std::uint32_t>(mesh.vertex_count());
     in.first_vertex = fi.first_vertex;
     in.screen = vertices.screen.data();
     in.settings = frame.setup_settings;
-    thread_local ClassifyOutput out;
     out.degenerate = out.culled = out.no_coverage = 0;
     // Whole clusters inside the range that their bounds prove culled are skipped (counted as
     // culled, as the classifier would); the triangles between them are classified.
@@ -215,14 +228,14 @@ void process_instance_range(const Frame& frame, std::uint32_t instance, std::siz
         const std::size_t triangles = mesh.triangle_count();
         const std::size_t first_cluster = (first + kClusterTriangles - 1) / kClusterTriangles;
         const std::size_t end_cluster =
-            end == triangles ? cluster_count(mesh) : end / kClusterTriangles;
+            end == triangles ? cluster_count(triangles) : end / kClusterTriangles;
         const std::size_t clusters = std::max(first_cluster, end_cluster) - first_cluster;
         const ClusterArrays& arrays = fi.clusters->arrays;
         // The vertex stage's verdicts, or this range's own.
         const std::uint8_t* culled =
             fi.culled_clusters != nullptr ? fi.culled_clusters + first_cluster : nullptr;
         if (culled == nullptr) {
-            thread_local std::vector<std::uint8_t> verdicts;
+            std::vector<std::uint8_t>& verdicts = chunk.cluster_verdicts;
             verdicts.resize(clusters);
             (frame.options->simd ? clusters_culled : clusters_culled_scalar)(
                 fi.cluster_view, arrays, first_cluster, clusters, verdicts.data());
@@ -234,7 +247,7 @@ void process_instance_range(const Frame& frame, std::uint32_t instance, std::siz
             const std::size_t hi = std::min(lo + kClusterTriangles, triangles);
             // The bounds hold for the indices they were built from: check those are still here.
             if (!fi.cluster_indices_checked && !frame.options->static_meshes &&
-                cluster_index_hash(mesh, c) != arrays.index_hash[c]) {
+                cluster_index_hash(*mesh.view, c) != arrays.index_hash[c]) {
                 fi.clusters->stale = true;
                 continue;
             }
@@ -250,7 +263,8 @@ void process_instance_range(const Frame& frame, std::uint32_t instance, std::siz
     chunk.stats.triangles_no_coverage += out.no_coverage;
 }
 
-void process_chunk(const Frame& frame, Chunk& chunk) {
+// `out`: the calling thread's slot's (SlotScratch::classify).
+void process_chunk(const Frame& frame, Chunk& chunk, ClassifyOutput& out) {
     const std::vector<std::size_t>& prefix = frame.instance_first_triangle;
     chunk.refs.reserve((chunk.end_triangle - chunk.first_triangle) / 2);
     chunk.bin_counts.assign(std::size_t(frame.tiles_x) * std::size_t(frame.tiles_y), 0);
@@ -258,10 +272,14 @@ void process_chunk(const Frame& frame, Chunk& chunk) {
         std::upper_bound(prefix.begin(), prefix.end(), chunk.first_triangle) - prefix.begin() - 1);
     for (std::size_t g = chunk.first_triangle; g < chunk.end_triangle; ++i) {
         const std::size_t end = std::min(chunk.end_triangle, prefix[i + 1]);
-        process_instance_range(frame, i, g - prefix[i], end - prefix[i], chunk);
+        process_instance_range(frame, i, g - prefix[i], end - prefix[i], chunk, out);
         g = end;
     }
     chunk.stats.triangles_in = chunk.end_triangle - chunk.first_triangle;
+    // The size of the chunk's bin runs (write_bins' scratch is sized for the largest chunk).
+    std::size_t bytes = 0;
+    for (const std::uint32_t n : chunk.bin_counts) bytes += whole_lines(n * frame.bin_record_bytes);
+    chunk.bin_bytes = bytes;
 }
 
 // The corners' world positions and normals of a triangle the SIMD Phong shader draws, for
@@ -278,12 +296,6 @@ void corner_attributes(const Frame& frame, const TriangleRef& ref, CornerAttribu
     }
 }
 
-constexpr std::size_t kTaggedRecord = sizeof(BinEntry) + sizeof(CornerAttributes);
-
-std::size_t whole_lines(std::size_t bytes) {
-    return (bytes + kCacheLine - 1) / kCacheLine * kCacheLine;
-}
-
 // Binning is a counting sort of all chunks' refs into tiles, in two passes around a prefix sum
 // over (tile, chunk): the front end counts a chunk's refs per tile as it makes them
 // (count_in_bins), write_bins writes its records at their final places (see
@@ -294,18 +306,16 @@ void write_bins(Frame& frame, std::size_t chunk_index) {
     const std::size_t chunks = frame.chunks.size();
     const std::size_t record = frame.bin_record_bytes;
     // The chunk's runs in a scratch buffer laid out like them (each on a cache line), kept
-    // from chunk to chunk so it stays in cache.
-    thread_local std::vector<std::size_t> run_start, cursor;
-    thread_local std::vector<std::byte> scratch_storage;
-    run_start.resize(tiles);
-    cursor.resize(tiles);
+    // from chunk to chunk so it stays in cache (the slot's: sized for the largest chunk).
+    SlotScratch& slot = frame.slot();
+    std::vector<std::size_t>& run_start = slot.run_start;
+    std::vector<std::size_t>& cursor = slot.cursor;
     std::size_t bytes = 0;
     for (std::size_t t = 0; t < tiles; ++t) {
         run_start[t] = cursor[t] = bytes;
         bytes += whole_lines(chunk.bin_counts[t] * record);
     }
-    if (scratch_storage.size() < bytes + kCacheLine) scratch_storage.resize(bytes + kCacheLine);
-    std::byte* scratch = align_to_cache_line(scratch_storage.data());
+    std::byte* scratch = align_to_cache_line(slot.bin_storage.data());
     for (std::uint32_t i = 0; i < chunk.refs.size(); ++i) {
         const TriangleRef& r = chunk.refs[i];
         // The first bin's record is written in place, the others copy it (a struct built on
@@ -362,7 +372,8 @@ void bin_offsets(Frame& frame) {
     };
     // Per tile first (its runs' counts, in the tile-major table), then the tiles' bases, then
     // the runs' places.
-    std::vector<std::size_t> tile_bytes(tiles);
+    std::vector<std::size_t>& tile_bytes = frame.tile_bytes;
+    tile_bytes.resize(tiles);
     over_tiles([&](std::size_t t) {
         std::size_t bytes = 0, count = 0;
         for (std::size_t c = 0; c < chunks; ++c) {
@@ -374,7 +385,8 @@ void bin_offsets(Frame& frame) {
         tile_bytes[t] = bytes;
         frame.tile_bin_counts[t] = count;
     });
-    std::vector<std::size_t> tile_base(tiles + 1, 0);
+    std::vector<std::size_t>& tile_base = frame.tile_base;
+    tile_base.assign(tiles + 1, 0);
     for (std::size_t t = 0; t < tiles; ++t) tile_base[t + 1] = tile_base[t] + tile_bytes[t];
     over_tiles([&](std::size_t t) {
         std::size_t at = tile_base[t];
@@ -413,12 +425,23 @@ void assemble_and_bin(Frame& frame, RenderStats& stats) {
         frame.chunks[c].end_triangle = std::min(total, (c + 1) * chunk_triangles);
     }
     const auto start = std::chrono::steady_clock::now();
-    tbb::parallel_for(std::size_t{0}, frame.chunks.size(),
-                      [&](std::size_t c) { process_chunk(frame, frame.chunks[c]); });
+    frame.bin_record_bytes = frame.tagged_shading ? kTaggedRecord : sizeof(BinEntry);
+    tbb::parallel_for(std::size_t{0}, frame.chunks.size(), [&](std::size_t c) {
+        process_chunk(frame, frame.chunks[c], frame.slot().classify);
+    });
     const auto assembled = std::chrono::steady_clock::now();
     stats.assembly_ms = std::chrono::duration<double, std::milli>(assembled - start).count();
-    frame.bin_record_bytes = frame.tagged_shading ? kTaggedRecord : sizeof(BinEntry);
     bin_offsets(frame);
+    // Every slot's scratch sized for the largest chunk before any takes one.
+    std::size_t largest_chunk = 0;
+    for (const Chunk& c : frame.chunks) largest_chunk = std::max(largest_chunk, c.bin_bytes);
+    const std::size_t tiles = std::size_t(frame.tiles_x) * std::size_t(frame.tiles_y);
+    for (SlotScratch& slot : frame.slots) {
+        slot.run_start.resize(tiles);
+        slot.cursor.resize(tiles);
+        if (slot.bin_storage.size() < largest_chunk + kCacheLine)
+            slot.bin_storage.resize(largest_chunk + kCacheLine);
+    }
     tbb::parallel_for(std::size_t{0}, frame.chunks.size(),
                       [&](std::size_t c) { write_bins(frame, c); });
     stats.binning_ms =

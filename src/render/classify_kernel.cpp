@@ -60,12 +60,13 @@ void ClassifyTriangles(const ClassifyInput& in, std::size_t first, std::size_t c
     for (; t + lanes <= count; t += lanes) {
         const std::size_t tri = first + t;
         if (tri + lanes <= prefetch_end) {
-            const std::uint32_t* ahead = in.indices + 3 * (tri + kPrefetchAhead);
+            const std::uint32_t* ahead =
+                in.indices + 3 * (tri + kPrefetchAhead - in.first_triangle);
             for (std::size_t i = 0; i < lanes; ++i)
                 __builtin_prefetch(mesh_screen + std::min(ahead[3 * i], last_vertex));
         }
         hn::Vec<decltype(du)> i0, i1, i2;
-        hn::LoadInterleaved3(du, in.indices + 3 * tri, i0, i1, i2);
+        hn::LoadInterleaved3(du, in.indices + 3 * (tri - in.first_triangle), i0, i1, i2);
         const auto in_range =
             hn::And(hn::And(hn::Lt(i0, total), hn::Lt(i1, total)), hn::Lt(i2, total));
         // Lanes with a bad index gather vertex 0 instead (and go the slow way).
@@ -187,8 +188,8 @@ void classify_triangles_scalar(const ClassifyInput& in, std::size_t first, std::
                                ClassifyOutput& out) {
     out.count = 0;
     for (std::size_t t = first; t < first + count; ++t) {
-        const std::uint32_t i0 = in.indices[3 * t], i1 = in.indices[3 * t + 1],
-                            i2 = in.indices[3 * t + 2];
+        const std::uint32_t* corner = in.indices + 3 * (t - in.first_triangle);
+        const std::uint32_t i0 = corner[0], i1 = corner[1], i2 = corner[2];
         bool fast = i0 < in.vertex_total && i1 < in.vertex_total && i2 < in.vertex_total;
         TriangleBounds bounds{0, 0, 0, 0, false};
         if (fast) {

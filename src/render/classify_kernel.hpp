@@ -21,10 +21,13 @@ namespace zraster::detail {
 inline constexpr std::int32_t kOutsideScreenX = std::numeric_limits<std::int32_t>::min();
 
 struct ClassifyInput {
-    const std::uint32_t* indices = nullptr;  // the mesh's, 3 per triangle
-    std::size_t triangle_total = 0;          // the mesh's triangle count (how far to prefetch)
-    std::uint32_t vertex_total = 0;          // the mesh's vertex count (indices must be below)
-    std::uint32_t first_vertex = 0;          // frame index of the mesh's vertex 0
+    // 3 per triangle, from triangle first_triangle's on: the mesh's own (first_triangle 0) or a
+    // widened copy of part of them (16-bit indices).
+    const std::uint32_t* indices = nullptr;
+    std::size_t first_triangle = 0;
+    std::size_t triangle_total = 0;  // the end of the triangles `indices` holds (prefetch bound)
+    std::uint32_t vertex_total = 0;  // the mesh's vertex count (indices must be below)
+    std::uint32_t first_vertex = 0;  // frame index of the mesh's vertex 0
     // Frame screen vertices (FrameVertices::screen), x = kOutsideScreenX where outside.
     const ScreenVertex* screen = nullptr;
     SetupSettings settings;

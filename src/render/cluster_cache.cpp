@@ -12,24 +12,28 @@ constexpr std::size_t kWorthItDivisor = 16;
 
 void attach_clusters(Frame& frame) {
     ClusterCache& cache = frame.cluster_cache;
-    for (auto& [mesh, e] : cache.entries) e.seen = e.recorded = false;
-    for (FrameInstance& fi : frame.instances) {
+    ++cache.frame;
+    for (auto& [mesh, e] : cache.entries) e.recorded = false;
+    if (frame.cluster_verdicts.size() < frame.instances.size())  // (the vertex stage sizes it)
+        frame.cluster_verdicts.resize(frame.instances.size());
+    for (std::size_t i = 0; i < frame.instances.size(); ++i) {
+        FrameInstance& fi = frame.instances[i];
         fi.clusters = nullptr;
         // Verdicts the vertex stage made hold only with the bounds attached below.
         const std::uint8_t* verdicts = fi.culled_clusters;
         const bool indices_checked = fi.cluster_indices_checked;
         fi.culled_clusters = nullptr;
         fi.cluster_indices_checked = false;
-        const Mesh& mesh = *fi.mesh;
+        const MeshView& mesh = *fi.mesh->view;
         if (!cluster_culling_applies(*frame.options, mesh)) continue;
-        ClusterCache::Entry& e = cache.entries[&mesh];
-        e.seen = true;
+        ClusterCache::Entry& e = cache.entries[mesh_key(mesh)];
+        e.last_frame = cache.frame;
         if (!fi.positions_hashed) continue;  // not worth it (wants_positions_hash)
-        const bool same = e.positions == mesh.positions.size() &&
-                          e.indices == mesh.indices.size() && e.positions_hash == fi.positions_hash;
+        const bool same = e.positions == mesh.positions.count && e.indices == mesh.indices.count &&
+                          e.positions_hash == fi.positions_hash;
         if (!same) {  // first sighting, or changed: remember it, build next time
-            e.positions = mesh.positions.size();
-            e.indices = mesh.indices.size();
+            e.positions = mesh.positions.count;
+            e.indices = mesh.indices.count;
             e.positions_hash = fi.positions_hash;
             e.clusters.reset();
             e.not_worth_it = false;
@@ -47,10 +51,16 @@ void attach_clusters(Frame& frame) {
             fi.cluster_view = make_cluster_view(fi.mvp, frame.clip_settings, frame.setup_settings);
             fi.culled_clusters = verdicts;
             fi.cluster_indices_checked = verdicts != nullptr && indices_checked;
+            // The vertex stage's scratch for these bounds, sized with them: the next frame
+            // that culls with them allocates nothing.
+            frame.cluster_verdicts[i].reserve(fi.clusters->arrays.count);
+            frame.needed_vertex_blocks.reserve(fi.clusters->blocks.blocks);
         }
     }
-    // Meshes not drawn in this frame are forgotten (memory stays bounded by the last frame's).
-    std::erase_if(cache.entries, [](const auto& entry) { return !entry.second.seen; });
+    // Meshes not drawn for a while are forgotten (memory stays bounded by the recent frames').
+    std::erase_if(cache.entries, [&](const auto& entry) {
+        return cache.frame - entry.second.last_frame >= ClusterCache::kForgetAfterFrames;
+    });
 }
 
 void drop_stale_clusters(Frame& frame) {

@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "render/cluster_constants.hpp"
+#include "render/mesh_access.hpp"
 #include "render/word_hash.hpp"
 
 namespace zraster::detail {
@@ -25,11 +26,11 @@ constexpr double kThinTriangle = 0x1p-30;
 // test per frame.
 constexpr double kMinCos = 0.05;
 
-void bound_cluster(const Mesh& mesh, std::size_t first, std::size_t end, ClusterBounds& out) {
+void bound_cluster(const MeshView& view, std::size_t first, std::size_t end, ClusterBounds& out) {
     out = ClusterBounds{};
-    const std::uint32_t* indices = mesh.indices.data();
-    out.index_hash = cluster_index_hash(mesh, first / kClusterTriangles);
-    const std::size_t vertex_total = mesh.positions.size();
+    const FrameMesh mesh = frame_mesh(view);
+    out.index_hash = cluster_index_hash(view, first / kClusterTriangles);
+    const std::size_t vertex_total = mesh.vertex_count();
     std::array<glm::dvec3, kClusterTriangles> unit_normal;
     std::array<double, kClusterTriangles> angle_error;
     glm::dvec3 lo(HUGE_VAL), hi(-HUGE_VAL), normal_sum(0.0);
@@ -37,9 +38,9 @@ void bound_cluster(const Mesh& mesh, std::size_t first, std::size_t end, Cluster
     for (std::size_t t = first; t < end; ++t) {
         std::array<glm::dvec3, 3> p;
         for (std::size_t k = 0; k < 3; ++k) {
-            const std::uint32_t i = indices[3 * t + k];
+            const std::uint32_t i = mesh.index(3 * t + k);
             if (i >= vertex_total) return;  // the front end reports it; never culled
-            p[k] = glm::dvec3(mesh.positions[i]);
+            p[k] = glm::dvec3(mesh.position(i));
             if (!std::isfinite(p[k].x) || !std::isfinite(p[k].y) || !std::isfinite(p[k].z)) return;
             lo = glm::min(lo, p[k]);
             hi = glm::max(hi, p[k]);
@@ -76,7 +77,7 @@ void bound_cluster(const Mesh& mesh, std::size_t first, std::size_t end, Cluster
     glm::dvec3 t_lo(HUGE_VAL), t_hi(-HUGE_VAL);
     for (std::size_t t = first; t < end; ++t)
         for (std::size_t k = 0; k < 3; ++k) {
-            const glm::dvec3 p(mesh.positions[indices[3 * t + k]]);
+            const glm::dvec3 p(mesh.position(mesh.index(3 * t + k)));
             const glm::dvec3 along(glm::dot(frame[0], p), glm::dot(frame[1], p),
                                    glm::dot(frame[2], p));
             t_lo = glm::min(t_lo, along);
@@ -97,15 +98,24 @@ void bound_cluster(const Mesh& mesh, std::size_t first, std::size_t end, Cluster
 
 }  // namespace
 
-std::uint64_t cluster_index_hash(const Mesh& mesh, std::size_t c) {
+std::uint64_t cluster_index_hash(const MeshView& mesh, std::size_t c) {
     const std::size_t first = c * kClusterTriangles;
-    const std::size_t end = std::min(first + kClusterTriangles, mesh.triangle_count());
-    return hash_words(mesh.indices.data() + 3 * first, 3 * (end - first), 3 * first);
+    const std::size_t end = std::min(first + kClusterTriangles, triangle_count(mesh));
+    const std::size_t count = 3 * (end - first);
+    if (const std::uint32_t* indices = packed_indices32(mesh.indices))
+        return hash_words(indices + 3 * first, count, 3 * first);
+    std::array<std::uint32_t, 3 * kClusterTriangles> widened;
+    widen_indices(mesh.indices, 3 * first, count, widened.data());
+    return hash_words(widened.data(), count, 3 * first);
 }
 
 std::vector<ClusterBounds> build_cluster_bounds(const Mesh& mesh) {
+    return build_cluster_bounds(view_of(mesh));
+}
+
+std::vector<ClusterBounds> build_cluster_bounds(const MeshView& mesh) {
     std::vector<ClusterBounds> clusters(cluster_count(mesh));
-    const std::size_t triangles = mesh.triangle_count();
+    const std::size_t triangles = triangle_count(mesh);
     tbb::parallel_for(std::size_t{0}, clusters.size(), [&](std::size_t c) {
         const std::size_t first = c * kClusterTriangles;
         bound_cluster(mesh, first, std::min(triangles, first + kClusterTriangles), clusters[c]);

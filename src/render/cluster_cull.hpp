@@ -25,6 +25,7 @@
 #pragma once
 #include <zraster/clip.hpp>
 #include <zraster/mesh.hpp>
+#include <zraster/mesh_view.hpp>
 #include <zraster/raster.hpp>
 
 #include <glm/glm.hpp>
@@ -55,18 +56,26 @@ struct ClusterBounds {
 
 // Cluster c is the mesh's triangles [c * kClusterTriangles, min((c + 1) * kClusterTriangles,
 // triangle count)); this many clusters cover the mesh.
+inline std::size_t cluster_count(std::size_t triangles) {
+    return (triangles + kClusterTriangles - 1) / kClusterTriangles;
+}
+inline std::size_t cluster_count(const MeshView& mesh) {
+    return cluster_count(mesh.indices.count / 3);
+}
 inline std::size_t cluster_count(const Mesh& mesh) {
-    return (mesh.triangle_count() + kClusterTriangles - 1) / kClusterTriangles;
+    return cluster_count(mesh.triangle_count());
 }
 
 // The hash of cluster c's indices (hash_words over triangles [c * kClusterTriangles, ...)):
 // ClusterBounds::index_hash when the bounds were built, and what tells later frames that the
 // bounds still describe the mesh's triangles.
-std::uint64_t cluster_index_hash(const Mesh& mesh, std::size_t c);
+// 16-bit indices are hashed as the 32-bit words they widen to.
+std::uint64_t cluster_index_hash(const MeshView& mesh, std::size_t c);
 
 // The clusters of a mesh (in parallel). Clusters with an index out of range, a non-finite
 // position, a triangle degenerate or nearly so in object space, or normals spread too wide to
 // ever be culled whole are marked never culled.
+std::vector<ClusterBounds> build_cluster_bounds(const MeshView& mesh);
 std::vector<ClusterBounds> build_cluster_bounds(const Mesh& mesh);
 
 // The per-frame, per-instance part of the test: the mvp's rows and their derived quantities.

@@ -26,8 +26,9 @@ glm::ivec2 lattice_point(const ScreenVertex& v) {
 
 }  // namespace
 
-void draw_edges(const Frame& frame, RenderTargets& targets) {
+void draw_edges(Frame& frame) {
     const RenderOptions& options = *frame.options;
+    const TargetViews& targets = frame.targets.views;
     const bool hidden_line = options.edges == RenderOptions::Edges::HiddenLine;
     const bool reversed = effective_depth_compare(options) == CompareFunc::Greater ||
                           effective_depth_compare(options) == CompareFunc::GreaterEqual;
@@ -38,7 +39,7 @@ void draw_edges(const Frame& frame, RenderTargets& targets) {
             std::lround(std::fmin(std::fmax(options.edge_color[c], 0.0f), 1.0f) * 255.0f));
     rgba[3] = 255;
 
-    if (!hidden_line && !targets.color.empty()) {  // wireframe: the surfaces are not shown
+    if (!hidden_line && targets.color != nullptr) {  // wireframe: the surfaces are not shown
         const std::uint8_t bg[4] = {
             static_cast<std::uint8_t>(
                 std::lround(std::fmin(std::fmax(options.background.x, 0.f), 1.f) * 255)),
@@ -47,12 +48,14 @@ void draw_edges(const Frame& frame, RenderTargets& targets) {
             static_cast<std::uint8_t>(
                 std::lround(std::fmin(std::fmax(options.background.z, 0.f), 1.f) * 255)),
             255};
-        for (std::size_t p = 0; p < targets.color.size(); p += 4)
-            std::copy(bg, bg + 4, &targets.color[p]);
+        for (int y = 0; y < height; ++y) {
+            std::uint8_t* row = target_row(targets.color, targets.color_pitch, y);
+            for (int x = 0; x < width; ++x) std::copy(bg, bg + 4, row + std::size_t(x) * 4);
+        }
     }
-    if (targets.color.empty()) return;
+    if (targets.color == nullptr) return;
 
-    std::vector<LinePixel> line;
+    std::vector<LinePixel>& line = frame.line;  // (kept: its capacity serves the next frame)
     TriangleSetup setup;
     for (const Chunk& chunk : frame.chunks)
         for (const TriangleRef& ref : chunk.refs) {
@@ -72,14 +75,16 @@ void draw_edges(const Frame& frame, RenderTargets& targets) {
                 bresenham_line_depth(lattice_point(a), a.z, lattice_point(b), b.z, line);
                 for (const LinePixel& p : line) {
                     if (p.x < 0 || p.y < 0 || p.x >= width || p.y >= height) continue;
-                    const std::size_t at = std::size_t(p.y) * std::size_t(width) + std::size_t(p.x);
                     if (hidden_line) {
-                        const float surface = targets.depth[at];
+                        const float surface =
+                            target_row(targets.depth, targets.depth_pitch, p.y)[p.x];
                         const bool visible =
                             reversed ? p.depth >= surface - offset : p.depth <= surface + offset;
                         if (!visible) continue;
                     }
-                    std::copy(rgba, rgba + 4, &targets.color[at * 4]);
+                    std::copy(
+                        rgba, rgba + 4,
+                        target_row(targets.color, targets.color_pitch, p.y) + std::size_t(p.x) * 4);
                 }
             }
         }

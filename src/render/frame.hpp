@@ -6,17 +6,25 @@
 // triangles in submission order whatever the thread count.
 #pragma once
 #include <zraster/clip.hpp>
+#include <zraster/instance_bvh.hpp>
+#include <zraster/lines.hpp>
+#include <zraster/occlusion_buffer.hpp>
 #include <zraster/precision.hpp>
 #include <zraster/render.hpp>
 
 #include "raster/visibility_kernel.hpp"
+#include "render/classify_kernel.hpp"
 #include "render/cluster_cache.hpp"
+#include "render/mesh_access.hpp"
 #include "render/shade_kernel.hpp"
 #include "render/stream_lines.hpp"
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
+#include <optional>
+#include <string_view>
 #include <vector>
 
 namespace zraster::detail {
@@ -28,8 +36,8 @@ inline constexpr int kBlockSize = 8;
 
 // One instance as the later stages see it.
 struct FrameInstance {
-    std::uint32_t scene_instance = 0;  // index into Scene::instances (the id written out)
-    const Mesh* mesh = nullptr;
+    std::uint32_t scene_instance = 0;  // index into SceneView::instances (the id written out)
+    const FrameMesh* mesh = nullptr;   // in Frame::meshes
     const Material* material = nullptr;
     ShadingMode shading = ShadingMode::Phong;
     std::uint32_t first_vertex = 0;  // into FrameVertices
@@ -64,14 +72,40 @@ inline void world_attributes(const glm::mat4& model, const glm::mat3& normal_mat
     normal = len > 0.0f ? n / len : glm::vec3(0, 1, 0);
 }
 
+// Row y of a target whose rows are `pitch` bytes apart.
+template <class T>
+T* target_row(T* first_row, std::size_t pitch, int y) {
+    return reinterpret_cast<T*>(reinterpret_cast<std::byte*>(first_row) +
+                                static_cast<std::size_t>(y) * pitch);
+}
+
+// The targets a frame writes (TargetViews, pitches resolved: never 0) and what it must compute
+// for them. depth is null when neither the caller nor the edges want it.
+struct FrameTargets {
+    TargetViews views;
+    bool color = false, normal = false;
+    bool ids = false;       // instance or primitive ids
+    bool coverage = false;  // front or back hit counts
+    // The Renderer's own targets, as the last frame left them: tiles that hold the cleared
+    // values may be left as they are (ClearedTiles). Never the caller's.
+    bool kept = false;
+
+    explicit FrameTargets(const TargetViews& v = {}, bool own = false)
+        : views(v),
+          color(v.color != nullptr),
+          normal(v.normal != nullptr),
+          ids(v.instance_id != nullptr || v.primitive_id != nullptr),
+          coverage(v.front_hits != nullptr || v.back_hits != nullptr),
+          kept(own) {}
+};
+
 // Whether the frame may use tagged shading: the visibility kernel interpolates the attributes
 // of SIMD Phong instances' triangles, and either the deferred pass shades them a vector at a
 // time or, shading forward, the kernel lights them as they pass. (ShadingStrategy::Forward uses
 // it only when every instance is a SIMD Phong one: the others would be resolved first.)
-inline bool tagged_shading(const RenderOptions& options) {
-    return options.simd && options.color_target && !options.normal_target &&
-           options.depth_format == DepthFormat::D32F && options.depth_test &&
-           !options.coverage_counts;
+inline bool tagged_shading(const RenderOptions& options, const FrameTargets& targets) {
+    return options.simd && targets.color && !targets.normal &&
+           options.depth_format == DepthFormat::D32F && options.depth_test && !targets.coverage;
 }
 
 // Output of the vertex stage for every vertex of every visible instance.
@@ -138,6 +172,45 @@ struct Chunk {
     // (kNoBadIndex: none). The renderer then refuses the scene (check_indices).
     std::uint32_t bad_index_instance = kNoBadIndex;
     static constexpr std::uint32_t kNoBadIndex = 0xffffffffu;
+    // The bytes of the chunk's bin runs, each rounded up to whole cache lines (write_bins'
+    // scratch).
+    std::size_t bin_bytes = 0;
+    // Scratch kept with the chunk (the same triangles land in the same chunk frame after
+    // frame, so its size settles): 16-bit indices widened, cluster verdicts.
+    std::vector<std::uint32_t> widened_indices;
+    std::vector<std::uint8_t> cluster_verdicts;
+};
+
+// Scratch of one slot of the frame's arena (tbb::this_task_arena::current_thread_index()):
+// sized before the parallel stage that uses it, so that no thread allocates within a frame
+// whichever chunks or tiles it happens to take.
+struct SlotScratch {
+    ClassifyOutput classify;                     // assemble_and_bin's front end
+    std::unique_ptr<TileBuffers> tile;           // rasterize_tiles
+    std::vector<std::size_t> run_start, cursor;  // write_bins
+    std::vector<std::byte> bin_storage;          // write_bins, from its first cache line
+};
+
+// Instance culling's working memory (occlusion_cull.cpp), kept from frame to frame.
+struct InstanceCulling {
+    std::vector<std::uint8_t> verdicts;  // InstanceCull per scene instance
+    std::vector<Bounds3f> world_boxes;
+    InstanceBvh bvh;
+    std::vector<std::uint32_t> inside;
+    std::unique_ptr<OcclusionBuffer> buffer;
+    struct Candidate {
+        std::uint32_t instance = 0;
+        glm::mat4 mvp{1.0f};
+        double screen_fraction = 0.0;  // of the projected box, clamped to the screen
+        double distance = 0.0;         // eye to the world box's center
+        std::size_t triangles = 0;
+    };
+    std::vector<Candidate> candidates;
+    std::vector<std::size_t> by_size, occluders, by_distance;
+    std::vector<std::uint8_t> is_occluder;
+    // An occluder whose arrays are strided or 16-bit, one position per corner (occlusion_cull).
+    std::vector<glm::vec3> occluder_positions;
+    std::vector<std::uint32_t> occluder_indices;
 };
 
 // Which tiles of a kept Renderer's targets still hold the cleared values from the previous
@@ -159,8 +232,12 @@ struct ClearedTiles {
 };
 
 struct Frame {
-    const Scene* scene = nullptr;
+    const SceneView* scene = nullptr;
+    std::string_view source;  // the scene's file or builtin name, for messages
     const RenderOptions* options = nullptr;
+    // One per scene mesh, set for the meshes instances use (the others: view null).
+    std::vector<FrameMesh> meshes;
+    FrameTargets targets;
     Camera camera;
     glm::vec3 eye{0.0f}, view_axis{0.0f, 0.0f, 1.0f};
     ClipSettings clip_settings;
@@ -194,6 +271,24 @@ struct Frame {
     std::vector<std::vector<std::uint8_t>> cluster_verdicts;  // FrameInstance::culled_clusters
     std::vector<std::uint8_t> needed_vertex_blocks;           // the vertex stage's scratch
 
+    // Working memory kept from frame to frame, so that a frame like the last allocates nothing.
+    std::vector<SlotScratch> slots;  // one per arena slot
+    InstanceCulling culling;
+    // The vertex stage: per scene mesh, whether its positions were hashed and their hash.
+    std::vector<std::uint8_t> mesh_hashed;
+    std::vector<std::uint64_t> mesh_hash;
+    std::vector<std::uint8_t> mesh_flags;            // the renderer's checks (renderer.cpp)
+    std::vector<glm::vec3> world_points;             // fit_camera's input without a camera
+    std::vector<std::size_t> tile_bytes, tile_base;  // bin_offsets
+    // Per tile (rasterize_tiles): fragments passed and shaded, blocks hidden, deferred.
+    std::vector<std::uint64_t> tile_passed, tile_shaded, tile_hidden;
+    std::vector<std::uint8_t> tile_deferred;
+    std::vector<LinePixel> line;             // draw_edges
+    std::optional<DepthBuffer> depth_codec;  // rasterize_tiles: encodes and decodes the format
+
+    // The slot of the calling thread in the frame's arena.
+    SlotScratch& slot();
+
     // Corner k of a ref's triangle on screen.
     const ScreenVertex& screen_vertex(const Chunk& chunk, const TriangleRef& ref,
                                       std::size_t k) const {
@@ -213,8 +308,9 @@ void drop_stale_clusters(Frame& frame);
 // Initially the L3's size (32 MiB if unknown); tests set it to force either way.
 std::size_t& streaming_threshold();
 
-void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& stats,
-                     ClearedTiles& cleared_tiles);
-void draw_edges(const Frame& frame, RenderTargets& targets);
+// Sizes Frame::slots to the arena's concurrency (each with its TileBuffers).
+void prepare_slots(Frame& frame);
+void rasterize_tiles(Frame& frame, RenderStats& stats);
+void draw_edges(Frame& frame);
 
 }  // namespace zraster::detail

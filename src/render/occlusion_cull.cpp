@@ -33,13 +33,7 @@ bool occlusion_applies(const Frame& frame) {
            o.clip_planes.empty() && o.edges == RenderOptions::Edges::None;
 }
 
-struct Candidate {
-    std::uint32_t instance = 0;
-    glm::mat4 mvp{1.0f};
-    double screen_fraction = 0.0;  // of the projected box, clamped to the screen
-    double distance = 0.0;         // eye to the world box's center
-    std::size_t triangles = 0;
-};
+using Candidate = InstanceCulling::Candidate;
 
 double screen_fraction(const Bounds3f& box, const glm::mat4& mvp) {
     glm::vec2 lo(HUGE_VALF), hi(-HUGE_VALF);
@@ -68,45 +62,68 @@ OccluderOptions occluder_options(const RenderOptions& o) {
     return out;
 }
 
-void draw_occluder(OcclusionBuffer& buffer, const Mesh& mesh, const Candidate& c,
+// Tightly packed positions and 32-bit indices are drawn in place; other layouts are copied,
+// one position per corner (occluders are small: kOccluderTriangleBudget triangles a frame).
+void draw_occluder(InstanceCulling& culling, const FrameMesh& mesh, const Candidate& c,
                    const OccluderOptions& options) {
-    buffer.render_occluders(std::span<const glm::vec3>(mesh.positions),
-                            std::span<const std::uint32_t>(mesh.indices.data(), c.triangles * 3),
-                            c.mvp, options);
+    OcclusionBuffer& buffer = *culling.buffer;
+    const std::size_t corners = c.triangles * 3;
+    if (mesh.positions != nullptr && mesh.indices != nullptr) {
+        buffer.render_occluders(std::span(mesh.positions, mesh.vertex_count()),
+                                std::span(mesh.indices, corners), c.mvp, options);
+        return;
+    }
+    std::vector<glm::vec3>& positions = culling.occluder_positions;
+    std::vector<std::uint32_t>& indices = culling.occluder_indices;
+    positions.resize(corners);
+    indices.resize(corners);
+    const std::size_t vertices = mesh.vertex_count();
+    for (std::size_t k = 0; k < corners; ++k) {
+        const std::uint32_t index = mesh.index(k);
+        // An index past the vertices skips its triangle, as in place.
+        positions[k] = index < vertices ? mesh.position(index) : glm::vec3(0.0f);
+        indices[k] = index < vertices ? static_cast<std::uint32_t>(k) : ~std::uint32_t{0};
+    }
+    buffer.render_occluders(std::span<const glm::vec3>(positions),
+                            std::span<const std::uint32_t>(indices), c.mvp, options);
 }
 
 }  // namespace
 
-std::vector<InstanceCull> cull_instances(const Frame& frame, const glm::mat4& view_projection) {
-    const Scene& scene = *frame.scene;
+void cull_instances(Frame& frame, const glm::mat4& view_projection) {
+    const SceneView& scene = *frame.scene;
     const RenderOptions& options = *frame.options;
+    InstanceCulling& culling = frame.culling;
     const std::size_t n = scene.instances.size();
     const bool occlusion = options.occlusion_cull && occlusion_applies(frame);
-    std::vector<InstanceCull> verdict(n, InstanceCull::Keep);
-    if (n < kBvhMinInstances && !occlusion) return verdict;
+    std::vector<std::uint8_t>& verdict = culling.verdicts;
+    verdict.assign(n, std::uint8_t(InstanceCull::Keep));
+    if (n < kBvhMinInstances && !occlusion) return;
 
-    std::vector<std::uint32_t> inside;
+    std::vector<std::uint32_t>& inside = culling.inside;
+    inside.clear();
     if (n >= kBvhMinInstances) {
-        std::vector<Bounds3f> world(n);
+        culling.world_boxes.resize(n);
         for (std::size_t i = 0; i < n; ++i) {
-            const Instance& instance = scene.instances[i];
-            world[i] = scene.meshes.at(instance.mesh).bounds.transformed(instance.transform);
+            const InstanceView& instance = scene.instances[i];
+            culling.world_boxes[i] =
+                frame.meshes[instance.mesh].bounds.transformed(instance.transform);
         }
-        const InstanceBvh bvh(world);
-        bvh.query(frustum_planes(view_projection, frame.camera.clip_depth_range()), inside);
-        std::fill(verdict.begin(), verdict.end(), InstanceCull::Frustum);
-        for (const std::uint32_t i : inside) verdict[i] = InstanceCull::Keep;
+        culling.bvh.build(culling.world_boxes);
+        culling.bvh.query(frustum_planes(view_projection, frame.camera.clip_depth_range()), inside);
+        std::fill(verdict.begin(), verdict.end(), std::uint8_t(InstanceCull::Frustum));
+        for (const std::uint32_t i : inside) verdict[i] = std::uint8_t(InstanceCull::Keep);
     } else {
         inside.resize(n);
         std::iota(inside.begin(), inside.end(), 0u);
     }
-    if (!occlusion) return verdict;
+    if (!occlusion) return;
 
-    std::vector<Candidate> candidates;
-    candidates.reserve(inside.size());
+    std::vector<Candidate>& candidates = culling.candidates;
+    candidates.clear();
     for (const std::uint32_t i : inside) {
-        const Instance& instance = scene.instances[i];
-        const Mesh& mesh = scene.meshes.at(instance.mesh);
+        const InstanceView& instance = scene.instances[i];
+        const FrameMesh& mesh = frame.meshes[instance.mesh];
         if (mesh.bounds.empty()) continue;
         Candidate c;
         c.instance = i;
@@ -118,55 +135,66 @@ std::vector<InstanceCull> cull_instances(const Frame& frame, const glm::mat4& vi
         c.triangles = mesh.triangle_count();
         candidates.push_back(c);
     }
+    // (Sorts with ties in candidate order: stable, without stable_sort's buffer.)
+    const auto by = [&](auto key) {
+        return [&candidates, key](std::size_t a, std::size_t b) {
+            const double ka = key(candidates[a]), kb = key(candidates[b]);
+            return ka < kb || (ka == kb && a < b);
+        };
+    };
     // Occluders first: the largest on screen, within the triangle budget.
-    std::vector<std::size_t> by_size(candidates.size());
+    std::vector<std::size_t>& by_size = culling.by_size;
+    by_size.resize(candidates.size());
     std::iota(by_size.begin(), by_size.end(), std::size_t{0});
-    std::stable_sort(by_size.begin(), by_size.end(), [&](std::size_t a, std::size_t b) {
-        return candidates[a].screen_fraction > candidates[b].screen_fraction;
-    });
-    OcclusionBuffer buffer(options.width, options.height);
+    std::sort(by_size.begin(), by_size.end(),
+              by([](const Candidate& c) { return -c.screen_fraction; }));
+    if (!culling.buffer) culling.buffer = std::make_unique<OcclusionBuffer>();
+    OcclusionBuffer& buffer = *culling.buffer;
+    if (buffer.width() != options.width || buffer.height() != options.height)
+        buffer.set_resolution(options.width, options.height);
+    else
+        buffer.clear();
     buffer.set_simd(options.simd);
     const OccluderOptions occluder = occluder_options(options);
-    std::vector<bool> is_occluder(candidates.size(), false);
-    std::vector<std::size_t> occluders;
+    std::vector<std::uint8_t>& is_occluder = culling.is_occluder;
+    is_occluder.assign(candidates.size(), 0);
+    std::vector<std::size_t>& occluders = culling.occluders;
+    occluders.clear();
     std::size_t budget = kOccluderTriangleBudget;
     for (const std::size_t k : by_size) {
         const Candidate& c = candidates[k];
         if (c.screen_fraction < kOccluderFraction) break;
         if (c.triangles > budget) continue;
         budget -= c.triangles;
-        is_occluder[k] = true;
+        is_occluder[k] = 1;
         occluders.push_back(k);
     }
+    const auto distance = [](const Candidate& c) { return c.distance; };
     // Drawn nearest first: the buffer keeps two depth layers per row, and a far surface drawn
     // before a near one can cost the near one's detail.
-    std::stable_sort(occluders.begin(), occluders.end(), [&](std::size_t a, std::size_t b) {
-        return candidates[a].distance < candidates[b].distance;
-    });
+    std::sort(occluders.begin(), occluders.end(), by(distance));
     for (const std::size_t k : occluders) {
         const Candidate& c = candidates[k];
-        draw_occluder(buffer, scene.meshes[scene.instances[c.instance].mesh], c, occluder);
+        draw_occluder(culling, frame.meshes[scene.instances[c.instance].mesh], c, occluder);
     }
     // Then everything else, nearest first.
-    std::vector<std::size_t> by_distance;
+    std::vector<std::size_t>& by_distance = culling.by_distance;
+    by_distance.clear();
     for (std::size_t k = 0; k < candidates.size(); ++k)
         if (!is_occluder[k]) by_distance.push_back(k);
-    std::stable_sort(by_distance.begin(), by_distance.end(), [&](std::size_t a, std::size_t b) {
-        return candidates[a].distance < candidates[b].distance;
-    });
+    std::sort(by_distance.begin(), by_distance.end(), by(distance));
     for (const std::size_t k : by_distance) {
         const Candidate& c = candidates[k];
-        const Mesh& mesh = scene.meshes[scene.instances[c.instance].mesh];
+        const FrameMesh& mesh = frame.meshes[scene.instances[c.instance].mesh];
         const OcclusionResult r = buffer.test_box(mesh.bounds, c.mvp);
         if (r == OcclusionResult::Occluded) {
-            verdict[c.instance] = InstanceCull::Occluded;
+            verdict[c.instance] = std::uint8_t(InstanceCull::Occluded);
         } else if (r == OcclusionResult::Visible && c.screen_fraction >= kLateOccluderFraction &&
                    c.triangles <= kLateOccluderTriangles && c.triangles <= budget) {
             budget -= c.triangles;
-            draw_occluder(buffer, mesh, c, occluder);
+            draw_occluder(culling, mesh, c, occluder);
         }
     }
-    return verdict;
 }
 
 }  // namespace zraster::detail

@@ -18,12 +18,12 @@ enum class InstanceCull : std::uint8_t {
 // Scenes with at least this many instances use the BVH for frustum culling.
 inline constexpr std::size_t kBvhMinInstances = 64;
 
-// One verdict per scene instance. Occlusion culling only runs when the frame's result cannot
-// change: D32F depth with the LESS or LEQUAL test and depth writes, a standard (not reversed)
-// depth range, no user clip planes, no wireframe or hidden-line edges. Occluders (the largest
-// instances on screen, then visible ones tested front to back) are rendered at the frame's
-// resolution with its face culling, and are never culled themselves, so an Occluded instance
-// has no pixel in the image.
-std::vector<InstanceCull> cull_instances(const Frame& frame, const glm::mat4& view_projection);
+// One verdict per scene instance, into frame.culling.verdicts (InstanceCull values). Occlusion
+// culling only runs when the frame's result cannot change: D32F depth with the LESS or LEQUAL
+// test and depth writes, a standard (not reversed) depth range, no user clip planes, no
+// wireframe or hidden-line edges. Occluders (the largest instances on screen, then visible ones
+// tested front to back) are rendered at the frame's resolution with its face culling, and are
+// never culled themselves, so an Occluded instance has no pixel in the image.
+void cull_instances(Frame& frame, const glm::mat4& view_projection);
 
 }  // namespace zraster::detail

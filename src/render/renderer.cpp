@@ -1,7 +1,4 @@
 // The Renderer: joins the stages for one frame (see include/zraster/render.hpp).
-#include <tbb/blocked_range.h>
-#include <tbb/global_control.h>
-#include <tbb/parallel_reduce.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -9,12 +6,15 @@
 #include <cmath>
 #include <span>
 #include <string>
+#include <string_view>
 #include <thread>
 #include <vector>
 
 #include <zraster/error.hpp>
 
+#include "memory/huge_pages.hpp"
 #include "render/frame.hpp"
+#include "render/input_checks.hpp"
 
 namespace zraster {
 
@@ -35,66 +35,10 @@ bool finite(const glm::dvec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-// The largest index, as a branch-free max the compiler vectorizes, in parallel for big meshes:
-// this check runs every frame, over every index.
-std::uint32_t largest_index(std::span<const std::uint32_t> indices) {
-    const auto serial = [&](std::size_t begin, std::size_t end) {
-        std::uint32_t largest = 0;
-        for (std::size_t i = begin; i < end; ++i)
-            largest = indices[i] > largest ? indices[i] : largest;
-        return largest;
-    };
-    if (indices.size() < (std::size_t{1} << 18)) return serial(0, indices.size());
-    return tbb::parallel_reduce(
-        tbb::blocked_range<std::size_t>(0, indices.size(), std::size_t{1} << 16), std::uint32_t{0},
-        [&](const tbb::blocked_range<std::size_t>& r, std::uint32_t largest) {
-            return std::max(largest, serial(r.begin(), r.end()));
-        },
-        [](std::uint32_t a, std::uint32_t b) { return std::max(a, b); });
-}
-
-// Throws for the first of the scene's meshes (in mesh order) with a vertex index out of range;
-// `check[m]` says which meshes to scan.
-void refuse_bad_indices(const Scene& scene, const std::vector<bool>& check) {
-    for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
-        if (!check[m]) continue;
-        const Mesh& mesh = scene.meshes[m];
-        const std::size_t used = mesh.triangle_count() * 3;  // a partial last triple is ignored
-        const std::uint32_t largest = largest_index(std::span(mesh.indices.data(), used));
-        if (used > 0 && largest >= mesh.positions.size())
-            throw InputError(scene.source,
-                             "mesh " + std::to_string(m) + " '" + mesh.name + "': vertex index " +
-                                 std::to_string(largest) + " out of range (" +
-                                 std::to_string(mesh.positions.size()) + " positions)");
-    }
-}
-
-// Vertex indices out of range make the scene invalid. Scanning every index each frame costs as
-// much as a tenth of a million-triangle frame, so the front end checks the indices of the
-// triangles it assembles (it loads them anyway) and this scans only what it did not see: meshes
-// whose instances were all culled. On a find, every used mesh is scanned, so the message names
-// the same mesh whichever instances the camera sees.
-void check_indices(const detail::Frame& frame) {
-    const Scene& scene = *frame.scene;
-    std::vector<bool> drawn(scene.meshes.size(), false), culled_only(scene.meshes.size(), false);
-    for (const detail::FrameInstance& fi : frame.instances)
-        drawn[scene.instances[fi.scene_instance].mesh] = true;
-    bool bad = false;
-    for (const detail::Chunk& c : frame.chunks) bad |= c.bad_index_instance != c.kNoBadIndex;
-    for (const Instance& instance : scene.instances)
-        culled_only[instance.mesh] = !drawn[instance.mesh];
-    if (!bad) {
-        refuse_bad_indices(scene, culled_only);
-        return;
-    }
-    std::vector<bool> used(scene.meshes.size(), false);
-    for (const Instance& instance : scene.instances) used[instance.mesh] = true;
-    refuse_bad_indices(scene, used);
-}
-
 // Options and scene are checked before anything is allocated: a frame that would need absurd
 // memory, or a scene whose arrays disagree (read out of bounds later), is an InputError here.
-void validate(const Scene& scene, const RenderOptions& options) {
+void validate(detail::Frame& frame, const SceneView& scene, std::string_view source,
+              const RenderOptions& options) {
     if (options.width < 1 || options.height < 1 || options.width > kMaxViewport ||
         options.height > kMaxViewport)
         throw InputError("", "image size " + std::to_string(options.width) + "x" +
@@ -107,43 +51,7 @@ void validate(const Scene& scene, const RenderOptions& options) {
                                  std::to_string(options.height) + " is " + std::to_string(pixels) +
                                  " pixels, more than the limit of " +
                                  std::to_string(limits.max_pixels));
-    // Frame vertex indices are 32-bit with the top bit marking clipper-made vertices.
-    constexpr std::uint64_t kMaxFrameVertices = (std::uint64_t{1} << 31) - 1;
-    const std::string& source = scene.source;
-    if (scene.materials.empty()) throw InputError(source, "the scene has no materials");
-    std::uint64_t triangles = 0, vertices = 0;
-    std::vector<bool> mesh_used(scene.meshes.size(), false);
-    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
-        const std::uint32_t m = scene.instances[i].mesh;
-        if (m >= scene.meshes.size())
-            throw InputError(source, "instance " + std::to_string(i) + " refers to mesh " +
-                                         std::to_string(m) + " of " +
-                                         std::to_string(scene.meshes.size()));
-        triangles += scene.meshes[m].triangle_count();
-        vertices += scene.meshes[m].positions.size();
-        mesh_used[m] = true;
-    }
-    if (triangles > limits.max_triangles)
-        throw InputError(source, std::to_string(triangles) +
-                                     " triangles over all instances, more than the limit of " +
-                                     std::to_string(limits.max_triangles));
-    if (vertices > std::min(limits.max_vertices, kMaxFrameVertices))
-        throw InputError(source,
-                         std::to_string(vertices) +
-                             " vertices over all instances, more than the limit of " +
-                             std::to_string(std::min(limits.max_vertices, kMaxFrameVertices)));
-    for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
-        if (!mesh_used[m]) continue;
-        const Mesh& mesh = scene.meshes[m];
-        const std::size_t n = mesh.positions.size();
-        const std::string label = "mesh " + std::to_string(m) + " '" + mesh.name + "'";
-        if (!mesh.normals.empty() && mesh.normals.size() != n)
-            throw InputError(source, label + ": " + std::to_string(mesh.normals.size()) +
-                                         " normals for " + std::to_string(n) + " positions");
-        if (!mesh.uvs.empty() && mesh.uvs.size() != n)
-            throw InputError(source, label + ": " + std::to_string(mesh.uvs.size()) + " uvs for " +
-                                         std::to_string(n) + " positions");
-    }
+    detail::validate_scene(frame, scene, source, options);
     if (options.clip_planes.size() > std::size_t(kMaxUserClipPlanes))
         throw InputError("", "at most " + std::to_string(kMaxUserClipPlanes) +
                                  " user clip planes are supported");
@@ -165,10 +73,6 @@ void validate(const Scene& scene, const RenderOptions& options) {
     }
 }
 
-}  // namespace
-
-namespace {
-
 // Empties a frame for reuse, keeping the capacity of its arrays.
 void reset(detail::Frame& frame) {
     frame.instances.clear();
@@ -182,8 +86,17 @@ void reset(detail::Frame& frame) {
     }
 }
 
-void render_frame_in_arena(detail::Frame& frame, const Scene& scene, const RenderOptions& options,
-                           RenderResult& result);
+// Where a frame's images go: the caller's targets, or the Renderer's own (sized by the frame).
+struct Destination {
+    const TargetViews* caller = nullptr;
+    RenderTargets* own = nullptr;
+    // Depth rows for caller targets without depth when the edges need them.
+    std::vector<float>* depth_rows = nullptr;
+};
+
+void render_frame_in_arena(detail::Frame& frame, const SceneView& scene, std::string_view source,
+                           const RenderOptions& options, const Destination& destination,
+                           RenderStats& stats);
 
 int thread_count(const RenderOptions& options) {
     return options.threads > 0
@@ -193,20 +106,74 @@ int thread_count(const RenderOptions& options) {
 
 // Everything runs in an arena of the requested thread count, the checks too (the index check is
 // parallel): a 1-thread frame uses one thread throughout.
-void render_frame(tbb::task_arena& arena, detail::Frame& frame, const Scene& scene,
-                  const RenderOptions& options, RenderResult& result) {
-    arena.execute([&] { render_frame_in_arena(frame, scene, options, result); });
+void render_frame(tbb::task_arena& arena, detail::Frame& frame, const SceneView& scene,
+                  std::string_view source, const RenderOptions& options,
+                  const Destination& destination, RenderStats& stats) {
+    arena.execute(
+        [&] { render_frame_in_arena(frame, scene, source, options, destination, stats); });
 }
 
-void render_frame_in_arena(detail::Frame& frame, const Scene& scene, const RenderOptions& options,
-                           RenderResult& result) {
-    validate(scene, options);
+// The Renderer's own targets sized for the options (targets the frame does not produce are
+// emptied), as views.
+TargetViews own_targets(RenderTargets& targets, const RenderOptions& options) {
+    const std::size_t pixels = std::size_t(options.width) * std::size_t(options.height);
+    targets.width = options.width;
+    targets.height = options.height;
+    memory::resize_on_huge_pages(targets.depth, pixels);
+    memory::resize_on_huge_pages(targets.color, options.color_target ? pixels * 4 : 0);
+    memory::resize_on_huge_pages(targets.normal, options.normal_target ? pixels : 0);
+    memory::resize_on_huge_pages(targets.instance_id, options.id_targets ? pixels : 0);
+    memory::resize_on_huge_pages(targets.primitive_id, options.id_targets ? pixels : 0);
+    // (The tiles zero the counts.)
+    targets.front_hits.resize(options.coverage_counts ? pixels : 0);
+    targets.back_hits.resize(options.coverage_counts ? pixels : 0);
+    return view_of(targets);
+}
+
+// The world-space positions of every instanced vertex, as Scene::world_positions() makes them
+// (fit_camera's input), into the frame's kept array.
+std::span<const glm::vec3> world_points(detail::Frame& frame) {
+    const SceneView& scene = *frame.scene;
+    std::size_t total = 0;
+    for (const InstanceView& instance : scene.instances)
+        total += scene.meshes[instance.mesh].positions.count;
+    std::vector<glm::vec3>& out = frame.world_points;
+    out.clear();
+    memory::reserve_on_huge_pages(out, total);
+    for (const InstanceView& instance : scene.instances) {
+        const detail::FrameMesh& mesh = frame.meshes[instance.mesh];
+        for (std::size_t i = 0; i < mesh.vertex_count(); ++i) {
+            const glm::vec4 q = instance.transform * glm::vec4(mesh.position(i), 1.0f);
+            out.push_back(glm::vec3(q) / q.w);
+        }
+    }
+    return out;
+}
+
+void render_frame_in_arena(detail::Frame& frame, const SceneView& scene, std::string_view source,
+                           const RenderOptions& options, const Destination& destination,
+                           RenderStats& stats) {
+    validate(frame, scene, source, options);
+    TargetViews targets;
+    if (destination.caller != nullptr) {
+        targets = detail::resolve_targets(*destination.caller, options);
+        if (targets.depth == nullptr && options.edges == RenderOptions::Edges::HiddenLine) {
+            destination.depth_rows->resize(std::size_t(options.width) *
+                                           std::size_t(options.height));
+            targets.depth = destination.depth_rows->data();
+            targets.depth_pitch = std::size_t(options.width) * sizeof(float);
+        }
+    } else {
+        targets = own_targets(*destination.own, options);
+    }
     const auto start = std::chrono::steady_clock::now();
-    result.stats = RenderStats{};
+    stats = RenderStats{};
     reset(frame);
     frame.scene = &scene;
+    frame.source = source;
     frame.options = &options;
-    frame.camera = options.camera ? *options.camera : fit_camera(scene.world_positions());
+    frame.targets = detail::FrameTargets(targets, destination.caller == nullptr);
+    frame.camera = options.camera ? *options.camera : fit_camera(world_points(frame));
     frame.eye = glm::vec3(frame.camera.eye);
     const glm::dvec3 axis = frame.camera.eye - frame.camera.target;
     frame.view_axis = glm::vec3(glm::normalize(axis));
@@ -220,62 +187,127 @@ void render_frame_in_arena(detail::Frame& frame, const Scene& scene, const Rende
     frame.setup_settings.front_face = options.front_face;
     frame.setup_settings.screen_linear_planes =
         options.interpolation == Interpolation::ScreenLinear;
-    frame.needs_attributes = options.color_target || options.normal_target;
+    frame.needs_attributes = frame.targets.color || frame.targets.normal;
     frame.setup_settings.barycentric_planes = frame.needs_attributes;
     frame.tiles_x = (options.width + detail::kTileSize - 1) / detail::kTileSize;
     frame.tiles_y = (options.height + detail::kTileSize - 1) / detail::kTileSize;
-    result.stats.camera = frame.camera;
+    stats.camera = frame.camera;
 
-    detail::run_vertex_stage(frame, result.stats);
-    result.stats.vertex_ms =
+    detail::prepare_slots(frame);
+    detail::run_vertex_stage(frame, stats);
+    stats.vertex_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     detail::attach_clusters(frame);
-    detail::assemble_and_bin(frame, result.stats);
+    detail::assemble_and_bin(frame, stats);
     detail::drop_stale_clusters(frame);
-    check_indices(frame);
+    detail::check_indices(frame);
     const auto setup_done = std::chrono::steady_clock::now();
-    result.stats.setup_ms = std::chrono::duration<double, std::milli>(setup_done - start).count();
-    detail::rasterize_tiles(frame, result.targets, result.stats, frame.cleared_tiles);
-    if (options.edges != RenderOptions::Edges::None) detail::draw_edges(frame, result.targets);
-    result.stats.raster_ms =
+    stats.setup_ms = std::chrono::duration<double, std::milli>(setup_done - start).count();
+    detail::rasterize_tiles(frame, stats);
+    if (options.edges != RenderOptions::Edges::None) detail::draw_edges(frame);
+    stats.raster_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - setup_done)
             .count();
-    result.stats.total_ms =
+    stats.total_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace
 
+TargetViews view_of(RenderTargets& targets) {
+    TargetViews v;
+    v.width = targets.width;
+    v.height = targets.height;
+    const std::size_t width = targets.width > 0 ? std::size_t(targets.width) : 0;
+    // (Pixels of `per_pixel` elements: RGBA8 is four bytes.)
+    const auto view = [&](auto& array, auto*& data, std::size_t& pitch, std::size_t per_pixel = 1) {
+        if (array.empty()) return;
+        data = array.data();
+        pitch = width * per_pixel * sizeof(array[0]);
+    };
+    view(targets.color, v.color, v.color_pitch, 4);
+    view(targets.depth, v.depth, v.depth_pitch);
+    view(targets.normal, v.normal, v.normal_pitch);
+    view(targets.instance_id, v.instance_id, v.instance_id_pitch);
+    view(targets.primitive_id, v.primitive_id, v.primitive_id_pitch);
+    view(targets.front_hits, v.front_hits, v.front_hits_pitch);
+    view(targets.back_hits, v.back_hits, v.back_hits_pitch);
+    return v;
+}
+
 struct Renderer::State {
     detail::Frame frame;
     RenderResult result;
+    RenderStats view_stats;  // of the last frame into caller targets
+    // The views of the last owning Scene (their capacity kept: no allocation per frame).
+    std::vector<MeshView> mesh_views;
+    std::vector<InstanceView> instance_views;
+    std::vector<float> depth_rows;  // Destination::depth_rows
     // Kept from frame to frame while the thread count stays: a new arena per frame made the
     // workers join it anew, and a small scene's front end paid for that (bunny, 2 threads:
     // front end 0.59 -> 0.50 ms, frame -4%).
     std::unique_ptr<tbb::task_arena> arena;
     int arena_threads = 0;
+
+    tbb::task_arena& arena_for(const RenderOptions& options) {
+        const int threads = thread_count(options);
+        if (!arena || arena_threads != threads) {
+            arena = std::make_unique<tbb::task_arena>(threads);
+            arena_threads = threads;
+        }
+        return *arena;
+    }
 };
 
 Renderer::Renderer() : state_(std::make_unique<State>()) {}
 Renderer::~Renderer() = default;
 
 const RenderResult& Renderer::render(const Scene& scene, const RenderOptions& options) {
-    const int threads = thread_count(options);
-    if (!state_->arena || state_->arena_threads != threads) {
-        state_->arena = std::make_unique<tbb::task_arena>(threads);
-        state_->arena_threads = threads;
-    }
-    render_frame(*state_->arena, state_->frame, scene, options, state_->result);
-    return state_->result;
+    State& s = *state_;
+    const SceneView view = view_of(scene, s.mesh_views, s.instance_views);
+    Destination destination;
+    destination.own = &s.result.targets;
+    render_frame(s.arena_for(options), s.frame, view, scene.source, options, destination,
+                 s.result.stats);
+    return s.result;
+}
+
+const RenderStats& Renderer::render(const SceneView& scene, const RenderOptions& options,
+                                    const TargetViews& targets) {
+    State& s = *state_;
+    Destination destination;
+    destination.caller = &targets;
+    destination.depth_rows = &s.depth_rows;
+    render_frame(s.arena_for(options), s.frame, scene, "", options, destination, s.view_stats);
+    return s.view_stats;
 }
 
 RenderResult render(const Scene& scene, const RenderOptions& options) {
     detail::Frame frame;
     frame.cluster_cache.kept = false;
+    std::vector<MeshView> meshes;
+    std::vector<InstanceView> instances;
+    const SceneView view = view_of(scene, meshes, instances);
     RenderResult result;
+    Destination destination;
+    destination.own = &result.targets;
     tbb::task_arena arena(thread_count(options));
-    render_frame(arena, frame, scene, options, result);
+    render_frame(arena, frame, view, scene.source, options, destination, result.stats);
     return result;
+}
+
+RenderStats render(const SceneView& scene, const RenderOptions& options,
+                   const TargetViews& targets) {
+    detail::Frame frame;
+    frame.cluster_cache.kept = false;
+    std::vector<float> depth_rows;
+    Destination destination;
+    destination.caller = &targets;
+    destination.depth_rows = &depth_rows;
+    RenderStats stats;
+    tbb::task_arena arena(thread_count(options));
+    render_frame(arena, frame, scene, "", options, destination, stats);
+    return stats;
 }
 
 }  // namespace zraster

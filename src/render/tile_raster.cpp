@@ -7,6 +7,7 @@
 // visibility (depth, triangle reference, barycentrics per pixel), then shades each visible pixel
 // once. Formats and options the kernel does not cover take the scalar reference path.
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
@@ -57,7 +58,7 @@ struct SmallJobsHiz {
 
 struct TileContext {
     const Frame& frame;
-    RenderTargets& targets;
+    const FrameTargets& targets;
     const DepthBuffer& codec;  // encodes/decodes the depth format
     CompareFunc compare;
     bool kernel;                   // the block traversal with the visibility kernel may be used
@@ -103,15 +104,23 @@ std::size_t tile_index(int x, int y) {
 }
 
 void write_shaded(const TileContext& c, const ShadedFragment& f, int px, int py) {
-    const std::size_t p = std::size_t(py) * std::size_t(c.targets.width) + std::size_t(px);
-    if (!c.targets.color.empty()) {
-        std::uint8_t* rgba = &c.targets.color[p * 4];
+    const TargetViews& t = c.targets.views;
+    if (t.color != nullptr) {
+        std::uint8_t* rgba = target_row(t.color, t.color_pitch, py) + std::size_t(px) * 4;
         rgba[0] = to_unorm8(f.color.x);
         rgba[1] = to_unorm8(f.color.y);
         rgba[2] = to_unorm8(f.color.z);
         rgba[3] = 255;
     }
-    if (!c.targets.normal.empty()) c.targets.normal[p] = f.normal;
+    if (t.normal != nullptr) target_row(t.normal, t.normal_pitch, py)[px] = f.normal;
+}
+
+// Counts a fragment in the front or back hits target (when given).
+void count_hit(const TileContext& c, bool front_facing, int px, int py) {
+    const TargetViews& t = c.targets.views;
+    std::uint32_t* hits = front_facing ? t.front_hits : t.back_hits;
+    if (hits != nullptr)
+        ++target_row(hits, front_facing ? t.front_hits_pitch : t.back_hits_pitch, py)[px];
 }
 
 // The scalar reference path for one triangle over [x0, x1) x [y0, y1) of a tile: any depth
@@ -135,10 +144,7 @@ std::uint64_t rasterize_scalar(const TileContext& c, const Chunk& chunk, const T
             if (options.depth_write) tile.depth[at] = code;
         }
         ++passed;
-        if (options.coverage_counts) {
-            const std::size_t p = std::size_t(py) * std::size_t(c.targets.width) + std::size_t(px);
-            ++(ref.front_facing ? c.targets.front_hits[p] : c.targets.back_hits[p]);
-        }
+        if (c.targets.coverage) count_hit(c, ref.front_facing, px, py);
         const glm::vec3 b = barycentrics(setup, px, py, options.interpolation);
         tile.ref[at] = id;
         tile.b1[at] = b.y;
@@ -149,9 +155,8 @@ std::uint64_t rasterize_scalar(const TileContext& c, const Chunk& chunk, const T
         else if (corners)
             store_interpolated(*corners, piece, b.y, b.z, tile, at);
         if (c.forward && c.shade)
-            write_shaded(
-                c, shade_fragment(c.frame, shading, b.y, b.z, px, py, !c.targets.normal.empty()),
-                px, py);
+            write_shaded(c, shade_fragment(c.frame, shading, b.y, b.z, px, py, c.targets.normal),
+                         px, py);
     });
     return passed;
 }
@@ -172,7 +177,7 @@ BlockJob shared_job(const TileContext& c) {
     job.perspective = options.interpolation == Interpolation::PerspectiveCorrect;
     job.compare = c.compare;
     job.write_depth = options.depth_write;
-    job.attributes = c.shade || !c.targets.instance_id.empty();
+    job.attributes = c.shade || c.targets.ids;
     job.barycentrics = c.shade;
     return job;
 }
@@ -306,17 +311,33 @@ std::uint64_t rasterize_blocks(const TileContext& c, const Chunk& chunk, const T
 // The targets of a tile where nothing was drawn, from rows of the cleared values.
 void clear_tile_targets(const TileContext& c, const float* clear_row,
                         const std::uint32_t* background_row) {
-    RenderTargets& t = c.targets;
+    const TargetViews& t = c.targets.views;
     const auto n = static_cast<std::size_t>(c.x1 - c.x0);
+    const auto x0 = static_cast<std::size_t>(c.x0);
     for (int py = c.y0; py < c.y1; ++py) {
-        const std::size_t row = std::size_t(py) * std::size_t(t.width) + std::size_t(c.x0);
-        c.write_row(t.depth.data() + row, clear_row, n * sizeof(float));
-        if (!t.color.empty()) c.write_row(&t.color[row * 4], background_row, n * 4);
-        if (!t.normal.empty()) std::fill_n(t.normal.data() + row, n, glm::vec3(0.0f));
-        if (!t.instance_id.empty()) {
-            std::fill_n(t.instance_id.data() + row, n, -1);
-            std::fill_n(t.primitive_id.data() + row, n, -1);
-        }
+        if (t.depth != nullptr)
+            c.write_row(target_row(t.depth, t.depth_pitch, py) + x0, clear_row, n * sizeof(float));
+        if (t.color != nullptr)
+            c.write_row(target_row(t.color, t.color_pitch, py) + x0 * 4, background_row, n * 4);
+        if (t.normal != nullptr)
+            std::fill_n(target_row(t.normal, t.normal_pitch, py) + x0, n, glm::vec3(0.0f));
+        if (t.instance_id != nullptr)
+            std::fill_n(target_row(t.instance_id, t.instance_id_pitch, py) + x0, n, -1);
+        if (t.primitive_id != nullptr)
+            std::fill_n(target_row(t.primitive_id, t.primitive_id_pitch, py) + x0, n, -1);
+    }
+}
+
+// Zeroes a tile's rows of the coverage counts (they are counted up as fragments pass).
+void clear_tile_counts(const TileContext& c) {
+    const TargetViews& t = c.targets.views;
+    const auto n = static_cast<std::size_t>(c.x1 - c.x0);
+    const auto x0 = static_cast<std::size_t>(c.x0);
+    for (int py = c.y0; py < c.y1; ++py) {
+        if (t.front_hits != nullptr)
+            std::fill_n(target_row(t.front_hits, t.front_hits_pitch, py) + x0, n, 0u);
+        if (t.back_hits != nullptr)
+            std::fill_n(target_row(t.back_hits, t.back_hits_pitch, py) + x0, n, 0u);
     }
 }
 
@@ -346,10 +367,10 @@ struct TriangleRun {
 std::uint64_t finish_tile(const TileContext& c, const TileBuffers& tile, std::uint32_t background,
                           const std::uint32_t* background_row, bool shade_now, bool untagged,
                           bool forward_tile) {
-    RenderTargets& t = c.targets;
+    const TargetViews& t = c.targets.views;
     const bool d32 = c.codec.format() == DepthFormat::D32F;
-    const bool want_normal = !t.normal.empty(), want_ids = !t.instance_id.empty();
-    const bool want_color = !t.color.empty();
+    const bool want_normal = c.targets.normal, want_ids = c.targets.ids;
+    const bool want_color = c.targets.color;
     const bool tagged = shade_now && c.tagged_shading;
     // Pixel by pixel only where something needs it.
     const bool per_pixel =
@@ -361,44 +382,52 @@ std::uint64_t finish_tile(const TileContext& c, const TileBuffers& tile, std::ui
     const int n = c.x1 - c.x0;
     std::uint32_t row_rgba[TileBuffers::kStride];
     for (int py = c.y0; py < c.y1; ++py) {
-        const std::size_t row = std::size_t(py) * std::size_t(t.width);
         const std::size_t at_row = tile_index(0, py - c.y0);
-        if (d32) {
-            c.write_row(t.depth.data() + row + std::size_t(c.x0), tile.depth + at_row,
-                        std::size_t(n) * sizeof(float));
-        } else {
-            for (int i = 0; i < n; ++i)
-                t.depth[row + std::size_t(c.x0 + i)] =
-                    c.codec.decode(static_cast<std::uint32_t>(tile.depth[at_row + std::size_t(i)]));
+        // The rows of the targets (null where not wanted).
+        const auto row = [py](auto* first_row, std::size_t pitch) {
+            return first_row != nullptr ? target_row(first_row, pitch, py) : nullptr;
+        };
+        std::uint8_t* const color_row = row(t.color, t.color_pitch);
+        glm::vec3* const normal_row = row(t.normal, t.normal_pitch);
+        std::int32_t* const instance_row = row(t.instance_id, t.instance_id_pitch);
+        std::int32_t* const primitive_row = row(t.primitive_id, t.primitive_id_pitch);
+        if (t.depth != nullptr) {
+            float* const depth_row = target_row(t.depth, t.depth_pitch, py);
+            if (d32) {
+                c.write_row(depth_row + c.x0, tile.depth + at_row, std::size_t(n) * sizeof(float));
+            } else {
+                for (int i = 0; i < n; ++i)
+                    depth_row[c.x0 + i] = c.codec.decode(
+                        static_cast<std::uint32_t>(tile.depth[at_row + std::size_t(i)]));
+            }
         }
         if (tagged && forward_tile) {  // lit as they passed
-            c.write_row(&t.color[(row + std::size_t(c.x0)) * 4], tile.color + at_row,
+            c.write_row(color_row + std::size_t(c.x0) * 4, tile.color + at_row,
                         std::size_t(n) * sizeof(std::uint32_t));
         } else if (tagged) {
             // (A copy, not a fill: GCC at -O2 fills element by element.)
             std::memcpy(row_rgba, background_row, std::size_t(n) * sizeof(std::uint32_t));
             shaded += std::uint64_t(
                 shade_tagged_row(c.frame.phong_constants.data(), tile, at_row, n, row_rgba));
-            c.write_row(&t.color[(row + std::size_t(c.x0)) * 4], row_rgba,
+            c.write_row(color_row + std::size_t(c.x0) * 4, row_rgba,
                         std::size_t(n) * sizeof(std::uint32_t));
         }
         if (!per_pixel) continue;
         for (int px = c.x0; px < c.x1; ++px) {
             const std::size_t at = at_row + std::size_t(px - c.x0);
-            const std::size_t p = row + std::size_t(px);
             const std::uint32_t id = tile.ref[at];
             if (id == kNoTriangle) {
-                if (want_color && !tagged) std::memcpy(&t.color[p * 4], &background, 4);
-                if (want_normal) t.normal[p] = glm::vec3(0.0f);
-                if (want_ids) t.instance_id[p] = t.primitive_id[p] = -1;
+                if (want_color && !tagged)
+                    std::memcpy(color_row + std::size_t(px) * 4, &background, 4);
+                if (want_normal) normal_row[px] = glm::vec3(0.0f);
+                if (instance_row != nullptr) instance_row[px] = -1;
+                if (primitive_row != nullptr) primitive_row[px] = -1;
                 continue;
             }
             if (tagged && tile.shade_tag[at] != 0 && !want_ids) continue;
             if (id != run.id) run.load(c.frame, id);
-            if (want_ids) {
-                t.instance_id[p] = run.instance_id;
-                t.primitive_id[p] = run.primitive_id;
-            }
+            if (instance_row != nullptr) instance_row[px] = run.instance_id;
+            if (primitive_row != nullptr) primitive_row[px] = run.primitive_id;
             if (!shade_now || (tagged && tile.shade_tag[at] != 0)) continue;
             ++shaded;
             if (id != cached_id) {
@@ -445,29 +474,35 @@ std::size_t& streaming_threshold() {
     return threshold;
 }
 
-void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& stats,
-                     ClearedTiles& cleared_tiles) {
-    const RenderOptions& options = *frame.options;
-    const int width = options.width, height = options.height;
-    const std::size_t pixels = std::size_t(width) * std::size_t(height);
-    targets.width = width;
-    targets.height = height;
-    // A reused Renderer's targets may hold an earlier frame of another size: targets this frame
-    // does not produce are emptied (the stages test emptiness), the others sized to it.
-    memory::resize_on_huge_pages(targets.depth, pixels);
-    memory::resize_on_huge_pages(targets.color, options.color_target ? pixels * 4 : 0);
-    memory::resize_on_huge_pages(targets.normal, options.normal_target ? pixels : 0);
-    memory::resize_on_huge_pages(targets.instance_id, options.id_targets ? pixels : 0);
-    memory::resize_on_huge_pages(targets.primitive_id, options.id_targets ? pixels : 0);
-    targets.front_hits.assign(options.coverage_counts ? pixels : 0, 0);
-    targets.back_hits.assign(options.coverage_counts ? pixels : 0, 0);
+void prepare_slots(Frame& frame) {
+    const auto slots = static_cast<std::size_t>(tbb::this_task_arena::max_concurrency());
+    if (frame.slots.size() < slots) frame.slots.resize(slots);
+    // A kept frame's slots get their tile buffers now, whichever threads later take tiles (a
+    // one-shot frame's are made as its threads first need them).
+    if (frame.cluster_cache.kept)
+        for (SlotScratch& slot : frame.slots)
+            if (!slot.tile) slot.tile = std::make_unique<TileBuffers>();
+}
 
-    const DepthBuffer codec(1, 1, options.depth_format);
+SlotScratch& Frame::slot() {
+    return slots[static_cast<std::size_t>(tbb::this_task_arena::current_thread_index())];
+}
+
+void rasterize_tiles(Frame& frame, RenderStats& stats) {
+    const RenderOptions& options = *frame.options;
+    const FrameTargets& targets = frame.targets;
+    ClearedTiles& cleared_tiles = frame.cleared_tiles;
+    const int width = options.width, height = options.height;
+
+    // (A 1x1 buffer as the codec, kept: a frame allocates nothing.)
+    if (!frame.depth_codec || frame.depth_codec->format() != options.depth_format)
+        frame.depth_codec.emplace(1, 1, options.depth_format);
+    const DepthBuffer& codec = *frame.depth_codec;
     const float clear = options.depth_format == DepthFormat::D32F
                             ? depth_clear_value(options)
                             : static_cast<float>(codec.encode(depth_clear_value(options)));
     const CompareFunc compare = effective_depth_compare(options);
-    const bool shade = options.color_target || options.normal_target;
+    const bool shade = targets.color || targets.normal;
     // Tagged shading: triangles of SIMD Phong instances interpolate their attributes in the
     // visibility kernel; the kernel lights them as they pass (forward) or the deferred pass
     // shades them a vector at a time (the SIMD shader writes colors only: a normal target
@@ -477,7 +512,7 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
     const bool forward = shade && options.strategy == ShadingStrategy::Forward && !tagged;
     // The block kernel covers the common case; the rest takes the scalar reference path.
     const bool kernel = options.depth_format == DepthFormat::D32F && options.depth_test &&
-                        !options.coverage_counts && !forward;
+                        !targets.coverage && !forward;
     // Without depth writes the stored depths stay the clear value: nothing to gain.
     const HierarchicalZ hiz = kernel && options.depth_write && options.hierarchical_z
                                   ? hierarchical_z_mode(compare)
@@ -499,26 +534,37 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
     std::fill_n(background_row, kTileSize, background);
 
     const std::size_t tiles = std::size_t(frame.tiles_x) * std::size_t(frame.tiles_y);
-    // Empty tiles that already hold the cleared values (a kept Renderer's previous frame, same
-    // clear values and targets) are left as they are.
+    // Empty tiles that already hold the cleared values (a kept Renderer's previous frame into
+    // its own targets, same clear values and targets) are left as they are. The caller's
+    // targets are written whole.
     ClearedTiles::Signature signature;
     signature.width = width;
     signature.height = height;
     signature.format = options.depth_format;
     std::memcpy(&signature.clear_bits, &clear, sizeof(float));
-    signature.background = options.color_target ? background : 0;
-    signature.color = options.color_target;
-    signature.normal = options.normal_target;
-    signature.ids = options.id_targets;
-    const bool reuse_cleared = cleared_tiles.valid && cleared_tiles.signature == signature;
-    if (!reuse_cleared) cleared_tiles.cleared.assign(tiles, 0);
-    cleared_tiles.valid = false;  // until every tile is written
-    std::uint8_t* cleared = cleared_tiles.cleared.data();
-    std::vector<std::uint64_t> passed_per_tile(tiles, 0), shaded_per_tile(tiles, 0),
-        hidden_per_tile(tiles, 0);
-    std::vector<std::uint8_t> deferred_per_tile(tiles, 0);  // some pixels shaded deferred
+    signature.background = targets.color ? background : 0;
+    signature.color = targets.color;
+    signature.normal = targets.normal;
+    signature.ids = targets.ids;
+    std::uint8_t* cleared = nullptr;  // null: write every empty tile
+    if (targets.kept) {
+        const bool reuse_cleared = cleared_tiles.valid && cleared_tiles.signature == signature;
+        if (!reuse_cleared) cleared_tiles.cleared.assign(tiles, 0);
+        cleared_tiles.valid = false;  // until every tile is written
+        cleared = cleared_tiles.cleared.data();
+    }
+    std::vector<std::uint64_t>& passed_per_tile = frame.tile_passed;
+    std::vector<std::uint64_t>& shaded_per_tile = frame.tile_shaded;
+    std::vector<std::uint64_t>& hidden_per_tile = frame.tile_hidden;
+    std::vector<std::uint8_t>& deferred_per_tile = frame.tile_deferred;  // some shaded deferred
+    passed_per_tile.assign(tiles, 0);
+    shaded_per_tile.assign(tiles, 0);
+    hidden_per_tile.assign(tiles, 0);
+    deferred_per_tile.assign(tiles, 0);
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
     const std::size_t target_bytes =
-        (targets.depth.size() + targets.color.size() / 4) * sizeof(float);
+        ((targets.views.depth != nullptr ? pixels : 0) + (targets.color ? pixels : 0)) *
+        sizeof(float);
     const bool stream = stream_targets(frame, target_bytes);
     tbb::parallel_for(std::size_t{0}, tiles, [&](std::size_t tile_number) {
         // Streamed target rows (TileContext::write_row) are ordered before whatever reads them
@@ -529,9 +575,9 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
                 if (stream) stream_fence();
             }
         } fence_on_exit{stream};
-        thread_local std::unique_ptr<TileBuffers> buffers;
-        if (!buffers) buffers = std::make_unique<TileBuffers>();
-        TileBuffers& tile = *buffers;
+        SlotScratch& slot = frame.slot();
+        if (!slot.tile) slot.tile = std::make_unique<TileBuffers>();  // (one-shot frames)
+        TileBuffers& tile = *slot.tile;
         const int tx = int(tile_number % std::size_t(frame.tiles_x));
         const int ty = int(tile_number / std::size_t(frame.tiles_x));
         int bounded_blocks = 0;
@@ -558,19 +604,21 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
         // The tile's run in each chunk (see Frame::bin_run_offsets).
         const std::size_t* run_offset = frame.bin_run_offsets.data() + tile_number * chunks;
         const std::uint32_t* run_count = frame.bin_run_counts.data() + tile_number * chunks;
+        if (targets.coverage) clear_tile_counts(c);
         const bool empty = frame.tile_bin_counts[tile_number] == 0;
         if (empty) {
             // Nothing drawn here: write the cleared targets directly, unless they hold them.
-            if (!cleared[tile_number]) clear_tile_targets(c, clear_row, background_row);
-            cleared[tile_number] = 1;
+            if (cleared == nullptr || !cleared[tile_number])
+                clear_tile_targets(c, clear_row, background_row);
+            if (cleared != nullptr) cleared[tile_number] = 1;
             return;
         }
-        cleared[tile_number] = 0;
+        if (cleared != nullptr) cleared[tile_number] = 0;
         const auto row_bytes = std::size_t(c.x1 - c.x0) * sizeof(float);
         for (int y = 0; y < c.y1 - c.y0; ++y) {
             std::memcpy(tile.depth + tile_index(0, y), clear_row, row_bytes);
             // Depth-only frames never read the refs.
-            if (shade || options.id_targets)
+            if (shade || targets.ids)
                 std::memset(tile.ref + tile_index(0, y), 0xff, row_bytes);  // kNoTriangle
             if (tagged) std::memset(tile.shade_tag + tile_index(0, y), 0, row_bytes);
         }
@@ -712,8 +760,10 @@ void rasterize_tiles(const Frame& frame, RenderTargets& targets, RenderStats& st
         deferred_per_tile[tile_number] = shade && !forward && (!forward_tile || untagged);
     });
     // Edges are drawn over the targets after this, across empty tiles too.
-    cleared_tiles.valid = options.edges == RenderOptions::Edges::None;
-    cleared_tiles.signature = signature;
+    if (targets.kept) {
+        cleared_tiles.valid = options.edges == RenderOptions::Edges::None;
+        cleared_tiles.signature = signature;
+    }
     for (std::size_t t = 0; t < tiles; ++t) {
         stats.deferred |= deferred_per_tile[t] != 0;
         stats.fragments_passed += passed_per_tile[t];

@@ -4,14 +4,15 @@
 #include <algorithm>
 
 #include "render/cluster_cull.hpp"
+#include "render/mesh_access.hpp"
 
 namespace zraster::detail {
 
-VertexBlockClusters build_vertex_block_clusters(const Mesh& mesh) {
+VertexBlockClusters build_vertex_block_clusters(const MeshView& mesh) {
     VertexBlockClusters map;
-    const std::size_t vertices = mesh.positions.size();
+    const std::size_t vertices = mesh.positions.count;
     map.blocks = (vertices + kVertexBlock - 1) / kVertexBlock;
-    const std::size_t triangles = mesh.triangle_count(), clusters = cluster_count(mesh);
+    const std::size_t triangles = triangle_count(mesh), clusters = cluster_count(mesh);
     // (block, cluster) pairs, each once: a cluster's blocks are few (its triangles are
     // neighbours), so a sorted list per cluster is short.
     std::vector<std::uint32_t> counts(map.blocks + 1, 0);
@@ -22,8 +23,8 @@ VertexBlockClusters build_vertex_block_clusters(const Mesh& mesh) {
         const std::size_t lo = 3 * c * kClusterTriangles;
         const std::size_t hi = 3 * std::min(triangles, (c + 1) * kClusterTriangles);
         for (std::size_t i = lo; i < hi; ++i)
-            if (mesh.indices[i] < vertices)
-                local.push_back(static_cast<std::uint32_t>(mesh.indices[i] / kVertexBlock));
+            if (const std::uint32_t index = load_index(mesh.indices, i); index < vertices)
+                local.push_back(static_cast<std::uint32_t>(index / kVertexBlock));
         std::sort(local.begin(), local.end());
         local.erase(std::unique(local.begin(), local.end()), local.end());
         for (const std::uint32_t b : local) ++counts[b + 1];

@@ -10,7 +10,7 @@
 // indices it was built from: the vertex stage checks every cluster's index hash before it skips
 // anything (a changed index could point into a skipped block), and the positions' hash after.
 #pragma once
-#include <zraster/mesh.hpp>
+#include <zraster/mesh_view.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -29,7 +29,7 @@ struct VertexBlockClusters {
 
 // For the mesh's clusters of kClusterTriangles triangles. Indices out of range are left out
 // (their clusters are never culled, cluster_cull.hpp).
-VertexBlockClusters build_vertex_block_clusters(const Mesh& mesh);
+VertexBlockClusters build_vertex_block_clusters(const MeshView& mesh);
 
 // needed[b] = 1 when a cluster using block b is not culled (culled[c] == 0), else 0; returns
 // the number of vertices in skipped blocks (of `vertices` in all).

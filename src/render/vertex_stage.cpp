@@ -8,10 +8,10 @@
 #include <array>
 #include <atomic>
 #include <cmath>
-#include <unordered_map>
 
 #include "memory/huge_pages.hpp"
 #include "render/frame.hpp"
+#include "render/mesh_access.hpp"
 #include "render/occlusion_cull.hpp"
 #include "render/shade_kernel.hpp"
 #include "render/vertex_blocks.hpp"
@@ -59,6 +59,10 @@ void assign_phong_kernels(Frame& frame) {
     }
 }
 
+// Strided positions and normals reach the vertex kernel through local copies of this many
+// vertices (the kernel reads tightly packed arrays).
+constexpr std::size_t kGatherVertices = 256;
+
 // Vertex blocks are skipped only when that spares at least 1 / kMinSkipDivisor of the
 // vertices: before skipping, every cluster's indices are hashed, which costs about what
 // transforming a few percent of the vertices would.
@@ -77,7 +81,7 @@ struct EarlyClusters {
 EarlyClusters cull_clusters_early(const Frame& frame, const FrameInstance& fi,
                                   const MeshClusters& kept, std::vector<std::uint8_t>& culled,
                                   std::vector<std::uint8_t>& needed) {
-    const Mesh& mesh = *fi.mesh;
+    const MeshView& mesh = *fi.mesh->view;
     const ClusterArrays& arrays = kept.arrays;
     const std::size_t clusters = arrays.count;
     const bool simd = frame.options->simd;
@@ -92,8 +96,8 @@ EarlyClusters cull_clusters_early(const Frame& frame, const FrameInstance& fi,
     early.verdicts = true;
     needed.resize(kept.blocks.blocks);
     const std::size_t skipped =
-        needed_vertex_blocks(kept.blocks, culled.data(), mesh.positions.size(), needed.data());
-    if (skipped * kMinSkipDivisor < mesh.positions.size()) return early;
+        needed_vertex_blocks(kept.blocks, culled.data(), mesh.positions.count, needed.data());
+    if (skipped * kMinSkipDivisor < mesh.positions.count) return early;
     std::atomic<bool> changed{false};
     if (!frame.options->static_meshes)  // (a static mesh's indices are taken as unchanged)
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, clusters, 1024),
@@ -114,24 +118,25 @@ EarlyClusters cull_clusters_early(const Frame& frame, const FrameInstance& fi,
 }  // namespace
 
 void run_vertex_stage(Frame& frame, RenderStats& stats) {
-    const Scene& scene = *frame.scene;
+    const SceneView& scene = *frame.scene;
     const RenderOptions& options = *frame.options;
     const double aspect = double(options.width) / double(options.height);
     const glm::mat4 view_projection = frame.camera.view_projection(aspect);
 
-    const std::vector<InstanceCull> culled = cull_instances(frame, view_projection);
+    cull_instances(frame, view_projection);
+    const std::vector<std::uint8_t>& culled = frame.culling.verdicts;
     std::uint32_t vertex_count = 0;
     for (std::uint32_t i = 0; i < scene.instances.size(); ++i) {
-        const Instance& instance = scene.instances[i];
+        const InstanceView& instance = scene.instances[i];
         ++stats.instances;
-        const Mesh& mesh = scene.meshes.at(instance.mesh);
+        const FrameMesh& mesh = frame.meshes[instance.mesh];
         const glm::mat4 mvp = view_projection * instance.transform;
-        if (culled[i] == InstanceCull::Frustum ||
+        if (culled[i] == std::uint8_t(InstanceCull::Frustum) ||
             outside_frustum(mesh.bounds, mvp, frame.camera.clip_depth_range())) {
             ++stats.instances_frustum_culled;
             continue;
         }
-        if (culled[i] == InstanceCull::Occluded) {
+        if (culled[i] == std::uint8_t(InstanceCull::Occluded)) {
             ++stats.instances_occlusion_culled;
             continue;
         }
@@ -140,26 +145,28 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
         if (options.instance_order == InstanceOrder::FrontToBack)
             fi.distance = distance_to_box(mesh.bounds.transformed(instance.transform), frame.eye);
         fi.mesh = &mesh;
-        fi.material =
-            &scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
+        fi.material = &scene.materials[mesh.view->material];
         fi.shading = instance.shading.value_or(options.shading);
         fi.mvp = mvp;
         fi.model = instance.transform;
         fi.normal_matrix = normal_matrix(instance.transform);
-        fi.textured = options.textures && fi.material->base_color_texture && !mesh.uvs.empty();
+        fi.textured = options.textures && fi.material->base_color_texture && mesh.has_uvs();
         frame.instances.push_back(fi);
     }
+    // Nearest first, ties in submission order (a sort that needs no buffer, unlike stable_sort).
     if (options.instance_order == InstanceOrder::FrontToBack)
-        std::stable_sort(
-            frame.instances.begin(), frame.instances.end(),
-            [](const FrameInstance& a, const FrameInstance& b) { return a.distance < b.distance; });
+        std::sort(frame.instances.begin(), frame.instances.end(),
+                  [](const FrameInstance& a, const FrameInstance& b) {
+                      return a.distance < b.distance ||
+                             (a.distance == b.distance && a.scene_instance < b.scene_instance);
+                  });
     for (FrameInstance& fi : frame.instances) {
         fi.first_vertex = vertex_count;
-        vertex_count += static_cast<std::uint32_t>(fi.mesh->positions.size());
+        vertex_count += static_cast<std::uint32_t>(fi.mesh->vertex_count());
     }
 
     assign_phong_kernels(frame);
-    frame.tagged_shading = tagged_shading(options) && !frame.phong_constants.empty();
+    frame.tagged_shading = tagged_shading(options, frame.targets) && !frame.phong_constants.empty();
     if (options.strategy == ShadingStrategy::Forward)
         frame.tagged_shading &= frame.phong_constants.size() == frame.instances.size();
 
@@ -180,22 +187,25 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
     if (attributes && any_textured) memory::resize_on_huge_pages(v.uv, vertex_count);
     if (any_gouraud && attributes) memory::resize_on_huge_pages(v.gouraud, vertex_count);
 
-    // Positions hashed this frame, per mesh: instances of the same mesh hash it once.
-    std::unordered_map<const Mesh*, std::uint64_t> hashed;
+    // Positions hashed this frame, per scene mesh: instances of the same mesh hash it once.
+    frame.mesh_hashed.assign(scene.meshes.size(), 0);
+    frame.mesh_hash.resize(scene.meshes.size());
     frame.cluster_verdicts.resize(frame.instances.size());
     for (std::size_t i = 0; i < frame.instances.size(); ++i) {
         FrameInstance& fi = frame.instances[i];
-        const Mesh& mesh = *fi.mesh;
+        const FrameMesh& mesh = *fi.mesh;
+        const MeshView& view = *mesh.view;
+        const std::uint32_t mesh_index = scene.instances[fi.scene_instance].mesh;
         const bool lit_per_vertex = fi.shading == ShadingMode::Gouraud && attributes;
         // The positions' hash for the cluster cache, summed over the blocks in any order.
-        fi.positions_hashed = cluster_culling_applies(options, mesh) &&
-                              frame.cluster_cache.wants_positions_hash(mesh);
-        const auto earlier = hashed.find(&mesh);
+        fi.positions_hashed = cluster_culling_applies(options, view) &&
+                              frame.cluster_cache.wants_positions_hash(view);
+        const bool hashed_before = frame.mesh_hashed[mesh_index] != 0;
         // Static meshes (RenderOptions::static_meshes) are not hashed: all have one hash.
-        const bool hash_here =
-            fi.positions_hashed && earlier == hashed.end() && !options.static_meshes;
+        const bool hash_here = fi.positions_hashed && !hashed_before && !options.static_meshes;
         if (fi.positions_hashed && !hash_here)
-            fi.positions_hash = options.static_meshes ? kStaticMeshHash : earlier->second;
+            fi.positions_hash =
+                options.static_meshes ? kStaticMeshHash : frame.mesh_hash[mesh_index];
         // Vertices only culled clusters use are skipped (vertex_blocks.hpp), with the bounds
         // kept from earlier frames; their positions are checked after (hash_here) or before.
         fi.culled_clusters = nullptr;
@@ -203,9 +213,9 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
         const std::uint8_t* needed = nullptr;
         std::size_t skipped = 0;
         if (fi.positions_hashed && !lit_per_vertex) {
-            const MeshClusters* kept = frame.cluster_cache.kept_clusters(mesh);
+            const MeshClusters* kept = frame.cluster_cache.kept_clusters(view);
             if (kept != nullptr &&
-                (hash_here || frame.cluster_cache.same_positions(mesh, fi.positions_hash))) {
+                (hash_here || frame.cluster_cache.same_positions(view, fi.positions_hash))) {
                 const EarlyClusters early = cull_clusters_early(
                     frame, fi, *kept, frame.cluster_verdicts[i], frame.needed_vertex_blocks);
                 if (early.verdicts) fi.culled_clusters = frame.cluster_verdicts[i].data();
@@ -216,10 +226,15 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
                 }
             }
         }
-        // The vertex kernel on vertices [begin, end) of the mesh.
-        const auto transform = [&](std::size_t begin, std::size_t end) {
+        const bool normals = world && attributes && mesh.has_normals();
+        // Tightly packed arrays go to the kernel in place; strided ones through local copies.
+        const bool in_place = mesh.positions != nullptr && (!normals || mesh.normals != nullptr);
+        // The vertex kernel on vertices [begin, end) of the mesh, read from `positions` and
+        // `object_normals` (null: none), which hold them from `first` on.
+        const auto kernel = [&](std::size_t begin, std::size_t end, const glm::vec3* positions,
+                                const glm::vec3* object_normals, std::size_t first) {
             VertexJob job;
-            job.positions = mesh.positions.data() + begin;
+            job.positions = positions + (begin - first);
             job.count = end - begin;
             job.mvp = fi.mvp;
             job.clip = frame.clip_settings;
@@ -232,7 +247,7 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
                 job.world_out = v.world.data() + fi.first_vertex + begin;
                 if (attributes) {
                     job.normal_out = v.normal.data() + fi.first_vertex + begin;
-                    if (!mesh.normals.empty()) job.normals = mesh.normals.data() + begin;
+                    if (object_normals != nullptr) job.normals = object_normals + (begin - first);
                 }
             }
             if (options.simd)
@@ -240,54 +255,80 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
             else
                 transform_vertices_scalar(job);
         };
+        const auto transform = [&](std::size_t begin, std::size_t end) {
+            if (in_place) {
+                kernel(begin, end, mesh.positions, normals ? mesh.normals : nullptr, 0);
+                return;
+            }
+            glm::vec3 positions[kGatherVertices], object_normals[kGatherVertices];
+            for (std::size_t b = begin; b < end; b += kGatherVertices) {
+                const std::size_t n = std::min(kGatherVertices, end - b);
+                gather_vec3(view.positions, b, n, positions);
+                if (normals) gather_vec3(view.normals, b, n, object_normals);
+                kernel(b, b + n, positions, normals ? object_normals : nullptr, b);
+            }
+        };
+        // The hash of the positions of vertices [begin, end).
+        const auto hash_positions = [&](std::size_t begin, std::size_t end) {
+            const auto hash = options.simd ? hash_words : hash_words_scalar;
+            if (mesh.positions != nullptr)
+                return hash(mesh.positions + begin, 3 * (end - begin), 3 * std::uint64_t{begin});
+            std::uint64_t h = 0;
+            glm::vec3 positions[kGatherVertices];
+            for (std::size_t b = begin; b < end; b += kGatherVertices) {
+                const std::size_t n = std::min(kGatherVertices, end - b);
+                gather_vec3(view.positions, b, n, positions);
+                h = combine_word_hashes(h, hash(positions, 3 * n, 3 * std::uint64_t{b}));
+            }
+            return h;
+        };
         std::atomic<std::uint32_t> hash_low{0}, hash_high{0};
-        tbb::parallel_for(
-            tbb::blocked_range<std::size_t>(0, mesh.positions.size(), 8192),
-            [&](const tbb::blocked_range<std::size_t>& r) {
-                if (needed == nullptr) {
-                    transform(r.begin(), r.end());
-                } else {  // runs of needed blocks
-                    for (std::size_t k = r.begin(); k < r.end();) {
-                        std::size_t end = std::min(r.end(), (k / kVertexBlock + 1) * kVertexBlock);
-                        if (!needed[k / kVertexBlock]) {
-                            k = end;
-                            continue;
-                        }
-                        while (end < r.end() && needed[end / kVertexBlock])
-                            end = std::min(r.end(), end + kVertexBlock);
-                        transform(k, end);
-                        k = end;
-                    }
-                }
-                if (hash_here) {  // while the block is in cache
-                    const std::uint64_t h = (options.simd ? hash_words : hash_words_scalar)(
-                        mesh.positions.data() + r.begin(), 3 * (r.end() - r.begin()),
-                        3 * std::uint64_t{r.begin()});
-                    hash_low += static_cast<std::uint32_t>(h);
-                    hash_high += static_cast<std::uint32_t>(h >> 32);
-                }
-                if (!attributes || (!fi.textured && !lit_per_vertex)) return;
-                for (std::size_t k = r.begin(); k < r.end(); ++k) {
-                    const std::size_t out = fi.first_vertex + k;
-                    if (fi.textured) v.uv[out] = mesh.uvs[k];
-                    if (lit_per_vertex)
-                        v.gouraud[out] =
-                            evaluate_lighting(options.lighting, *fi.material, v.world[out],
-                                              v.normal[out], frame.eye, frame.view_axis);
-                }
-            });
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.vertex_count(), 8192),
+                          [&](const tbb::blocked_range<std::size_t>& r) {
+                              if (needed == nullptr) {
+                                  transform(r.begin(), r.end());
+                              } else {  // runs of needed blocks
+                                  for (std::size_t k = r.begin(); k < r.end();) {
+                                      std::size_t end =
+                                          std::min(r.end(), (k / kVertexBlock + 1) * kVertexBlock);
+                                      if (!needed[k / kVertexBlock]) {
+                                          k = end;
+                                          continue;
+                                      }
+                                      while (end < r.end() && needed[end / kVertexBlock])
+                                          end = std::min(r.end(), end + kVertexBlock);
+                                      transform(k, end);
+                                      k = end;
+                                  }
+                              }
+                              if (hash_here) {  // while the block is in cache
+                                  const std::uint64_t h = hash_positions(r.begin(), r.end());
+                                  hash_low += static_cast<std::uint32_t>(h);
+                                  hash_high += static_cast<std::uint32_t>(h >> 32);
+                              }
+                              if (!attributes || (!fi.textured && !lit_per_vertex)) return;
+                              for (std::size_t k = r.begin(); k < r.end(); ++k) {
+                                  const std::size_t out = fi.first_vertex + k;
+                                  if (fi.textured) v.uv[out] = mesh.uv(k);
+                                  if (lit_per_vertex)
+                                      v.gouraud[out] = evaluate_lighting(
+                                          options.lighting, *fi.material, v.world[out],
+                                          v.normal[out], frame.eye, frame.view_axis);
+                              }
+                          });
         if (hash_here) {
             fi.positions_hash = (std::uint64_t{hash_high} << 32) | hash_low;
-            hashed.emplace(&mesh, fi.positions_hash);
+            frame.mesh_hashed[mesh_index] = 1;
+            frame.mesh_hash[mesh_index] = fi.positions_hash;
             // Moved positions: the bounds no longer hold, and the skipped vertices are needed.
             if (fi.culled_clusters != nullptr &&
-                !frame.cluster_cache.same_positions(mesh, fi.positions_hash)) {
+                !frame.cluster_cache.same_positions(view, fi.positions_hash)) {
                 fi.culled_clusters = nullptr;
                 fi.cluster_indices_checked = false;
             }
             if (needed != nullptr && fi.culled_clusters == nullptr) {
                 skipped = 0;
-                tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.positions.size(), 8192),
+                tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.vertex_count(), 8192),
                                   [&](const tbb::blocked_range<std::size_t>& r) {
                                       transform(r.begin(), r.end());
                                   });

@@ -531,15 +531,17 @@ TEST(ClusterCulling, OneShotRendersBuildNoBounds) {
 // none for a mesh that changed, and a soup (every cluster's normals point every way) is left
 // alone after one look.
 TEST(ClusterCache, BuildsOnTheSecondSightingAndGivesUpOnSoups) {
-    const Mesh sphere = make_bench_sphere(20000);
-    const Mesh soup = make_bench_soup(20000);
+    const Mesh sphere_mesh = make_bench_sphere(20000);
+    const Mesh soup_mesh = make_bench_soup(20000);
+    const MeshView sphere_view = view_of(sphere_mesh), soup_view = view_of(soup_mesh);
+    const FrameMesh sphere = frame_mesh(sphere_view), soup = frame_mesh(soup_view);
     RenderOptions options;
     Frame frame;
     frame.options = &options;
-    const auto sighting = [&](const Mesh& mesh, std::uint64_t hash) {
+    const auto sighting = [&](const FrameMesh& mesh, std::uint64_t hash) {
         frame.instances.assign(1, FrameInstance{});
         frame.instances[0].mesh = &mesh;
-        frame.instances[0].positions_hashed = frame.cluster_cache.wants_positions_hash(mesh);
+        frame.instances[0].positions_hashed = frame.cluster_cache.wants_positions_hash(*mesh.view);
         frame.instances[0].positions_hash = hash;
         attach_clusters(frame);
         return frame.instances[0].clusters;
@@ -549,12 +551,16 @@ TEST(ClusterCache, BuildsOnTheSecondSightingAndGivesUpOnSoups) {
     EXPECT_NE(sighting(sphere, 1), nullptr);
     EXPECT_EQ(sighting(sphere, 2), nullptr);  // changed
     EXPECT_NE(sighting(sphere, 2), nullptr);
-    EXPECT_TRUE(frame.cluster_cache.wants_positions_hash(sphere));
-    EXPECT_EQ(sighting(soup, 3), nullptr);  // the sphere is forgotten: not in this frame
-    EXPECT_EQ(frame.cluster_cache.entries.count(&sphere), 0u);
+    EXPECT_TRUE(frame.cluster_cache.wants_positions_hash(sphere_view));
+    EXPECT_EQ(sighting(soup, 3), nullptr);  // the sphere is not drawn: kept for a while
+    EXPECT_EQ(frame.cluster_cache.entries.count(mesh_key(sphere_view)), 1u);
     EXPECT_EQ(sighting(soup, 3), nullptr);  // built, and found not worth it
-    EXPECT_FALSE(frame.cluster_cache.wants_positions_hash(soup));
+    EXPECT_FALSE(frame.cluster_cache.wants_positions_hash(soup_view));
     EXPECT_EQ(sighting(soup, 3), nullptr);
+    EXPECT_NE(sighting(sphere, 2), nullptr);  // still there, unchanged
+    for (std::uint64_t k = 0; k < ClusterCache::kForgetAfterFrames; ++k) sighting(soup, 3);
+    EXPECT_EQ(frame.cluster_cache.entries.count(mesh_key(sphere_view)), 0u);  // forgotten
+    EXPECT_EQ(sighting(sphere, 2), nullptr);  // first sighting again
 }
 
 // Instances of one mesh share its bounds (and its positions are hashed once a frame): both are

@@ -1,0 +1,28 @@
+// The renderer's checks of what the caller passes (scene views, target views, vertex indices):
+// anything that would make a stage read or write out of bounds is an InputError naming the
+// field, raised before the stage runs. Nothing here allocates unless it throws.
+#pragma once
+#include <zraster/mesh_view.hpp>
+#include <zraster/render.hpp>
+
+#include <string_view>
+#include <vector>
+
+#include "render/frame.hpp"
+
+namespace zraster::detail {
+
+// The scene's consistency, its size against options.limits, and every array of every mesh an
+// instance uses; fills frame.meshes (bounds computed where the view has none) and
+// frame.mesh_flags. Vertex indices are checked by the front end and check_indices.
+void validate_scene(Frame& frame, const SceneView& scene, std::string_view source,
+                    const RenderOptions& options);
+
+// The caller's targets with their pitches resolved (0: tightly packed), after checking their
+// size against the options, each pitch against a row and their alignment.
+TargetViews resolve_targets(const TargetViews& targets, const RenderOptions& options);
+
+// Vertex indices out of range make the scene invalid (see renderer.cpp); after the front end.
+void check_indices(Frame& frame);
+
+}  // namespace zraster::detail
