@@ -3,11 +3,14 @@
 //   test, building the bounds, the hash that checks them), the visibility kernel on 8x8
 //   blocks (SIMD and scalar), the Phong shading kernel, and whole frames of the benchmark scenes
 //   in depth-only and Phong modes at several resolutions and thread counts, with the stages'
-//   mean times as counters (vertex stage, assembly, binning, tile raster with shading).
+//   mean times as counters (vertex stage, assembly, binning, tile raster with shading); and
+//   the two entry points side by side (an owning Scene into the Renderer's targets, views of
+//   the caller's buffers into the caller's targets).
 // Run: build-bench/pipeline_bench [--benchmark_filter=...]. Speed is measured here, never in
 // unit tests.
 #include <benchmark/benchmark.h>
 
+#include <zraster/mesh_view.hpp>
 #include <zraster/render.hpp>
 #include <zraster/scenes.hpp>
 
@@ -18,6 +21,7 @@
 #include <vector>
 
 #include "benchmark_main.hpp"
+#include "memory/huge_pages.hpp"
 #include "raster/setup_lanes.hpp"
 #include "raster/visibility_kernel.hpp"
 #include "render/classify_kernel.hpp"
@@ -350,6 +354,90 @@ void BM_Frame(benchmark::State& state) {
 BENCHMARK(BM_Frame)
     ->ArgsProduct({{0, 1, 2}, {0, 1}, {1920}, {1, 2}})
     ->ArgsProduct({{3}, {1}, {640, 1920, 3840}, {2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// The entry points compared on one frame: scene index into kEntryScenes, path (0: owning Scene
+// and the Renderer's targets; 1: views of the same arrays, tightly packed, into caller targets;
+// 2: an interleaved vertex buffer, 16-bit indices where they fit, into caller targets; 3: as 1,
+// the caller's targets in plain vectors), width, threads. Phong, color and depth targets either
+// way; the caller's targets of paths 1 and 2 are advised for huge pages as the Renderer's own
+// are (memory/huge_pages.hpp): 4 KiB pages cost the tiles' row writes TLB misses. sphere:70000
+// stands in for the bunny (69,666 triangles, a model in the middle of the screen).
+const char* const kEntryScenes[] = {"sphere:70000", "sphere:1000000"};
+
+struct InterleavedVertex {
+    glm::vec3 position, normal;
+    glm::vec2 uv;
+};
+
+void BM_EntryPoint(benchmark::State& state) {
+    static std::map<int, Scene> scenes;
+    const int index = int(state.range(0));
+    if (!scenes.count(index)) scenes.emplace(index, make_procedural_scene(kEntryScenes[index]));
+    const Scene& scene = scenes.at(index);
+    const int path = int(state.range(1));
+    RenderOptions o;
+    o.width = int(state.range(2));
+    o.height = o.width * 9 / 16;
+    o.threads = int(state.range(3));
+    o.shading = ShadingMode::Phong;
+    o.camera = fit_camera(scene.world_positions());
+
+    std::vector<MeshView> meshes;
+    std::vector<InstanceView> instances;
+    SceneView view = view_of(scene, meshes, instances);
+    std::vector<std::vector<InterleavedVertex>> vertices(scene.meshes.size());
+    std::vector<std::vector<std::uint16_t>> indices16(scene.meshes.size());
+    if (path == 2)
+        for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+            const Mesh& mesh = scene.meshes[m];
+            for (std::size_t i = 0; i < mesh.positions.size(); ++i)
+                vertices[m].push_back({mesh.positions[i], mesh.normals[i],
+                                       mesh.uvs.empty() ? glm::vec2(0.0f) : mesh.uvs[i]});
+            const InterleavedVertex* v = vertices[m].data();
+            meshes[m].positions = {&v->position.x, vertices[m].size(), sizeof(InterleavedVertex)};
+            meshes[m].normals = {&v->normal.x, vertices[m].size(), sizeof(InterleavedVertex)};
+            if (!mesh.uvs.empty())
+                meshes[m].uvs = {&v->uv.x, vertices[m].size(), sizeof(InterleavedVertex)};
+            if (mesh.positions.size() <= 65536) {
+                indices16[m].assign(mesh.indices.begin(), mesh.indices.end());
+                meshes[m].indices = {indices16[m].data(), indices16[m].size(), IndexType::UInt16};
+            }
+        }
+    const std::size_t pixels = std::size_t(o.width) * std::size_t(o.height);
+    std::vector<std::uint8_t> color;
+    std::vector<float> depth;
+    if (path == 3) {
+        color.resize(pixels * 4);
+        depth.resize(pixels);
+    } else {
+        memory::resize_on_huge_pages(color, pixels * 4);
+        memory::resize_on_huge_pages(depth, pixels);
+    }
+    TargetViews targets;
+    targets.width = o.width;
+    targets.height = o.height;
+    targets.color = color.data();
+    targets.depth = depth.data();
+
+    Renderer renderer;
+    const auto frame = [&]() -> const RenderStats& {
+        return path == 0 ? renderer.render(scene, o).stats : renderer.render(view, o, targets);
+    };
+    for (int warm_up = 0; warm_up < 2; ++warm_up) frame();  // allocations, cluster bounds
+    double raster = 0;
+    for (auto _ : state) raster += frame().raster_ms;
+    state.counters["raster_ms"] = raster / std::max(1.0, double(state.iterations()));
+    static const char* const kPaths[] = {"owning", "views", "interleaved views",
+                                         "views, 4 KiB pages"};
+    state.SetLabel(std::string(kEntryScenes[index]) + " " + kPaths[path] + " " +
+                   std::to_string(o.width) + "x" + std::to_string(o.height) + ", " +
+                   std::to_string(o.threads) + " thread(s)");
+    state.SetItemsProcessed(std::int64_t(state.iterations() * scene.triangle_count()));
+}
+BENCHMARK(BM_EntryPoint)
+    ->ArgsProduct({{0, 1}, {0, 1, 2, 3}, {1920}, {2}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
