@@ -6,7 +6,7 @@
 #      asan, build-asan/),
 #   2. the multithreaded paths under ThreadSanitizer (scripts/sanitize.sh tsan, build-tsan/,
 #      with an instrumented oneTBB built from Debian's source package),
-#   3. a short run of every libFuzzer target, about 70 s in all (scripts/fuzz.sh, in the
+#   3. a short run of every libFuzzer target, about 77 s in all (scripts/fuzz.sh, in the
 #      build-asan/ build), with the loaders in the command's worker-process configuration,
 #   4. zraster as a subproject of another CMake project, built as shared libraries
 #      (scripts/consumer_check.sh subproject; the installed-package check is a ctest test).
