@@ -277,7 +277,7 @@ struct Frame {
     // The vertex stage: per scene mesh, whether its positions were hashed and their hash.
     std::vector<std::uint8_t> mesh_hashed;
     std::vector<std::uint64_t> mesh_hash;
-    std::vector<std::uint8_t> mesh_flags;            // the renderer's checks (renderer.cpp)
+    std::vector<std::uint8_t> mesh_flags;            // used, drawn (input_checks.cpp)
     std::vector<glm::vec3> world_points;             // fit_camera's input without a camera
     std::vector<std::size_t> tile_bytes, tile_base;  // bin_offsets
     // Per tile (rasterize_tiles): fragments passed and shaded, blocks hidden, deferred.

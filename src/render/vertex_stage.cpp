@@ -255,7 +255,11 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
             else
                 transform_vertices_scalar(job);
         };
-        const auto transform = [&](std::size_t begin, std::size_t end) {
+        const auto hash = options.simd ? hash_words : hash_words_scalar;
+        // Vertices [begin, end) through the kernel; with `positions_hash`, strided positions
+        // are hashed from the same copies (packed ones: hash_positions).
+        const auto transform = [&](std::size_t begin, std::size_t end,
+                                   std::uint64_t* positions_hash) {
             if (in_place) {
                 kernel(begin, end, mesh.positions, normals ? mesh.normals : nullptr, 0);
                 return;
@@ -266,11 +270,13 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
                 gather_vec3(view.positions, b, n, positions);
                 if (normals) gather_vec3(view.normals, b, n, object_normals);
                 kernel(b, b + n, positions, normals ? object_normals : nullptr, b);
+                if (positions_hash != nullptr)
+                    *positions_hash = combine_word_hashes(
+                        *positions_hash, hash(positions, 3 * n, 3 * std::uint64_t{b}));
             }
         };
         // The hash of the positions of vertices [begin, end).
         const auto hash_positions = [&](std::size_t begin, std::size_t end) {
-            const auto hash = options.simd ? hash_words : hash_words_scalar;
             if (mesh.positions != nullptr)
                 return hash(mesh.positions + begin, 3 * (end - begin), 3 * std::uint64_t{begin});
             std::uint64_t h = 0;
@@ -283,39 +289,42 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
             return h;
         };
         std::atomic<std::uint32_t> hash_low{0}, hash_high{0};
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.vertex_count(), 8192),
-                          [&](const tbb::blocked_range<std::size_t>& r) {
-                              if (needed == nullptr) {
-                                  transform(r.begin(), r.end());
-                              } else {  // runs of needed blocks
-                                  for (std::size_t k = r.begin(); k < r.end();) {
-                                      std::size_t end =
-                                          std::min(r.end(), (k / kVertexBlock + 1) * kVertexBlock);
-                                      if (!needed[k / kVertexBlock]) {
-                                          k = end;
-                                          continue;
-                                      }
-                                      while (end < r.end() && needed[end / kVertexBlock])
-                                          end = std::min(r.end(), end + kVertexBlock);
-                                      transform(k, end);
-                                      k = end;
-                                  }
-                              }
-                              if (hash_here) {  // while the block is in cache
-                                  const std::uint64_t h = hash_positions(r.begin(), r.end());
-                                  hash_low += static_cast<std::uint32_t>(h);
-                                  hash_high += static_cast<std::uint32_t>(h >> 32);
-                              }
-                              if (!attributes || (!fi.textured && !lit_per_vertex)) return;
-                              for (std::size_t k = r.begin(); k < r.end(); ++k) {
-                                  const std::size_t out = fi.first_vertex + k;
-                                  if (fi.textured) v.uv[out] = mesh.uv(k);
-                                  if (lit_per_vertex)
-                                      v.gouraud[out] = evaluate_lighting(
-                                          options.lighting, *fi.material, v.world[out],
-                                          v.normal[out], frame.eye, frame.view_axis);
-                              }
-                          });
+        tbb::parallel_for(
+            tbb::blocked_range<std::size_t>(0, mesh.vertex_count(), 8192),
+            [&](const tbb::blocked_range<std::size_t>& r) {
+                // Strided positions transformed whole are hashed as they go.
+                std::uint64_t h = 0;
+                const bool hash_in_transform = hash_here && !in_place && needed == nullptr;
+                if (needed == nullptr) {
+                    transform(r.begin(), r.end(), hash_in_transform ? &h : nullptr);
+                } else {  // runs of needed blocks
+                    for (std::size_t k = r.begin(); k < r.end();) {
+                        std::size_t end = std::min(r.end(), (k / kVertexBlock + 1) * kVertexBlock);
+                        if (!needed[k / kVertexBlock]) {
+                            k = end;
+                            continue;
+                        }
+                        while (end < r.end() && needed[end / kVertexBlock])
+                            end = std::min(r.end(), end + kVertexBlock);
+                        transform(k, end, nullptr);
+                        k = end;
+                    }
+                }
+                if (hash_here) {  // while the block is in cache
+                    if (!hash_in_transform) h = hash_positions(r.begin(), r.end());
+                    hash_low += static_cast<std::uint32_t>(h);
+                    hash_high += static_cast<std::uint32_t>(h >> 32);
+                }
+                if (!attributes || (!fi.textured && !lit_per_vertex)) return;
+                for (std::size_t k = r.begin(); k < r.end(); ++k) {
+                    const std::size_t out = fi.first_vertex + k;
+                    if (fi.textured) v.uv[out] = mesh.uv(k);
+                    if (lit_per_vertex)
+                        v.gouraud[out] =
+                            evaluate_lighting(options.lighting, *fi.material, v.world[out],
+                                              v.normal[out], frame.eye, frame.view_axis);
+                }
+            });
         if (hash_here) {
             fi.positions_hash = (std::uint64_t{hash_high} << 32) | hash_low;
             frame.mesh_hashed[mesh_index] = 1;
@@ -330,7 +339,7 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
                 skipped = 0;
                 tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.vertex_count(), 8192),
                                   [&](const tbb::blocked_range<std::size_t>& r) {
-                                      transform(r.begin(), r.end());
+                                      transform(r.begin(), r.end(), nullptr);
                                   });
             }
         }
