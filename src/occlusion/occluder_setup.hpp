@@ -21,6 +21,12 @@ inline constexpr int kMaxOccluderPieces = 6;
 int setup_occluder(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c, int width,
                    int height, const OccluderOptions& options, OccluderTriangle* out);
 
+// Sets up triangle `triangle` of `source` through setup_occluder (the setup kernels' path for
+// triangles that need clipping) and writes its pieces to `out` from index n on; returns the
+// index past them.
+std::size_t append_clipped_occluder(const OccluderSource& source, std::size_t triangle,
+                                    OccluderBatch& out, std::size_t n);
+
 // Which edges of triangle `triangle` (bit k: from corner k to corner k + 1) are interior edges of
 // a mesh: the previous or the next triangle of the index list holds the same edge reversed and
 // faces the same way (both vertices sets in front of the eye, w > 0). Pixel centers on such an

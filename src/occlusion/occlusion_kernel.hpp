@@ -1,7 +1,8 @@
-// The occlusion buffer's storage and its two kernels: rasterizing set-up occluder triangles into
-// the tiles, and testing a pixel rectangle against them. Each kernel has a SIMD version (Google
-// Highway, dispatched at run time) and a scalar reference twin with the same operations in the
-// same order; tests compare the two bit for bit.
+// The occlusion buffer's storage and its kernels: setting up occluder triangles
+// (occluder_setup_kernel.cpp), rasterizing them into the tiles (occluder_raster_kernel.cpp), and
+// the coarse levels and rectangle tests (occlusion_query_kernel.cpp). Each kernel has a SIMD
+// version (Google Highway, dispatched at run time) and a scalar reference twin with the same
+// operations in the same order; tests compare the two bit for bit.
 #pragma once
 #include <hwy/aligned_allocator.h>
 
@@ -217,6 +218,11 @@ inline constexpr std::size_t kCoarsePadding = 16;
 inline std::size_t block_max_size(int tiles_x, int tiles_y) {
     return (2 * static_cast<std::size_t>(tiles_y) + 1) * (2 * static_cast<std::size_t>(tiles_x)) +
            kCoarsePadding;
+}
+
+// The bits of columns 0..n-1 of a row mask, n in [0, 32].
+inline std::uint32_t low_bits(int n) {
+    return n >= 32 ? ~0u : ~(~0u << n);
 }
 
 // Rasterizes triangles [0, count) in order.
