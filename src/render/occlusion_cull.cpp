@@ -130,7 +130,7 @@ void cull_instances(Frame& frame, const glm::mat4& view_projection) {
         c.mvp = view_projection * instance.transform;  // as the vertex stage computes it
         c.screen_fraction = screen_fraction(mesh.bounds, c.mvp);
         const glm::vec3 center(instance.transform * glm::vec4(mesh.bounds.center(), 1.0f));
-        c.distance = glm::length(glm::dvec3(center) - frame.camera.eye);
+        c.distance = glm::length(glm::dvec3(center) - frame.camera.position());
         if (!std::isfinite(c.distance)) c.distance = 0.0;
         c.triangles = mesh.triangle_count();
         candidates.push_back(c);

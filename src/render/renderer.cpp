@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <span>
 #include <string>
 #include <string_view>
@@ -31,10 +30,6 @@ float depth_clear_value(const RenderOptions& options) {
 
 namespace {
 
-bool finite(const glm::dvec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 // Options and scene are checked before anything is allocated: a frame that would need absurd
 // memory, or a scene whose arrays disagree (read out of bounds later), is an InputError here.
 void validate(detail::Frame& frame, const SceneView& scene, std::string_view source,
@@ -56,21 +51,7 @@ void validate(detail::Frame& frame, const SceneView& scene, std::string_view sou
         throw InputError("", "at most " + std::to_string(kMaxUserClipPlanes) +
                                  " user clip planes are supported");
     if (options.threads < 0) throw InputError("", "thread count must be >= 0");
-    if (options.camera) {
-        const Camera& c = *options.camera;
-        if (!finite(c.eye) || !finite(c.target) || !finite(c.up) || !std::isfinite(c.near) ||
-            !std::isfinite(c.far) || !std::isfinite(c.fovy_degrees))
-            throw InputError("", "camera parameters must be finite");
-        if (glm::length(c.target - c.eye) == 0.0)
-            throw InputError("", "camera eye and target coincide");
-        if (glm::length(glm::cross(c.target - c.eye, c.up)) == 0.0)
-            throw InputError("", "camera up vector is parallel to the view direction");
-        if (!(c.near > 0.0) || (!c.infinite_far && !(c.far > c.near)))
-            throw InputError("", "camera needs 0 < near < far");
-        if (c.projection == Camera::Projection::Perspective &&
-            !(c.fovy_degrees > 0.0 && c.fovy_degrees < 180.0))
-            throw InputError("", "field of view must be in (0, 180) degrees");
-    }
+    if (options.camera) check_camera(*options.camera, options.width, options.height);
 }
 
 // Empties a frame for reuse, keeping the capacity of its arrays.
@@ -174,9 +155,8 @@ void render_frame_in_arena(detail::Frame& frame, const SceneView& scene, std::st
     frame.options = &options;
     frame.targets = detail::FrameTargets(targets, destination.caller == nullptr);
     frame.camera = options.camera ? *options.camera : fit_camera(world_points(frame));
-    frame.eye = glm::vec3(frame.camera.eye);
-    const glm::dvec3 axis = frame.camera.eye - frame.camera.target;
-    frame.view_axis = glm::vec3(glm::normalize(axis));
+    frame.eye = glm::vec3(frame.camera.position());
+    frame.view_axis = glm::vec3(-frame.camera.view_direction());
     frame.clip_settings.depth_range = frame.camera.clip_depth_range();
     frame.clip_settings.guard_x = static_cast<float>(kGuardBand / (0.5 * options.width));
     frame.clip_settings.guard_y = static_cast<float>(kGuardBand / (0.5 * options.height));

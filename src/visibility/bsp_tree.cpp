@@ -77,9 +77,8 @@ void split(const BspPolygon& polygon, const glm::dvec4& plane, double eps, BspPo
 }  // namespace
 
 glm::dvec4 bsp_eye(const Camera& camera) {
-    if (camera.projection == Camera::Projection::Orthographic)
-        return {glm::normalize(camera.eye - camera.target), 0.0};
-    return {camera.eye, 1.0};
+    if (camera.is_orthographic()) return {-camera.view_direction(), 0.0};
+    return {camera.position(), 1.0};
 }
 
 BspTree BspTree::build(std::vector<BspPolygon> polygons, const BspOptions& options) {

@@ -75,13 +75,14 @@ FrameContext make_frame_context(const Scene& scene, const RenderOptions& options
     if (options.clip_planes.size() > std::size_t(kMaxUserClipPlanes))
         throw InputError("", "at most " + std::to_string(kMaxUserClipPlanes) +
                                  " user clip planes are supported");
+    if (options.camera) check_camera(*options.camera, options.width, options.height);
     FrameContext f;
     f.scene = &scene;
     f.options = &options;
     f.camera = effective_camera(scene, options);
     f.view_projection = f.camera.view_projection(double(options.width) / double(options.height));
-    f.eye = glm::vec3(f.camera.eye);
-    f.view_axis = glm::vec3(glm::normalize(f.camera.eye - f.camera.target));
+    f.eye = glm::vec3(f.camera.position());
+    f.view_axis = glm::vec3(-f.camera.view_direction());
     f.viewer = bsp_eye(f.camera);
     f.clip_settings.depth_range = f.camera.clip_depth_range();
     f.clip_settings.guard_x = static_cast<float>(kGuardBand / (0.5 * options.width));

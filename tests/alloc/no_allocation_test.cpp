@@ -315,5 +315,26 @@ TEST(NoAllocation, FromTheSecondFrameWithoutClusterCulling) {
     }
 }
 
+// Cameras from matrices and from intrinsics are checked every frame as well, without allocating.
+TEST(NoAllocation, CamerasFromMatricesAndIntrinsics) {
+    const Scene scene = make_procedural_scene("sphere:2000");
+    RenderOptions o;
+    o.width = 320;
+    o.height = 240;
+    o.threads = 2;
+    const Camera fitted = fit_camera(scene.world_positions());
+    const Camera cameras[] = {
+        Camera::from_matrices(fitted.view(), fitted.projection_matrix(320.0 / 240.0),
+                              fitted.clip_depth_range()),
+        Camera::from_intrinsics(fitted.intrinsics(320, 240), fitted.camera_to_world())};
+    for (const Camera& camera : cameras) {
+        o.camera = camera;
+        Renderer renderer;
+        for (int frame = 0; frame < 2; ++frame) renderer.render(scene, o);
+        for (int frame = 2; frame < 5; ++frame)
+            EXPECT_EQ(allocations_in([&] { renderer.render(scene, o); }), 0u) << "frame " << frame;
+    }
+}
+
 }  // namespace
 }  // namespace zraster
