@@ -6,9 +6,6 @@
 
 namespace zraster::io {
 
-namespace {
-
-// The rest of a line after `keyword` and whitespace, if the line starts with it.
 bool directive(const std::string& line, std::string_view keyword, std::string& argument) {
     const std::string_view text = trim(line);
     if (!text.starts_with(keyword) || text.size() <= keyword.size()) return false;
@@ -16,6 +13,8 @@ bool directive(const std::string& line, std::string_view keyword, std::string& a
     argument = std::string(trim(text.substr(keyword.size())));
     return !argument.empty();
 }
+
+namespace {
 
 void read_material_names(const std::filesystem::path& mtl, std::set<std::string>& names) {
     std::ifstream in(mtl);

@@ -5,6 +5,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "io/reference_policy.hpp"
@@ -15,6 +16,10 @@ struct ObjMaterialLibraries {
     std::vector<std::string> warnings;        // missing libraries, substitutes
     std::set<std::string> defined_materials;  // `newmtl` names of the libraries found
 };
+
+// The rest of a line after `keyword` and blanks, when the trimmed line starts with it (how
+// Assimp's OBJ and MTL readers take a statement's argument).
+bool directive(const std::string& line, std::string_view keyword, std::string& argument);
 
 // Where an `mtllib` statement's library is read from, as Assimp 5.2 resolves it (the name
 // relative to the OBJ's directory, else "<obj name>.mtl" beside it) within what `policy`

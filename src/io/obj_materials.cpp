@@ -19,15 +19,6 @@ namespace zraster::io::obj {
 
 namespace {
 
-// `line` is the rest of a line after `keyword` and blanks, when the trimmed line starts with it.
-bool directive(const std::string& line, std::string_view keyword, std::string& argument) {
-    const std::string_view text = trim(line);
-    if (!text.starts_with(keyword) || text.size() <= keyword.size()) return false;
-    if (text[keyword.size()] != ' ' && text[keyword.size()] != '\t') return false;
-    argument = std::string(trim(text.substr(keyword.size())));
-    return !argument.empty();
-}
-
 // The `newmtl` names of an MTL file as both Assimp's MTL reader and the Assimp path's library
 // check take them. nullopt where they could differ ("Newmtl", an indented newmtl, a lone CR),
 // or where Assimp would apply a statement before the first newmtl to the current material.
