@@ -7,7 +7,8 @@ namespace zraster::io {
 bool ConfinedIOSystem::allowed(const char* file) const {
     const ReferencePolicy::Check check = policy_.check(file);
     if (check.verdict == ReferencePolicy::Verdict::Refused) {
-        const std::string line = "'" + std::string(file) + "' " + check.reason;
+        std::string line = "'";
+        line.append(file).append("' ").append(check.reason);
         if (std::find(refusals_.begin(), refusals_.end(), line) == refusals_.end())
             refusals_.push_back(line);
     }
