@@ -83,8 +83,9 @@ struct ZRASTER_API Camera {
     std::optional<glm::dmat4> given_view;
     // Set by from_matrices(): the projection as given, in place of everything that
     // projection_matrix() otherwise computes (projection, fovy_degrees, ortho_height, near, far,
-    // infinite_far; the factory sets those for reading). reversed_z states only the matrix's depth
-    // direction, for the default compare and clear value.
+    // infinite_far; the factory sets those for reading, near and far NaN where the matrix's depth
+    // depends on more than eye z). reversed_z states only the matrix's depth direction, for the
+    // default compare and clear value.
     struct GivenProjection {
         glm::dmat4 matrix{1.0};
         ClipDepthRange range = ClipDepthRange::NegativeOneToOne;
@@ -143,7 +144,8 @@ struct ZRASTER_API Camera {
     // other axis).
     Intrinsics intrinsics(int width, int height,
                           CameraConvention convention = CameraConvention::OpenCV) const;
-    // The pose in `convention`: the inverse of the view matrix, with y and z flipped for OpenCV.
+    // The pose in `convention`: the inverse of the view matrix, its y and z axes (columns 1, 2)
+    // negated for OpenCV.
     glm::dmat4 camera_to_world(CameraConvention convention = CameraConvention::OpenCV) const;
 };
 
