@@ -21,6 +21,8 @@
 #include <string>
 #include <vector>
 
+#include "support/instance_grid.hpp"
+
 namespace {
 
 std::atomic<bool> counting{false};
@@ -175,25 +177,6 @@ struct EngineScene {
     SceneView view() const { return {meshes, materials, instances}; }
 };
 
-// 144 instances of three meshes on a grid (the instance BVH culls from 64 instances on; the
-// occlusion culler finds occluders and hidden instances among them).
-Scene many_instances() {
-    std::vector<Mesh> meshes;
-    meshes.push_back(make_uv_sphere(0.4f, 8, 16));
-    meshes.push_back(make_box(glm::vec3(0.3f, 0.5f, 0.3f)));
-    meshes.push_back(make_torus(0.35f, 0.1f, 12, 8));
-    Scene scene = scene_from_meshes(std::move(meshes));
-    scene.instances.clear();
-    for (int i = 0; i < 144; ++i) {
-        Instance instance;
-        instance.mesh = std::uint32_t(i % 3);
-        instance.transform = glm::translate(
-            glm::mat4(1.0f), glm::vec3(float(i % 12) - 5.5f, 0.0f, -float(i / 12) * 1.2f));
-        scene.instances.push_back(instance);
-    }
-    return scene;
-}
-
 struct Case {
     std::string what;
     Scene scene;
@@ -211,12 +194,12 @@ std::vector<Case> cases() {
     RenderOptions depth = base;
     depth.color_target = false;
     out.push_back({"sphere, depth only", make_procedural_scene("sphere:20000"), depth});
-    out.push_back({"many instances (instance BVH)", many_instances(), base});
+    out.push_back({"many instances (instance BVH)", test::instance_grid(), base});
     RenderOptions occlusion = base;
     occlusion.occlusion_cull = true;
     occlusion.instance_order = InstanceOrder::FrontToBack;
     out.push_back(
-        {"many instances, occlusion culling, front to back", many_instances(), occlusion});
+        {"many instances, occlusion culling, front to back", test::instance_grid(), occlusion});
     RenderOptions everything = base;
     everything.normal_target = true;
     everything.id_targets = true;

@@ -21,6 +21,8 @@
 #include <utility>
 #include <vector>
 
+#include "support/instance_grid.hpp"
+
 namespace zraster {
 namespace {
 
@@ -220,29 +222,9 @@ Scene textured_sphere() {
     return scene;
 }
 
-// A grid of 12 x 12 instances of three meshes (the instance BVH culls from 64 on), some
-// overriding the shading mode, some partly off screen.
-Scene many_instances() {
-    std::vector<Mesh> meshes;
-    meshes.push_back(make_uv_sphere(0.4f, 8, 16));
-    meshes.push_back(make_box(glm::vec3(0.3f, 0.5f, 0.3f)));
-    meshes.push_back(make_torus(0.35f, 0.1f, 12, 8));
-    Scene scene = scene_from_meshes(std::move(meshes));
-    scene.instances.clear();
-    for (int i = 0; i < 144; ++i) {
-        Instance instance;
-        instance.mesh = std::uint32_t(i % 3);
-        instance.transform = glm::translate(
-            glm::mat4(1.0f), glm::vec3(float(i % 12) - 5.5f, 0.0f, -float(i / 12) * 1.2f));
-        if (i % 5 == 0) instance.shading = ShadingMode::Flat;
-        scene.instances.push_back(instance);
-    }
-    return scene;
-}
-
 TEST(MeshView, InterleavedBuffersAnd16BitIndicesGiveTheOwningImages) {
     const Scene sphere = make_procedural_scene("sphere:20000");
-    const Scene city = many_instances();
+    const Scene city = test::instance_grid(5);
     const Scene soup = make_procedural_scene("soup:3000:5");
     const Scene textured = textured_sphere();
     const RenderOptions o = small_options();
@@ -374,7 +356,7 @@ TEST(MeshView, SubsetsOfTargets) {
 }
 
 TEST(MeshView, SameImagesForAnyThreadCount) {
-    const Scene city = many_instances();
+    const Scene city = test::instance_grid(5);
     const EngineScene engine(city);
     RenderOptions o = small_options();
     std::vector<std::byte> first_color, first_depth;
