@@ -524,34 +524,47 @@ void rasterize_tiles(Frame& frame, RenderStats& stats) {
     std::memcpy(&background, background_rgba, 4);
     stats.simd_target = options.simd ? visibility_kernel_target() : "scalar";
 
-    // Rows of cleared values, copied into the targets of empty tiles.
-    float clear_row[kTileSize];
+    // Rows of cleared values, copied into the targets of empty tiles (decoded depth), and into
+    // the tile's own depths (stored: encoded for D24 and D16, whose LESS test would otherwise
+    // see a clear depth of about 1/2^24 and pass nothing).
+    float clear_row[kTileSize], stored_clear_row[kTileSize];
     std::uint32_t background_row[kTileSize];
     std::fill_n(clear_row, kTileSize,
                 options.depth_format == DepthFormat::D32F
                     ? clear
                     : codec.decode(static_cast<std::uint32_t>(clear)));
+    std::fill_n(stored_clear_row, kTileSize, clear);
     std::fill_n(background_row, kTileSize, background);
 
     const std::size_t tiles = std::size_t(frame.tiles_x) * std::size_t(frame.tiles_y);
-    // Empty tiles that already hold the cleared values (a kept Renderer's previous frame into
-    // its own targets, same clear values and targets) are left as they are. The caller's
-    // targets are written whole.
+    // Empty tiles that already hold the cleared values (the previous frame into the same
+    // targets, same clear values, kept since) are left as they are. Other targets are written
+    // whole.
     ClearedTiles::Signature signature;
     signature.width = width;
     signature.height = height;
     signature.format = options.depth_format;
     std::memcpy(&signature.clear_bits, &clear, sizeof(float));
     signature.background = targets.color ? background : 0;
-    signature.color = targets.color;
-    signature.normal = targets.normal;
-    signature.ids = targets.ids;
+    const TargetViews& views = targets.views;
+    signature.color = views.color;
+    signature.depth = views.depth;
+    signature.normal = views.normal;
+    signature.instance_id = views.instance_id;
+    signature.primitive_id = views.primitive_id;
+    signature.color_pitch = views.color_pitch;
+    signature.depth_pitch = views.depth_pitch;
+    signature.normal_pitch = views.normal_pitch;
+    signature.instance_id_pitch = views.instance_id_pitch;
+    signature.primitive_id_pitch = views.primitive_id_pitch;
     std::uint8_t* cleared = nullptr;  // null: write every empty tile
     if (targets.kept) {
         const bool reuse_cleared = cleared_tiles.valid && cleared_tiles.signature == signature;
         if (!reuse_cleared) cleared_tiles.cleared.assign(tiles, 0);
         cleared_tiles.valid = false;  // until every tile is written
         cleared = cleared_tiles.cleared.data();
+    } else if (cleared_tiles.valid && cleared_tiles.signature.shares_an_array_with(signature)) {
+        cleared_tiles.valid = false;  // this frame changes what the kept tiles hold
     }
     std::vector<std::uint64_t>& passed_per_tile = frame.tile_passed;
     std::vector<std::uint64_t>& shaded_per_tile = frame.tile_shaded;
@@ -616,7 +629,7 @@ void rasterize_tiles(Frame& frame, RenderStats& stats) {
         if (cleared != nullptr) cleared[tile_number] = 0;
         const auto row_bytes = std::size_t(c.x1 - c.x0) * sizeof(float);
         for (int y = 0; y < c.y1 - c.y0; ++y) {
-            std::memcpy(tile.depth + tile_index(0, y), clear_row, row_bytes);
+            std::memcpy(tile.depth + tile_index(0, y), stored_clear_row, row_bytes);
             // Depth-only frames never read the refs.
             if (shade || targets.ids)
                 std::memset(tile.ref + tile_index(0, y), 0xff, row_bytes);  // kNoTriangle

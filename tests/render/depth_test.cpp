@@ -1,5 +1,7 @@
 // Depth: interpenetrating triangles resolve per pixel as a ray cast says; a 16-bit buffer at a
 // far/near ratio of 10^4 shows z-fighting that D32F and reversed-Z do not.
+#include <zraster/scenes.hpp>
+
 #include <gtest/gtest.h>
 
 #include "render/render_test_util.hpp"
@@ -101,10 +103,40 @@ TEST(Depth, D16ZFightsAtRatio1e4WhereD32FAndReversedZDoNot) {
     const int d32 = wrongly_ordered_pixels(DepthFormat::D32F, false);
     const int reversed = wrongly_ordered_pixels(DepthFormat::D32F, true);
     EXPECT_GT(d16, 160 * 120 / 2) << "16 bits cannot separate 500 from 501 at near 0.1";
+    EXPECT_LT(d16, 2 * 160 * 120) << "16 bits draws the quads (in submission order)";
+    EXPECT_EQ(d24, 0) << "24 bits separate them (about 7 steps apart)";
     EXPECT_EQ(d32, 0);
     EXPECT_EQ(reversed, 0);
     RecordProperty("wrong_d16", d16);
     RecordProperty("wrong_d24", d24);
+}
+
+// Every depth format draws the same surfaces where depths are far apart: a sphere (no surface
+// behind another after back-face culling) gives D32F's ids, and depths within a step of its.
+TEST(Depth, UnormFormatsDrawWhatD32FDraws) {
+    const Scene sphere = make_procedural_scene("sphere:20000");
+    RenderOptions o;
+    o.width = 200;
+    o.height = 150;
+    o.threads = 2;
+    o.id_targets = true;
+    const RenderResult d32 = render(sphere, o);
+    ASSERT_GT(d32.stats.fragments_passed, 5000u);
+    for (const DepthFormat format : {DepthFormat::D24, DepthFormat::D16}) {
+        for (const bool simd : {true, false}) {
+            SCOPED_TRACE(std::string(format == DepthFormat::D24 ? "D24" : "D16") +
+                         (simd ? " SIMD" : " scalar"));
+            o.depth_format = format;
+            o.simd = simd;
+            const RenderResult r = render(sphere, o);
+            EXPECT_EQ(r.stats.fragments_passed, d32.stats.fragments_passed);
+            EXPECT_EQ(r.targets.instance_id, d32.targets.instance_id);
+            EXPECT_EQ(r.targets.primitive_id, d32.targets.primitive_id);
+            const double step = format == DepthFormat::D24 ? 1.0 / 16777215 : 1.0 / 65535;
+            for (std::size_t i = 0; i < r.targets.depth.size(); ++i)
+                ASSERT_NEAR(r.targets.depth[i], d32.targets.depth[i], step) << "pixel " << i;
+        }
+    }
 }
 
 TEST(Depth, CompareFunctionsAndWriteMask) {
