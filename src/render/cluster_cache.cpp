@@ -26,19 +26,24 @@ void attach_clusters(Frame& frame) {
         fi.cluster_indices_checked = false;
         const MeshView& mesh = *fi.mesh->view;
         if (!cluster_culling_applies(*frame.options, mesh)) continue;
-        ClusterCache::Entry& e = cache.entries[mesh_key(mesh)];
+        const auto [entry, first_sighting] = cache.entries.try_emplace(mesh_key(mesh));
+        ClusterCache::Entry& e = entry->second;
         e.last_frame = cache.frame;
         if (!fi.positions_hashed) continue;  // not worth it (wants_positions_hash)
-        const bool same = e.positions == mesh.positions.count && e.indices == mesh.indices.count &&
-                          e.positions_hash == fi.positions_hash;
-        if (!same) {  // first sighting, or changed: remember it, build next time
+        const bool same = !first_sighting && e.positions == mesh.positions.count &&
+                          e.indices == mesh.indices.count && e.positions_hash == fi.positions_hash;
+        if (!same) {  // first sighting, or changed: remember it
             e.positions = mesh.positions.count;
             e.indices = mesh.indices.count;
             e.positions_hash = fi.positions_hash;
             e.clusters.reset();
             e.not_worth_it = false;
             e.recorded = true;
-        } else if (!e.clusters && !e.not_worth_it && !e.recorded) {
+        }
+        // A mesh seen for the first time gets its bounds at once, so that a kept Renderer
+        // allocates nothing after its first frame; one that changed gets them once it is seen
+        // unchanged (an animated mesh would have them rebuilt every frame, for nothing).
+        if (!e.clusters && !e.not_worth_it && (first_sighting || !e.recorded)) {
             const std::vector<ClusterBounds> bounds = build_cluster_bounds(mesh);
             const auto cullable = std::count_if(
                 bounds.begin(), bounds.end(), [](const ClusterBounds& b) { return b.cullable(); });

@@ -1,16 +1,18 @@
 // Cluster bounds (cluster_cull.hpp) kept from frame to frame by a Renderer, per mesh.
 //
-// Bounds cost about as much to build as they save in a frame, so they are built only for a mesh
-// seen unchanged in two of a Renderer's frames (a one-shot render never builds them) and kept
-// while it stays so. "Unchanged" is checked, never assumed: the vertex stage hashes the positions
-// it reads anyway (word_hash.hpp) and the cache compares that hash and the array sizes; the
-// indices, which it does not read, are hashed per cluster when a cluster is about to be culled
-// (a mismatch makes the front end classify that cluster's triangles after all), or all of them
-// before the vertex stage skips vertices (vertex_blocks.hpp; a mismatch culls nothing that
-// frame). Either way the mesh's bounds are dropped after the frame. A mesh whose bounds turn out
-// nearly all uncullable (normals every way, as in a triangle soup) is then left alone,
-// unhashed, while its sizes stay. With RenderOptions::static_meshes nothing is hashed: the
-// caller promises the meshes do not change, and only their array sizes are compared.
+// Bounds cost about as much to build as they save in a frame. A Renderer builds them in the first
+// frame that draws a mesh (so that later frames allocate nothing; a one-shot render never builds
+// them) and keeps them while the mesh stays unchanged; a mesh that changed gets new ones once it
+// is seen unchanged in two frames (an animated one is not bounded every frame, for nothing).
+// "Unchanged" is checked, never assumed: the vertex stage hashes the positions it reads anyway
+// (word_hash.hpp) and the cache compares that hash and the array sizes; the indices, which it does
+// not read, are hashed per cluster when a cluster is about to be culled (a mismatch makes the front
+// end classify that cluster's triangles after all), or all of them before the vertex stage skips
+// vertices (vertex_blocks.hpp; a mismatch culls nothing that frame). Either way the mesh's bounds
+// are dropped after the frame. A mesh whose bounds turn out nearly all uncullable (normals every
+// way, as in a triangle soup) is then left alone, unhashed, while its sizes stay. With
+// RenderOptions::static_meshes nothing is hashed: the caller promises the meshes do not change, and
+// only their array sizes are compared.
 //
 // A mesh is known by its arrays' addresses (MeshKey): the same for an owning Scene's mesh frame
 // after frame and for a caller's MeshView rebuilt every frame over the same buffers.
@@ -91,7 +93,7 @@ struct ClusterCache {
     struct Entry {
         std::size_t positions = 0, indices = 0;
         std::uint64_t positions_hash = 0;
-        std::unique_ptr<MeshClusters> clusters;  // null until seen unchanged twice
+        std::unique_ptr<MeshClusters> clusters;  // null until built
         // Bounds were built and too few clusters could ever be culled (a triangle soup): the
         // mesh is not hashed or bounded again while its array sizes stay.
         bool not_worth_it = false;

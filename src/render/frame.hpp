@@ -86,8 +86,9 @@ struct FrameTargets {
     bool color = false, normal = false;
     bool ids = false;       // instance or primitive ids
     bool coverage = false;  // front or back hit counts
-    // The Renderer's own targets, as the last frame left them: tiles that hold the cleared
-    // values may be left as they are (ClearedTiles). Never the caller's.
+    // Targets as the last frame left them (the Renderer's own, or the caller's with
+    // TargetViews::unchanged_since_last_frame): tiles that hold the cleared values may be left
+    // as they are (ClearedTiles).
     bool kept = false;
 
     explicit FrameTargets(const TargetViews& v = {}, bool own = false)
@@ -216,15 +217,30 @@ struct InstanceCulling {
 // Which tiles of a kept Renderer's targets still hold the cleared values from the previous
 // frame, so that a tile empty again is not rewritten (1080p depth and color are 16 MB a frame,
 // most of them background around a small model). Valid only for the same clear values and
-// targets; invalid while a frame is being written and after frames that draw edges (a line may
-// reach a pixel past the tiles its triangle was binned to).
+// targets (the same arrays: own and caller targets in turn are each written whole); invalid
+// while a frame is being written and after frames that draw edges (a line may reach a pixel
+// past the tiles its triangle was binned to).
 struct ClearedTiles {
     struct Signature {
         int width = 0, height = 0;
         DepthFormat format = DepthFormat::D32F;
         std::uint32_t clear_bits = 0, background = 0;
-        bool color = false, normal = false, ids = false;
+        // The targets written (null: not written), pitches resolved.
+        const void *color = nullptr, *depth = nullptr, *normal = nullptr;
+        const void *instance_id = nullptr, *primitive_id = nullptr;
+        std::size_t color_pitch = 0, depth_pitch = 0, normal_pitch = 0;
+        std::size_t instance_id_pitch = 0, primitive_id_pitch = 0;
         bool operator==(const Signature&) const = default;
+        // Whether the two write some array in common.
+        bool shares_an_array_with(const Signature& o) const {
+            const void* const mine[] = {color, depth, normal, instance_id, primitive_id};
+            const void* const theirs[] = {o.color, o.depth, o.normal, o.instance_id,
+                                          o.primitive_id};
+            for (const void* a : mine)
+                for (const void* b : theirs)
+                    if (a != nullptr && a == b) return true;
+            return false;
+        }
     };
     bool valid = false;
     Signature signature;

@@ -153,7 +153,8 @@ void render_frame_in_arena(detail::Frame& frame, const SceneView& scene, std::st
     frame.scene = &scene;
     frame.source = source;
     frame.options = &options;
-    frame.targets = detail::FrameTargets(targets, destination.caller == nullptr);
+    frame.targets = detail::FrameTargets(
+        targets, destination.caller == nullptr || targets.unchanged_since_last_frame);
     frame.camera = options.camera ? *options.camera : fit_camera(world_points(frame));
     frame.eye = glm::vec3(frame.camera.position());
     frame.view_axis = glm::vec3(-frame.camera.view_direction());

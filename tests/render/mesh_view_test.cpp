@@ -262,7 +262,7 @@ TEST(MeshView, InterleavedBuffersAnd16BitIndicesGiveTheOwningImages) {
 }
 
 // Cluster culling keys its bounds by the views' addresses: a Renderer drawing the same caller
-// buffers frame after frame culls clusters from the third frame on, with the same images.
+// buffers frame after frame culls clusters from the first frame on, with the same images.
 TEST(MeshView, ClusterCullingWorksThroughViews) {
     const Scene sphere = make_procedural_scene("sphere:20000");
     const EngineScene engine(sphere);
@@ -305,6 +305,65 @@ TEST(MeshView, EveryPixelIsWrittenEveryFrame) {
         const RenderResult& own = renderer.render(sphere, o);
         EXPECT_EQ(own.targets.color, want.targets.color);
         EXPECT_EQ(own.targets.depth, want.targets.depth);
+    }
+}
+
+// TargetViews::unchanged_since_last_frame: with the camera moving (tiles going from drawn to
+// empty and back) every frame is the one-shot render's; empty tiles are really left alone (a
+// byte scribbled in one survives: the promise is taken, not checked); and frames that break the
+// premise in ways the renderer can see (other arrays, a frame written without the promise in
+// between) are written whole.
+TEST(MeshView, TargetsUnchangedSinceTheLastFrame) {
+    const Scene sphere = make_procedural_scene("sphere:400");
+    RenderOptions o = small_options();
+    Camera camera = fit_camera(sphere.world_positions());
+    camera.eye *= 2.0;
+    camera.far *= 3.0;
+    std::vector<MeshView> meshes;
+    std::vector<InstanceView> instances;
+    const SceneView view = view_of(sphere, meshes, instances);
+    CallerImages images(o.width, o.height, 4), other(o.width, o.height, 0);
+    Renderer renderer;
+    const auto frame = [&](int k, CallerImages& into, bool promise) {
+        SCOPED_TRACE("frame " + std::to_string(k));
+        // The sphere moves right and back: tiles it left are empty again.
+        Camera c = camera;
+        const double shift = 0.6 * std::sin(0.9 * k);
+        c.eye.x += shift;
+        c.target.x += shift;
+        o.camera = c;
+        TargetViews t = into.views(true, true, false, false);
+        t.unchanged_since_last_frame = promise;
+        renderer.render(view, o, t);
+        const RenderResult want = render(sphere, o);
+        expect_rows(into, into.color, want.targets.color, 4, "color");
+        expect_rows(into, into.depth, want.targets.depth, 1, "depth");
+    };
+    frame(0, images, true);  // first frame: nothing kept to rely on
+    for (int k = 1; k < 6; ++k) frame(k, images, true);
+    // A scribble in the top-left tile (background in every frame here) stays.
+    const std::byte background_red = images.color[0];
+    images.color[0] = std::byte{0x11};
+    Camera c = camera;
+    o.camera = c;
+    TargetViews t = images.views(true, true, false, false);
+    t.unchanged_since_last_frame = true;
+    renderer.render(view, o, t);
+    EXPECT_EQ(images.color[0], std::byte{0x11}) << "an empty tile was rewritten";
+    images.color[0] = background_red;
+    // Other arrays with the promise: written whole.
+    other.scribble();
+    frame(6, other, true);
+    // A frame without the promise into the same arrays, then with it: written whole again.
+    frame(7, images, false);
+    frame(8, images, true);
+    images.scribble();
+    frame(9, images, false);
+    // Own targets in between: both kept right.
+    for (int k = 10; k < 13; ++k) {
+        frame(k, images, true);
+        const RenderResult& own = renderer.render(sphere, o);
+        EXPECT_EQ(own.targets.color, render(sphere, o).targets.color);
     }
 }
 
