@@ -41,7 +41,7 @@ struct ABufferOptions {
     // the rasterizer's 1/256-pixel grid. Other values throw InputError.
     int samples_per_side = 4;
     // Fragments over the whole frame (the memory bound: 24 bytes each, so 1.5 GiB at the
-    // default). Exceeding it throws InputError("A-buffer fragment limit of N exceeded: ...")
+    // default). Exceeding it throws LimitExceeded ("max_abuffer_fragments")
     // while the lists are built, before anything past the limit is allocated (the pool grows
     // by doubling, so its capacity may transiently reach twice the fragments stored).
     std::size_t max_fragments = std::size_t{64} << 20;

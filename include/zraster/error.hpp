@@ -40,4 +40,19 @@ class InputError : public std::runtime_error {
     std::string cause_;
 };
 
+// An input refused because it would exceed one of the budgets that keep a run bounded in time
+// and memory (RenderLimits, the algorithms' options, LoadOptions). limit() names the field, e.g.
+// "max_bsp_polygons", so that a front end can name its own way to raise it (the command's
+// --max-bsp-polygons, the Python keyword). The cause says what was exceeded and by what input.
+class LimitExceeded : public InputError {
+  public:
+    LimitExceeded(std::string file, std::string limit, std::string cause)
+        : InputError(std::move(file), std::move(cause)), limit_(std::move(limit)) {}
+
+    const std::string& limit() const { return limit_; }
+
+  private:
+    std::string limit_;
+};
+
 }  // namespace zraster

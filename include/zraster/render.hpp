@@ -23,8 +23,7 @@
 // on its own oneTBB arena of options.threads threads. Different Renderers may run concurrently.
 //
 // Memory: a Renderer keeps its working memory from frame to frame. After the first frame of a
-// given size, options and scene shape it makes no heap allocation, except once more in the
-// second frame that sees a large mesh unchanged, when cluster culling builds its bounds.
+// given size, options and scene shape it makes no heap allocation.
 #pragma once
 #include <zraster/camera.hpp>
 #include <zraster/depth_buffer.hpp>
@@ -70,6 +69,30 @@ struct RenderLimits {
     // max_vertices cannot usefully exceed 2^32 - 1.
     std::uint64_t max_triangles = 100'000'000;
     std::uint64_t max_vertices = 100'000'000;
+
+    // The object-space visibility algorithms (visibility.hpp, and the SVG writer): their work
+    // grows faster than their input (random, interpenetrating triangles split without end), so
+    // each has a budget, scaled to the input unless set here (0: automatic, as stated; the
+    // budget functions in visibility.hpp compute it). Exceeding one throws LimitExceeded.
+    // Painter's algorithm: polygon-pair comparisons (about 0.2 us each). Automatic: 2048 per
+    // polygon + 10^7 (the meshes measured need 10 to 420 per polygon).
+    std::uint64_t max_painter_comparisons = 0;
+    // BSP tree: polygons in its pool after splitting (about 250 bytes each). Automatic: 16 per
+    // input triangle + 65,536, at most 2^24 (the meshes measured need about 2 per triangle).
+    std::uint64_t max_bsp_polygons = 0;
+    // Warnock: polygon-region classifications. Automatic: 64 per polygon per level of the
+    // region quadtree + 4 per pixel + 10^7.
+    std::uint64_t max_warnock_classifications = 0;
+};
+
+// Told how far a long computation has got: the object-space visibility algorithms (painter's,
+// BSP, Warnock) call it from the thread running them, every few thousand steps, with a fraction
+// in [0, 1] that does not decrease within a stage. The front end decides what to show (the
+// command prints a line to stderr once a run has taken a few seconds).
+class ProgressReporter {
+  public:
+    virtual ~ProgressReporter() = default;
+    virtual void report(const char* stage, double fraction) = 0;
 };
 
 struct RenderOptions {
@@ -146,6 +169,7 @@ struct RenderOptions {
     bool coverage_counts = false;
 
     RenderLimits limits;
+    ProgressReporter* progress = nullptr;  // not owned; null: no reports
 };
 
 struct RenderTargets {
@@ -164,8 +188,9 @@ struct RenderTargets {
 // layouts and values as RenderTargets. Null: not wanted (and not computed where nothing else
 // needs it). width and height must equal RenderOptions::width and height. float, vec3 and
 // 32-bit targets must be 4-byte aligned, with pitches multiples of 4. Every pixel of every given
-// target is written every frame (nothing is assumed about what the memory held before); bytes
-// between a row's end and the next row (a pitch's padding) are never touched.
+// target is written every frame (nothing is assumed about what the memory held before, unless
+// unchanged_since_last_frame says so); bytes between a row's end and the next row (a pitch's
+// padding) are never touched.
 struct TargetViews {
     int width = 0, height = 0;
     std::uint8_t* color = nullptr;  // RGBA8
@@ -183,6 +208,13 @@ struct TargetViews {
     std::size_t front_hits_pitch = 0;
     std::uint32_t* back_hits = nullptr;
     std::size_t back_hits_pitch = 0;
+    // The caller's promise that these are the arrays (same addresses and pitches) this Renderer
+    // wrote in its previous frame, and that nothing has written them since. Tiles that held the
+    // cleared values then and are empty again are not rewritten, as in the Renderer's own
+    // targets (at 1080p, most of the 16 MB of color and depth a frame is background). Different
+    // addresses, pitches, size or clear values are noticed and every pixel is written; a broken
+    // promise about the contents is not noticed (stale pixels stay), as with static_meshes.
+    bool unchanged_since_last_frame = false;
 };
 
 // Views of RenderTargets' arrays (null where an array is empty), rows tightly packed.

@@ -94,6 +94,10 @@ struct PainterOptions {
     // Safety net: past this many splits, remaining conflicts are left unresolved (counted) rather
     // than split further. 0: 16 * polygons + 1024.
     std::size_t max_splits = 0;
+    // Past this many comparisons the sort throws LimitExceeded ("max_painter_comparisons").
+    // 0: painter_comparison_budget(RenderLimits{}, polygons).
+    std::uint64_t max_comparisons = 0;
+    ProgressReporter* progress = nullptr;  // stage "painter's algorithm"; not owned
 };
 
 struct PainterStats {
@@ -121,8 +125,9 @@ struct PainterResult {
 // one polygon by the other's plane.
 // `viewport` is the one the polygons were projected for: split vertices are projected into it
 // exactly as the rasterizer will project them.
-PainterResult painter_sort(std::vector<ScreenPolygon> polygons, const Viewport& viewport,
-                           const PainterOptions& options = {});
+ZRASTER_API PainterResult painter_sort(std::vector<ScreenPolygon> polygons,
+                                       const Viewport& viewport,
+                                       const PainterOptions& options = {});
 
 // The naive order the classic algorithm starts from: farthest depth first, nothing resolved.
 // Wrong for cyclic overlap and interpenetration (kept for comparison).
@@ -157,6 +162,10 @@ struct BspOptions {
     // so depth is bounded by memory, not by the call stack).
     std::size_t max_depth = 10'000;
     double plane_epsilon = 1e-6;  // as PainterOptions::plane_epsilon
+    // A pool (input and split pieces) growing past this many polygons throws LimitExceeded
+    // ("max_bsp_polygons"). 0: bsp_polygon_budget(RenderLimits{}, input polygons).
+    std::uint64_t max_polygons = 0;
+    ProgressReporter* progress = nullptr;  // stage "BSP tree"; not owned
 };
 
 struct BspStats {
@@ -245,9 +254,23 @@ struct WarnockResult {
 
 // Warnock's algorithm over the whole viewport. Depth comparisons use each polygon's plane in
 // window space evaluated at pixel centers; equal depths go to the earlier polygon (as the
-// z-buffer's LESS test keeps the first one drawn).
+// z-buffer's LESS test keeps the first one drawn). More classifications than
+// warnock_classification_budget(options.limits, ...) throw LimitExceeded
+// ("max_warnock_classifications"); options.progress hears of the area done.
 ZRASTER_API WarnockResult warnock_render(std::span<const ScreenPolygon> polygons,
                                          const RenderOptions& options, const Camera& camera);
+
+// ---------------------------------------------------------------------------------------------
+// Budgets (RenderLimits): the limit's value when set, else the automatic one for an input of
+// this size (render_with_visibility and the SVG writer apply them).
+
+ZRASTER_API std::uint64_t painter_comparison_budget(const RenderLimits& limits,
+                                                    std::size_t polygons);
+ZRASTER_API std::uint64_t bsp_polygon_budget(const RenderLimits& limits,
+                                             std::size_t input_polygons);
+ZRASTER_API std::uint64_t warnock_classification_budget(const RenderLimits& limits,
+                                                        std::size_t polygons, int width,
+                                                        int height);
 
 // ---------------------------------------------------------------------------------------------
 

@@ -210,11 +210,10 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
         const DepthPlane& plane = planes[i];
         for_each_mask(polygons[i], viewport, n, [&](int px, int py, std::uint64_t mask) {
             if (pool.size() >= limit)
-                throw InputError(scene.source,
-                                 "A-buffer fragment limit of " + std::to_string(limit) +
-                                     " exceeded: the frame has more fragments (polygon-pixel "
-                                     "pairs) than that; raise ABufferOptions::max_fragments or "
-                                     "render fewer pixels or polygons");
+                throw LimitExceeded(scene.source, "max_abuffer_fragments",
+                                    "A-buffer: more than " + std::to_string(limit) +
+                                        " fragments (polygon-pixel pairs, the limit): render "
+                                        "fewer pixels or polygons, or raise the limit");
             const std::size_t p = std::size_t(py) * std::size_t(width) + std::size_t(px);
             const double depth = plane.at(px + 0.5, py + 0.5);
             pool.push_back({depth, mask, std::uint32_t(i), head[p]});

@@ -14,8 +14,10 @@
 // score). Splits make the tree bigger (each adds a polygon); balance keeps it shallow.
 //
 // Cost: building is O(k * n * depth) classifications plus the splits (O(n log n)-ish for typical
-// scenes, O(n^2) worst case); every frame is then O(n) for the walk, plus filling every polygon
-// (no early rejection of hidden surfaces: overdraw is total). Memory O(n + splits).
+// scenes, O(n^2) worst case: 500 random triangles split into 440,000 pieces, so the pool has a
+// budget, BspOptions::max_polygons / RenderLimits::max_bsp_polygons); every frame is then O(n) for
+// the walk, plus filling every polygon (no early rejection of hidden surfaces: overdraw is total).
+// Memory O(n + splits).
 //
 // When to use: static geometry seen from many viewpoints (the walk is viewpoint-independent to
 // build: Doom's and Quake's levels), transparency sorting, or as a spatial index for ray casting
@@ -84,8 +86,19 @@ glm::dvec4 bsp_eye(const Camera& camera) {
 BspTree BspTree::build(std::vector<BspPolygon> polygons, const BspOptions& options) {
     BspTree tree;
     tree.stats_.input_polygons = polygons.size();
+    const std::uint64_t max_polygons = options.max_polygons
+                                           ? options.max_polygons
+                                           : bsp_polygon_budget(RenderLimits{}, polygons.size());
+    if (polygons.size() > max_polygons)
+        throw LimitExceeded("", "max_bsp_polygons",
+                            "BSP tree: " + std::to_string(polygons.size()) +
+                                " input polygons, more than the budget of " +
+                                std::to_string(max_polygons));
     tree.polygons_ = std::move(polygons);
     if (tree.polygons_.empty()) return tree;
+    std::size_t placed = 0;  // polygons stored in nodes so far (progress)
+    std::uint64_t next_report = 0;
+    double reported = 0.0;
 
     glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
     for (const BspPolygon& p : tree.polygons_)
@@ -179,6 +192,14 @@ BspTree BspTree::build(std::vector<BspPolygon> polygons, const BspOptions& optio
                     back_set.push_back(i);
                     break;
                 case Side::Spanning: {
+                    if (tree.polygons_.size() + 2 > max_polygons)
+                        throw LimitExceeded(
+                            "", "max_bsp_polygons",
+                            "BSP tree: more than " + std::to_string(max_polygons) +
+                                " polygons after " + std::to_string(tree.stats_.splits) +
+                                " splits of " + std::to_string(tree.stats_.input_polygons) +
+                                " input polygons (the budget): the input has too many "
+                                "intersecting polygons for a BSP tree");
                     BspPolygon f, b;
                     split(tree.polygons_[i], plane, eps, f, b);
                     ++tree.stats_.splits;
@@ -190,6 +211,14 @@ BspTree BspTree::build(std::vector<BspPolygon> polygons, const BspOptions& optio
                     break;
                 }
             }
+        }
+        placed += here.size();
+        if (options.progress != nullptr && tree.stats_.classifications >= next_report) {
+            next_report = tree.stats_.classifications + (1 << 16);
+            // Of the live polygons (a split retires one and adds two).
+            const std::size_t live = tree.polygons_.size() - tree.stats_.splits;
+            reported = std::max(reported, double(placed) / double(live));
+            options.progress->report("BSP tree", reported);
         }
         Node& node = tree.nodes_[static_cast<std::size_t>(task.node)];
         node.plane = plane;

@@ -3,6 +3,7 @@
 // renderer's coverage rule and no depth test.
 #pragma once
 #include <zraster/clip.hpp>
+#include <zraster/error.hpp>
 #include <zraster/raster.hpp>
 #include <zraster/visibility.hpp>
 
@@ -46,6 +47,32 @@ RenderTargets blank_targets(const RenderOptions& options);
 // The stats every visibility frame fills in: camera, triangles_in, total_ms since `start`.
 void finish_stats(RenderStats& stats, const Camera& camera, const Scene& scene,
                   std::chrono::steady_clock::time_point start);
+
+// f(), with a LimitExceeded that names no file given the scene's (the algorithms see polygons,
+// not files).
+template <class F>
+auto naming_the_scene(const Scene& scene, const F& f) -> decltype(f()) {
+    try {
+        return f();
+    } catch (const LimitExceeded& e) {
+        if (!e.file().empty() || scene.source.empty()) throw;
+        throw LimitExceeded(scene.source, e.limit(), e.cause());
+    }
+}
+
+// The algorithms' options from a frame's: budgets (options.limits) and the progress reporter.
+inline PainterOptions painter_options(const RenderOptions& options, std::size_t polygons) {
+    PainterOptions o;
+    o.max_comparisons = painter_comparison_budget(options.limits, polygons);
+    o.progress = options.progress;
+    return o;
+}
+inline BspOptions bsp_options(const RenderOptions& options, std::size_t input_polygons) {
+    BspOptions o;
+    o.max_polygons = bsp_polygon_budget(options.limits, input_polygons);
+    o.progress = options.progress;
+    return o;
+}
 
 // Throws InputError unless n is 1, 2, 4 or 8 (subsamples per pixel side; `what` names the user).
 void check_samples_per_side(int n, const char* what);

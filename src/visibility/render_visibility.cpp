@@ -60,8 +60,10 @@ RenderResult render_bsp(const BspTree& tree, const Scene& scene, const RenderOpt
     return result;
 }
 
-RenderResult render_with_visibility(const Scene& scene, const RenderOptions& options,
-                                    VisibilityAlgorithm algorithm, VisibilityStats* stats) {
+namespace {
+
+RenderResult render_frame(const Scene& scene, const RenderOptions& options,
+                          VisibilityAlgorithm algorithm, VisibilityStats* stats) {
     const auto start = std::chrono::steady_clock::now();
     VisibilityStats local;
     VisibilityStats& out = stats ? *stats : local;
@@ -78,15 +80,19 @@ RenderResult render_with_visibility(const Scene& scene, const RenderOptions& opt
             const Camera camera = effective_camera(scene, options);
             std::vector<ScreenPolygon> polygons = project_scene(scene, options);
             out.polygons = polygons.size();
+            const PainterOptions painter =
+                visibility_detail::painter_options(options, polygons.size());
             PainterResult sorted =
-                painter_sort(std::move(polygons), Viewport{options.width, options.height});
+                painter_sort(std::move(polygons), Viewport{options.width, options.height}, painter);
             out.painter = sorted.stats;
             result.targets = paint_polygons(sorted.order, options, camera);
             result.stats.camera = camera;
             break;
         }
         case VisibilityAlgorithm::Bsp: {
-            const BspTree tree = BspTree::build(bsp_polygons_from_scene(scene));
+            std::vector<BspPolygon> polygons = bsp_polygons_from_scene(scene);
+            const BspOptions bsp = visibility_detail::bsp_options(options, polygons.size());
+            const BspTree tree = BspTree::build(std::move(polygons), bsp);
             out.bsp = tree.stats();
             out.polygons = tree.stats().polygons;
             result = render_bsp(tree, scene, options);
@@ -105,6 +111,14 @@ RenderResult render_with_visibility(const Scene& scene, const RenderOptions& opt
     }
     visibility_detail::finish_stats(result.stats, result.stats.camera, scene, start);
     return result;
+}
+
+}  // namespace
+
+RenderResult render_with_visibility(const Scene& scene, const RenderOptions& options,
+                                    VisibilityAlgorithm algorithm, VisibilityStats* stats) {
+    return visibility_detail::naming_the_scene(
+        scene, [&] { return render_frame(scene, options, algorithm, stats); });
 }
 
 }  // namespace zraster

@@ -292,7 +292,9 @@ std::string number(float v) {
 std::vector<ScreenPolygon> bsp_order(const Scene& scene, const RenderOptions& options) {
     using namespace visibility_detail;
     const FrameContext frame = make_frame_context(scene, options);
-    const BspTree tree = BspTree::build(bsp_polygons_from_scene(scene));
+    std::vector<BspPolygon> polygons = bsp_polygons_from_scene(scene);
+    const BspOptions bsp = bsp_options(options, polygons.size());
+    const BspTree tree = BspTree::build(std::move(polygons), bsp);
     // The pieces render_bsp fills.
     std::vector<ScreenPolygon> out;
     for_each_bsp_piece(tree, frame, [&](const ScreenPolygon& piece) { out.push_back(piece); });
@@ -303,9 +305,13 @@ std::vector<ScreenPolygon> bsp_order(const Scene& scene, const RenderOptions& op
 
 std::vector<ScreenPolygon> svg_polygons(const Scene& scene, const RenderOptions& options,
                                         SvgOptions::Order order) {
-    if (order == SvgOptions::Order::Bsp) return bsp_order(scene, options);
-    std::vector<ScreenPolygon> polygons = project_scene(scene, options);
-    return painter_sort(std::move(polygons), Viewport{options.width, options.height}).order;
+    return visibility_detail::naming_the_scene(scene, [&] {
+        if (order == SvgOptions::Order::Bsp) return bsp_order(scene, options);
+        std::vector<ScreenPolygon> polygons = project_scene(scene, options);
+        const PainterOptions painter = visibility_detail::painter_options(options, polygons.size());
+        return painter_sort(std::move(polygons), Viewport{options.width, options.height}, painter)
+            .order;
+    });
 }
 
 std::string render_svg(const Scene& scene, const RenderOptions& options,

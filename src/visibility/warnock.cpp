@@ -18,11 +18,15 @@
 // edge and every line where surfaces interpenetrate is followed down to single pixels, each
 // examining the polygons that survived to it. Roughly O(p * n_local * log(resolution)) where p is
 // the number of pixels on visible edges. No depth buffer is needed and hidden surfaces are never
-// shaded, unlike the painter's algorithm.
+// shaded, unlike the painter's algorithm. Random overlapping triangles make that p nearly every
+// pixel, each with many polygons (20,000 random triangles at 1920x1080: 80 s), so
+// classifications have a budget (RenderLimits::max_warnock_classifications).
 //
 // When to use: memory-starved settings (no per-pixel depth), images with large uniform regions,
 // or as an anti-aliasing scheme (keep subdividing below a pixel). It is the ancestor of
 // hierarchical z-buffers and tiled coverage (region culling against coarse tiles).
+#include <zraster/error.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -137,6 +141,12 @@ WarnockResult warnock_render(std::span<const ScreenPolygon> polygons, const Rend
     }
     std::vector<std::uint32_t> kept;
     std::vector<RegionRelation> relation;
+    const std::uint64_t budget =
+        warnock_classification_budget(options.limits, n, options.width, options.height);
+    std::uint64_t classified = 0, next_report = 0;
+    // Pixels of the leaves done (the progress reported).
+    std::uint64_t area_done = 0;
+    const double area = double(options.width) * double(options.height);
     while (!tasks.empty()) {
         Task task = std::move(tasks.back());
         tasks.pop_back();
@@ -149,6 +159,19 @@ WarnockResult warnock_render(std::span<const ScreenPolygon> polygons, const Rend
 
         kept.clear();
         relation.clear();
+        classified += task.active.size();
+        if (classified > budget)
+            throw LimitExceeded("", "max_warnock_classifications",
+                                "Warnock's algorithm: more than " + std::to_string(budget) +
+                                    " polygon-region classifications for " + std::to_string(n) +
+                                    " polygons at " + std::to_string(options.width) + "x" +
+                                    std::to_string(options.height) +
+                                    " (the budget): too many polygons overlap in too many regions");
+        if (options.progress != nullptr && classified >= next_report) {
+            next_report = classified + (1 << 16);
+            options.progress->report("Warnock's algorithm", double(area_done) / area);
+        }
+        const std::uint64_t region_area = std::uint64_t(r.x1 - r.x0) * std::uint64_t(r.y1 - r.y0);
         for (const std::uint32_t i : task.active) {
             const RegionRelation rel = classify(edges[i], r);
             ++stats.classifications[static_cast<std::size_t>(rel)];
@@ -158,11 +181,13 @@ WarnockResult warnock_render(std::span<const ScreenPolygon> polygons, const Rend
         }
         if (kept.empty()) {
             ++stats.empty_leaves;
+            area_done += region_area;
             continue;
         }
         if (kept.size() == 1) {
             draw(kept[0], r);
             ++stats.single_leaves;
+            area_done += region_area;
             continue;
         }
 
@@ -190,6 +215,7 @@ WarnockResult warnock_render(std::span<const ScreenPolygon> polygons, const Rend
             if (in_front) {
                 draw(s, r);
                 ++stats.surrounded_leaves;
+                area_done += region_area;
                 continue;
             }
         }
@@ -203,6 +229,7 @@ WarnockResult warnock_render(std::span<const ScreenPolygon> polygons, const Rend
                     best = kept[k];
             if (best >= 0) draw(static_cast<std::uint32_t>(best), r);
             ++stats.pixel_leaves;
+            area_done += region_area;
             continue;
         }
 

@@ -145,5 +145,58 @@ TEST(CliLimits, FilesClaimingTwoToTheFortyFaces) {
     expect_refused(dir, "render huge.gltf -o out.png", "zraster: huge.gltf: ");
 }
 
+// The object-space algorithms' budgets: random triangles as big as the scene, which split
+// without end, are refused by the default BSP budget; every budget names its option, and the
+// svg command has them too.
+TEST(CliLimits, VisibilityAlgorithmBudgets) {
+    const auto dir = temp_dir("cli-limits-budgets");
+    std::string ply = "ply\nformat ascii 1.0\nelement vertex 1200\nproperty float x\n"
+                      "property float y\nproperty float z\nelement face 400\n"
+                      "property list uchar int vertex_indices\nend_header\n";
+    std::uint64_t state = 12345;
+    const auto next = [&] {  // (a 64-bit LCG: the same file everywhere)
+        state = state * 6364136223846793005u + 1442695040888963407u;
+        return double(state >> 11) / double(std::uint64_t{1} << 53) * 2.0 - 1.0;
+    };
+    for (int v = 0; v < 1200; ++v) {
+        const double x = next(), y = next(), z = next();
+        ply += std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z) + "\n";
+    }
+    for (int f = 0; f < 400; ++f)
+        ply += "3 " + std::to_string(3 * f) + " " + std::to_string(3 * f + 1) + " " +
+               std::to_string(3 * f + 2) + "\n";
+    write(dir / "soup.ply", ply);
+    const std::string render = "render soup.ply --size 160x120 --no-cull -o out.png ";
+    expect_refused(dir, render + "--visibility bsp",
+                   "zraster: soup.ply: BSP tree: more than 71936 polygons after");
+    expect_refused(dir, render + "--visibility bsp", "; raise it with --max-bsp-polygons N");
+    expect_refused(dir, render + "--visibility painter --max-painter-comparisons 10000",
+                   "zraster: soup.ply: painter's algorithm: more than 10000 polygon comparisons "
+                   "for ");
+    expect_refused(dir, render + "--visibility painter --max-painter-comparisons 10000",
+                   "; raise it with --max-painter-comparisons N");
+    expect_refused(dir, render + "--visibility warnock --max-warnock-classifications 5000",
+                   "zraster: soup.ply: Warnock's algorithm: more than 5000 polygon-region "
+                   "classifications for ");
+    expect_refused(dir, render + "--visibility abuffer --max-abuffer-fragments 100",
+                   "zraster: soup.ply: A-buffer: more than 100 fragments (polygon-pixel pairs, "
+                   "the limit): render fewer pixels or polygons, or raise the limit; raise it "
+                   "with --max-abuffer-fragments N");
+    expect_refused(dir, render + "--visibility bsp --max-bsp-polygons -3", "--max-bsp-polygons");
+    expect_refused(dir, render + "--visibility painter --max-painter-comparisons 1e9",
+                   "expected a whole number, got '1e9'");
+    // The svg command shares them (no out.svg either).
+    const CommandResult svg =
+        run_limited("svg soup.ply --size 160x120 --no-cull --order bsp -o out.svg", dir);
+    EXPECT_EQ(svg.exit_code, 2) << svg.output;
+    EXPECT_NE(svg.output.find("; raise it with --max-bsp-polygons N"), std::string::npos)
+        << svg.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.svg"));
+    // Raised far enough, the same run is drawn.
+    const CommandResult ok =
+        run_limited(render + "--visibility warnock --max-warnock-classifications 0", dir);
+    EXPECT_EQ(ok.exit_code, 0) << ok.output;
+}
+
 }  // namespace
 }  // namespace zraster::test

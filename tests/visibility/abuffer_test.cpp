@@ -425,9 +425,10 @@ TEST(ABuffer, FragmentLimitIsAClearInputError) {
     a.max_fragments = 271;
     try {
         render_abuffer(square, ortho_options(), a);
-        FAIL() << "expected an InputError";
-    } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("A-buffer fragment limit of 271 exceeded"),
+        FAIL() << "expected LimitExceeded";
+    } catch (const LimitExceeded& e) {
+        EXPECT_EQ(e.limit(), "max_abuffer_fragments");
+        EXPECT_NE(std::string(e.what()).find("A-buffer: more than 271 fragments"),
                   std::string::npos)
             << e.what();
     }

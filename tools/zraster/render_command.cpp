@@ -16,9 +16,11 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <numeric>
 
 #include "command_line.hpp"
 #include "output_maps.hpp"
+#include "progress.hpp"
 
 namespace zraster::cli {
 
@@ -54,6 +56,25 @@ void add_render_command(CLI::App& app, RenderArguments& a) {
                   "sample, shading per pixel) instead of supersampling");
 }
 
+namespace {
+
+// Digits only (at most 19): CLI11 reads "-5" into an unsigned as 2^64 - 5, no limit at all.
+CLI::Validator whole_number(bool zero_allowed) {
+    return CLI::Validator(
+        [zero_allowed](const std::string& text) {
+            const bool digits = !text.empty() && text.size() <= 19 &&
+                                text.find_first_not_of("0123456789") == std::string::npos;
+            const bool ok = digits && (zero_allowed || text.find_first_not_of('0') != text.npos);
+            return ok ? std::string()
+                      : std::string(zero_allowed ? "expected a whole number"
+                                                 : "expected a positive whole number") +
+                            ", got '" + text + "'";
+        },
+        zero_allowed ? "UINT" : "POSITIVE");
+}
+
+}  // namespace
+
 void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
     cmd.add_option("scene", a.scene,
                    "Mesh file (OBJ, PLY, STL, glTF/GLB, 3DS, OFF, ...) or builtin:default, "
@@ -62,15 +83,26 @@ void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
     cmd.add_option("--size", a.size, "Image size WIDTHxHEIGHT")->capture_default_str();
     cmd.add_option("--max-pixels", a.max_pixels,
                    "Refuse images of more pixels than this (width * height)")
-        // Digits only: CLI11 reads "-5" into an unsigned as 2^64 - 5, no limit at all.
-        ->check(
-            [](const std::string& text) {
-                const bool ok = !text.empty() && text.size() <= 19 &&
-                                text.find_first_not_of("0123456789") == std::string::npos &&
-                                text.find_first_not_of('0') != std::string::npos;
-                return ok ? std::string() : "expected a positive whole number, got '" + text + "'";
-            },
-            "POSITIVE")
+        ->check(whole_number(false))
+        ->capture_default_str();
+    cmd.add_option("--max-painter-comparisons", a.max_painter_comparisons,
+                   "Budget of --visibility painter (and svg --order painter): polygon-pair "
+                   "comparisons (0: 2048 per polygon + 10^7)")
+        ->check(whole_number(true))
+        ->capture_default_str();
+    cmd.add_option("--max-bsp-polygons", a.max_bsp_polygons,
+                   "Budget of --visibility bsp (and svg --order bsp): polygons after splitting "
+                   "(0: 16 per triangle + 65536, at most 2^24)")
+        ->check(whole_number(true))
+        ->capture_default_str();
+    cmd.add_option("--max-warnock-classifications", a.max_warnock_classifications,
+                   "Budget of --visibility warnock: polygon-region tests (0: 64 per polygon per "
+                   "subdivision level + 4 per pixel + 10^7)")
+        ->check(whole_number(true))
+        ->capture_default_str();
+    cmd.add_option("--max-abuffer-fragments", a.max_abuffer_fragments,
+                   "Budget of --visibility abuffer: polygon-pixel fragments (24 bytes each)")
+        ->check(whole_number(false))
         ->capture_default_str();
     cmd.add_option("--threads", a.threads, "Worker threads (0: all cores)")->capture_default_str();
     cmd.add_option("--eye", a.eye, "Camera position X,Y,Z (default: frame the bounding sphere)");
@@ -198,6 +230,10 @@ RenderOptions make_render_options(const RenderArguments& a, const Scene& scene) 
     o.width = size.x;
     o.height = size.y;
     o.limits.max_pixels = a.max_pixels;
+    o.limits.max_painter_comparisons = a.max_painter_comparisons;
+    o.limits.max_bsp_polygons = a.max_bsp_polygons;
+    o.limits.max_warnock_classifications = a.max_warnock_classifications;
+    o.progress = stderr_progress();
     o.threads = checked_thread_count("--threads", a.threads);
     o.camera = make_camera(a, scene, double(o.width) / double(o.height));
     const std::map<std::string, ShadingMode> shading{{"flat", ShadingMode::Flat},
@@ -349,6 +385,7 @@ int run_render(const RenderArguments& a) {
     if (a.visibility == "abuffer") {
         ABufferOptions abuffer;
         abuffer.samples_per_side = a.aa == 1 ? 4 : a.aa;
+        abuffer.max_fragments = a.max_abuffer_fragments;
         result = render_abuffer(scene, options, abuffer, &abuffer_stats);
     } else if (a.visibility == "zbuffer") {
         result = a.msaa     ? render_multisampled(scene, options, a.aa)
@@ -400,11 +437,15 @@ int run_render(const RenderArguments& a) {
                 v.polygons, v.painter.comparisons, v.painter.swaps, v.painter.splits,
                 v.painter.cycle_splits);
         else if (a.visibility == "bsp")
-            fmt::print("bsp: {} input polygons, {} nodes, depth {}, {} splits\n",
-                       v.bsp.input_polygons, v.bsp.nodes, v.bsp.depth, v.bsp.splits);
+            fmt::print(
+                "bsp: {} input polygons, {} nodes, depth {}, {} splits, {} classifications\n",
+                v.bsp.input_polygons, v.bsp.nodes, v.bsp.depth, v.bsp.splits,
+                v.bsp.classifications);
         else
-            fmt::print("warnock: {} polygons, {} regions in {} levels\n", v.polygons, regions,
-                       v.warnock.regions_per_level.size());
+            fmt::print("warnock: {} polygons, {} regions in {} levels, {} classifications\n",
+                       v.polygons, regions, v.warnock.regions_per_level.size(),
+                       std::accumulate(v.warnock.classifications.begin(),
+                                       v.warnock.classifications.end(), std::uint64_t{0}));
     }
     if (a.print_stats) {
         const RenderStats& s = result.stats;

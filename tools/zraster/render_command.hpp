@@ -16,6 +16,10 @@ struct RenderArguments {
     std::string output = "zraster.png";
     std::string size = "1920x1080";
     std::uint64_t max_pixels = RenderLimits{}.max_pixels;
+    // Budgets of the object-space algorithms (0: automatic, scaled to the input).
+    std::uint64_t max_painter_comparisons = 0, max_bsp_polygons = 0;
+    std::uint64_t max_warnock_classifications = 0;
+    std::uint64_t max_abuffer_fragments = std::uint64_t{64} << 20;  // ABufferOptions' default
     int threads = 0;
     std::string eye, target, up = "0,1,0", orbit;
     std::optional<double> fovy, near, far;

@@ -1,0 +1,191 @@
+// The budgets of the object-space algorithms (RenderLimits' max_painter_comparisons,
+// max_bsp_polygons, max_warnock_classifications; ABufferOptions::max_fragments): what they are
+// by default, that random interpenetrating triangles are refused by name long before they cost
+// minutes or gigabytes, that real meshes stay far inside them, and the progress reports.
+#include <zraster/error.hpp>
+#include <zraster/load.hpp>
+#include <zraster/svg.hpp>
+#include <zraster/visibility.hpp>
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "support/test_support.hpp"
+#include "visibility/visibility_test_util.hpp"
+
+namespace zraster::test {
+namespace {
+
+// Random triangles as big as the scene: nearly every pair overlaps and many cross.
+Scene wild_soup(int n) {
+    return scene_from_meshes({make_interpenetrating_soup(n, 1.0, 7)});
+}
+
+RenderOptions soup_options() {
+    RenderOptions options = id_options(320, 240);
+    options.cull = CullMode::None;
+    return options;
+}
+
+// Runs f, which must throw LimitExceeded for `limit`, quickly; returns its message.
+template <class F>
+std::string refusal(const F& f, const std::string& limit) {
+    const auto start = std::chrono::steady_clock::now();
+    try {
+        f();
+    } catch (const LimitExceeded& e) {
+        EXPECT_EQ(e.limit(), limit);
+        // (Generous: the point is seconds, not the minutes these inputs took before.)
+        EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(60));
+        return e.what();
+    }
+    ADD_FAILURE() << "expected LimitExceeded for " << limit;
+    return "";
+}
+
+TEST(Budgets, AutomaticValuesScaleWithTheInput) {
+    const RenderLimits automatic;
+    EXPECT_EQ(painter_comparison_budget(automatic, 1000), 2048u * 1000u + 10'000'000u);
+    EXPECT_EQ(bsp_polygon_budget(automatic, 1000), 16u * 1000u + 65'536u);
+    // Capped for memory, yet never below what an unsplit input needs.
+    EXPECT_EQ(bsp_polygon_budget(automatic, 1'000'000), 16'065'536u);
+    EXPECT_EQ(bsp_polygon_budget(automatic, 2'000'000), std::uint64_t{1} << 24);
+    EXPECT_EQ(bsp_polygon_budget(automatic, 20'000'000), 40'000'000u);
+    // 1920 is 11 bits: 12 levels of quadtree.
+    EXPECT_EQ(warnock_classification_budget(automatic, 1000, 1920, 1080),
+              64u * 1000u * 12u + 4u * 1920u * 1080u + 10'000'000u);
+    RenderLimits set;
+    set.max_painter_comparisons = 5;
+    set.max_bsp_polygons = 6;
+    set.max_warnock_classifications = 7;
+    EXPECT_EQ(painter_comparison_budget(set, 1000), 5u);
+    EXPECT_EQ(bsp_polygon_budget(set, 1000), 6u);
+    EXPECT_EQ(warnock_classification_budget(set, 1000, 1920, 1080), 7u);
+}
+
+// 2,000 such triangles took the painter's algorithm a minute and the BSP tree gigabytes.
+TEST(Budgets, RandomSoupsAreRefusedByName) {
+    const Scene soup = wild_soup(2000);
+    const RenderOptions options = soup_options();
+    std::string message =
+        refusal([&] { render_with_visibility(soup, options, VisibilityAlgorithm::Painter); },
+                "max_painter_comparisons");
+    EXPECT_NE(message.find("painter's algorithm: more than"), std::string::npos) << message;
+    message = refusal([&] { render_with_visibility(soup, options, VisibilityAlgorithm::Bsp); },
+                      "max_bsp_polygons");
+    EXPECT_NE(message.find("BSP tree: more than " +
+                           std::to_string(bsp_polygon_budget(RenderLimits{}, 2000)) + " polygons"),
+              std::string::npos)
+        << message;
+    // The SVG writer's orders have the same budgets (set low here: the refusal is the point).
+    RenderOptions low = options;
+    low.limits.max_painter_comparisons = 100'000;
+    low.limits.max_bsp_polygons = 10'000;
+    refusal([&] { svg_polygons(soup, low, SvgOptions::Order::Bsp); }, "max_bsp_polygons");
+    refusal([&] { svg_polygons(soup, low, SvgOptions::Order::Painter); },
+            "max_painter_comparisons");
+}
+
+TEST(Budgets, ExplicitLimitsAreHonouredExactly) {
+    const Scene soup = wild_soup(200);
+    RenderOptions options = soup_options();
+    VisibilityStats stats;
+    render_with_visibility(soup, options, VisibilityAlgorithm::Painter, &stats);
+    const std::uint64_t comparisons = stats.painter.comparisons;
+    render_with_visibility(soup, options, VisibilityAlgorithm::Bsp, &stats);
+    const std::uint64_t splits = stats.bsp.splits;
+    const std::uint64_t pool = stats.bsp.input_polygons + 2 * splits;
+    render_with_visibility(soup, options, VisibilityAlgorithm::Warnock, &stats);
+    std::uint64_t classifications = 0;
+    for (const std::uint64_t c : stats.warnock.classifications) classifications += c;
+    ASSERT_GT(comparisons, 1000u);
+    ASSERT_GT(splits, 100u);
+
+    // Exactly what the run needs passes; one less is refused.
+    options.limits.max_painter_comparisons = comparisons;
+    options.limits.max_bsp_polygons = pool;
+    options.limits.max_warnock_classifications = classifications;
+    EXPECT_NO_THROW(render_with_visibility(soup, options, VisibilityAlgorithm::Painter));
+    EXPECT_NO_THROW(render_with_visibility(soup, options, VisibilityAlgorithm::Bsp));
+    EXPECT_NO_THROW(render_with_visibility(soup, options, VisibilityAlgorithm::Warnock));
+    options.limits.max_painter_comparisons = comparisons - 1;
+    options.limits.max_bsp_polygons = pool - 1;
+    options.limits.max_warnock_classifications = classifications - 1;
+    refusal([&] { render_with_visibility(soup, options, VisibilityAlgorithm::Painter); },
+            "max_painter_comparisons");
+    refusal([&] { render_with_visibility(soup, options, VisibilityAlgorithm::Bsp); },
+            "max_bsp_polygons");
+    const std::string message =
+        refusal([&] { render_with_visibility(soup, options, VisibilityAlgorithm::Warnock); },
+                "max_warnock_classifications");
+    EXPECT_NE(message.find("Warnock's algorithm: more than " + std::to_string(classifications - 1)),
+              std::string::npos)
+        << message;
+}
+
+// Real meshes stay well inside the automatic budgets: a fifth of each is enough.
+TEST(Budgets, MeshesFitWithAMargin) {
+    ZRASTER_REQUIRE_SHARED_DATA();
+    for (const char* name : {"obj/bunny-small.obj", "obj/teapot.obj", "3ds/cat.3ds"}) {
+        SCOPED_TRACE(name);
+        const Scene scene = load_scene(shared_data("meshes") / name);
+        RenderOptions options = id_options(640, 480);
+        const std::size_t triangles = scene.triangle_count();
+        const std::size_t polygons = project_scene(scene, options).size();
+        options.limits.max_painter_comparisons = painter_comparison_budget({}, polygons) / 5;
+        options.limits.max_bsp_polygons = bsp_polygon_budget({}, triangles) / 5;
+        options.limits.max_warnock_classifications =
+            warnock_classification_budget({}, polygons, 640, 480) / 5;
+        for (const VisibilityAlgorithm a :
+             {VisibilityAlgorithm::Painter, VisibilityAlgorithm::Bsp, VisibilityAlgorithm::Warnock})
+            EXPECT_NO_THROW(render_with_visibility(scene, options, a));
+    }
+}
+
+// Progress: fractions in [0, 1], never decreasing within a stage, from each algorithm.
+struct Recorder final : ProgressReporter {
+    std::vector<std::pair<std::string, double>> reports;
+    void report(const char* stage, double fraction) override {
+        reports.emplace_back(stage, fraction);
+    }
+};
+
+TEST(Budgets, LongWorkReportsProgress) {
+    const Scene soup = wild_soup(300);
+    RenderOptions options = soup_options();
+    options.width = 640;
+    options.height = 480;
+    // Low budgets keep it short; reports come before any refusal.
+    options.limits.max_painter_comparisons = 1'000'000;
+    options.limits.max_bsp_polygons = 30'000;
+    Recorder recorder;
+    options.progress = &recorder;
+    const std::pair<VisibilityAlgorithm, const char*> runs[] = {
+        {VisibilityAlgorithm::Painter, "painter's algorithm"},
+        {VisibilityAlgorithm::Bsp, "BSP tree"},
+        {VisibilityAlgorithm::Warnock, "Warnock's algorithm"}};
+    for (const auto& [algorithm, stage] : runs) {
+        SCOPED_TRACE(stage);
+        recorder.reports.clear();
+        try {
+            render_with_visibility(soup, options, algorithm);
+        } catch (const LimitExceeded&) {
+            // (Past the low budget: progress was reported on the way.)
+        }
+        ASSERT_GE(recorder.reports.size(), 2u);
+        double last = 0.0;
+        for (const auto& [name, fraction] : recorder.reports) {
+            EXPECT_EQ(name, stage);
+            EXPECT_GE(fraction, last);
+            EXPECT_LE(fraction, 1.0);
+            last = fraction;
+        }
+        EXPECT_GT(last, 0.0);
+    }
+}
+
+}  // namespace
+}  // namespace zraster::test
