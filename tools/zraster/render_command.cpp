@@ -54,6 +54,7 @@ void add_render_command(CLI::App& app, RenderArguments& a) {
     cmd->add_flag("--msaa", a.msaa,
                   "With --aa N and --visibility zbuffer: multisample (coverage and depth per "
                   "sample, shading per pixel) instead of supersampling");
+    add_depth_camera_options(*cmd, a.depth_camera);
 }
 
 namespace {
@@ -236,6 +237,7 @@ RenderOptions make_render_options(const RenderArguments& a, const Scene& scene) 
     o.progress = stderr_progress();
     o.threads = checked_thread_count("--threads", a.threads);
     o.camera = make_camera(a, scene, double(o.width) / double(o.height));
+    o.camera = apply_intrinsics(a.depth_camera, *o.camera, o.width, o.height);
     const std::map<std::string, ShadingMode> shading{{"flat", ShadingMode::Flat},
                                                      {"gouraud", ShadingMode::Gouraud},
                                                      {"phong", ShadingMode::Phong},
@@ -357,6 +359,8 @@ int run_render(const RenderArguments& a) {
     check_output(outputs, a.depth_out, {".npy", ".png"}, "--depth-out", "the depth output");
     check_output(outputs, a.normal_out, {".png"}, "--normal-out", "the normal output");
     check_output(outputs, a.id_out, {".npy", ".png"}, "--id-out", "the id output");
+    check_depth_camera_arguments(a.depth_camera, a.visibility, a.aa, a.msaa, a.ortho,
+                                 a.fovy.has_value(), outputs);
     // Wall-clock times of the stages, for --stats.
     using Clock = std::chrono::steady_clock;
     const auto since = [](Clock::time_point start) {
@@ -370,6 +374,7 @@ int run_render(const RenderArguments& a) {
     RenderOptions options = make_render_options(a, scene);
     options.normal_target = !a.normal_out.empty();
     options.id_targets = !a.id_out.empty();
+    options.normal_target |= depth_camera_needs_normals(a.depth_camera);
     VisibilityStats visibility_stats;
     ABufferStats abuffer_stats;
     RenderResult result;
@@ -419,6 +424,7 @@ int run_render(const RenderArguments& a) {
         }
         outputs.add(a.id_out, encode_id_map(a.id_out, t, first_triangle));
     }
+    add_depth_camera_outputs(a.depth_camera, scene, options, t, outputs);
     outputs.commit();
     const double write_ms = since(write_start);
 

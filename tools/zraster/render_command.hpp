@@ -4,6 +4,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "depth_camera_outputs.hpp"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -46,6 +48,7 @@ struct RenderArguments {
     bool msaa = false;
     bool wireframe = false, hidden_line = false;
     std::string edge_color = "0,0,0";
+    DepthCameraArguments depth_camera;  // `render` only
 };
 
 // The scene, camera and pipeline options shared by `render` and later subcommands.

@@ -1,0 +1,283 @@
+// `zraster render`'s depth-camera options: z, range and point-cloud outputs, --intrinsics,
+// --camera-json and the structured-light sensor (zraster/depth_camera.hpp).
+#include "depth_camera_outputs.hpp"
+
+#include <zraster/depth_camera.hpp>
+#include <zraster/error.hpp>
+#include <zraster/image_io.hpp>
+#include <zraster/mesh_view.hpp>
+#include <zraster/point_cloud_io.hpp>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <vector>
+
+#include "command_line.hpp"
+
+namespace zraster::cli {
+
+namespace {
+
+std::string lower_extension(const std::string& path) {
+    std::string e = std::filesystem::path(path).extension().string();
+    for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return e;
+}
+
+void check_output(OutputFiles& outputs, const std::string& path,
+                  std::initializer_list<const char*> extensions, const char* option) {
+    if (path.empty()) return;
+    const std::string ext = lower_extension(path);
+    std::string names;
+    bool ok = false;
+    for (const char* e : extensions) {
+        ok |= ext == e;
+        names += names.empty() ? e : std::string(" or ") + e;
+    }
+    if (!ok) throw InputError(option, "'" + path + "' must end in " + names);
+    outputs.check(path, option);
+}
+
+bool wants_depth(const DepthCameraArguments& a) {
+    return !a.z_out.empty() || !a.range_out.empty() || !a.points_out.empty();
+}
+
+bool any_sensor_flag(const DepthCameraArguments& a, std::string& which) {
+    const std::pair<const char*, bool> flags[] = {
+        {"--sensor-baseline", a.baseline.has_value()},
+        {"--sensor-disparity-step", a.disparity_step.has_value()},
+        {"--sensor-min-range", a.min_range.has_value()},
+        {"--sensor-max-range", a.max_range.has_value()},
+        {"--sensor-max-incidence", a.max_incidence.has_value()},
+        {"--sensor-noise", a.noise.has_value()},
+        {"--sensor-seed", !a.seed.empty()}};
+    for (const auto& [name, given] : flags)
+        if (given) {
+            which = name;
+            return true;
+        }
+    return false;
+}
+
+// The sensor of the flags, checked; errors name the flag that set the field.
+StructuredLightSensor sensor_of(const DepthCameraArguments& a) {
+    StructuredLightSensor s;
+    if (a.baseline) s.baseline = *a.baseline;
+    if (a.disparity_step) s.disparity_step = *a.disparity_step;
+    if (a.min_range) s.min_range = *a.min_range;
+    if (a.max_range) s.max_range = *a.max_range;
+    if (a.max_incidence) s.max_incidence_degrees = *a.max_incidence;
+    if (a.noise) s.noise = *a.noise;
+    if (!a.seed.empty()) {
+        const bool digits =
+            a.seed.size() <= 20 && a.seed.find_first_not_of("0123456789") == std::string::npos;
+        errno = 0;
+        const unsigned long long seed = digits ? std::strtoull(a.seed.c_str(), nullptr, 10) : 0;
+        if (!digits || errno == ERANGE)
+            throw InputError("--sensor-seed",
+                             "expected a whole number in 0..2^64-1, got '" + a.seed + "'");
+        s.seed = seed;
+    }
+    try {
+        check_sensor(s);
+    } catch (const InputError& e) {
+        static const std::map<std::string, const char*> option{
+            {"sensor.baseline", "--sensor-baseline"},
+            {"sensor.disparity_step", "--sensor-disparity-step"},
+            {"sensor.min_range", "--sensor-min-range"},
+            {"sensor.max_range", "--sensor-max-range"},
+            {"sensor.max_incidence_degrees", "--sensor-max-incidence"},
+            {"sensor.noise", "--sensor-noise"}};
+        const auto found = option.find(e.file());
+        throw InputError(found != option.end() ? found->second : "--sensor", e.cause());
+    }
+    return s;
+}
+
+// Enough digits to read back the same double; -0 written as 0.
+std::string number(double x) {
+    return fmt::format("{:.17g}", x + 0.0);
+}
+
+// The camera as a data set records it: K, the OpenCV pose, clip distances, image size.
+std::vector<std::uint8_t> camera_json(const Camera& camera, int width, int height) {
+    const Intrinsics k = camera.intrinsics(width, height, CameraConvention::OpenCV);
+    const glm::dmat4 pose = camera.camera_to_world(CameraConvention::OpenCV);
+    std::string out = "{\n";
+    out +=
+        "  \"convention\": \"opencv\",\n"
+        "  \"convention_note\": \"camera x right, y down, z forward; pixel (u, v) = (column, row) "
+        "from the top left, pixel centers at integers; u = fx X / Z + cx, v = fy Y / Z + cy\",\n";
+    out += fmt::format("  \"width\": {},\n  \"height\": {},\n", width, height);
+    out += "  \"K\": [[" + number(k.fx) + ", 0, " + number(k.cx) + "], [0, " + number(k.fy) + ", " +
+           number(k.cy) + "], [0, 0, 1]],\n";
+    out += "  \"camera_to_world\": [";
+    for (int r = 0; r < 4; ++r) {
+        out += r ? ", [" : "[";
+        for (int c = 0; c < 4; ++c) out += (c ? ", " : "") + number(pose[c][r]);
+        out += "]";
+    }
+    out += "],\n";
+    out += "  \"near\": " + number(k.near) + ",\n";
+    // JSON has no infinity: an infinite far plane is null.
+    out += "  \"far\": " + (std::isinf(k.far) ? std::string("null") : number(k.far)) + ",\n";
+    out +=
+        "  \"depth\": \"z along the optical axis in scene units; z.png: millimetres, 0 = no "
+        "measurement\"\n";
+    out += "}\n";
+    return {out.begin(), out.end()};
+}
+
+}  // namespace
+
+void add_depth_camera_options(CLI::App& cmd, DepthCameraArguments& a) {
+    cmd.add_option("--z-out", a.z_out,
+                   "Metric depth (z along the optical axis, scene units, 0 = no measurement): "
+                   ".npy (float32, HxW) or .png (16-bit millimetres as RGB-D data sets store "
+                   "depth, scene units taken as metres, clamped to 65535)");
+    cmd.add_option("--range-out", a.range_out,
+                   "Range (distance eye to surface, scene units, 0 = no measurement): .npy "
+                   "(float32, HxW)");
+    cmd.add_option("--points-out", a.points_out,
+                   "Point cloud of the measured pixels: .ply (binary, world-space float "
+                   "positions, uchar RGB colors, float normals; row-major pixel order)");
+    cmd.add_option("--intrinsics", a.intrinsics,
+                   "Pinhole camera FX,FY,CX,CY in pixels (OpenCV: pixel centers at integers, v "
+                   "down) for the --size image; pose from --eye/--target/--up (or --orbit), "
+                   "clip distances from --near/--far");
+    cmd.add_option("--camera-json", a.camera_json,
+                   "Write the camera used as JSON: convention \"opencv\", K (3x3), "
+                   "camera_to_world (4x4), near, far, width, height");
+    cmd.add_option("--sensor", a.sensor,
+                   "Depth sensor for --z-out/--range-out/--points-out: ideal (exact) or kinect "
+                   "(structured light: projector shadows, disparity quantization, range and "
+                   "incidence limits, optional noise)")
+        ->check(CLI::IsMember({"ideal", "kinect"}))
+        ->capture_default_str();
+    const StructuredLightSensor d;
+    cmd.add_option("--sensor-baseline", a.baseline,
+                   fmt::format("Projector offset along the camera's +x, scene units (default {})",
+                               d.baseline));
+    cmd.add_option("--sensor-disparity-step", a.disparity_step,
+                   fmt::format("Disparity quantum in pixels (default {})", d.disparity_step));
+    cmd.add_option("--sensor-min-range", a.min_range,
+                   fmt::format("Nearest measured z, scene units (default {})", d.min_range));
+    cmd.add_option("--sensor-max-range", a.max_range,
+                   fmt::format("Farthest measured z, scene units (default {})", d.max_range));
+    cmd.add_option("--sensor-max-incidence", a.max_incidence,
+                   fmt::format("Steepest surface seen, degrees from its normal (default {})",
+                               d.max_incidence_degrees));
+    cmd.add_option("--sensor-noise", a.noise,
+                   "Standard deviation of Gaussian disparity noise in pixels (default 0)");
+    cmd.add_option("--sensor-seed", a.seed,
+                   "Seed of the noise (default 0): the same seed gives the same image");
+}
+
+void check_depth_camera_arguments(const DepthCameraArguments& a, const std::string& visibility,
+                                  int aa, bool msaa, bool ortho, bool fovy, OutputFiles& outputs) {
+    check_output(outputs, a.z_out, {".npy", ".png"}, "--z-out");
+    check_output(outputs, a.range_out, {".npy"}, "--range-out");
+    check_output(outputs, a.points_out, {".ply"}, "--points-out");
+    check_output(outputs, a.camera_json, {".json"}, "--camera-json");
+    if (wants_depth(a) && (visibility != "zbuffer" || aa != 1 || msaa)) {
+        const char* option = !a.z_out.empty()       ? "--z-out"
+                             : !a.range_out.empty() ? "--range-out"
+                                                    : "--points-out";
+        throw InputError(option, "works with --visibility zbuffer, without --aa and --msaa");
+    }
+    if (!a.intrinsics.empty() && ortho)
+        throw InputError("--intrinsics", "a pinhole camera is a perspective one: not with --ortho");
+    if (!a.intrinsics.empty() && fovy)
+        throw InputError("--intrinsics", "fy sets the field of view: not with --fovy");
+    if (!a.camera_json.empty() && ortho)
+        throw InputError("--camera-json",
+                         "an orthographic camera has no pinhole matrix K: not with --ortho");
+    std::string flag;
+    if (a.sensor != "kinect" && any_sensor_flag(a, flag))
+        throw InputError(flag, "sets a parameter of --sensor kinect");
+    if (a.sensor == "kinect") {
+        if (!wants_depth(a))
+            throw InputError("--sensor",
+                             "kinect changes only --z-out, --range-out and --points-out: give "
+                             "one of them");
+        if (ortho) throw InputError("--sensor", "kinect needs a perspective camera: not --ortho");
+        sensor_of(a);
+    }
+}
+
+bool depth_camera_needs_normals(const DepthCameraArguments& a) {
+    return a.sensor == "kinect" || !a.points_out.empty();
+}
+
+Camera apply_intrinsics(const DepthCameraArguments& a, const Camera& camera, int width,
+                        int height) {
+    if (a.intrinsics.empty()) return camera;
+    glm::dvec4 v;
+    try {
+        v = parse_vec4("--intrinsics", a.intrinsics);
+    } catch (const InputError&) {
+        throw InputError("--intrinsics",
+                         "expected FX,FY,CX,CY (finite, in pixels), got '" + a.intrinsics + "'");
+    }
+    Intrinsics k;
+    k.fx = v.x;
+    k.fy = v.y;
+    k.cx = v.z;
+    k.cy = v.w;
+    k.width = width;
+    k.height = height;
+    k.near = camera.near;
+    k.far = camera.infinite_far ? std::numeric_limits<double>::infinity() : camera.far;
+    Camera pinhole;
+    try {
+        pinhole = Camera::from_intrinsics(k, camera.camera_to_world(CameraConvention::OpenCV));
+    } catch (const InputError& e) {
+        throw InputError("--intrinsics", e.cause());
+    }
+    pinhole.reversed_z = camera.reversed_z;
+    return pinhole;
+}
+
+void add_depth_camera_outputs(const DepthCameraArguments& a, const Scene& scene,
+                              const RenderOptions& options, const RenderTargets& t,
+                              OutputFiles& outputs) {
+    const Camera& camera = *options.camera;
+    if (!a.camera_json.empty()) outputs.add(a.camera_json, camera_json(camera, t.width, t.height));
+    if (!wants_depth(a)) return;
+    std::vector<float> z(t.depth.size());
+    metric_depth(camera, depth_clear_value(options), t.depth, z);
+    if (a.sensor == "kinect") {
+        std::vector<MeshView> meshes;
+        std::vector<InstanceView> instances;
+        apply_structured_light(sensor_of(a), view_of(scene, meshes, instances), options, z,
+                               t.normal);
+    }
+    if (!a.z_out.empty()) {
+        if (lower_extension(a.z_out) == ".npy") {
+            outputs.add(a.z_out, encode_npy(t.width, t.height, std::span<const float>(z)));
+        } else {
+            std::vector<std::uint16_t> mm(z.size());
+            depth_millimetres(z, mm);
+            outputs.add(a.z_out, encode_png16_gray(t.width, t.height, mm));
+        }
+    }
+    if (!a.range_out.empty()) {
+        std::vector<float> range(z.size());
+        range_from_z(camera, t.width, t.height, z, range);
+        outputs.add(a.range_out, encode_npy(t.width, t.height, std::span<const float>(range)));
+    }
+    if (!a.points_out.empty()) {
+        const PointCloud cloud = unproject(camera, t.width, t.height, z, t.color, t.normal);
+        outputs.add(a.points_out, encode_ply_points(cloud.positions, cloud.colors, cloud.normals));
+    }
+}
+
+}  // namespace zraster::cli
