@@ -46,8 +46,8 @@ double depth_step(DepthFormat format, float w) {
 // pixel, to within the rounding of the stored depth: four steps of the depth format (the float
 // transform and the format's quantization), turned into z by the slope of linear_depth there.
 // The D24 and D16 images are the frame's depths stored through the format's codec
-// (DepthBuffer::encode, decode), as the pipeline stores a single plane's fragments, because the
-// Renderer's own D24 and D16 frames draw nothing (DISABLED_RendererUnormFramesOfAPlane below).
+// (DepthBuffer::encode, decode), as the pipeline stores a single plane's fragments; the
+// Renderer's own D24 and D16 frames follow (RendererUnormFramesOfAPlane).
 TEST(MetricDepth, PlaneAtKnownDistanceInEveryDepthMode) {
     const double distance = 3.0;
     const Scene scene = scene_from_triangles({quad(-20, 20, -20, 20, -float(distance))});
@@ -93,12 +93,8 @@ TEST(MetricDepth, PlaneAtKnownDistanceInEveryDepthMode) {
     }
 }
 
-// The same plane through the Renderer's D24 and D16 paths. Disabled: those frames hold no
-// surface, since rasterize_tiles (src/render/tile_raster.cpp) fills a drawn tile's depths, which
-// are encoded values for D24 and D16, with the row of decoded clear values (1 instead of
-// 2^24 - 1), so no fragment passes the LESS test; filling them with the encoded clear value
-// makes this pass.
-TEST(MetricDepth, DISABLED_RendererUnormFramesOfAPlane) {
+// The same plane through the Renderer's D24 and D16 paths.
+TEST(MetricDepth, RendererUnormFramesOfAPlane) {
     const Scene scene = scene_from_triangles({quad(-20, 20, -20, 20, -3.0f)});
     for (const DepthFormat format : {DepthFormat::D24, DepthFormat::D16}) {
         Camera camera;
