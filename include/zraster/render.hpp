@@ -85,6 +85,12 @@ struct RenderLimits {
     std::uint64_t max_warnock_classifications = 0;
 };
 
+// A frame's threads are capped at this many per hardware thread: oneTBB cannot make an arena of
+// millions of threads (it crashes), and more than a few per core only compete for the cores.
+inline constexpr int kMaxThreadsPerHardwareThread = 4;
+// The threads a frame with RenderOptions::threads = `requested` (>= 0) runs on.
+ZRASTER_API int render_thread_count(int requested);
+
 // Told how far a long computation has got: the object-space visibility algorithms (painter's,
 // BSP, Warnock) call it from the thread running them, every few thousand steps, with a fraction
 // in [0, 1] that does not decrease within a stage. The front end decides what to show (the
@@ -98,7 +104,9 @@ class ProgressReporter {
 struct RenderOptions {
     int width = 1920;
     int height = 1080;
-    int threads = 0;  // 0: all hardware threads
+    // 0: all hardware threads. At most kMaxThreadsPerHardwareThread times the hardware threads
+    // are used (render_thread_count); the images never depend on it.
+    int threads = 0;
 
     // No camera: fit_camera() over the scene's world-space vertices (the benchmark framing).
     std::optional<Camera> camera;

@@ -80,9 +80,7 @@ void render_frame_in_arena(detail::Frame& frame, const SceneView& scene, std::st
                            RenderStats& stats);
 
 int thread_count(const RenderOptions& options) {
-    return options.threads > 0
-               ? options.threads
-               : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    return render_thread_count(options.threads);
 }
 
 // Everything runs in an arena of the requested thread count, the checks too (the index check is
@@ -194,6 +192,11 @@ void render_frame_in_arena(detail::Frame& frame, const SceneView& scene, std::st
 }
 
 }  // namespace
+
+int render_thread_count(int requested) {
+    const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    return requested > 0 ? std::min(requested, kMaxThreadsPerHardwareThread * hardware) : hardware;
+}
 
 TargetViews view_of(RenderTargets& targets) {
     TargetViews v;

@@ -45,6 +45,25 @@ TEST(Limits, DefaultsAreSensible) {
     EXPECT_LE(limits.max_vertices, (1u << 31) - 1);
 }
 
+// A thread count oneTBB cannot make an arena of (2^31 - 1 crashed inside it) is capped at
+// kMaxThreadsPerHardwareThread per hardware thread; the image is the one-thread image.
+TEST(Limits, HugeThreadCountsAreCapped) {
+    const int hardware = render_thread_count(0);
+    EXPECT_GE(hardware, 1);
+    EXPECT_EQ(render_thread_count(1), 1);
+    EXPECT_EQ(render_thread_count(hardware), hardware);
+    EXPECT_EQ(render_thread_count(2147483647), kMaxThreadsPerHardwareThread * hardware);
+    const Scene scene = make_procedural_scene("sphere:2000");
+    RenderOptions o;
+    o.width = 96;
+    o.height = 64;
+    o.threads = 1;
+    const RenderResult one = render(scene, o);
+    o.threads = 2147483647;
+    Renderer renderer;
+    EXPECT_EQ(renderer.render(scene, o).targets.color, one.targets.color);
+}
+
 TEST(Limits, ImageSize) {
     RenderOptions o;
     o.width = 1'000'000;

@@ -1,6 +1,7 @@
 #include "command_line.hpp"
 
 #include <zraster/load.hpp>
+#include <zraster/render.hpp>
 #include <zraster/scenes.hpp>
 
 #include <fmt/format.h>
@@ -74,14 +75,14 @@ int checked_thread_count(const std::string& option, int requested) {
     if (requested < 0)
         throw InputError(
             option, "must be >= 0 (0: every hardware thread), not " + std::to_string(requested));
-    const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    const int limit = kThreadsPerCore * hardware;
-    if (requested > limit) {
+    const int used = render_thread_count(requested);
+    if (requested > 0 && used < requested) {
         fmt::print(stderr,
                    "warning: {} {} is more than {} times the {} hardware threads; using "
                    "{}\n",
-                   option, requested, kThreadsPerCore, hardware, limit);
-        return limit;
+                   option, requested, kMaxThreadsPerHardwareThread,
+                   used / kMaxThreadsPerHardwareThread, used);
+        return used;
     }
     return requested;
 }

@@ -21,10 +21,9 @@ glm::dvec4 parse_vec4(const std::string& option, const std::string& text);
 // "WxH" with 1 <= W, H <= limit.
 glm::ivec2 parse_size(const std::string& option, const std::string& text, int limit);
 
-// --threads: 0 (every hardware thread) up to kThreadsPerCore times the hardware threads. More
-// is clamped to that with a warning on stderr (oneTBB's arena cannot be made that large, and
-// the extra threads would only compete for the cores); negative is an InputError.
-inline constexpr int kThreadsPerCore = 4;
+// --threads: 0 (every hardware thread) up to kMaxThreadsPerHardwareThread times the hardware
+// threads (render.hpp). More is clamped to that, as the library does, with a warning on stderr;
+// negative is an InputError.
 int checked_thread_count(const std::string& option, int requested);
 
 // "auto" | "forward" | "deferred" (CLI11 checks the value first).
