@@ -160,11 +160,20 @@ ZRASTER_API void check_camera(const Camera& camera, int width, int height);
 // plane). Throws InputError for a projection whose depth depends on eye-space x or y.
 ZRASTER_API double linear_depth(const Camera& camera, double window_depth);
 
+// The coordinates a camera may use: fit_camera frames points within +-kMaxCoordinate, and
+// check_camera takes an eye and target within +-kMaxCameraCoordinate (a fitted camera stands a
+// few radii out). The pipeline's matrices and clip coordinates are single precision, whose range
+// ends at 3.4e38; a camera fitted around coordinates near that end overflowed it and drew
+// nothing. (Vertices beyond are not refused: far from the view they are simply culled.)
+inline constexpr double kMaxCoordinate = 1e30;
+inline constexpr double kMaxCameraCoordinate = 1e32;
+
 // The benchmark framing (docs/bench-scenes.md): center = middle of the axis-aligned box of the
 // points, radius = max |p - center| (double), fovy = 60 degrees, eye = center + dist *
 // normalize(1, 1, 2) with dist = radius / sin(fovy / 2), up = +y, near = dist - 1.01 r,
 // far = dist + 1.01 r.
-// An empty or degenerate point set (radius 0) gets radius 1.
+// An empty or degenerate point set (radius 0) gets radius 1. Throws InputError (naming no file)
+// when a finite point lies beyond kMaxCoordinate.
 ZRASTER_API Camera fit_camera(std::span<const glm::vec3> world_points, double fovy_degrees = 60.0);
 
 // A camera circling `target` at `distance`: azimuth around +y from +z towards +x, elevation above

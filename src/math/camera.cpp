@@ -10,6 +10,8 @@
 #include <zraster/camera.hpp>
 #include <zraster/error.hpp>
 
+#include <glm/gtx/component_wise.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -330,6 +332,12 @@ void check_camera(const Camera& c, int width, int height) {
     } else {
         if (!finite(c.eye) || !finite(c.target) || !finite(c.up))
             throw InputError("", "camera parameters must be finite");
+        for (const auto& [name, p] : {std::pair{"eye", c.eye}, std::pair{"target", c.target}})
+            if (glm::compMax(glm::abs(p)) > kMaxCameraCoordinate)
+                throw InputError("", std::string("camera ") + name + " (" + number(p.x) + ", " +
+                                         number(p.y) + ", " + number(p.z) +
+                                         ") is beyond the +-1e32 zraster supports "
+                                         "(single-precision matrices)");
         if (glm::length(c.target - c.eye) == 0.0)
             throw InputError("", "camera eye and target coincide");
         if (glm::length(glm::cross(c.target - c.eye, c.up)) == 0.0)
@@ -378,6 +386,11 @@ Camera fit_camera(std::span<const glm::vec3> world_points, double fovy_degrees) 
             lo = glm::min(lo, glm::dvec3(p));
             hi = glm::max(hi, glm::dvec3(p));
         }
+        const double reach = std::max(glm::compMax(glm::abs(lo)), glm::compMax(glm::abs(hi)));
+        if (std::isfinite(reach) && reach > kMaxCoordinate)
+            throw InputError("", "coordinates reach " + number(reach) +
+                                     ", beyond the +-1e30 a camera can frame (single-precision "
+                                     "matrices would overflow); scale the scene down");
         center = (lo + hi) / 2.0;
         double r2 = 0.0;
         for (const glm::vec3& p : world_points)

@@ -153,7 +153,15 @@ void render_frame_in_arena(detail::Frame& frame, const SceneView& scene, std::st
     frame.options = &options;
     frame.targets = detail::FrameTargets(
         targets, destination.caller == nullptr || targets.unchanged_since_last_frame);
-    frame.camera = options.camera ? *options.camera : fit_camera(world_points(frame));
+    if (options.camera) {
+        frame.camera = *options.camera;
+    } else {
+        try {
+            frame.camera = fit_camera(world_points(frame));
+        } catch (const InputError& e) {
+            throw InputError(std::string(source), e.cause());
+        }
+    }
     frame.eye = glm::vec3(frame.camera.position());
     frame.view_axis = glm::vec3(-frame.camera.view_direction());
     frame.clip_settings.depth_range = frame.camera.clip_depth_range();

@@ -150,9 +150,10 @@ TEST(CliLimits, FilesClaimingTwoToTheFortyFaces) {
 // svg command has them too.
 TEST(CliLimits, VisibilityAlgorithmBudgets) {
     const auto dir = temp_dir("cli-limits-budgets");
-    std::string ply = "ply\nformat ascii 1.0\nelement vertex 1200\nproperty float x\n"
-                      "property float y\nproperty float z\nelement face 400\n"
-                      "property list uchar int vertex_indices\nend_header\n";
+    std::string ply =
+        "ply\nformat ascii 1.0\nelement vertex 1200\nproperty float x\n"
+        "property float y\nproperty float z\nelement face 400\n"
+        "property list uchar int vertex_indices\nend_header\n";
     std::uint64_t state = 12345;
     const auto next = [&] {  // (a 64-bit LCG: the same file everywhere)
         state = state * 6364136223846793005u + 1442695040888963407u;
@@ -196,6 +197,23 @@ TEST(CliLimits, VisibilityAlgorithmBudgets) {
     const CommandResult ok =
         run_limited(render + "--visibility warnock --max-warnock-classifications 0", dir);
     EXPECT_EQ(ok.exit_code, 0) << ok.output;
+}
+
+// Coordinates beyond what single-precision matrices can frame: a triangle at 3e38 (the fitted
+// camera overflowed and the image was empty, exit 0) and an eye at 1e39 (the message blamed
+// near and far).
+TEST(CliLimits, CoordinatesBeyondTheSupportedRange) {
+    const auto dir = temp_dir("cli-limits-coordinates");
+    write(dir / "far.ply",
+          "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+          "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+          "end_header\n3e38 0 0\n0 3e38 0\n0 0 3e38\n3 0 1 2\n");
+    expect_refused(dir, "render far.ply -o out.png",
+                   "zraster: far.ply: coordinates reach 3e+38, beyond the +-1e30 a camera can "
+                   "frame");
+    expect_refused(dir, "render builtin:cube --eye 1e39,0,0 -o out.png",
+                   "zraster: --eye: 1e39,0,0 is beyond the +-1e32 a camera may use");
+    expect_refused(dir, "render builtin:cube --target 0,-2e32,0 -o out.png", "zraster: --target: ");
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include <zraster/camera.hpp>
+#include <zraster/error.hpp>
 
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -6,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace zraster {
@@ -73,6 +75,29 @@ TEST(FitCamera, EmptyOrSinglePointGetsRadiusOne) {
     const Camera single = fit_camera(one);
     EXPECT_EQ(single.target, glm::dvec3(5.0, -1.0, 2.0));
     EXPECT_NEAR(single.far, 2.0 + 1.01, 1e-12);
+}
+
+// Coordinates past kMaxCoordinate cannot be framed in single precision: refused, not an empty
+// image; up to it the fitted camera's matrices stay finite. Non-finite points are not its
+// business (the renderer drops their triangles).
+TEST(FitCamera, CoordinatesBeyondTheSupportedRangeAreRefused) {
+    const std::vector<glm::vec3> far = {{3e38f, 0, 0}, {0, 3e38f, 0}, {0, 0, 3e38f}};
+    try {
+        fit_camera(far);
+        FAIL() << "expected an InputError";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("coordinates reach 3e+38"), std::string::npos)
+            << e.what();
+    }
+    const std::vector<glm::vec3> edge = {{-9e29f, 0, 0}, {9e29f, 0, 0}, {0, 9e29f, 0}};
+    const Camera camera = fit_camera(edge);
+    const glm::mat4 vp(camera.view_projection(1.0));
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) EXPECT_TRUE(std::isfinite(vp[c][r]));
+    Camera beyond = camera;
+    beyond.eye.x = 2e32;
+    EXPECT_THROW(check_camera(beyond, 64, 64), InputError);
+    EXPECT_NO_THROW(check_camera(camera, 64, 64));
 }
 
 TEST(FitCamera, OctahedronOfTheUnitSphere) {

@@ -11,6 +11,8 @@
 
 #include <fmt/format.h>
 
+#include <glm/gtx/component_wise.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -177,12 +179,25 @@ void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
 
 namespace {
 
+// --eye, --target: finite, within the coordinates a camera may use.
+glm::dvec3 parse_position(const std::string& option, const std::string& text) {
+    const glm::dvec3 p = parse_vec3(option, text);
+    if (glm::compMax(glm::abs(p)) > kMaxCameraCoordinate)
+        throw InputError(option, text + " is beyond the +-1e32 a camera may use");
+    return p;
+}
+
 Camera make_camera(const RenderArguments& a, const Scene& scene, double aspect) {
     Camera camera;
-    if (auto builtin = builtin_camera(a.scene))
+    if (auto builtin = builtin_camera(a.scene)) {
         camera = *builtin;
-    else
-        camera = fit_camera(scene.world_positions());
+    } else {
+        try {
+            camera = fit_camera(scene.world_positions());
+        } catch (const InputError& e) {
+            throw InputError(scene.source, e.cause());
+        }
+    }
     const BoundingSphere sphere = bounding_sphere(scene.world_positions());
     const double radius = sphere.radius > 0.0 ? sphere.radius : 1.0;
     if (!a.orbit.empty() && (!a.eye.empty() || !a.target.empty()))
@@ -196,8 +211,8 @@ Camera make_camera(const RenderArguments& a, const Scene& scene, double aspect) 
         camera.near = std::max(distance - 1.01 * radius, distance * 1e-3);
         camera.far = distance + 1.01 * radius;
     }
-    if (!a.eye.empty()) camera.eye = parse_vec3("--eye", a.eye);
-    if (!a.target.empty()) camera.target = parse_vec3("--target", a.target);
+    if (!a.eye.empty()) camera.eye = parse_position("--eye", a.eye);
+    if (!a.target.empty()) camera.target = parse_position("--target", a.target);
     camera.up = parse_vec3("--up", a.up);
     if (!a.eye.empty() || !a.target.empty()) {
         // Near/far from the bounding sphere as seen from the new eye, unless given.
