@@ -5,8 +5,12 @@
 # Debian's interpreter is the default: its numpy and pybind11 are the packages
 # scripts/install-deps.sh installs, while a python3 earlier on PATH (pyenv, a virtualenv) may lack
 # them. -DPython_EXECUTABLE=... picks another.
+#
+# Sanitizer builds leave it out: an instrumented extension cannot load into an uninstrumented
+# interpreter.
 set(zraster_python_default OFF)
-if(PROJECT_IS_TOP_LEVEL AND ZRASTER_BUILD_IO AND ZRASTER_BUILD_TOOLS)
+if(PROJECT_IS_TOP_LEVEL AND ZRASTER_BUILD_IO AND ZRASTER_BUILD_TOOLS
+   AND NOT CMAKE_CXX_FLAGS MATCHES "-fsanitize")
   if(NOT DEFINED Python_EXECUTABLE AND EXISTS /usr/bin/python3)
     set(Python_EXECUTABLE /usr/bin/python3 CACHE FILEPATH "The Python the zraster module is built for")
   endif()
