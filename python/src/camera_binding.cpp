@@ -203,19 +203,31 @@ projection maps near to depth 1. See C++ Camera::from_matrices for the projectio
         .def_property_readonly(
             "target", [](const Camera& c) { return to_numpy(c.target); },
             "The point looked at (for cameras from matrices or intrinsics: eye + view direction).")
-        .def_property_readonly("up", [](const Camera& c) { return to_numpy(c.up); })
+        .def_property_readonly(
+            "up", [](const Camera& c) { return to_numpy(c.up); }, "The up direction given.")
         .def_property_readonly(
             "view_direction", [](const Camera& c) { return to_numpy(c.view_direction()); },
             "The unit view direction in world space.")
         .def_property_readonly(
             "fovy", [](const Camera& c) { return c.fovy_degrees; },
             "Vertical field of view in degrees (perspective look-at cameras).")
-        .def_property_readonly("near", [](const Camera& c) { return c.near; })
-        .def_property_readonly("far", [](const Camera& c) { return c.far; })
-        .def_property_readonly("reversed_z", [](const Camera& c) { return c.reversed_z; })
-        .def_property_readonly("infinite_far", [](const Camera& c) { return c.infinite_far; })
-        .def_property_readonly("orthographic", &Camera::is_orthographic)
-        .def_property_readonly("ortho_height", [](const Camera& c) { return c.ortho_height; })
+        .def_property_readonly(
+            "near", [](const Camera& c) { return c.near; },
+            "Near clip distance along the view axis (NaN for some cameras from matrices).")
+        .def_property_readonly(
+            "far", [](const Camera& c) { return c.far; },
+            "Far clip distance (inf with an infinite far plane from intrinsics).")
+        .def_property_readonly(
+            "reversed_z", [](const Camera& c) { return c.reversed_z; },
+            "Window depth 1 at near and 0 at far (the GREATER test by default).")
+        .def_property_readonly(
+            "infinite_far", [](const Camera& c) { return c.infinite_far; },
+            "The far plane at infinity.")
+        .def_property_readonly("orthographic", &Camera::is_orthographic,
+                               "An orthographic projection (else perspective).")
+        .def_property_readonly(
+            "ortho_height", [](const Camera& c) { return c.ortho_height; },
+            "Height of an orthographic view volume in world units.")
         .def(
             "view_matrix", [](const Camera& c) { return to_numpy(c.view()); },
             "The 4x4 world-to-eye matrix (OpenGL eye space, looking down -z).")

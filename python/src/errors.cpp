@@ -24,6 +24,7 @@ void bind_errors(py::module_& m) {
         "argument ('' when none applies) and e.cause the rest.";
     exception->attr("source") = "";
     exception->attr("cause") = "";
+    // NOLINTNEXTLINE(performance-unnecessary-value-param): pybind11's translator signature
     py::register_exception_translator([](std::exception_ptr p) {
         try {
             if (p) std::rethrow_exception(p);

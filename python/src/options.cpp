@@ -108,11 +108,12 @@ RenderKeywords parse_render_keywords(const py::kwargs& keywords, int width, int 
         const CLI::Option* option =
             keyword.find('-') == std::string::npos ? parser.app.get_option_no_throw(flag) : nullptr;
         if (option == nullptr || !is_keyword_flag(option)) {
-            std::string hint;
+            std::string message = "render() got an unexpected keyword argument '";
+            message += keyword;
+            message += "'";
             if (keyword == "size" || keyword == "threads" || keyword == "max_pixels")
-                hint = " (the Renderer's: Renderer(width, height, threads, max_pixels))";
-            throw py::type_error("render() got an unexpected keyword argument '" + keyword + "'" +
-                                 hint);
+                message += " (the Renderer's: Renderer(width, height, threads, max_pixels))";
+            throw py::type_error(message);
         }
         result.given.insert(keyword);
         if (option->get_expected_max() == 0) {  // a flag without a value: True or False
@@ -201,13 +202,16 @@ std::string render_keywords_doc() {
     for (const CLI::Option* option : parser.app.get_options()) {
         if (!is_keyword_flag(option)) continue;
         const std::string name = keyword_name(option->get_lnames().front());
-        std::string text = with_keyword_names(option->get_description());
-        if (option->get_expected_max() == 0)
-            text = "bool. " + text;
-        else if (!option->get_default_str().empty())
-            text += " [default " + option->get_default_str() + "]";
+        std::string text = name + ": ";
+        if (option->get_expected_max() == 0) text += "bool. ";
+        text += with_keyword_names(option->get_description());
+        if (option->get_expected_max() != 0 && !option->get_default_str().empty()) {
+            text += " [default ";
+            text += option->get_default_str();
+            text += "]";
+        }
         if (option->get_expected_max() > 1) text += " (one value or a list of them)";
-        doc += wrapped(name + ": " + text, "    ", 92);
+        doc += wrapped(text, "    ", 92);
     }
     return doc;
 }

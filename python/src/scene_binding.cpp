@@ -17,7 +17,7 @@ const char* float_bytes(const AttributeView& view, std::size_t i, std::size_t si
     return reinterpret_cast<const char*>(view.data) + i * (view.stride ? view.stride : size);
 }
 
-std::shared_ptr<PyScene> scene_from_items(py::iterable items) {
+std::shared_ptr<PyScene> scene_from_items(const py::iterable& items) {
     auto scene = std::make_shared<PyScene>();
     std::vector<const PyMesh*> seen;  // the mesh index of each distinct Mesh
     std::size_t position = 0;

