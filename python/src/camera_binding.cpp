@@ -57,9 +57,9 @@ Camera command_camera(const PyScene& scene, cli::RenderArguments a, int width, i
     return *cli::make_render_options(a, world, std::nullopt).camera;
 }
 
-Camera look_at_camera(py::handle eye, py::handle target, py::handle up, py::handle fovy,
-                      py::handle near, py::handle far, bool reversed_z, bool infinite_far,
-                      py::handle ortho_height) {
+Camera look_at_camera(const py::object& eye, const py::object& target, const py::object& up,
+                      const py::object& fovy, const py::object& near, const py::object& far,
+                      bool reversed_z, bool infinite_far, const py::object& ortho_height) {
     Camera c;
     c.eye = glm::dvec3(vector_n(eye, 3, "eye"));
     c.target = glm::dvec3(vector_n(target, 3, "target"));
@@ -110,7 +110,7 @@ looking down -z; window depth 0 at near, 1 at far, or the reverse with reversed_
 make a new one to change it.)")
         .def_static(
             "fit",
-            [](py::handle scene, py::handle width, py::handle height) {
+            [](const py::object& scene, const py::object& width, const py::object& height) {
                 const int w = image_side(width, "width"), h = image_side(height, "height");
                 return command_camera(*scene_argument(scene, "scene"), {}, w, h);
             },
@@ -121,8 +121,8 @@ view, eye along (1, 1, 2) from its center, near and far from its radius). The fr
 on the scene only; width and height (checked) are the image's, whose aspect the render applies.)")
         .def_static(
             "orbit",
-            [](py::handle scene, py::handle azimuth, py::handle elevation, py::handle width,
-               py::handle height, py::handle distance) {
+            [](const py::object& scene, const py::object& azimuth, const py::object& elevation,
+               const py::object& width, const py::object& height, const py::object& distance) {
                 const int w = image_side(width, "width"), h = image_side(height, "height");
                 const double d = finite_number(distance, "distance");
                 if (!(d > 0.0)) input_error("distance", "must be positive");
@@ -148,8 +148,9 @@ view axis (far is ignored with infinite_far). reversed_z: window depth 1 at near
 the GREATER depth test by default. Raises InputError naming a non-finite or out-of-range value.)")
         .def_static(
             "from_intrinsics",
-            [](py::handle fx, py::handle fy, py::handle cx, py::handle cy, py::handle width,
-               py::handle height, py::handle near, py::handle far, py::handle pose,
+            [](const py::object& fx, const py::object& fy, const py::object& cx,
+               const py::object& cy, const py::object& width, const py::object& height,
+               const py::object& near, const py::object& far, const py::object& pose,
                const std::string& convention) {
                 Intrinsics k;
                 k.fx = real(fx, "fx"), k.fy = real(fy, "fy");
@@ -179,7 +180,7 @@ Raises InputError naming the field for non-finite values, fx or fy <= 0, not 0 <
 singular or non-affine pose.)")
         .def_static(
             "from_matrices",
-            [](py::handle view, py::handle projection, const std::string& depth_range,
+            [](const py::object& view, const py::object& projection, const std::string& depth_range,
                bool reversed_z) {
                 ClipDepthRange range{};
                 if (depth_range == "-1..1")
@@ -233,14 +234,14 @@ projection maps near to depth 1. See C++ Camera::from_matrices for the projectio
             "The 4x4 world-to-eye matrix (OpenGL eye space, looking down -z).")
         .def(
             "projection_matrix",
-            [](const Camera& c, py::handle width, py::handle height) {
+            [](const Camera& c, const py::object& width, const py::object& height) {
                 const int w = image_side(width, "width"), h = image_side(height, "height");
                 return to_numpy(c.projection_matrix(double(w) / double(h)));
             },
             "width"_a, "height"_a, "The 4x4 projection matrix for an image of width x height.")
         .def(
             "intrinsics",
-            [](const Camera& c, py::handle width, py::handle height,
+            [](const Camera& c, const py::object& width, const py::object& height,
                const std::string& convention) {
                 return intrinsics_dict(c.intrinsics(image_side(width, "width"),
                                                     image_side(height, "height"),

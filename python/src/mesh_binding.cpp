@@ -35,8 +35,9 @@ py::array computed_normals(const AttributeView& positions, const IndexView& indi
     return normals;
 }
 
-std::shared_ptr<PyMesh> make_mesh(py::handle positions, py::handle indices, py::handle normals,
-                                  py::handle uvs, py::handle color, std::string name) {
+std::shared_ptr<PyMesh> make_mesh(const py::object& positions, const py::object& indices,
+                                  const py::object& normals, const py::object& uvs,
+                                  const py::object& color, std::string name) {
     auto mesh = std::make_shared<PyMesh>();
     FloatRows p = float_rows(positions, 3, "positions");
     mesh->positions = p.array;
@@ -91,7 +92,7 @@ std::shared_ptr<PyMesh> make_mesh(py::handle positions, py::handle indices, py::
 }
 
 // A mesh made by zraster (the procedural primitives), as numpy arrays the Mesh owns.
-std::shared_ptr<PyMesh> mesh_from(const Mesh& m, py::handle color) {
+std::shared_ptr<PyMesh> mesh_from(const Mesh& m, const py::object& color) {
     const auto n = py::ssize_t(m.positions.size());
     py::array_t<float> positions({n, py::ssize_t(3)}), normals({n, py::ssize_t(3)}),
         uvs({n, py::ssize_t(2)});
@@ -141,7 +142,7 @@ range or a color out of 0..1, and TypeError for arguments that are no arrays of 
              "uvs"_a = py::none(), "color"_a = py::none(), "name"_a = "")
         .def_static(
             "uv_sphere",
-            [](float radius, int stacks, int slices, py::handle color) {
+            [](float radius, int stacks, int slices, const py::object& color) {
                 if (!(radius > 0.0f) || !std::isfinite(radius))
                     input_error("radius", "must be positive and finite");
                 if (stacks < 2 || slices < 3 || stacks > 4096 || slices > 4096)
@@ -152,7 +153,7 @@ range or a color out of 0..1, and TypeError for arguments that are no arrays of 
             "A UV sphere centred at the origin, with normals and uvs (zraster's primitive).")
         .def_static(
             "box",
-            [](py::handle half_extent, py::handle color) {
+            [](const py::object& half_extent, const py::object& color) {
                 const glm::dvec4 h = vector_n(half_extent, 3, "half_extent");
                 if (!(h.x > 0 && h.y > 0 && h.z > 0))
                     input_error("half_extent", "components must be positive");

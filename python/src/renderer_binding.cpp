@@ -42,8 +42,8 @@ int image_side(py::handle object, const std::string& argument) {
     return int(v);
 }
 
-std::unique_ptr<PyRenderer> make_renderer(py::handle width, py::handle height, py::handle threads,
-                                          py::handle max_pixels) {
+std::unique_ptr<PyRenderer> make_renderer(const py::object& width, const py::object& height,
+                                          const py::object& threads, const py::object& max_pixels) {
     auto r = std::make_unique<PyRenderer>();
     r->width = image_side(width, "width");
     r->height = image_side(height, "height");
@@ -138,8 +138,8 @@ py::dict stats_dict(const RenderStats& s) {
     return d;
 }
 
-py::dict render(PyRenderer& r, py::handle scene_object, py::handle camera_object,
-                py::handle outputs, const py::kwargs& keywords) {
+py::dict render(PyRenderer& r, const py::object& scene_object, const py::object& camera_object,
+                const py::object& outputs, const py::kwargs& keywords) {
     const std::shared_ptr<const PyScene> scene = scene_argument(scene_object, "scene");
     std::vector<Output> order;
     const std::array<bool, kOutputCount> wanted = wanted_outputs(outputs, order);

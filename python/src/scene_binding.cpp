@@ -66,7 +66,7 @@ std::shared_ptr<PyScene> scene_from_owned(std::shared_ptr<const Scene> owned, st
     return scene;
 }
 
-std::shared_ptr<PyScene> load(py::handle path_object, const std::string& isolation,
+std::shared_ptr<PyScene> load(const py::object& path_object, const std::string& isolation,
                               bool allow_outside_references, std::size_t max_instances,
                               std::size_t max_triangles) {
     if (!py::isinstance<py::str>(path_object) && !py::hasattr(path_object, "__fspath__"))
