@@ -36,4 +36,7 @@ if(ZRASTER_BUILD_PYTHON)
   set(CMAKE_POSITION_INDEPENDENT_CODE ON)
   target_compile_options(zraster_flags INTERFACE -fno-semantic-interposition)
   message(STATUS "zraster: Python module for ${Python_EXECUTABLE} (${Python_VERSION})")
+elseif(PROJECT_IS_TOP_LEVEL)
+  message(STATUS "zraster: no Python module (ZRASTER_BUILD_PYTHON is off: pybind11 or numpy "
+                 "missing, or a sanitizer build)")
 endif()
