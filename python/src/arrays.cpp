@@ -1,6 +1,8 @@
 // numpy arrays in: the checks and the one copy, when one is needed, of arrays.hpp.
 #include "arrays.hpp"
 
+#include <zraster/precision.hpp>
+
 #include <cmath>
 #include <cstdint>
 
@@ -120,6 +122,16 @@ Indices triangle_indices(py::handle object, std::size_t vertex_count, const std:
     indices.array = a;
     indices.view = {a.size() > 0 ? a.data() : nullptr, std::size_t(a.size()), type};
     return indices;
+}
+
+int image_side(py::handle object, const std::string& argument) {
+    if (py::isinstance<py::bool_>(object) || !py::hasattr(object, "__index__"))
+        type_error(argument, "an integer", object);
+    const long long v = py::int_(py::reinterpret_borrow<py::object>(object)).cast<long long>();
+    if (v < 1 || v > kMaxViewport)
+        input_error(argument,
+                    "must be in 1.." + std::to_string(kMaxViewport) + ", got " + std::to_string(v));
+    return int(v);
 }
 
 double finite_number(py::handle object, const std::string& argument) {

@@ -41,6 +41,10 @@ glm::dvec4 vector_n(py::handle object, int n, const std::string& argument);
 py::array_t<double> to_numpy(const glm::dmat4& m);
 py::array_t<double> to_numpy(const glm::dvec3& v);
 
+// An image width or height: an integer in 1..kMaxViewport, else TypeError / InputError naming
+// the argument.
+int image_side(py::handle object, const std::string& argument);
+
 // A finite number (int or float), else TypeError / InputError naming the argument.
 double finite_number(py::handle object, const std::string& argument);
 

@@ -33,16 +33,6 @@ double real(py::handle object, const std::string& argument) {
     return py::float_(py::reinterpret_borrow<py::object>(object)).cast<double>();
 }
 
-int image_side(py::handle object, const std::string& argument) {
-    if (py::isinstance<py::bool_>(object) || !py::hasattr(object, "__index__"))
-        type_error(argument, "an integer", object);
-    const long long v = py::int_(py::reinterpret_borrow<py::object>(object)).cast<long long>();
-    if (v < 1 || v > kMaxViewport)
-        input_error(argument,
-                    "must be in 1.." + std::to_string(kMaxViewport) + ", got " + std::to_string(v));
-    return int(v);
-}
-
 CameraConvention convention_of(const std::string& name) {
     if (name == "opencv") return CameraConvention::OpenCV;
     if (name == "opengl") return CameraConvention::OpenGL;

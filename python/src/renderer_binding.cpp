@@ -3,6 +3,7 @@
 
 #include <pybind11/stl.h>
 
+#include <array>
 #include <cstring>
 #include <mutex>
 
@@ -31,16 +32,6 @@ struct PyRenderer {
     RenderStats stats;  // of the last frame
     bool rendered = false;
 };
-
-int image_side(py::handle object, const std::string& argument) {
-    if (py::isinstance<py::bool_>(object) || !py::hasattr(object, "__index__"))
-        type_error(argument, "an integer", object);
-    const long long v = py::int_(py::reinterpret_borrow<py::object>(object)).cast<long long>();
-    if (v < 1 || v > kMaxViewport)
-        input_error(argument,
-                    "must be in 1.." + std::to_string(kMaxViewport) + ", got " + std::to_string(v));
-    return int(v);
-}
 
 std::unique_ptr<PyRenderer> make_renderer(const py::object& width, const py::object& height,
                                           const py::object& threads, const py::object& max_pixels) {
