@@ -21,7 +21,7 @@ build() {
     local dir=$1 flags=$2
     shift 2
     CC=clang CXX=clang++ cmake -S "$root" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Sanitize \
-        -DZRASTER_BUILD_TESTS=ON -DZRASTER_INSTALL=OFF \
+        -DZRASTER_BUILD_TESTS=ON -DZRASTER_INSTALL=OFF -DZRASTER_BUILD_PYTHON=OFF \
         -DCMAKE_CXX_FLAGS="-O1 -gline-tables-only -fno-omit-frame-pointer $flags" \
         -DCMAKE_EXE_LINKER_FLAGS="$flags" >/dev/null
     ninja -C "$dir" -j "$jobs" "$@" >"$dir/build.log" 2>&1 || {

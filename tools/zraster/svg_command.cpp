@@ -14,6 +14,7 @@
 
 #include "command_line.hpp"
 #include "io/atomic_write.hpp"
+#include "progress.hpp"
 
 namespace zraster::cli {
 
@@ -58,7 +59,8 @@ int run_svg(const SvgArguments& a) {
 
     const Scene scene = load_scene_or_procedural(a.render.scene);
     for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
-    const RenderOptions options = make_render_options(a.render, scene);
+    RenderOptions options = make_render_options(a.render, scene);
+    options.progress = stderr_progress();
     warn_if_transparent(scene, "zraster svg");
 
     SvgOptions svg;

@@ -1,0 +1,40 @@
+// zraster.InputError: a ValueError subclass carrying the C++ InputError's parts, so that
+// `except ValueError` catches bad input and `e.source` names the file, option or argument.
+#include "errors.hpp"
+
+#include "binding.hpp"
+
+namespace zraster::python {
+
+std::string type_name(py::handle object) {
+    return py::str(py::type::handle_of(object).attr("__name__")).cast<std::string>();
+}
+
+void type_error(const std::string& argument, const std::string& expected, py::handle got) {
+    throw py::type_error(argument + ": expected " + expected + ", got " + type_name(got));
+}
+
+void bind_errors(py::module_& m) {
+    // Leaked on purpose: the translator may run until the interpreter is gone, and the object's
+    // destructor must not run after that.
+    static auto* const exception = new py::exception<InputError>(m, "InputError", PyExc_ValueError);
+    exception->doc() =
+        "Bad input: a file that cannot be read, an option or argument out of range. A "
+        "ValueError. str(e) is one line, 'SOURCE: cause'; e.source is the file, option or "
+        "argument ('' when none applies) and e.cause the rest.";
+    exception->attr("source") = "";
+    exception->attr("cause") = "";
+    // NOLINTNEXTLINE(performance-unnecessary-value-param): pybind11's translator signature
+    py::register_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const InputError& e) {
+            py::object error = py::handle(exception->ptr())(e.what());
+            error.attr("source") = e.file();
+            error.attr("cause") = e.cause();
+            PyErr_SetObject(exception->ptr(), error.ptr());
+        }
+    });
+}
+
+}  // namespace zraster::python

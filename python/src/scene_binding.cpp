@@ -1,0 +1,230 @@
+// zraster.Scene and zraster.load(): scenes from files, procedural specs or Meshes.
+#include <zraster/load.hpp>
+#include <zraster/scenes.hpp>
+
+#include <pybind11/stl.h>
+
+#include "arrays.hpp"
+#include "binding.hpp"
+#include "errors.hpp"
+
+namespace zraster::python {
+namespace {
+
+using namespace pybind11::literals;
+
+const char* float_bytes(const AttributeView& view, std::size_t i, std::size_t size) {
+    return reinterpret_cast<const char*>(view.data) + i * (view.stride ? view.stride : size);
+}
+
+std::shared_ptr<PyScene> scene_from_items(const py::iterable& items) {
+    auto scene = std::make_shared<PyScene>();
+    std::vector<const PyMesh*> seen;  // the mesh index of each distinct Mesh
+    std::size_t position = 0;
+    for (py::handle item : items) {
+        const std::string argument = "items[" + std::to_string(position++) + "]";
+        py::handle mesh_object = item;
+        glm::dmat4 transform(1.0);
+        if (py::isinstance<py::tuple>(item) || py::isinstance<py::list>(item)) {
+            const auto pair = py::reinterpret_borrow<py::sequence>(item);
+            if (py::len(pair) != 2)
+                type_error(argument, "a Mesh or a (Mesh, 4x4 transform) pair", item);
+            mesh_object = pair[0];
+            transform = matrix4(pair[1], argument + " transform");
+        }
+        if (!py::isinstance<PyMesh>(mesh_object))
+            type_error(argument, "a Mesh or a (Mesh, 4x4 transform) pair", mesh_object);
+        const auto& mesh = mesh_object.cast<const PyMesh&>();
+        std::size_t index = 0;
+        while (index < seen.size() && seen[index] != &mesh) ++index;
+        if (index == seen.size()) {
+            seen.push_back(&mesh);
+            scene->keep.push_back(py::reinterpret_borrow<py::object>(mesh_object));
+            MeshView view = mesh.view;
+            view.name = mesh.name;
+            if (mesh.material) {
+                view.material = std::uint32_t(scene->materials.size());
+                scene->materials.push_back(*mesh.material);
+            }
+            scene->meshes.push_back(view);
+        }
+        InstanceView instance;
+        instance.mesh = std::uint32_t(index);
+        instance.transform = glm::mat4(transform);
+        scene->instances.push_back(instance);
+    }
+    return scene;
+}
+
+std::shared_ptr<PyScene> scene_from_owned(std::shared_ptr<const Scene> owned, std::string spec) {
+    auto scene = std::make_shared<PyScene>();
+    view_of(*owned, scene->meshes, scene->instances);
+    scene->materials = owned->materials;
+    scene->warnings = owned->warnings;
+    scene->spec = std::move(spec);
+    scene->owned = std::move(owned);
+    return scene;
+}
+
+std::shared_ptr<PyScene> load(const py::object& path_object, const std::string& isolation,
+                              bool allow_outside_references, std::size_t max_instances,
+                              std::size_t max_triangles) {
+    if (!py::isinstance<py::str>(path_object) && !py::hasattr(path_object, "__fspath__"))
+        type_error("path", "a str or os.PathLike", path_object);
+    const auto path = py::module_::import("os").attr("fspath")(path_object);
+    if (!py::isinstance<py::str>(path)) type_error("path", "a str path", path);
+    const std::string spec = path.cast<std::string>();
+    LoadOptions options;
+    if (isolation == "worker")
+        options.isolation = LoadIsolation::WorkerProcess;
+    else if (isolation == "in-process")
+        options.isolation = LoadIsolation::InProcess;
+    else
+        input_error("isolation", "expected 'worker' or 'in-process', got '" + isolation + "'");
+    if (max_instances < 1) input_error("max_instances", "must be at least 1");
+    if (max_triangles < 1) input_error("max_triangles", "must be at least 1");
+    options.allow_outside_references = allow_outside_references;
+    options.max_instances = max_instances;
+    options.max_triangles = max_triangles;
+    std::shared_ptr<const Scene> owned;
+    {
+        py::gil_scoped_release release;
+        owned = std::make_shared<const Scene>(is_procedural_spec(spec) ? make_procedural_scene(spec)
+                                                                       : load_scene(spec, options));
+    }
+    return scene_from_owned(std::move(owned), spec);
+}
+
+}  // namespace
+
+std::vector<glm::vec3> PyScene::world_positions() const {
+    if (owned) return owned->world_positions();
+    std::vector<glm::vec3> out;
+    for (const InstanceView& instance : instances) {
+        const AttributeView& p = meshes[instance.mesh].positions;
+        for (std::size_t i = 0; i < p.count; ++i) {
+            glm::vec3 v;
+            std::memcpy(&v, float_bytes(p, i, 12), 12);
+            // As Scene::world_positions: the same float operations, so the same bits.
+            const glm::vec4 q = instance.transform * glm::vec4(v, 1.0f);
+            out.push_back(glm::vec3(q) / q.w);
+        }
+    }
+    return out;
+}
+
+std::size_t PyScene::triangle_count() const {
+    std::size_t n = 0;
+    for (const InstanceView& instance : instances) n += meshes[instance.mesh].indices.count / 3;
+    return n;
+}
+
+const Scene& PyScene::owning() const {
+    if (owned) return *owned;
+    if (owning_copy_) return *owning_copy_;
+    auto scene = std::make_shared<Scene>();
+    scene->materials = materials;
+    scene->source = spec;
+    for (const MeshView& view : meshes) {
+        Mesh mesh;
+        mesh.name = std::string(view.name);
+        mesh.material = view.material;
+        mesh.positions.resize(view.positions.count);
+        for (std::size_t i = 0; i < view.positions.count; ++i)
+            std::memcpy(&mesh.positions[i], float_bytes(view.positions, i, 12), 12);
+        mesh.normals.resize(view.normals.count);
+        for (std::size_t i = 0; i < view.normals.count; ++i)
+            std::memcpy(&mesh.normals[i], float_bytes(view.normals, i, 12), 12);
+        mesh.uvs.resize(view.uvs.count);
+        for (std::size_t i = 0; i < view.uvs.count; ++i)
+            std::memcpy(&mesh.uvs[i], float_bytes(view.uvs, i, 8), 8);
+        mesh.indices.resize(view.indices.count);
+        for (std::size_t i = 0; i < view.indices.count; ++i)
+            mesh.indices[i] = view.indices.type == IndexType::UInt16
+                                  ? static_cast<const std::uint16_t*>(view.indices.data)[i]
+                                  : static_cast<const std::uint32_t*>(view.indices.data)[i];
+        update_bounds(mesh);
+        scene->meshes.push_back(std::move(mesh));
+    }
+    for (const InstanceView& view : instances) {
+        Instance instance;
+        instance.mesh = view.mesh;
+        instance.transform = view.transform;
+        instance.shading = view.shading;
+        scene->instances.push_back(instance);
+    }
+    owning_copy_ = scene;
+    return *scene;
+}
+
+std::shared_ptr<const PyScene> scene_argument(py::handle object, const char* argument) {
+    if (py::isinstance<PyScene>(object)) return object.cast<std::shared_ptr<PyScene>>();
+    if (py::isinstance<PyMesh>(object)) return scene_from_items(py::make_tuple(object));
+    type_error(argument, "a zraster.Scene or zraster.Mesh", object);
+}
+
+void bind_scene(py::module_& m) {
+    py::class_<PyScene, std::shared_ptr<PyScene>>(m, "Scene", R"(Meshes placed in the world.
+
+Scene(items): items are Meshes (placed as they are) or (Mesh, transform) pairs, transform a
+4x4 object-to-world matrix acting on column vectors (p_world = transform @ [x, y, z, 1]). A Mesh
+given more than once is one mesh drawn several times (instances). The Scene keeps the Meshes
+referenced (their arrays are not copied) and cannot be changed once made.
+
+zraster.load() returns a Scene too (its meshes owned by zraster).)")
+        .def(py::init(&scene_from_items), "items"_a)
+        .def(
+            "__len__", [](const PyScene& s) { return s.instances.size(); },
+            "The number of instances.")
+        .def_property_readonly(
+            "triangle_count", [](const PyScene& s) { return s.triangle_count(); },
+            "Triangles over all instances.")
+        .def_property_readonly(
+            "vertex_count",
+            [](const PyScene& s) {
+                std::size_t n = 0;
+                for (const InstanceView& i : s.instances) n += s.meshes[i.mesh].positions.count;
+                return n;
+            },
+            "Vertices over all instances.")
+        .def_property_readonly(
+            "bounds",
+            [](const PyScene& s) {
+                const std::vector<glm::vec3> world = s.world_positions();
+                const Bounds3f b = Bounds3f::of(world);
+                return py::make_tuple(to_numpy(glm::dvec3(b.lo)), to_numpy(glm::dvec3(b.hi)));
+            },
+            "(min, max): the world-space box of every instanced vertex, two float64 arrays of "
+            "3 (min > max when the scene is empty).")
+        .def_property_readonly(
+            "source", [](const PyScene& s) { return s.spec; },
+            "The path or procedural spec load() was given ('' for a Scene of Meshes).")
+        .def_property_readonly(
+            "warnings", [](const PyScene& s) { return s.warnings; },
+            "Problems the loader found and worked around (a missing texture, ...).")
+        .def("__repr__", [](const PyScene& s) {
+            return "<zraster.Scene" + (s.spec.empty() ? std::string() : " '" + s.spec + "'") +
+                   ": " + std::to_string(s.instances.size()) + " instances, " +
+                   std::to_string(s.triangle_count()) + " triangles>";
+        });
+
+    m.def("load", &load, "path"_a, "isolation"_a = "worker", "allow_outside_references"_a = false,
+          "max_instances"_a = LoadOptions{}.max_instances,
+          "max_triangles"_a = LoadOptions{}.max_triangles,
+          R"(Loads a scene: a mesh file or a procedural spec, as `zraster render` reads it.
+
+path: a file (OBJ with MTL, PLY, STL, glTF 2.0 .gltf/.glb, 3DS, OFF and the other formats
+  Assimp reads) or a procedural spec: builtin:default, builtin:sphere, builtin:cube, sphere:N,
+  city:N[:SEED], soup:N[:SEED].
+isolation: "worker" (the command's default: Assimp runs in a child process with memory and time
+  limits, so a file that crashes it is refused like any bad file) or "in-process" (faster for
+  many small files; a crash in Assimp ends Python). zraster's own OBJ reader always runs here.
+allow_outside_references: read a model's external files (glTF buffers, textures, material
+  libraries) outside its folder too.
+max_instances, max_triangles: larger models are refused.
+
+Raises InputError naming the file and the cause (missing, unreadable, malformed, too large).
+Warnings (a missing texture, ...) are in Scene.warnings. The GIL is released while loading.)");
+}
+
+}  // namespace zraster::python

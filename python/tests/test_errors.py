@@ -1,0 +1,214 @@
+"""Bad input raises InputError (a ValueError) or TypeError naming the argument and the cause."""
+
+import numpy as np
+import pytest
+
+import zraster
+
+TRIANGLE = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0]], dtype=np.float32)
+FACES = np.array([[0, 1, 2]], dtype=np.uint32)
+
+
+def raises(kind, *fragments):
+    """pytest.raises, checking that the message holds every fragment."""
+
+    class Check:
+        def __enter__(self):
+            self.context = pytest.raises(kind)
+            self.info = self.context.__enter__()
+            return self.info
+
+        def __exit__(self, *exc):
+            suppressed = self.context.__exit__(*exc)
+            message = str(self.info.value)
+            for fragment in fragments:
+                assert fragment in message, f"{fragment!r} not in {message!r}"
+            return suppressed
+
+    return Check()
+
+
+def test_input_error_is_a_value_error_with_its_parts():
+    assert issubclass(zraster.InputError, ValueError)
+    with raises(zraster.InputError) as info:
+        zraster.Mesh(TRIANGLE, [[0, 1, 5]])
+    assert info.value.source == "indices"
+    assert "out of range" in info.value.cause
+
+
+@pytest.mark.parametrize("positions,kind,fragments", [
+    (np.zeros((3, 2), np.float32), zraster.InputError, ("positions", "shape (N, 3)", "(3, 2)")),
+    (np.zeros(9, np.float32), zraster.InputError, ("positions", "shape", "(9,)")),
+    (np.zeros((3, 3), np.complex64), TypeError, ("positions", "complex64")),
+    (np.zeros((3, 3), bool), TypeError, ("positions", "bool")),
+    ("not an array", TypeError, ("positions", "str")),
+    (None, TypeError, ("positions", "NoneType")),
+    ([[0, 0, 0], [1, 0]], zraster.InputError, ("positions",)),
+    (np.array([[0, 0, 0], [1, np.nan, 0], [0, 1, 0]]), zraster.InputError,
+     ("positions", "row 1", "non-finite")),
+    (np.array([[0, 0, 0], [1, 0, 0], [0, np.inf, 0]], np.float32), zraster.InputError,
+     ("positions", "row 2", "non-finite")),
+])
+def test_bad_positions(positions, kind, fragments):
+    with raises(kind, *fragments):
+        zraster.Mesh(positions, FACES)
+
+
+@pytest.mark.parametrize("indices,kind,fragments", [
+    ([[0, 1, 3]], zraster.InputError, ("indices", "index 3", "out of range for 3 positions")),
+    (np.array([[0, -1, 2]], np.int32), zraster.InputError, ("indices", "index -1", "element 1")),
+    (np.array([0, 1], np.uint32), zraster.InputError, ("indices", "(3M,)", "(2,)")),
+    (np.zeros((1, 4), np.uint32), zraster.InputError, ("indices", "(M, 3)", "(1, 4)")),
+    (np.array([[0.0, 1.0, 2.0]]), TypeError, ("indices", "integer", "float64")),
+    (2.5, TypeError, ("indices",)),
+])
+def test_bad_indices(indices, kind, fragments):
+    with raises(kind, *fragments):
+        zraster.Mesh(TRIANGLE, indices)
+
+
+def test_bad_attributes_and_color():
+    with raises(zraster.InputError, "normals", "2 rows for 3 positions"):
+        zraster.Mesh(TRIANGLE, FACES, normals=np.zeros((2, 3)))
+    with raises(zraster.InputError, "uvs", "shape (N, 2)"):
+        zraster.Mesh(TRIANGLE, FACES, uvs=np.zeros((3, 3)))
+    with raises(zraster.InputError, "normals", "non-finite"):
+        zraster.Mesh(TRIANGLE, FACES, normals=np.full((3, 3), np.nan))
+    with raises(zraster.InputError, "color", "0..1"):
+        zraster.Mesh(TRIANGLE, FACES, color=(1.5, 0, 0))
+    with raises(TypeError, "color", "3 or 4 numbers"):
+        zraster.Mesh(TRIANGLE, FACES, color=(1, 0))
+
+
+def test_bad_scene_items():
+    mesh = zraster.Mesh(TRIANGLE, FACES)
+    with raises(TypeError, "items[1]", "Mesh", "int"):
+        zraster.Scene([mesh, 3])
+    with raises(zraster.InputError, "items[0] transform", "4x4", "(3, 3)"):
+        zraster.Scene([(mesh, np.eye(3))])
+    with raises(zraster.InputError, "items[0] transform", "not finite"):
+        zraster.Scene([(mesh, np.full((4, 4), np.nan))])
+    with raises(TypeError, "scene", "Scene or zraster.Mesh", "str"):
+        zraster.Renderer(8, 8).render("builtin:cube")
+
+
+@pytest.mark.parametrize("width,height,fragment", [(0, 10, "width"), (10, -3, "height"),
+                                                   (100000, 10, "width")])
+def test_bad_sizes(width, height, fragment):
+    with raises(zraster.InputError, fragment, "must be in 1..16384"):
+        zraster.Renderer(width, height)
+    with raises(zraster.InputError, fragment):
+        zraster.Camera.from_intrinsics(100, 100, 5, 5, width, height, 0.1, 10)
+
+
+def test_bad_renderer_arguments():
+    with raises(TypeError, "width", "integer", "float"):
+        zraster.Renderer(10.5, 10)
+    with raises(zraster.InputError, "threads", ">= 0"):
+        zraster.Renderer(10, 10, threads=-1)
+    with raises(zraster.InputError, "more than max_pixels 50"):
+        zraster.Renderer(10, 10, max_pixels=50)
+
+
+@pytest.mark.parametrize("arguments,fragments", [
+    ((np.nan, 100, 5, 5), ("fx", "finite")),
+    ((100, 0, 5, 5), ("fy",)),
+    ((100, 100, np.nan, 5), ("cx", "finite")),
+    ((100, 100, 5, np.inf), ("cy", "finite")),
+])
+def test_bad_intrinsics(arguments, fragments):
+    with raises(zraster.InputError, *fragments):
+        zraster.Camera.from_intrinsics(*arguments, 10, 10, 0.1, 10)
+
+
+def test_bad_cameras():
+    with raises(zraster.InputError, "near", "far"):
+        zraster.Camera.from_intrinsics(100, 100, 5, 5, 10, 10, 1.0, 0.5)
+    with raises(zraster.InputError, "pose"):
+        zraster.Camera.from_intrinsics(100, 100, 5, 5, 10, 10, 0.1, 10, pose=np.zeros((4, 4)))
+    with raises(zraster.InputError, "convention", "'opencv' or 'opengl'"):
+        zraster.Camera.from_intrinsics(100, 100, 5, 5, 10, 10, 0.1, 10, convention="ros")
+    with raises(TypeError, "fx", "number", "str"):
+        zraster.Camera.from_intrinsics("100", 100, 5, 5, 10, 10, 0.1, 10)
+    with raises(zraster.InputError, "eye", "not finite"):
+        zraster.Camera.look_at((np.nan, 0, 0), (0, 0, 0))
+    with raises(zraster.InputError, "eye and target coincide"):
+        zraster.Camera.look_at((1, 0, 0), (1, 0, 0))
+    with raises(zraster.InputError, "fovy"):
+        zraster.Camera.look_at((0, 0, 5), (0, 0, 0), fovy=0)
+    with raises(zraster.InputError, "distance", "positive"):
+        zraster.Camera.orbit(zraster.load("builtin:cube"), 0, 0, 10, 10, distance=0)
+    with raises(zraster.InputError, "intrinsics", "160x120"):
+        camera = zraster.Camera.from_intrinsics(100, 100, 5, 5, 160, 120, 0.1, 10)
+        zraster.Renderer(80, 60).render(zraster.load("builtin:cube"), camera)
+
+
+def test_bad_files():
+    with raises(zraster.InputError, "/no/such/file.obj") as info:
+        zraster.load("/no/such/file.obj")
+    assert info.value.source == "/no/such/file.obj"
+    with raises(zraster.InputError, "isolation", "'worker' or 'in-process'"):
+        zraster.load("builtin:cube", isolation="thread")
+    with raises(zraster.InputError, "sphere:x"):
+        zraster.load("sphere:x")
+    with raises(TypeError, "path", "int"):
+        zraster.load(42)
+
+
+@pytest.fixture(scope="module")
+def cube():
+    return zraster.load("builtin:cube")
+
+
+def test_bad_outputs(cube):
+    r = zraster.Renderer(16, 16)
+    with raises(zraster.InputError, "outputs", "unknown output 'colour'", "expected color"):
+        r.render(cube, outputs=("colour",))
+    with raises(zraster.InputError, "outputs", "no output"):
+        r.render(cube, outputs=())
+    with raises(TypeError, "outputs", "int"):
+        r.render(cube, outputs=3)
+
+
+@pytest.mark.parametrize("keywords,kind,fragments", [
+    ({"shadnig": "flat"}, TypeError, ("unexpected keyword argument 'shadnig'",)),
+    ({"size": "8x8"}, TypeError, ("'size'", "Renderer(width, height")),
+    ({"help": True}, TypeError, ("'help'",)),
+    ({"output": "x.png"}, TypeError, ("'output'",)),
+    ({"shading": "phon"}, zraster.InputError, ("shading", "phon")),
+    ({"cull": 3}, zraster.InputError, ("cull",)),
+    ({"light_dir": (0, 0, 0)}, zraster.InputError, ("light_dir", "non-zero")),
+    ({"light_dir": (1, 2)}, zraster.InputError, ("light_dir", "X,Y,Z")),
+    ({"eye": (np.nan, 0, 0)}, zraster.InputError, ("eye", "finite")),
+    ({"orbit": (0, 0, -1)}, zraster.InputError, ("orbit", "positive")),
+    ({"orbit": (0, 0, 2), "eye": (1, 1, 1)}, zraster.InputError, ("orbit", "eye")),
+    ({"background": (0, 0, 300)}, zraster.InputError, ("background", "0..255")),
+    ({"clip_plane": (0, 0, 0, 1)}, zraster.InputError, ("clip_plane", "zero")),
+    ({"aa": 32}, zraster.InputError, ("aa", "1..16")),
+    ({"msaa": True, "aa": 3}, zraster.InputError, ("aa", "1, 2, 4 or 8")),
+    ({"wireframe": True, "hidden_line": True}, zraster.InputError, ("wireframe", "not both")),
+    ({"visibility": "raytrace"}, zraster.InputError, ("visibility", "raytrace")),
+    ({"reversed_z": "yes"}, TypeError, ("reversed_z", "True or False", "str")),
+    ({"fovy": None}, TypeError, ("fovy",)),
+    ({"fovy": (30, 40)}, zraster.InputError, ("fovy",)),
+    ({"eye": [[1, 2], 3]}, TypeError, ("eye", "nested")),
+])
+def test_bad_render_options(cube, keywords, kind, fragments):
+    with raises(kind, *fragments):
+        zraster.Renderer(16, 16).render(cube, **keywords)
+
+
+def test_camera_and_placement_keywords_conflict(cube):
+    camera = zraster.Camera.fit(cube, 16, 16)
+    with raises(zraster.InputError, "eye", "camera= is given"):
+        zraster.Renderer(16, 16).render(cube, camera, eye=(1, 2, 3))
+    with raises(TypeError, "camera", "Camera or None", "tuple"):
+        zraster.Renderer(16, 16).render(cube, (1, 2, 3))
+
+
+def test_errors_do_not_break_the_renderer(cube):
+    r = zraster.Renderer(16, 16)
+    good = r.render(cube)["color"]
+    with raises(zraster.InputError):
+        r.render(cube, shading="nope")
+    np.testing.assert_array_equal(r.render(cube)["color"], good)

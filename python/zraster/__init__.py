@@ -1,0 +1,57 @@
+"""zraster: an exact, fast CPU rasterizer for Python.
+
+Scenes come from files or procedural specs (``load``) or from numpy arrays (``Mesh``,
+``Scene``); a ``Renderer`` draws them into numpy arrays: color, depth, normals and ids.
+
+    import zraster
+    scene = zraster.load("bunny.obj")
+    out = zraster.Renderer(640, 480).render(scene, outputs=("color", "depth"))
+    out["color"]   # (480, 640, 3) uint8, row 0 at the top
+    out["depth"]   # (480, 640) float32 window depth, 1.0 where empty
+
+The render keywords are the flags of ``zraster render`` (``help(zraster.Renderer.render)``).
+"""
+
+import os as _os
+
+from . import _zraster
+from ._zraster import (
+    RENDER_OPTIONS,
+    Camera,
+    InputError,
+    Mesh,
+    Renderer,
+    Scene,
+    __version__,
+    load,
+)
+
+__all__ = [
+    "Camera",
+    "InputError",
+    "Mesh",
+    "RENDER_OPTIONS",
+    "Renderer",
+    "Scene",
+    "__version__",
+    "load",
+    "render",
+]
+
+
+def render(scene, width=1920, height=1080, *, camera=None, outputs=("color", "depth"),
+           threads=0, isolation="worker", **options):
+    """Renders one frame: ``Renderer(width, height, threads).render(scene, camera, outputs,
+    **options)``, loading ``scene`` first when it is a path or a procedural spec (with
+    ``isolation``, as ``load``). Returns {output name: numpy array}.
+
+    For many frames keep a Renderer instead: it reuses its memory and threads. The sizes default
+    to the command's (1920x1080).
+    """
+    if isinstance(scene, (str, _os.PathLike)):
+        scene = load(scene, isolation=isolation)
+    return Renderer(width, height, threads).render(scene, camera, outputs, **options)
+
+
+render.__doc__ += ("\n    Options (the flags of `zraster render`, as for Renderer.render):\n\n"
+                   + _zraster._render_options_doc)

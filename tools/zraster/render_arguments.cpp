@@ -1,0 +1,350 @@
+// The scene, camera and pipeline flags of `zraster render` and `zraster svg`, and the
+// RenderOptions they make.
+#include "render_arguments.hpp"
+
+#include <zraster/abuffer.hpp>
+#include <zraster/depth_buffer.hpp>
+#include <zraster/scenes.hpp>
+
+#include <glm/gtx/component_wise.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "command_line.hpp"
+
+namespace zraster::cli {
+namespace {
+
+// Digits only (at most 19): CLI11 reads "-5" into an unsigned as 2^64 - 5, no limit at all.
+CLI::Validator whole_number(bool zero_allowed) {
+    return CLI::Validator(
+        [zero_allowed](const std::string& text) {
+            const bool digits = !text.empty() && text.size() <= 19 &&
+                                text.find_first_not_of("0123456789") == std::string::npos;
+            const bool ok = digits && (zero_allowed || text.find_first_not_of('0') != text.npos);
+            return ok ? std::string()
+                      : std::string(zero_allowed ? "expected a whole number"
+                                                 : "expected a positive whole number") +
+                            ", got '" + text + "'";
+        },
+        zero_allowed ? "UINT" : "POSITIVE");
+}
+
+// --eye, --target: finite, within the coordinates a camera may use.
+glm::dvec3 parse_position(const std::string& option, const std::string& text) {
+    const glm::dvec3 p = parse_vec3(option, text);
+    if (glm::compMax(glm::abs(p)) > kMaxCameraCoordinate)
+        throw InputError(option, text + " is beyond the +-1e32 a camera may use");
+    return p;
+}
+
+}  // namespace
+
+void add_frame_arguments(CLI::App& cmd, RenderArguments& a) {
+    cmd.add_option("--visibility", a.visibility,
+                   "Visible-surface algorithm: zbuffer (the pipeline), painter (Newell's "
+                   "painter's algorithm), bsp (BSP tree), warnock (area subdivision): these four "
+                   "draw every surface opaque (material opacity is ignored) and painter, bsp, "
+                   "warnock flat-shade; abuffer (Carpenter's A-buffer): shaded as zbuffer, "
+                   "antialiased, transparent materials blended in any submission order")
+        ->check(CLI::IsMember({"zbuffer", "painter", "bsp", "warnock", "abuffer"}))
+        ->capture_default_str();
+    cmd.add_option("--aa", a.aa,
+                   "Antialiasing: N x N supersampling of the z-buffer path (every sample "
+                   "shaded), or with --msaa N x N multisampling (N = 1, 2, 4, 8; one shading per "
+                   "pixel and surface), or with --visibility abuffer the A-buffer's samples per "
+                   "side (1, 2, 4, 8; default 4)")
+        ->capture_default_str();
+    cmd.add_flag("--msaa", a.msaa,
+                 "With --aa N and --visibility zbuffer: multisample (coverage and depth per "
+                 "sample, shading per pixel) instead of supersampling");
+}
+
+void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
+    cmd.add_option("scene", a.scene,
+                   "Mesh file (OBJ, PLY, STL, glTF/GLB, 3DS, OFF, ...) or builtin:default, "
+                   "builtin:sphere, builtin:cube, sphere:N, city:N[:SEED], soup:N[:SEED]")
+        ->capture_default_str();
+    cmd.add_option("--size", a.size, "Image size WIDTHxHEIGHT")->capture_default_str();
+    cmd.add_option("--max-pixels", a.max_pixels,
+                   "Refuse images of more pixels than this (width * height)")
+        ->check(whole_number(false))
+        ->capture_default_str();
+    cmd.add_option("--max-painter-comparisons", a.max_painter_comparisons,
+                   "Budget of --visibility painter (and svg --order painter): polygon-pair "
+                   "comparisons (0: 2048 per polygon + 10^7)")
+        ->check(whole_number(true))
+        ->capture_default_str();
+    cmd.add_option("--max-bsp-polygons", a.max_bsp_polygons,
+                   "Budget of --visibility bsp (and svg --order bsp): polygons after splitting "
+                   "(0: 16 per triangle + 65536, at most 2^24)")
+        ->check(whole_number(true))
+        ->capture_default_str();
+    cmd.add_option("--max-warnock-classifications", a.max_warnock_classifications,
+                   "Budget of --visibility warnock: polygon-region tests (0: 64 per polygon per "
+                   "subdivision level + 4 per pixel + 10^7)")
+        ->check(whole_number(true))
+        ->capture_default_str();
+    cmd.add_option("--max-abuffer-fragments", a.max_abuffer_fragments,
+                   "Budget of --visibility abuffer: polygon-pixel fragments (24 bytes each)")
+        ->check(whole_number(false))
+        ->capture_default_str();
+    cmd.add_option("--threads", a.threads, "Worker threads (0: all cores)")->capture_default_str();
+    cmd.add_option("--eye", a.eye, "Camera position X,Y,Z (default: frame the bounding sphere)");
+    cmd.add_option("--target", a.target, "Point looked at X,Y,Z");
+    cmd.add_option("--up", a.up, "Up vector X,Y,Z")->capture_default_str();
+    cmd.add_option("--orbit", a.orbit,
+                   "Orbit camera AZIMUTH,ELEVATION,DISTANCE (degrees, degrees, scene radii) around "
+                   "the scene center");
+    cmd.add_option("--fovy", a.fovy, "Vertical field of view in degrees");
+    cmd.add_option("--near", a.near, "Near plane distance");
+    cmd.add_option("--far", a.far, "Far plane distance");
+    cmd.add_flag("--ortho", a.ortho, "Orthographic projection (frames the bounding sphere)");
+    cmd.add_flag("--reversed-z", a.reversed_z, "Reversed-Z projection (near->1, far->0, GREATER)");
+    cmd.add_flag("--infinite-far", a.infinite_far, "Far plane at infinity");
+    cmd.add_option("--shading", a.shading, "flat|gouraud|phong|unlit")
+        ->check(CLI::IsMember({"flat", "gouraud", "phong", "unlit"}))
+        ->capture_default_str();
+    cmd.add_option("--reflection", a.reflection, "Specular model: blinn-phong|phong")
+        ->check(CLI::IsMember({"blinn-phong", "phong"}))
+        ->capture_default_str();
+    cmd.add_flag("--infinite-viewer", a.infinite_viewer,
+                 "Constant view direction for specular (default: local viewer)");
+    cmd.add_option("--light-dir", a.light_dirs,
+                   "Directional light towards the light X,Y,Z (repeatable; default "
+                   "-1/3,2/3,2/3)");
+    cmd.add_option("--point-light", a.point_lights, "Point light position X,Y,Z (repeatable)");
+    cmd.add_option("--cull", a.cull, "Face culling back|front|none")
+        ->check(CLI::IsMember({"back", "front", "none"}))
+        ->capture_default_str();
+    cmd.add_flag("--no-cull", a.no_cull, "Same as --cull none");
+    cmd.add_flag("--occlusion-cull", a.occlusion_cull,
+                 "Skip instances hidden behind the largest ones (occlusion buffer; same image)");
+    cmd.add_flag("--front-to-back", a.front_to_back,
+                 "Draw instances nearest first (hierarchical z then skips more; the image "
+                 "changes only where instances meet at exactly equal depth)");
+    cmd.add_option("--shading-strategy", a.strategy,
+                   "auto (deferred) | forward | deferred (same image)")
+        ->check(CLI::IsMember({"auto", "forward", "deferred"}))
+        ->capture_default_str();
+    cmd.add_option("--front-face", a.front_face, "Front-face winding ccw|cw")
+        ->check(CLI::IsMember({"ccw", "cw"}))
+        ->capture_default_str();
+    cmd.add_option("--depth-format", a.depth_format, "d32f|d24|d16")
+        ->check(CLI::IsMember({"d32f", "d24", "d16"}))
+        ->capture_default_str();
+    cmd.add_option("--depth-compare", a.depth_compare,
+                   "never|less|lequal|equal|notequal|gequal|greater|always (default less, "
+                   "greater with --reversed-z)")
+        ->check(CLI::IsMember(
+            {"never", "less", "lequal", "equal", "notequal", "gequal", "greater", "always"}));
+    cmd.add_flag("--no-depth-test", a.no_depth_test, "Disable the depth test");
+    cmd.add_flag("--no-depth-write", a.no_depth_write, "Do not write depth");
+    cmd.add_option("--interpolation", a.interpolation,
+                   "perspective|linear (linear = screen-space, shows affine texture warping)")
+        ->check(CLI::IsMember({"perspective", "linear"}))
+        ->capture_default_str();
+    cmd.add_option("--texture-filter", a.texture_filter, "nearest|bilinear|trilinear")
+        ->check(CLI::IsMember({"nearest", "bilinear", "trilinear"}))
+        ->capture_default_str();
+    cmd.add_flag("--no-textures", a.no_textures, "Ignore textures");
+    cmd.add_option("--clip-plane", a.clip_planes,
+                   "User clip plane A,B,C,D in world space, keeps Ax+By+Cz+D >= 0 (repeatable)");
+    cmd.add_option("--background", a.background, "Background color R,G,B (0-255)")
+        ->capture_default_str();
+    cmd.add_flag("--wireframe", a.wireframe,
+                 "Draw every triangle edge (Bresenham lines) instead of the surfaces");
+    cmd.add_flag("--hidden-line", a.hidden_line,
+                 "Draw the visible triangle edges over the shaded surfaces");
+    cmd.add_option("--edge-color", a.edge_color, "Edge color R,G,B (0-255)")->capture_default_str();
+}
+
+namespace {
+
+// Places the camera as the flags say, starting from `camera` (the scene's default framing).
+Camera place_camera(const RenderArguments& a, Camera camera, const BoundingSphere& sphere) {
+    const double radius = sphere.radius > 0.0 ? sphere.radius : 1.0;
+    if (!a.orbit.empty() && (!a.eye.empty() || !a.target.empty()))
+        throw InputError("--orbit", std::string("and ") + (a.eye.empty() ? "--target" : "--eye") +
+                                        " both place the camera: give one or the other");
+    if (!a.orbit.empty()) {
+        const glm::dvec3 o = parse_vec3("--orbit", a.orbit);
+        if (!(o.z > 0.0)) throw InputError("--orbit", "distance must be positive");
+        const double distance = o.z * radius;
+        camera = orbit_camera(sphere.center, distance, o.x, o.y, camera.fovy_degrees);
+        camera.near = std::max(distance - 1.01 * radius, distance * 1e-3);
+        camera.far = distance + 1.01 * radius;
+    }
+    if (!a.eye.empty()) camera.eye = parse_position("--eye", a.eye);
+    if (!a.target.empty()) camera.target = parse_position("--target", a.target);
+    camera.up = parse_vec3("--up", a.up);
+    if (!a.eye.empty() || !a.target.empty()) {
+        // Near/far from the bounding sphere as seen from the new eye, unless given.
+        const double d = glm::length(sphere.center - camera.eye);
+        camera.near = std::max(d - 1.01 * radius, std::max(d + 1.01 * radius, 1e-6) * 1e-4);
+        camera.far = d + 1.01 * radius;
+    }
+    if (a.fovy) camera.fovy_degrees = *a.fovy;
+    if (a.ortho) {
+        camera.projection = Camera::Projection::Orthographic;
+        camera.ortho_height = 2.0 * radius;
+    }
+    return camera;
+}
+
+}  // namespace
+
+Camera default_camera(const std::string& spec, std::span<const glm::vec3> world_positions) {
+    if (auto builtin = builtin_camera(spec)) return *builtin;
+    return fit_camera(world_positions);
+}
+
+RenderOptions make_render_options(const RenderArguments& a, const Scene& scene) {
+    const std::vector<glm::vec3> world = scene.world_positions();
+    try {
+        return make_render_options(a, world, std::nullopt);
+    } catch (const InputError& e) {
+        if (!e.file().empty()) throw;
+        throw InputError(scene.source, e.cause());  // (the camera fit: about the scene)
+    }
+}
+
+RenderOptions make_render_options(const RenderArguments& a,
+                                  std::span<const glm::vec3> world_positions,
+                                  const std::optional<Camera>& camera) {
+    RenderOptions o;
+    const glm::ivec2 size = parse_size("--size", a.size, kMaxViewport);
+    const std::uint64_t pixels = std::uint64_t(size.x) * std::uint64_t(size.y);
+    if (pixels > a.max_pixels)
+        throw InputError("--size", a.size + " is " + std::to_string(pixels) +
+                                       " pixels, more than --max-pixels " +
+                                       std::to_string(a.max_pixels));
+    o.width = size.x;
+    o.height = size.y;
+    o.limits.max_pixels = a.max_pixels;
+    o.limits.max_painter_comparisons = a.max_painter_comparisons;
+    o.limits.max_bsp_polygons = a.max_bsp_polygons;
+    o.limits.max_warnock_classifications = a.max_warnock_classifications;
+    o.threads = checked_thread_count("--threads", a.threads);
+    if (camera) {
+        o.camera = *camera;
+    } else {
+        o.camera = place_camera(a, default_camera(a.scene, world_positions),
+                                bounding_sphere(world_positions));
+    }
+    if (a.near) o.camera->near = *a.near;
+    if (a.far) o.camera->far = *a.far;
+    // A given camera keeps its own depth conventions unless the flags add to them.
+    if (!camera || a.reversed_z) o.camera->reversed_z = a.reversed_z;
+    if (!camera || a.infinite_far) o.camera->infinite_far = a.infinite_far;
+    const std::map<std::string, ShadingMode> shading{{"flat", ShadingMode::Flat},
+                                                     {"gouraud", ShadingMode::Gouraud},
+                                                     {"phong", ShadingMode::Phong},
+                                                     {"unlit", ShadingMode::Unlit}};
+    o.shading = shading.at(a.shading);
+    o.lighting.reflection =
+        a.reflection == "phong" ? ReflectionModel::Phong : ReflectionModel::BlinnPhong;
+    o.lighting.local_viewer = !a.infinite_viewer;
+    if (!a.light_dirs.empty() || !a.point_lights.empty()) o.lighting.lights.clear();
+    for (const std::string& text : a.light_dirs) {
+        Light light;
+        const glm::dvec3 d = parse_vec3("--light-dir", text);
+        if (glm::length(d) == 0.0) throw InputError("--light-dir", "direction must be non-zero");
+        light.direction = glm::vec3(glm::normalize(d));
+        o.lighting.lights.push_back(light);
+    }
+    for (const std::string& text : a.point_lights) {
+        Light light;
+        light.type = Light::Type::Point;
+        light.position = glm::vec3(parse_vec3("--point-light", text));
+        o.lighting.lights.push_back(light);
+    }
+    o.cull = a.no_cull || a.cull == "none" ? CullMode::None
+             : a.cull == "front"           ? CullMode::Front
+                                           : CullMode::Back;
+    o.front_face = a.front_face == "cw" ? FrontFace::Clockwise : FrontFace::CounterClockwise;
+    o.occlusion_cull = a.occlusion_cull;
+    if (a.front_to_back) o.instance_order = InstanceOrder::FrontToBack;
+    o.strategy = shading_strategy(a.strategy);
+    parse_depth_format(a.depth_format, o.depth_format);
+    if (!a.depth_compare.empty()) {
+        CompareFunc f{};
+        parse_compare_func(a.depth_compare, f);
+        o.depth_compare = f;
+    }
+    o.depth_test = !a.no_depth_test;
+    o.depth_write = !a.no_depth_write;
+    o.interpolation = a.interpolation == "linear" ? Interpolation::ScreenLinear
+                                                  : Interpolation::PerspectiveCorrect;
+    o.texture_filter = a.texture_filter == "nearest"    ? TextureFilter::Nearest
+                       : a.texture_filter == "bilinear" ? TextureFilter::Bilinear
+                                                        : TextureFilter::Trilinear;
+    o.textures = !a.no_textures;
+    for (const std::string& text : a.clip_planes) {
+        const glm::dvec4 plane = parse_vec4("--clip-plane", text);
+        if (glm::dvec3(plane) == glm::dvec3(0.0))
+            throw InputError("--clip-plane", "the normal A,B,C of '" + text +
+                                                 "' is zero: the plane keeps everything or "
+                                                 "nothing");
+        o.clip_planes.push_back(glm::vec4(plane));
+    }
+    const glm::dvec3 bg = parse_vec3("--background", a.background);
+    if (glm::any(glm::lessThan(bg, glm::dvec3(0.0))) ||
+        glm::any(glm::greaterThan(bg, glm::dvec3(255.0))))
+        throw InputError("--background", "components must be in 0..255");
+    o.background = glm::vec3(bg / 255.0);
+    if (a.wireframe && a.hidden_line)
+        throw InputError("--wireframe", "choose --wireframe or --hidden-line, not both");
+    o.edges = a.wireframe     ? RenderOptions::Edges::Wireframe
+              : a.hidden_line ? RenderOptions::Edges::HiddenLine
+                              : RenderOptions::Edges::None;
+    const glm::dvec3 ec = parse_vec3("--edge-color", a.edge_color);
+    if (glm::any(glm::lessThan(ec, glm::dvec3(0.0))) ||
+        glm::any(glm::greaterThan(ec, glm::dvec3(255.0))))
+        throw InputError("--edge-color", "components must be in 0..255");
+    o.edge_color = glm::vec3(ec / 255.0);
+    return o;
+}
+
+void check_frame_arguments(const RenderArguments& a) {
+    if (a.aa < 1 || a.aa > 16) throw InputError("--aa", "must be in 1..16");
+    if (a.msaa && a.visibility != "zbuffer")
+        throw InputError("--msaa", "works with --visibility zbuffer");
+    if ((a.wireframe || a.hidden_line) && (a.visibility != "zbuffer" || a.msaa))
+        throw InputError(a.wireframe ? "--wireframe" : "--hidden-line",
+                         "works with --visibility zbuffer, without --msaa");
+    if (a.msaa && a.aa != 1 && a.aa != 2 && a.aa != 4 && a.aa != 8)
+        throw InputError("--aa", "with --msaa must be 1, 2, 4 or 8");
+    if (a.aa > 1 && a.visibility != "zbuffer" && a.visibility != "abuffer")
+        throw InputError("--aa", "works with --visibility zbuffer or abuffer");
+}
+
+bool renders_with_pipeline(const RenderArguments& a) {
+    return a.visibility == "zbuffer" && a.aa == 1 && !a.msaa;
+}
+
+RenderResult render_frame(const RenderArguments& a, const Scene& scene,
+                          const RenderOptions& options, VisibilityStats* visibility_stats,
+                          ABufferStats* abuffer_stats) {
+    check_frame_arguments(a);
+    if (a.visibility == "abuffer") {
+        ABufferOptions abuffer;
+        abuffer.samples_per_side = a.aa == 1 ? 4 : a.aa;
+        abuffer.max_fragments = a.max_abuffer_fragments;
+        return render_abuffer(scene, options, abuffer, abuffer_stats);
+    }
+    if (a.visibility == "zbuffer") {
+        return a.msaa     ? render_multisampled(scene, options, a.aa)
+               : a.aa > 1 ? render_supersampled(scene, options, a.aa)
+                          : render(scene, options);
+    }
+    return render_with_visibility(scene, options,
+                                  a.visibility == "painter" ? VisibilityAlgorithm::Painter
+                                  : a.visibility == "bsp"   ? VisibilityAlgorithm::Bsp
+                                                            : VisibilityAlgorithm::Warnock,
+                                  visibility_stats);
+}
+
+}  // namespace zraster::cli
