@@ -72,25 +72,6 @@ void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
                    "Refuse images of more pixels than this (width * height)")
         ->check(whole_number(false))
         ->capture_default_str();
-    cmd.add_option("--max-painter-comparisons", a.max_painter_comparisons,
-                   "Budget of --visibility painter (and svg --order painter): polygon-pair "
-                   "comparisons (0: 2048 per polygon + 10^7)")
-        ->check(whole_number(true))
-        ->capture_default_str();
-    cmd.add_option("--max-bsp-polygons", a.max_bsp_polygons,
-                   "Budget of --visibility bsp (and svg --order bsp): polygons after splitting "
-                   "(0: 16 per triangle + 65536, at most 2^24)")
-        ->check(whole_number(true))
-        ->capture_default_str();
-    cmd.add_option("--max-warnock-classifications", a.max_warnock_classifications,
-                   "Budget of --visibility warnock: polygon-region tests (0: 64 per polygon per "
-                   "subdivision level + 4 per pixel + 10^7)")
-        ->check(whole_number(true))
-        ->capture_default_str();
-    cmd.add_option("--max-abuffer-fragments", a.max_abuffer_fragments,
-                   "Budget of --visibility abuffer: polygon-pixel fragments (24 bytes each)")
-        ->check(whole_number(false))
-        ->capture_default_str();
     cmd.add_option("--threads", a.threads, "Worker threads (0: all cores)")->capture_default_str();
     cmd.add_option("--eye", a.eye, "Camera position X,Y,Z (default: frame the bounding sphere)");
     cmd.add_option("--target", a.target, "Point looked at X,Y,Z");
@@ -159,6 +140,25 @@ void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
     cmd.add_flag("--hidden-line", a.hidden_line,
                  "Draw the visible triangle edges over the shaded surfaces");
     cmd.add_option("--edge-color", a.edge_color, "Edge color R,G,B (0-255)")->capture_default_str();
+    cmd.add_option("--max-painter-comparisons", a.max_painter_comparisons,
+                   "Budget of --visibility painter (and svg --order painter): polygon-pair "
+                   "comparisons (0: 2048 per polygon + 10^7)")
+        ->check(whole_number(true))
+        ->capture_default_str();
+    cmd.add_option("--max-bsp-polygons", a.max_bsp_polygons,
+                   "Budget of --visibility bsp (and svg --order bsp): polygons after splitting "
+                   "(0: 16 per triangle + 65536, at most 2^24)")
+        ->check(whole_number(true))
+        ->capture_default_str();
+    cmd.add_option("--max-warnock-classifications", a.max_warnock_classifications,
+                   "Budget of --visibility warnock: polygon-region tests (0: 64 per polygon per "
+                   "subdivision level + 4 per pixel + 10^7)")
+        ->check(whole_number(true))
+        ->capture_default_str();
+    cmd.add_option("--max-abuffer-fragments", a.max_abuffer_fragments,
+                   "Budget of --visibility abuffer: polygon-pixel fragments (24 bytes each)")
+        ->check(whole_number(false))
+        ->capture_default_str();
 }
 
 namespace {
