@@ -58,6 +58,13 @@ buffer_gltf ../secret.bin >model/outside.gltf
 ln -s ../secret.bin model/link.bin
 buffer_gltf link.bin >model/symlink.gltf
 mkfifo model/fifo.bin
+# 400 random triangles as big as the scene (they split without end) and one at 3e38.
+awk 'BEGIN { srand(7); print "ply\nformat ascii 1.0\nelement vertex 1200\nproperty float x";
+             print "property float y\nproperty float z\nelement face 400";
+             print "property list uchar int vertex_indices\nend_header";
+             for (i = 0; i < 1200; ++i) print 2 * rand() - 1, 2 * rand() - 1, 2 * rand() - 1;
+             for (i = 0; i < 400; ++i) print 3, 3 * i, 3 * i + 1, 3 * i + 2 }' >soup.ply
+printf "${ply_head}element face 1\nproperty list uchar int vertex_indices\nend_header\n3e38 0 0\n0 3e38 0\n0 0 3e38\n3 0 1 2\n" >far.ply
 buffer_gltf fifo.bin >model/fifo.gltf
 printf 'mtllib ../outside.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' >model/outside-mtl.obj
 printf 'newmtl m\nKd 1 0 0\n' >outside.mtl
@@ -170,6 +177,16 @@ row "two outputs naming one file" render builtin:cube --size 8x8 -o out.png --de
 row "output name over the file system's limit" render builtin:cube --size 8x8 -o out.png --depth-out "$(printf 'n%.0s' $(seq 300)).npy"
 row "clip plane with a zero normal" render builtin:cube --clip-plane 0,0,0,-1 -o out.png
 row "--orbit together with --eye" render builtin:cube --orbit 30,20,3 --eye 1,2,3 -o out.png
+row "BSP tree of 400 random intersecting triangles" render soup.ply --no-cull --visibility bsp -o out.png
+row "painter's algorithm past --max-painter-comparisons" render soup.ply --no-cull --visibility painter --max-painter-comparisons 10000 -o out.png
+row "Warnock past --max-warnock-classifications" render soup.ply --visibility warnock --max-warnock-classifications 5000 -o out.png
+row "A-buffer past --max-abuffer-fragments" render soup.ply --visibility abuffer --max-abuffer-fragments 100 -o out.png
+row "svg of 400 random intersecting triangles (BSP order)" svg soup.ply --no-cull -o out.svg
+row "budget not a whole number" render soup.ply --visibility bsp --max-bsp-polygons 1e9 -o out.png
+row "triangle at 3e38 (beyond a camera's range)" render far.ply -o out.png
+row "eye at 1e39" render builtin:cube --eye 1e39,0,0 -o out.png
+row "thread count 2^31 - 1 (clamped with a warning: renders)" render builtin:cube --size 8x8 --threads 2147483647 -o out.png
+rm -f out.png
 echo
 echo "$n inputs; $failures broke the contract (exit 2, one line, nothing left)."
 [ "$failures" -eq 0 ]

@@ -3,6 +3,7 @@
 #include <zraster/version.hpp>
 
 #include "binding.hpp"
+#include "depth_outputs.hpp"
 
 PYBIND11_MODULE(_zraster, m) {
     using namespace zraster::python;
@@ -15,4 +16,5 @@ PYBIND11_MODULE(_zraster, m) {
     bind_scene(m);
     bind_camera(m);
     bind_renderer(m);
+    bind_depth_camera(m);
 }

@@ -10,6 +10,7 @@
 #include "arrays.hpp"
 #include "binding.hpp"
 #include "command_line.hpp"
+#include "depth_outputs.hpp"
 #include "errors.hpp"
 #include "options.hpp"
 
@@ -18,9 +19,9 @@ namespace {
 
 using namespace pybind11::literals;
 
-enum Output { kColor, kRgba, kDepth, kNormal, kInstanceId, kPrimitiveId, kOutputCount };
-constexpr const char* kOutputNames[kOutputCount] = {"color",  "rgba",        "depth",
-                                                    "normal", "instance_id", "primitive_id"};
+enum Output { kColor, kRgba, kDepth, kZ, kRange, kNormal, kInstanceId, kPrimitiveId, kOutputCount };
+constexpr const char* kOutputNames[kOutputCount] = {
+    "color", "rgba", "depth", "z", "range", "normal", "instance_id", "primitive_id"};
 
 // One Renderer is one zraster::Renderer, which draws one frame at a time: concurrent calls from
 // several Python threads wait for each other on `mutex` (with the GIL released).
@@ -72,8 +73,8 @@ std::array<bool, kOutputCount> wanted_outputs(py::handle outputs, std::vector<Ou
                 return;
             }
         input_error("outputs", "unknown output '" + name +
-                                   "' (expected color, rgba, depth, normal, instance_id or "
-                                   "primitive_id)");
+                                   "' (expected color, rgba, depth, z, range, normal, "
+                                   "instance_id or primitive_id)");
     };
     if (py::isinstance<py::str>(outputs))
         add(outputs);
@@ -130,10 +131,16 @@ py::dict stats_dict(const RenderStats& s) {
 }
 
 py::dict render(PyRenderer& r, const py::object& scene_object, const py::object& camera_object,
-                const py::object& outputs, const py::kwargs& keywords) {
+                const py::object& outputs, const py::object& sensor_object,
+                const py::kwargs& keywords) {
     const std::shared_ptr<const PyScene> scene = scene_argument(scene_object, "scene");
     std::vector<Output> order;
     const std::array<bool, kOutputCount> wanted = wanted_outputs(outputs, order);
+    DepthCameraImages depth_camera;
+    depth_camera.sensor = sensor_argument(sensor_object);
+    const bool metric = wanted[kZ] || wanted[kRange];
+    if (depth_camera.sensor && !metric)
+        input_error("sensor", "measures the 'z' and 'range' outputs: ask for one of them");
     RenderKeywords parsed =
         parse_render_keywords(keywords, r.width, r.height, r.threads, r.max_pixels);
     cli::RenderArguments& a = parsed.arguments;
@@ -185,6 +192,34 @@ py::dict render(PyRenderer& r, const py::object& scene_object, const py::object&
         arrays[kPrimitiveId] = image<std::int32_t>(h, w, 1);
         targets.primitive_id = static_cast<std::int32_t*>(arrays[kPrimitiveId].mutable_data());
     }
+    // z and range come from the frame's depths (and, through a sensor, its normals): rendered
+    // into scratch images when they are not outputs themselves.
+    const std::size_t pixels = std::size_t(w) * std::size_t(h);
+    std::vector<float> depth_scratch, z_scratch;
+    std::vector<glm::vec3> normal_scratch;
+    if (metric) {
+        if (!targets.depth) {
+            depth_scratch.resize(pixels);
+            targets.depth = depth_scratch.data();
+        }
+        if (depth_camera.sensor && !targets.normal) {
+            normal_scratch.resize(pixels);
+            targets.normal = normal_scratch.data();
+        }
+        if (wanted[kZ]) {
+            arrays[kZ] = image<float>(h, w, 1);
+            depth_camera.z = static_cast<float*>(arrays[kZ].mutable_data());
+        } else {
+            z_scratch.resize(pixels);
+            depth_camera.z = z_scratch.data();
+        }
+        if (wanted[kRange]) {
+            arrays[kRange] = image<float>(h, w, 1);
+            depth_camera.range = static_cast<float*>(arrays[kRange].mutable_data());
+        }
+        depth_camera.depth = targets.depth;
+        depth_camera.normal = targets.normal;
+    }
 
     const bool pipeline = cli::renders_with_pipeline(a);
     // Other algorithms draw owning scenes into their own targets, copied into the arrays.
@@ -210,6 +245,7 @@ py::dict render(PyRenderer& r, const py::object& scene_object, const py::object&
                 copy_target(t.primitive_id, targets.primitive_id, n, "primitive_id", a.visibility);
             r.stats = result.stats;
         }
+        if (metric) depth_camera_images(depth_camera, scene->view(), options, r.stats.camera);
         r.rendered = true;
     } catch (const InputError& e) {
         throw InputError(keyword_name(e.file()), with_keyword_names(e.cause()));
@@ -233,9 +269,17 @@ outputs: the output names wanted, in the order of the returned dict:
   rgba          (H, W, 4)   uint8    RGBA (alpha 255)
   depth         (H, W)      float32  window depth as `--depth-out F.npy` writes it: 0..1, the
                                      clear value (1.0, or 0.0 with reversed_z) where empty
+  z             (H, W)      float32  metric depth along the optical axis in scene units, 0 where
+                                     empty (the depth-camera convention; `--z-out F.npy`)
+  range         (H, W)      float32  distance from the eye to the surface, 0 where empty
+                                     (`--range-out`)
   normal        (H, W, 3)   float32  world-space unit shading normal, zeros where empty
   instance_id   (H, W)      int32    index of the instance drawn there, -1 where empty
   primitive_id  (H, W)      int32    triangle index within that instance's mesh, -1 where empty
+
+sensor: None or "ideal" (exact depth), "kinect" or a zraster.StructuredLightSensor: z and range
+  as a structured-light sensor measures them (0 where it measures nothing); the other outputs
+  are the ideal frame's. zraster.unproject(out["z"], camera) gives the point cloud.
 
 The arrays are allocated for this call and the renderer writes into them: nothing is copied
 afterwards (`color` is a view of the RGBA image, `color` and `rgba` share memory). Frames the
@@ -267,7 +311,8 @@ one Renderer are serialized.)")
         .def(py::init(&make_renderer), "width"_a, "height"_a, "threads"_a = 0,
              "max_pixels"_a = py::none())
         .def("render", &render, "scene"_a, "camera"_a = py::none(),
-             "outputs"_a = py::make_tuple("color", "depth"), render_doc.c_str())
+             "outputs"_a = py::make_tuple("color", "depth"), "sensor"_a = py::none(),
+             render_doc.c_str())
         .def_property_readonly("width", [](const PyRenderer& r) { return r.width; })
         .def_property_readonly("height", [](const PyRenderer& r) { return r.height; })
         .def_property_readonly("threads", [](const PyRenderer& r) { return r.threads; })

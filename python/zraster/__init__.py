@@ -9,6 +9,10 @@ Scenes come from files or procedural specs (``load``) or from numpy arrays (``Me
     out["color"]   # (480, 640, 3) uint8, row 0 at the top
     out["depth"]   # (480, 640) float32 window depth, 1.0 where empty
 
+A depth camera: ``outputs=("z", "range")`` give metric depth and distance (0 where empty),
+``sensor="kinect"`` measures them as a structured-light sensor would, and
+``unproject(out["z"], camera)`` turns z into a point cloud.
+
 The render keywords are the flags of ``zraster render`` (``help(zraster.Renderer.render)``).
 """
 
@@ -22,8 +26,10 @@ from ._zraster import (
     Mesh,
     Renderer,
     Scene,
+    StructuredLightSensor,
     __version__,
     load,
+    unproject,
 )
 
 __all__ = [
@@ -33,16 +39,18 @@ __all__ = [
     "RENDER_OPTIONS",
     "Renderer",
     "Scene",
+    "StructuredLightSensor",
     "__version__",
     "load",
     "render",
+    "unproject",
 ]
 
 
 def render(scene, width=1920, height=1080, *, camera=None, outputs=("color", "depth"),
-           threads=0, isolation="worker", **options):
+           sensor=None, threads=0, isolation="worker", **options):
     """Renders one frame: ``Renderer(width, height, threads).render(scene, camera, outputs,
-    **options)``, loading ``scene`` first when it is a path or a procedural spec (with
+    sensor, **options)``, loading ``scene`` first when it is a path or a procedural spec (with
     ``isolation``, as ``load``). Returns {output name: numpy array}.
 
     For many frames keep a Renderer instead: it reuses its memory and threads. The sizes default
@@ -50,7 +58,7 @@ def render(scene, width=1920, height=1080, *, camera=None, outputs=("color", "de
     """
     if isinstance(scene, (str, _os.PathLike)):
         scene = load(scene, isolation=isolation)
-    return Renderer(width, height, threads).render(scene, camera, outputs, **options)
+    return Renderer(width, height, threads).render(scene, camera, outputs, sensor, **options)
 
 
 render.__doc__ += ("\n    Options (the flags of `zraster render`, as for Renderer.render):\n\n"

@@ -11,7 +11,9 @@ RENDER_OPTIONS: tuple[str, ...]
 ArrayLike = npt.ArrayLike
 Vec3 = Union[str, Sequence[float], npt.NDArray[np.floating]]
 Vec4 = Union[str, Sequence[float], npt.NDArray[np.floating]]
-OutputName = Literal["color", "rgba", "depth", "normal", "instance_id", "primitive_id"]
+OutputName = Literal[
+    "color", "rgba", "depth", "z", "range", "normal", "instance_id", "primitive_id"
+]
 
 class InputError(ValueError):
     source: str
@@ -144,6 +146,36 @@ class Camera:
     ) -> dict[str, float]: ...
     def camera_to_world(self, convention: Literal["opencv", "opengl"] = "opencv") -> npt.NDArray[np.float64]: ...
 
+class StructuredLightSensor:
+    def __init__(
+        self,
+        baseline: float = 0.075,
+        disparity_step: float = 0.125,
+        min_range: float = 0.5,
+        max_range: float = 4.5,
+        max_incidence: float = 75.0,
+        noise: float = 0.0,
+        seed: int = 0,
+    ) -> None: ...
+    @property
+    def baseline(self) -> float: ...
+    @property
+    def disparity_step(self) -> float: ...
+    @property
+    def min_range(self) -> float: ...
+    @property
+    def max_range(self) -> float: ...
+    @property
+    def max_incidence(self) -> float: ...
+    @property
+    def noise(self) -> float: ...
+    @property
+    def seed(self) -> int: ...
+
+Sensor = Union[None, Literal["ideal", "kinect"], StructuredLightSensor]
+
+def unproject(z: npt.NDArray[np.floating], camera: Camera) -> npt.NDArray[np.float32]: ...
+
 class Renderer:
     def __init__(self, width: int, height: int, threads: int = 0, max_pixels: int | None = None) -> None: ...
     @property
@@ -160,6 +192,7 @@ class Renderer:
         scene: Scene | Mesh,
         camera: Camera | None = None,
         outputs: OutputName | Sequence[OutputName] = ("color", "depth"),
+        sensor: Sensor = None,
         *,
         eye: Vec3 = ...,
         target: Vec3 = ...,
@@ -210,6 +243,7 @@ def render(
     *,
     camera: Camera | None = None,
     outputs: OutputName | Sequence[OutputName] = ("color", "depth"),
+    sensor: Sensor = None,
     threads: int = 0,
     isolation: Literal["worker", "in-process"] = "worker",
     **options: object,
