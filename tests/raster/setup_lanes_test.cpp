@@ -192,13 +192,16 @@ TEST(SetupLanes, EveryLaneIsSetupTriangleBitForBit) {
         }
         hwy::SetSupportedTargetsForTest(0);
     }
-    // Every branch was taken, on every target.
-    EXPECT_GT(in_lanes, 10000u);
-    EXPECT_GT(left_to_scalar, 100u);
-    EXPECT_GT(snapped_planes, 20u);
-    EXPECT_GT(rejected, 1000u);
-    EXPECT_GT(single_jobs, 3000u);
-    EXPECT_GT(not_single, 1000u);
+    // Every branch was taken, on every target. (Counted over the targets, so per target: the
+    // sanitizer builds and machines without AVX-512 run fewer; two of them took 1,051 single
+    // jobs each.)
+    const std::size_t targets = hwy::SupportedAndGeneratedTargets().size();
+    EXPECT_GT(in_lanes, 2500u * targets);
+    EXPECT_GT(left_to_scalar, 25u * targets);
+    EXPECT_GT(snapped_planes, 5u * targets);
+    EXPECT_GT(rejected, 250u * targets);
+    EXPECT_GT(single_jobs, 750u * targets);
+    EXPECT_GT(not_single, 250u * targets);
 }
 
 }  // namespace
