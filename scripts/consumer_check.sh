@@ -144,7 +144,8 @@ CMAKE
             soname=$(objdump -p "$core" | awk '/SONAME/ {print $2}')
             echo "consumer check: shared: $(basename "$core") (SONAME $soname), $api API functions exported, $leaked internal"
         fi
-        ldd "$consumer/build/render_from_memory" | grep -q 'libzraster_core.so' ||
+        libraries=$(ldd "$consumer/build/render_from_memory")
+        grep -q 'libzraster_core.so' <<<"$libraries" ||
             fail "render_from_memory is not linked to the shared libzraster_core"
         run_examples "$consumer/build" "add_subdirectory, shared"
     fi

@@ -101,7 +101,10 @@ if [ "$which" = tsan ] || [ "$which" = all ]; then
             tsan_status=1
     done
     # The tests must have run against the instrumented oneTBB, not the system's.
-    if ! LD_LIBRARY_PATH=$tbb/lib ldd "$dir/zraster_render_tests" | grep -q "$tbb/lib/libtbb"; then
+    # (ldd's output captured first: `ldd | grep -q` under pipefail fails when grep exits before
+    # ldd has written everything.)
+    libraries=$(LD_LIBRARY_PATH=$tbb/lib ldd "$dir/zraster_render_tests")
+    if ! grep -q "$tbb/lib/libtbb" <<<"$libraries"; then
         echo "tsan: the tests do not load $tbb/lib/libtbb.so.12"
         tsan_status=1
     fi
