@@ -147,11 +147,24 @@ inline LoadIsolation fuzz_load_isolation() {
 }
 
 // A scene that loaded (or decoded) must render: 24x16, one thread, a color target of that size.
+// With the default camera, unless a finite coordinate lies beyond what a camera can frame
+// (kMaxCoordinate, camera.hpp: the default camera refuses to fit it); then with a fixed camera,
+// which the pipeline must take whatever the coordinates.
 inline void check_renders(const Scene& scene, const std::string& what) {
     RenderOptions render_options;
     render_options.width = 24;
     render_options.height = 16;
     render_options.threads = 1;
+    for (const glm::vec3& p : scene.world_positions())
+        for (int k = 0; k < 3; ++k)
+            if (std::isfinite(p[k]) && std::abs(double(p[k])) > kMaxCoordinate) {
+                Camera fixed;
+                fixed.eye = {0.0, 0.0, 5.0};
+                fixed.target = {0.0, 0.0, 0.0};
+                fixed.near = 0.1;
+                fixed.far = 100.0;
+                render_options.camera = fixed;
+            }
     try {
         const RenderResult result = render(scene, render_options);
         if (result.targets.color.size() != 24u * 16u * 4u) fail("color target size");
