@@ -21,30 +21,11 @@
 #include <vector>
 
 #include "command_line.hpp"
+#include "output_maps.hpp"
 
 namespace zraster::cli {
 
 namespace {
-
-std::string lower_extension(const std::string& path) {
-    std::string e = std::filesystem::path(path).extension().string();
-    for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return e;
-}
-
-void check_output(OutputFiles& outputs, const std::string& path,
-                  std::initializer_list<const char*> extensions, const char* option) {
-    if (path.empty()) return;
-    const std::string ext = lower_extension(path);
-    std::string names;
-    bool ok = false;
-    for (const char* e : extensions) {
-        ok |= ext == e;
-        names += names.empty() ? e : std::string(" or ") + e;
-    }
-    if (!ok) throw InputError(option, "'" + path + "' must end in " + names);
-    outputs.check(path, option);
-}
 
 bool wants_depth(const DepthCameraArguments& a) {
     return !a.z_out.empty() || !a.range_out.empty() || !a.points_out.empty();

@@ -8,13 +8,27 @@
 #include <filesystem>
 
 namespace zraster::cli {
-namespace {
 
-std::string extension(const std::string& path) {
+std::string lower_extension(const std::string& path) {
     std::string e = std::filesystem::path(path).extension().string();
     std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return std::tolower(c); });
     return e;
 }
+
+void check_output(OutputFiles& outputs, const std::string& path,
+                  std::initializer_list<const char*> extensions, const char* option) {
+    if (path.empty()) return;
+    bool ok = false;
+    std::string names;
+    for (const char* e : extensions) {
+        ok |= lower_extension(path) == e;
+        names += names.empty() ? e : std::string(" or ") + e;
+    }
+    if (!ok) throw InputError(option, "'" + path + "' must end in " + names);
+    outputs.check(path, option);
+}
+
+namespace {
 
 std::uint8_t unorm8(float v) {
     return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
@@ -23,7 +37,7 @@ std::uint8_t unorm8(float v) {
 }  // namespace
 
 std::vector<std::uint8_t> encode_depth_map(const std::string& path, const RenderTargets& t) {
-    const std::string ext = extension(path);
+    const std::string ext = lower_extension(path);
     if (ext == ".npy") return encode_npy(t.width, t.height, std::span<const float>(t.depth));
     if (ext != ".png") throw InputError(path, "depth output must end in .npy or .png");
     std::vector<std::uint16_t> gray(t.depth.size());
@@ -34,7 +48,7 @@ std::vector<std::uint8_t> encode_depth_map(const std::string& path, const Render
 }
 
 std::vector<std::uint8_t> encode_normal_map(const std::string& path, const RenderTargets& t) {
-    if (extension(path) != ".png") throw InputError(path, "normal output must end in .png");
+    if (lower_extension(path) != ".png") throw InputError(path, "normal output must end in .png");
     std::vector<std::uint8_t> rgb(t.normal.size() * 3);
     for (std::size_t i = 0; i < t.normal.size(); ++i) {
         const glm::vec3 n = t.normal[i];
@@ -47,7 +61,7 @@ std::vector<std::uint8_t> encode_normal_map(const std::string& path, const Rende
 
 std::vector<std::uint8_t> encode_id_map(const std::string& path, const RenderTargets& t,
                                         const std::vector<std::int64_t>& instance_first_triangle) {
-    const std::string ext = extension(path);
+    const std::string ext = lower_extension(path);
     if (ext != ".npy" && ext != ".png")
         throw InputError(path, "id output must end in .npy or .png");
     std::vector<std::int32_t> ids(t.primitive_id.size(), -1);

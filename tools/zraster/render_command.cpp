@@ -38,34 +38,6 @@ void add_render_command(CLI::App& app, RenderArguments& a) {
     add_depth_camera_options(*cmd, a.depth_camera);
 }
 
-namespace {
-
-std::string lower_extension(const std::string& path) {
-    std::string e = std::filesystem::path(path).extension().string();
-    for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return e;
-}
-
-// Checks an output path before any work (its extension, then OutputFiles::check: writable,
-// within the name limits, distinct from the run's other outputs), so that a bad one fails the
-// run before anything is rendered or written.
-void check_output(OutputFiles& outputs, const std::string& path,
-                  std::initializer_list<const char*> extensions, const char* option,
-                  const char* what) {
-    if (path.empty()) return;
-    const std::string ext = lower_extension(path);
-    bool ok = false;
-    std::string names;
-    for (const char* e : extensions) {
-        ok |= ext == e;
-        names += names.empty() ? e : std::string(" or ") + e;
-    }
-    if (!ok) throw InputError(path, std::string(what) + " must end in " + names);
-    outputs.check(path, option);
-}
-
-}  // namespace
-
 // Material opacity only counts in the A-buffer: say so when the scene has any to ignore.
 void warn_if_transparent(const Scene& scene, const std::string& what) {
     std::size_t transparent = 0;
@@ -86,10 +58,10 @@ void warn_if_transparent(const Scene& scene, const std::string& what) {
 int run_render(const RenderArguments& a) {
     OutputFiles outputs;  // written together at the end, or not at all
     if (a.output.empty()) throw InputError("-o", "the output path is empty");
-    check_output(outputs, a.output, {".png"}, "-o", "the color output");
-    check_output(outputs, a.depth_out, {".npy", ".png"}, "--depth-out", "the depth output");
-    check_output(outputs, a.normal_out, {".png"}, "--normal-out", "the normal output");
-    check_output(outputs, a.id_out, {".npy", ".png"}, "--id-out", "the id output");
+    check_output(outputs, a.output, {".png"}, "-o");
+    check_output(outputs, a.depth_out, {".npy", ".png"}, "--depth-out");
+    check_output(outputs, a.normal_out, {".png"}, "--normal-out");
+    check_output(outputs, a.id_out, {".npy", ".png"}, "--id-out");
     check_depth_camera_arguments(a.depth_camera, a.visibility, a.aa, a.msaa, a.ortho,
                                  a.fovy.has_value(), outputs);
     // Wall-clock times of the stages, for --stats.
