@@ -22,12 +22,12 @@ import zraster
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 
 
-def frame_times(renderer, scene, frames, outputs):
+def frame_times(renderer, scene, camera, frames, outputs):
     wall, inside = [], []
-    renderer.render(scene, None, outputs)  # first frame: allocations, cluster bounds
+    renderer.render(scene, camera, outputs)  # first frame: allocations, cluster bounds
     for _ in range(frames):
         start = time.perf_counter()
-        renderer.render(scene, None, outputs)
+        renderer.render(scene, camera, outputs)
         wall.append((time.perf_counter() - start) * 1e3)
         inside.append(renderer.stats["total_ms"])
     return statistics.median(wall), statistics.median(inside)
@@ -37,11 +37,13 @@ def frames_per_second(scene, threads, seconds=3.0):
     counts = [0] * threads
     stop = time.perf_counter() + seconds
 
+    camera = zraster.Camera.fit(scene, 640, 480)
+
     def run(k):
         renderer = zraster.Renderer(640, 480, threads=1)
-        renderer.render(scene, None, ("color", "depth"))
+        renderer.render(scene, camera, ("color", "depth"))
         while time.perf_counter() < stop:
-            renderer.render(scene, None, ("color", "depth"))
+            renderer.render(scene, camera, ("color", "depth"))
             counts[k] += 1
 
     workers = [threading.Thread(target=run, args=(k,)) for k in range(threads)]
@@ -62,9 +64,12 @@ def main():
     scene = zraster.load(args.mesh)
     print(f"{args.mesh}: {scene.triangle_count} triangles, 640x480, Phong")
     renderer = zraster.Renderer(640, 480, threads=2)
+    # One camera for every frame, as a render loop holds it (camera=None fits the scene's
+    # bounding sphere anew each call).
+    camera = zraster.Camera.fit(scene, 640, 480)
     for outputs in (("color", "depth"),
                     ("color", "depth", "z", "range", "normal", "instance_id", "primitive_id")):
-        wall, inside = frame_times(renderer, scene, args.frames, outputs)
+        wall, inside = frame_times(renderer, scene, camera, args.frames, outputs)
         print(f"  {'+'.join(outputs)}: {wall:.3f} ms per call, C++ Renderer {inside:.3f} ms "
               f"inside it: overhead {wall - inside:.3f} ms ({(wall / inside - 1) * 100:.1f}%)")
     one = frames_per_second(scene, 1)
