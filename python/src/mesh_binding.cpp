@@ -35,6 +35,17 @@ py::array computed_normals(const AttributeView& positions, const IndexView& indi
     return normals;
 }
 
+// An attribute of `columns` floats per vertex: one row per position, else an InputError.
+FloatRows per_vertex(const py::object& rows, std::size_t columns, const char* argument,
+                     const char* element, std::size_t positions) {
+    FloatRows r = float_rows(rows, columns, argument);
+    if (r.view.count != positions)
+        input_error(argument, std::to_string(r.view.count) + " rows for " +
+                                  std::to_string(positions) + " positions: give one " + element +
+                                  " per position");
+    return r;
+}
+
 std::shared_ptr<PyMesh> make_mesh(const py::object& positions, const py::object& indices,
                                   const py::object& normals, const py::object& uvs,
                                   const py::object& color, std::string name) {
@@ -52,21 +63,13 @@ std::shared_ptr<PyMesh> make_mesh(const py::object& positions, const py::object&
         mesh->normals_computed = true;
         mesh->view.normals = {static_cast<const float*>(mesh->normals.data()), p.view.count, 0};
     } else if (!normals.is_none()) {
-        FloatRows n = float_rows(normals, 3, "normals");
-        if (n.view.count != p.view.count)
-            input_error("normals", std::to_string(n.view.count) + " rows for " +
-                                       std::to_string(p.view.count) +
-                                       " positions: give one normal per position");
+        const FloatRows n = per_vertex(normals, 3, "normals", "normal", p.view.count);
         mesh->normals = n.array;
         mesh->normals_copied = n.copied;
         mesh->view.normals = n.view;
     }
     if (!uvs.is_none()) {
-        FloatRows t = float_rows(uvs, 2, "uvs");
-        if (t.view.count != p.view.count)
-            input_error("uvs", std::to_string(t.view.count) + " rows for " +
-                                   std::to_string(p.view.count) +
-                                   " positions: give one uv per position");
+        const FloatRows t = per_vertex(uvs, 2, "uvs", "uv", p.view.count);
         mesh->uvs = t.array;
         mesh->uvs_copied = t.copied;
         mesh->view.uvs = t.view;
