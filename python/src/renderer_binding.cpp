@@ -13,6 +13,7 @@
 #include "depth_outputs.hpp"
 #include "errors.hpp"
 #include "options.hpp"
+#include "recycled_arrays.hpp"
 
 namespace zraster::python {
 namespace {
@@ -32,6 +33,11 @@ struct PyRenderer {
     std::mutex mutex;
     RenderStats stats;  // of the last frame
     bool rendered = false;
+    // The output arrays' memory, recycled from frame to frame; scratch images for z and range
+    // when the frame's depth or normals are not outputs themselves (used under `mutex`).
+    std::shared_ptr<ArrayPool> arrays = std::make_shared<ArrayPool>();
+    std::vector<float> depth_scratch, z_scratch;
+    std::vector<glm::vec3> normal_scratch;
 };
 
 std::unique_ptr<PyRenderer> make_renderer(const py::object& width, const py::object& height,
@@ -91,9 +97,9 @@ std::array<bool, kOutputCount> wanted_outputs(py::handle outputs, std::vector<Ou
 constexpr const char* kPlacementKeywords[] = {"eye", "target", "up", "orbit", "fovy", "ortho"};
 
 template <class T>
-py::array_t<T> image(int height, int width, int channels) {
-    if (channels == 1) return py::array_t<T>({py::ssize_t(height), py::ssize_t(width)});
-    return py::array_t<T>({py::ssize_t(height), py::ssize_t(width), py::ssize_t(channels)});
+py::array_t<T> image(ArrayPool& pool, int height, int width, int channels) {
+    if (channels == 1) return pool.array<T>({py::ssize_t(height), py::ssize_t(width)});
+    return pool.array<T>({py::ssize_t(height), py::ssize_t(width), py::ssize_t(channels)});
 }
 
 // Copies an image of zraster's into an output array of `pixels` elements of T (no Python calls:
@@ -171,54 +177,39 @@ py::dict render(PyRenderer& r, const py::object& scene_object, const py::object&
     std::array<py::array, kOutputCount> arrays;
     TargetViews targets{w, h};
     if (wanted[kColor] || wanted[kRgba]) {
-        arrays[kRgba] = image<std::uint8_t>(h, w, 4);
+        arrays[kRgba] = image<std::uint8_t>(*r.arrays, h, w, 4);
         targets.color = static_cast<std::uint8_t*>(arrays[kRgba].mutable_data());
         // RGB is a view of the RGBA image: no copy (the alpha channel is opaque).
         arrays[kColor] = arrays[kRgba][py::make_tuple(py::ellipsis(), py::slice(0, 3, 1))];
     }
     if (wanted[kDepth]) {
-        arrays[kDepth] = image<float>(h, w, 1);
+        arrays[kDepth] = image<float>(*r.arrays, h, w, 1);
         targets.depth = static_cast<float*>(arrays[kDepth].mutable_data());
     }
     if (wanted[kNormal]) {
-        arrays[kNormal] = image<float>(h, w, 3);
+        arrays[kNormal] = image<float>(*r.arrays, h, w, 3);
         targets.normal = static_cast<glm::vec3*>(arrays[kNormal].mutable_data());
     }
     if (wanted[kInstanceId]) {
-        arrays[kInstanceId] = image<std::int32_t>(h, w, 1);
+        arrays[kInstanceId] = image<std::int32_t>(*r.arrays, h, w, 1);
         targets.instance_id = static_cast<std::int32_t*>(arrays[kInstanceId].mutable_data());
     }
     if (wanted[kPrimitiveId]) {
-        arrays[kPrimitiveId] = image<std::int32_t>(h, w, 1);
+        arrays[kPrimitiveId] = image<std::int32_t>(*r.arrays, h, w, 1);
         targets.primitive_id = static_cast<std::int32_t*>(arrays[kPrimitiveId].mutable_data());
     }
     // z and range come from the frame's depths (and, through a sensor, its normals): rendered
-    // into scratch images when they are not outputs themselves.
+    // into the Renderer's scratch images (under its lock, below) when they are not outputs.
     const std::size_t pixels = std::size_t(w) * std::size_t(h);
-    std::vector<float> depth_scratch, z_scratch;
-    std::vector<glm::vec3> normal_scratch;
     if (metric) {
-        if (!targets.depth) {
-            depth_scratch.resize(pixels);
-            targets.depth = depth_scratch.data();
-        }
-        if (depth_camera.sensor && !targets.normal) {
-            normal_scratch.resize(pixels);
-            targets.normal = normal_scratch.data();
-        }
         if (wanted[kZ]) {
-            arrays[kZ] = image<float>(h, w, 1);
+            arrays[kZ] = image<float>(*r.arrays, h, w, 1);
             depth_camera.z = static_cast<float*>(arrays[kZ].mutable_data());
-        } else {
-            z_scratch.resize(pixels);
-            depth_camera.z = z_scratch.data();
         }
         if (wanted[kRange]) {
-            arrays[kRange] = image<float>(h, w, 1);
+            arrays[kRange] = image<float>(*r.arrays, h, w, 1);
             depth_camera.range = static_cast<float*>(arrays[kRange].mutable_data());
         }
-        depth_camera.depth = targets.depth;
-        depth_camera.normal = targets.normal;
     }
 
     const bool pipeline = cli::renders_with_pipeline(a);
@@ -227,6 +218,22 @@ py::dict render(PyRenderer& r, const py::object& scene_object, const py::object&
     try {
         py::gil_scoped_release release;
         const std::lock_guard<std::mutex> lock(r.mutex);
+        if (metric) {
+            if (!targets.depth) {
+                r.depth_scratch.resize(pixels);
+                targets.depth = r.depth_scratch.data();
+            }
+            if (depth_camera.sensor && !targets.normal) {
+                r.normal_scratch.resize(pixels);
+                targets.normal = r.normal_scratch.data();
+            }
+            if (!depth_camera.z) {
+                r.z_scratch.resize(pixels);
+                depth_camera.z = r.z_scratch.data();
+            }
+            depth_camera.depth = targets.depth;
+            depth_camera.normal = targets.normal;
+        }
         if (pipeline) {
             r.stats = r.renderer.render(scene->view(), options, targets);
         } else {
@@ -281,8 +288,9 @@ sensor: None or "ideal" (exact depth), "kinect" or a zraster.StructuredLightSens
   as a structured-light sensor measures them (0 where it measures nothing); the other outputs
   are the ideal frame's. zraster.unproject(out["z"], camera) gives the point cloud.
 
-The arrays are allocated for this call and the renderer writes into them: nothing is copied
-afterwards (`color` is a view of the RGBA image, `color` and `rgba` share memory). Frames the
+The renderer writes into the returned arrays: nothing is copied afterwards (`color` is a view of
+the RGBA image, `color` and `rgba` share memory). Each call returns new arrays, which the caller
+owns; the memory of arrays the caller has freed is reused for later frames of this Renderer. Frames the
 pipeline does not draw itself (visibility other than "zbuffer", aa > 1, msaa) are drawn into
 zraster's own images and copied, and a Scene of Meshes is copied once into an owning scene for
 them. The GIL is released while the frame renders; calls on one Renderer from several threads

@@ -53,3 +53,48 @@ def test_meshes_and_scenes_in_a_loop_do_not_leak():
     gc.collect()
     grown = rss_kb() - before
     assert grown < ALLOWANCE_KB, f"RSS grew by {grown} KB over 1,000 meshes"
+
+
+def address(array):
+    return array.__array_interface__["data"][0]
+
+
+def test_freed_outputs_are_recycled_and_kept_outputs_never_overwritten():
+    scene = zraster.load("sphere:5000")
+    r = zraster.Renderer(160, 120, threads=1)
+    first = r.render(scene, outputs=("rgba", "depth"))
+    kept_rgba, kept_depth = first["rgba"].copy(), first["depth"].copy()
+    used = {address(first["rgba"]), address(first["depth"])}
+    # Frames drawn while `first` lives never write into its memory, whatever they draw.
+    for shading in ("flat", "gouraud", "phong"):
+        other = r.render(scene, outputs=("rgba", "depth"), shading=shading, orbit=(40, 20, 3))
+        assert address(other["rgba"]) not in used and address(other["depth"]) not in used
+        assert not np.array_equal(other["rgba"], kept_rgba)
+    np.testing.assert_array_equal(first["rgba"], kept_rgba)
+    np.testing.assert_array_equal(first["depth"], kept_depth)
+    # Once freed (with the views of it: `color` is one), its memory serves a later frame, and
+    # that frame is exactly the frame drawn into fresh memory.
+    view, rgba_block = first["rgba"][..., :3], address(first["rgba"])
+    del first, other
+    held = r.render(scene, outputs=("rgba",))
+    assert address(held["rgba"]) != rgba_block  # `view` still holds that block
+    del view, held
+    gc.collect()
+    again = r.render(scene, outputs=("rgba", "depth"))
+    assert {address(again["rgba"]), address(again["depth"])} & used
+    np.testing.assert_array_equal(again["rgba"], kept_rgba)
+    np.testing.assert_array_equal(again["depth"], kept_depth)
+
+
+def test_outputs_outlive_their_renderer():
+    scene = zraster.load("sphere:5000")
+    r = zraster.Renderer(96, 64, threads=1)
+    out = r.render(scene, outputs=("color", "depth", "normal"))
+    expected = {k: v.copy() for k, v in out.items()}
+    del r
+    gc.collect()
+    for _ in range(3):  # other allocations that would reuse freed memory
+        zraster.Renderer(96, 64, threads=1).render(scene, outputs=("color", "depth", "normal"),
+                                                   shading="flat")
+    for name, array in out.items():
+        np.testing.assert_array_equal(array, expected[name], err_msg=name)
