@@ -14,7 +14,24 @@ void type_error(const std::string& argument, const std::string& expected, py::ha
     throw py::type_error(argument + ": expected " + expected + ", got " + type_name(got));
 }
 
+namespace {
+PyObject* load_warning_class = nullptr;  // zraster.LoadWarning, owned by the module
+}  // namespace
+
+void warn_load(const std::string& message) {
+    // stacklevel 2: the warning points at the caller's load() line.
+    if (PyErr_WarnEx(load_warning_class, message.c_str(), 2) != 0) throw py::error_already_set();
+}
+
 void bind_errors(py::module_& m) {
+    load_warning_class = PyErr_NewExceptionWithDoc(
+        "zraster.LoadWarning",
+        "A problem load() found in a file and worked around (a missing texture, an unsupported "
+        "material feature, ...): the scene renders, perhaps not as its author meant. A "
+        "UserWarning; the same texts are in Scene.warnings.",
+        PyExc_UserWarning, nullptr);
+    if (load_warning_class == nullptr) throw py::error_already_set();
+    m.add_object("LoadWarning", py::handle(load_warning_class));
     // Leaked on purpose: the translator may run until the interpreter is gone, and the object's
     // destructor must not run after that.
     static auto* const exception = new py::exception<InputError>(m, "InputError", PyExc_ValueError);

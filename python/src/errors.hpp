@@ -18,6 +18,10 @@ namespace zraster::python {
 [[noreturn]] void type_error(const std::string& argument, const std::string& expected,
                              pybind11::handle got);
 
+// Issues `message` as a zraster.LoadWarning (warnings.warn: shown once per call site by default,
+// an exception under -W error).
+void warn_load(const std::string& message);
+
 // The Python name of a type, for messages.
 std::string type_name(pybind11::handle object);
 

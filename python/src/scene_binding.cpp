@@ -92,6 +92,8 @@ std::shared_ptr<PyScene> load(const py::object& path_object, const std::string& 
         owned = std::make_shared<const Scene>(is_procedural_spec(spec) ? make_procedural_scene(spec)
                                                                        : load_scene(spec, options));
     }
+    for (const std::string& warning : owned->warnings)  // each names the file
+        warn_load(warning.starts_with(spec) ? warning : spec + ": " + warning);
     return scene_from_owned(std::move(owned), spec);
 }
 
@@ -224,7 +226,8 @@ allow_outside_references: read a model's external files (glTF buffers, textures,
 max_instances, max_triangles: larger models are refused.
 
 Raises InputError naming the file and the cause (missing, unreadable, malformed, too large).
-Warnings (a missing texture, ...) are in Scene.warnings. The GIL is released while loading.)");
+Problems worked around (a missing texture, ...) are issued as zraster.LoadWarning (a
+UserWarning, "PATH: what") and kept in Scene.warnings. The GIL is released while loading.)");
 }
 
 }  // namespace zraster::python

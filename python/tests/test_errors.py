@@ -1,5 +1,7 @@
 """Bad input raises InputError (a ValueError) or TypeError naming the argument and the cause."""
 
+import warnings
+
 import numpy as np
 import pytest
 
@@ -212,3 +214,27 @@ def test_errors_do_not_break_the_renderer(cube):
     with raises(zraster.InputError):
         r.render(cube, shading="nope")
     np.testing.assert_array_equal(r.render(cube)["color"], good)
+
+
+def test_load_warnings_are_python_warnings(tmp_path):
+    (tmp_path / "quad.mtl").write_text("newmtl skin\nKd 1 1 1\nmap_Kd missing.png\n")
+    model = tmp_path / "quad.obj"
+    model.write_text("mtllib quad.mtl\nusemtl skin\n"
+                     "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                     "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\n")
+    with pytest.warns(zraster.LoadWarning) as caught:
+        scene = zraster.load(model)
+    assert issubclass(zraster.LoadWarning, UserWarning)
+    messages = [str(w.message) for w in caught]
+    assert len(messages) == len(scene.warnings) >= 1
+    assert any("missing.png" in m for m in messages), messages
+    for message, kept in zip(messages, scene.warnings):
+        assert message.startswith(str(model)) and message.endswith(kept)
+    # The scene still renders (the texture left out).
+    out = zraster.Renderer(32, 32, threads=1).render(scene, outputs=("depth",))
+    assert (out["depth"] < 1).any()
+    # A clean file warns about nothing.
+    (tmp_path / "plain.obj").write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert zraster.load(tmp_path / "plain.obj").warnings == []

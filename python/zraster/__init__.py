@@ -23,6 +23,7 @@ from ._zraster import (
     RENDER_OPTIONS,
     Camera,
     InputError,
+    LoadWarning,
     Mesh,
     Renderer,
     Scene,
@@ -35,6 +36,7 @@ from ._zraster import (
 __all__ = [
     "Camera",
     "InputError",
+    "LoadWarning",
     "Mesh",
     "RENDER_OPTIONS",
     "Renderer",

@@ -19,6 +19,8 @@ class InputError(ValueError):
     source: str
     cause: str
 
+class LoadWarning(UserWarning): ...
+
 class Mesh:
     def __init__(
         self,
