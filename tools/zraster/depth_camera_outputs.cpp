@@ -88,28 +88,73 @@ std::string number(double x) {
     return fmt::format("{:.17g}", x + 0.0);
 }
 
-// The camera as a data set records it: K, the OpenCV pose, clip distances, image size.
-std::vector<std::uint8_t> camera_json(const Camera& camera, int width, int height) {
-    const Intrinsics k = camera.intrinsics(width, height, CameraConvention::OpenCV);
-    const glm::dmat4 pose = camera.camera_to_world(CameraConvention::OpenCV);
-    std::string out = "{\n";
-    out +=
-        "  \"convention\": \"opencv\",\n"
-        "  \"convention_note\": \"camera x right, y down, z forward; pixel (u, v) = (column, row) "
-        "from the top left, pixel centers at integers; u = fx X / Z + cx, v = fy Y / Z + cy\",\n";
-    out += fmt::format("  \"width\": {},\n  \"height\": {},\n", width, height);
-    out += "  \"K\": [[" + number(k.fx) + ", 0, " + number(k.cx) + "], [0, " + number(k.fy) + ", " +
-           number(k.cy) + "], [0, 0, 1]],\n";
-    out += "  \"camera_to_world\": [";
+// "[[a, b, c, d], ...]": the rows of a 4x4 matrix.
+std::string matrix_rows(const glm::dmat4& m) {
+    std::string out = "[";
     for (int r = 0; r < 4; ++r) {
         out += r ? ", [" : "[";
-        for (int c = 0; c < 4; ++c) out += (c ? ", " : "") + number(pose[c][r]);
+        for (int c = 0; c < 4; ++c) out += (c ? ", " : "") + number(m[c][r]);
         out += "]";
     }
-    out += "],\n";
-    out += "  \"near\": " + number(k.near) + ",\n";
-    // JSON has no infinity: an infinite far plane is null.
-    out += "  \"far\": " + (std::isinf(k.far) ? std::string("null") : number(k.far)) + ",\n";
+    return out + "]";
+}
+
+// JSON has no infinity or NaN: an infinite far plane, or a clip distance a given projection
+// matrix does not have, is null.
+std::string distance(double d) {
+    return std::isfinite(d) ? number(d) : std::string("null");
+}
+
+// An orthographic camera's pixel mapping in OpenCV axes: u = su X + cu, v = sv Y + cv, from the
+// projection's x and y rows (window x = (ndc x + 1) W / 2 = u + 0.5; window y from the top =
+// (1 - ndc y) H / 2 = v + 0.5, with OpenCV's Y the eye's -y).
+struct OrthographicPixels {
+    double su, sv, cu, cv;
+};
+OrthographicPixels orthographic_pixels(const Camera& camera, int width, int height) {
+    const glm::dmat4 p = camera.projection_matrix(double(width) / double(height));
+    if (p[1][0] != 0.0 || p[0][1] != 0.0)
+        throw InputError("--camera-json",
+                         "the orthographic projection mixes x and y: no per-axis pixel scale");
+    return {p[0][0] * width / 2.0, p[1][1] * height / 2.0, (1.0 + p[3][0]) * width / 2.0 - 0.5,
+            (1.0 - p[3][1]) * height / 2.0 - 0.5};
+}
+
+// The camera as a data set records it: the pinhole K (or an orthographic camera's pixel scale),
+// the OpenCV pose, clip distances, image size.
+std::vector<std::uint8_t> camera_json(const Camera& camera, int width, int height) {
+    const bool orthographic = camera.is_orthographic();
+    const glm::dmat4 pose = camera.camera_to_world(CameraConvention::OpenCV);
+    std::string out = "{\n";
+    out += "  \"convention\": \"opencv\",\n";
+    double near = camera.near,
+           far = camera.infinite_far ? std::numeric_limits<double>::infinity() : camera.far;
+    if (orthographic) {
+        const OrthographicPixels o = orthographic_pixels(camera, width, height);
+        out +=
+            "  \"projection\": \"orthographic\",\n"
+            "  \"convention_note\": \"camera x right, y down, z forward; pixel (u, v) = (column, "
+            "row) from the top left, pixel centers at integers; u = su X + cu, v = sv Y + cv "
+            "(pixels_per_unit [su, sv], principal_point [cu, cv]); Z moves no pixel\",\n";
+        out += fmt::format("  \"width\": {},\n  \"height\": {},\n", width, height);
+        out += "  \"pixels_per_unit\": [" + number(o.su) + ", " + number(o.sv) + "],\n";
+        out += "  \"principal_point\": [" + number(o.cu) + ", " + number(o.cv) + "],\n";
+    } else {
+        const Intrinsics k = camera.intrinsics(width, height, CameraConvention::OpenCV);
+        near = k.near;
+        far = k.far;
+        out +=
+            "  \"projection\": \"perspective\",\n"
+            "  \"convention_note\": \"camera x right, y down, z forward; pixel (u, v) = (column, "
+            "row) from the top left, pixel centers at integers; u = fx X / Z + cx, v = fy Y / Z + "
+            "cy\",\n";
+        out += fmt::format("  \"width\": {},\n  \"height\": {},\n", width, height);
+        out += "  \"K\": [[" + number(k.fx) + ", 0, " + number(k.cx) + "], [0, " + number(k.fy) +
+               ", " + number(k.cy) + "], [0, 0, 1]],\n";
+    }
+    out += "  \"camera_to_world\": " + matrix_rows(pose) + ",\n";
+    out += "  \"near\": " + distance(near) + ",\n";
+    out += "  \"far\": " + distance(far) + ",\n";
     out +=
         "  \"depth\": \"z along the optical axis in scene units; z.png: millimetres, 0 = no "
         "measurement\"\n";
@@ -135,8 +180,9 @@ void add_depth_camera_options(CLI::App& cmd, DepthCameraArguments& a) {
                    "down) for the --size image; pose from --eye/--target/--up (or --orbit), "
                    "clip distances from --near/--far");
     cmd.add_option("--camera-json", a.camera_json,
-                   "Write the camera used as JSON: convention \"opencv\", K (3x3), "
-                   "camera_to_world (4x4), near, far, width, height");
+                   "Write the camera used as JSON: convention \"opencv\", projection, K (3x3; "
+                   "orthographic: pixels_per_unit and principal_point), camera_to_world (4x4), "
+                   "near, far, width, height");
     cmd.add_option("--sensor", a.sensor,
                    "Depth sensor for --z-out/--range-out/--points-out: ideal (exact) or kinect "
                    "(structured light: projector shadows, disparity quantization, range and "
@@ -178,9 +224,6 @@ void check_depth_camera_arguments(const DepthCameraArguments& a, const std::stri
         throw InputError("--intrinsics", "a pinhole camera is a perspective one: not with --ortho");
     if (!a.intrinsics.empty() && fovy)
         throw InputError("--intrinsics", "fy sets the field of view: not with --fovy");
-    if (!a.camera_json.empty() && ortho)
-        throw InputError("--camera-json",
-                         "an orthographic camera has no pinhole matrix K: not with --ortho");
     std::string flag;
     if (a.sensor != "kinect" && any_sensor_flag(a, flag))
         throw InputError(flag, "sets a parameter of --sensor kinect");
