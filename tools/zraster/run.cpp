@@ -13,6 +13,7 @@
 #include <new>
 #include <string>
 
+#include "batch_command.hpp"
 #include "bench_command.hpp"
 #include "command_line.hpp"
 #include "info_command.hpp"
@@ -32,6 +33,8 @@ int run_zraster(std::vector<std::string> args) {
     add_bench_command(app, bench_args);
     SvgArguments svg_args;
     add_svg_command(app, svg_args);
+    BatchArguments batch_args;
+    add_batch_command(app, batch_args);
     // Loading: Assimp (every format but the OBJ files zraster reads itself) runs in a worker
     // process, so that a crash in it is a refused file (RELIABILITY.md). Accepted after the
     // subcommand too.
@@ -75,6 +78,7 @@ int run_zraster(std::vector<std::string> args) {
         if (app.got_subcommand("info")) return run_info(info_args);
         if (app.got_subcommand("bench")) return run_bench(bench_args);
         if (app.got_subcommand("svg")) return run_svg(svg_args);
+        if (app.got_subcommand("batch")) return run_batch(batch_args);
         // No subcommand at all: render the built-in default scene to zraster.png.
         return run_render(render_args);
     } catch (const zraster::LimitExceeded& e) {
