@@ -12,6 +12,7 @@
 #include <system_error>
 #include <thread>
 
+#include <malloc.h>
 #include <unistd.h>
 
 #include "batch_inputs.hpp"
@@ -51,6 +52,15 @@ BatchSettings settings_of(const BatchArguments& a, int jobs) {
     s.out_dir = a.out_dir;
     s.force = a.force;
     return s;
+}
+
+// One file after another of similar sizes: glibc would give the memory each one frees back to the
+// kernel (unmapping blocks over its mmap threshold, trimming its heaps), and the next file would
+// fault it in again page by page: 250 page faults a file at 256x256, a fifth of the time. Kept,
+// the process holds what its largest files needed at once, and no more.
+void keep_freed_memory() {
+    mallopt(M_MMAP_THRESHOLD, 64 << 20);
+    mallopt(M_TRIM_THRESHOLD, 512 << 20);
 }
 
 std::string signal_name(int sig) {
@@ -152,6 +162,7 @@ int run_batch(const BatchArguments& a) {
                                : std::filesystem::path(a.log));
     StopOnSignals signals;
     BatchProgress progress(progress_mode(a.progress, ::isatty(STDERR_FILENO) == 1), inputs.size());
+    keep_freed_memory();
     BatchTotals totals;
     try {
         totals = run_batch_jobs(inputs, settings, jobs, log, progress, signals.stop());

@@ -114,7 +114,7 @@ void check_batch_settings(const BatchSettings& settings) {
 }
 
 BatchRecord run_batch_job(const BatchInput& input, const BatchSettings& settings,
-                          const std::atomic<bool>* stop) {
+                          const std::atomic<bool>* stop, Renderer* renderer) {
     BatchRecord record;
     record.input = input.source.string();
     const std::vector<std::filesystem::path> planned = planned_outputs(input, settings);
@@ -148,7 +148,8 @@ BatchRecord run_batch_job(const BatchInput& input, const BatchSettings& settings
         double encode_ms = 0.0;
         for (const RenderArguments& view : views) {
             if (stopping(stop)) return dropped();
-            const RenderedFrame frame = render_outputs(view, scene, outputs, nullptr, nullptr);
+            const RenderedFrame frame =
+                render_outputs(view, scene, outputs, nullptr, nullptr, renderer);
             record.render_ms += frame.render_ms;
             encode_ms += frame.encode_ms;
         }

@@ -5,6 +5,7 @@
 // the same job for the same files.
 #pragma once
 #include <zraster/load.hpp>
+#include <zraster/render.hpp>
 
 #include <atomic>
 #include <filesystem>
@@ -64,8 +65,9 @@ void check_batch_settings(const BatchSettings& settings);
 // every output was written; Error, with nothing written, when the file cannot be read, is over a
 // limit, or any view fails. Catches every failure: one file never stops the others. When `stop`
 // (may be null) becomes true, the job ends before writing anything and returns Dropped; once the
-// outputs are being written they are finished.
+// outputs are being written they are finished. `renderer` (may be null) draws the frames,
+// reusing its memory from file to file: one per thread that runs jobs.
 BatchRecord run_batch_job(const BatchInput& input, const BatchSettings& settings,
-                          const std::atomic<bool>* stop);
+                          const std::atomic<bool>* stop, Renderer* renderer);
 
 }  // namespace zraster::cli

@@ -18,12 +18,13 @@ BatchTotals run_batch_jobs(const std::vector<BatchInput>& inputs, const BatchSet
     std::exception_ptr log_failure;
     std::atomic<std::size_t> next{0};
     const auto work = [&] {
+        Renderer renderer;  // its memory and thread arena serve every file of this thread
         for (;;) {
             if (stop.load()) return;
             const std::size_t i = next.fetch_add(1);
             if (i >= inputs.size()) return;
             progress.started(inputs[i].source.string());
-            const BatchRecord record = run_batch_job(inputs[i], settings, &stop);
+            const BatchRecord record = run_batch_job(inputs[i], settings, &stop, &renderer);
             if (record.status == BatchStatus::Dropped) continue;
             try {
                 log.append(record);

@@ -44,7 +44,7 @@ void check_render_outputs(const RenderArguments& a, OutputFiles& outputs) {
 }
 
 RenderedFrame render_outputs(const RenderArguments& a, const Scene& scene, OutputFiles& outputs,
-                             ProgressReporter* progress, std::FILE* notes) {
+                             ProgressReporter* progress, std::FILE* notes, Renderer* renderer) {
     using Clock = std::chrono::steady_clock;
     const auto since = [](Clock::time_point start) {
         return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -61,9 +61,19 @@ RenderedFrame render_outputs(const RenderArguments& a, const Scene& scene, Outpu
     check_frame_arguments(a);
     if (a.visibility != "abuffer")
         warn_if_transparent(scene, "--visibility " + a.visibility, notes);
-    const RenderResult result = render_frame(a, scene, options, &frame.visibility, &frame.abuffer);
-    const RenderTargets& t = result.targets;
-    frame.stats = result.stats;
+    RenderResult own;
+    const RenderResult* result = &own;
+    if (renderer != nullptr && renders_with_pipeline(a)) {
+        // The renderer draws one scene after another: cluster bounds kept for one mesh would be
+        // matched to the next by its address and hash only, and are never reused anyway (the
+        // image is the same without them).
+        options.cluster_culling = false;
+        result = &renderer->render(scene, options);
+    } else {
+        own = render_frame(a, scene, options, &frame.visibility, &frame.abuffer);
+    }
+    const RenderTargets& t = result->targets;
+    frame.stats = result->stats;
     frame.render_ms = since(render_start);
 
     const Clock::time_point encode_start = Clock::now();

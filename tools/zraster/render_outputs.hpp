@@ -32,8 +32,11 @@ struct RenderedFrame {
 // Renders `scene` as the arguments ask and adds every requested file's bytes to `outputs`
 // (checked before with check_render_outputs); writes nothing. `progress` receives the reports of
 // long object-space work (null: none); `notes` the note of warn_if_transparent (null: none).
+// With `renderer`, a pipeline frame (renders_with_pipeline) is drawn by it, reusing its memory
+// and threads from the frames before (same bytes); null: a frame of its own.
 RenderedFrame render_outputs(const RenderArguments& arguments, const Scene& scene,
-                             OutputFiles& outputs, ProgressReporter* progress, std::FILE* notes);
+                             OutputFiles& outputs, ProgressReporter* progress, std::FILE* notes,
+                             Renderer* renderer = nullptr);
 
 // A note on `notes` when instances have transparent materials, which `what` draws opaque.
 void warn_if_transparent(const Scene& scene, const std::string& what, std::FILE* notes = stderr);
