@@ -139,7 +139,13 @@ BatchRecord run_batch_job(const BatchInput& input, const BatchSettings& settings
         }
 
         const Clock::time_point load_start = Clock::now();
-        const Scene scene = load_within_limits(input, settings.load);
+        Scene scene;
+        try {
+            scene = load_within_limits(input, settings.load);
+        } catch (...) {
+            record.load_ms = ms_since(load_start);
+            throw;
+        }
         record.load_ms = ms_since(load_start);
         record.triangles = scene.triangle_count();
         record.warnings = scene.warnings;
