@@ -32,6 +32,35 @@ TEST(BatchInputs, FoldersAreMirroredAndFileArgumentsKeepTheirNames) {
     EXPECT_EQ(records.at("elsewhere/d.obj").at("outputs"), nlohmann::json::array({"out/d.png"}));
 }
 
+TEST(BatchInputs, AnOutputFolderInsideAnInputFolderIsNotSearched) {
+    const auto dir = temp_dir("batch-nested-output");
+    write_sphere_obj(dir / "models" / "a.obj", 8, 1);
+    // The point clouds written into models/renders are .ply files, a mesh format.
+    const std::string batch =
+        "batch models -o models/renders --size 16x16 --points --progress none --force";
+    ASSERT_EQ(run_zraster(batch, dir).exit_code, 0);
+    ASSERT_TRUE(std::filesystem::exists(dir / "models" / "renders" / "a_points.ply"));
+    const CommandResult again = run_zraster(batch, dir);
+    ASSERT_EQ(again.exit_code, 0) << again.output;
+    const auto log = read_log(dir / "models" / "renders" / "batch.jsonl");
+    ASSERT_EQ(log.size(), 2u);
+    EXPECT_EQ(log[1].at("input"), "models/a.obj");
+    EXPECT_FALSE(std::filesystem::exists(dir / "models" / "renders" / "renders"));
+}
+
+TEST(BatchInputs, NamesThatAreNotUtf8AreRenderedAndLoggedReplaced) {
+    const auto dir = temp_dir("batch-latin1");
+    const std::string name = "caf\xe9";  // ISO 8859-1, not UTF-8
+    write_sphere_obj(dir / "in" / (name + ".obj"), 8, 1);
+    const CommandResult r = run_zraster("batch in -o out --size 16x16 --progress none", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_TRUE(std::filesystem::exists(dir / "out" / (name + ".png")));
+    const auto log = read_log(dir / "out" / "batch.jsonl");  // valid JSON
+    ASSERT_EQ(log.size(), 1u);
+    EXPECT_EQ(log[0].at("input"), "in/caf\ufffd.obj");
+    EXPECT_EQ(log[0].at("status"), "ok");
+}
+
 TEST(BatchInputs, ListFilesAndStandardInput) {
     const auto dir = temp_dir("batch-list");
     for (int i = 0; i < 3; ++i)

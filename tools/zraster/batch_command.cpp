@@ -148,7 +148,7 @@ int run_batch(const BatchArguments& a) {
         paths.insert(paths.end(), listed.begin(), listed.end());
     }
     if (paths.empty()) throw InputError("batch", "no inputs: give files, folders or --list FILE");
-    const std::vector<BatchInput> all = find_inputs(paths);
+    const std::vector<BatchInput> all = find_inputs(paths, a.out_dir);
     if (all.empty())
         throw InputError("batch", "no mesh files in the inputs given (" + paths.front() +
                                       (paths.size() > 1 ? ", ..." : "") + ")");

@@ -39,7 +39,8 @@ std::string stem_of(const std::filesystem::path& relative) {
     return parent.empty() ? name : (parent / name).generic_string();
 }
 
-void add_folder(std::filesystem::path folder, std::vector<BatchInput>& inputs) {
+void add_folder(std::filesystem::path folder, const std::filesystem::path& skip,
+                std::vector<BatchInput>& inputs) {
     // "meshes/" as "meshes": a trailing separator would count as a path element of its own.
     while (folder.has_relative_path() && folder.filename().empty()) folder = folder.parent_path();
     std::vector<BatchInput> found;
@@ -47,6 +48,11 @@ void add_folder(std::filesystem::path folder, std::vector<BatchInput>& inputs) {
     std::filesystem::recursive_directory_iterator it(folder, ec), end;
     for (; !ec && it != end; it.increment(ec)) {
         std::error_code status_error;
+        if (!skip.empty() && it->is_directory(status_error) &&
+            std::filesystem::equivalent(it->path(), skip, status_error)) {
+            it.disable_recursion_pending();
+            continue;
+        }
         if (!it->is_regular_file(status_error) || !has_mesh_file_extension(it->path())) continue;
         const std::filesystem::path relative = it->path().lexically_relative(folder);
         found.push_back({it->path(), stem_of(relative)});
@@ -65,13 +71,14 @@ std::filesystem::path identity(const std::filesystem::path& path) {
 
 }  // namespace
 
-std::vector<BatchInput> find_inputs(const std::vector<std::string>& paths) {
+std::vector<BatchInput> find_inputs(const std::vector<std::string>& paths,
+                                    const std::filesystem::path& skip) {
     std::vector<BatchInput> inputs;
     for (const std::string& text : paths) {
         const std::filesystem::path path(text);
         std::error_code ec;
         if (std::filesystem::is_directory(path, ec))
-            add_folder(path, inputs);
+            add_folder(path, skip, inputs);
         else
             inputs.push_back({path, without_extension(path.filename().string())});
     }

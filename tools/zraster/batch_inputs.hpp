@@ -23,9 +23,11 @@ struct BatchInput {
 // The inputs of `paths`, in order. A folder gives every file under it (recursively, symbolic
 // links to files followed, to folders not) whose name has_mesh_file_extension(), sorted by
 // path; anything else is taken as a file, whether it exists or not (loading it reports what is
-// wrong). The same file given twice with the same stem is kept once. Throws InputError naming
-// a folder that cannot be read.
-std::vector<BatchInput> find_inputs(const std::vector<std::string>& paths);
+// wrong). The same file given twice with the same stem is kept once. The folder `skip` (the
+// output folder: its point clouds are .ply files) is not searched. Throws InputError naming a
+// folder that cannot be read.
+std::vector<BatchInput> find_inputs(const std::vector<std::string>& paths,
+                                    const std::filesystem::path& skip = {});
 
 // The paths of a --list file (`-`: `standard_input`): one per line, a trailing '\r' dropped,
 // blank lines skipped. Throws InputError naming the list when it cannot be read.
