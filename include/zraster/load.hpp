@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace zraster {
 
@@ -64,6 +65,14 @@ struct LoadOptions {
 // with LoadIsolation::WorkerProcess when the importer process crashes, times out or runs out of
 // memory.
 ZRASTER_API Scene load_scene(const std::filesystem::path& path, const LoadOptions& options = {});
+
+// The file name endings load_scene reads a format from, lower case with the dot (".obj", ".glb",
+// ".mesh.xml", ...): zraster's OBJ reader's and every Assimp importer's, as this build's Assimp
+// lists them. Sorted, no duplicates.
+ZRASTER_API const std::vector<std::string>& mesh_file_extensions();
+// Whether the file name ends in one of mesh_file_extensions(), in any case: what a search of a
+// folder for mesh files takes (`zraster batch`).
+ZRASTER_API bool has_mesh_file_extension(const std::filesystem::path& path);
 
 // A human-readable summary (for `zraster info`), one item per line, each line ending in '\n':
 // source, meshes (name, triangles, vertices, material, mesh-space bounds), instances, totals

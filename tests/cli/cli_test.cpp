@@ -35,7 +35,7 @@ TEST(Cli, NoArgumentsRendersTheDefaultSceneToZrasterPng) {
 }
 
 TEST(Cli, HelpOnEverySubcommand) {
-    for (const char* sub : {"", "render ", "info "}) {
+    for (const char* sub : {"", "render ", "info ", "batch "}) {
         const CommandResult r = run(std::string(sub) + "--help");
         EXPECT_EQ(r.exit_code, 0) << sub;
         EXPECT_NE(r.output.find("Usage"), std::string::npos) << sub;

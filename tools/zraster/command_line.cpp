@@ -10,6 +10,7 @@
 #include <charconv>
 #include <cmath>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace zraster::cli {
@@ -37,6 +38,22 @@ std::vector<double> parse_numbers(const std::string& option, const std::string& 
 }
 
 }  // namespace
+
+std::string limit_advice(const std::string& limit) {
+    static const std::pair<const char*, const char*> kFlags[] = {
+        {"max_painter_comparisons", "--max-painter-comparisons"},
+        {"max_bsp_polygons", "--max-bsp-polygons"},
+        {"max_warnock_classifications", "--max-warnock-classifications"},
+        {"max_abuffer_fragments", "--max-abuffer-fragments"},
+        {"max_pixels", "--max-pixels"},
+        {"max_instances", "--max-instances"},
+        {"max_triangles", "--max-triangles"},
+        {"max_memory", "--max-memory"},
+    };
+    for (const auto& [name, flag] : kFlags)
+        if (limit == name) return fmt::format("; raise it with {} N", flag);
+    return "";
+}
 
 glm::dvec3 parse_vec3(const std::string& option, const std::string& text) {
     const auto v = parse_numbers(option, text, 3, "X,Y,Z");
@@ -105,13 +122,17 @@ void set_allow_outside_references(bool allow) {
     g_allow_outside_references = allow;
 }
 
-Scene load_scene_or_procedural(const std::string& spec) {
-    if (is_procedural_spec(spec)) return make_procedural_scene(spec);
+LoadOptions command_load_options() {
     LoadOptions options;
     options.isolation = g_load_in_process ? LoadIsolation::InProcess : LoadIsolation::WorkerProcess;
     options.allow_outside_references = g_allow_outside_references;
     options.max_instances = g_max_instances;
-    return load_scene(spec, options);
+    return options;
+}
+
+Scene load_scene_or_procedural(const std::string& spec) {
+    if (is_procedural_spec(spec)) return make_procedural_scene(spec);
+    return load_scene(spec, command_load_options());
 }
 
 }  // namespace zraster::cli

@@ -1,6 +1,7 @@
 // Shared pieces of the zraster command: value parsers and exit codes.
 #pragma once
 #include <zraster/error.hpp>
+#include <zraster/load.hpp>
 #include <zraster/render.hpp>
 #include <zraster/scene.hpp>
 
@@ -14,6 +15,11 @@ namespace zraster::cli {
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitInternal = 1;
 inline constexpr int kExitBadInput = 2;
+inline constexpr int kExitSomeFilesFailed = 3;  // `zraster batch`: the others were rendered
+
+// The option that raises a library limit (LimitExceeded::limit()), as advice to append to its
+// message ("; raise it with --max-bsp-polygons N"); empty for a limit without one.
+std::string limit_advice(const std::string& limit);
 
 // "X,Y,Z" -> vec3; throws InputError naming the option on malformed or non-finite values.
 glm::dvec3 parse_vec3(const std::string& option, const std::string& text);
@@ -39,5 +45,7 @@ void set_load_in_process(bool in_process);
 void set_allow_outside_references(bool allow);
 // The --max-instances option (LoadOptions::max_instances).
 void set_max_instances(std::size_t max_instances);
+// The LoadOptions of the three settings above, the rest as LoadOptions' defaults.
+LoadOptions command_load_options();
 
 }  // namespace zraster::cli

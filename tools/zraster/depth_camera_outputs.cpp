@@ -165,6 +165,11 @@ std::vector<std::uint8_t> camera_json(const Camera& camera, int width, int heigh
 }  // namespace
 
 void add_depth_camera_options(CLI::App& cmd, DepthCameraArguments& a) {
+    add_depth_camera_output_options(cmd, a);
+    add_depth_camera_model_options(cmd, a);
+}
+
+void add_depth_camera_output_options(CLI::App& cmd, DepthCameraArguments& a) {
     cmd.add_option("--z-out", a.z_out,
                    "Metric depth (z along the optical axis, scene units, 0 = no measurement): "
                    ".npy (float32, HxW) or .png (16-bit millimetres as RGB-D data sets store "
@@ -175,14 +180,17 @@ void add_depth_camera_options(CLI::App& cmd, DepthCameraArguments& a) {
     cmd.add_option("--points-out", a.points_out,
                    "Point cloud of the measured pixels: .ply (binary, world-space float "
                    "positions, uchar RGB colors, float normals; row-major pixel order)");
-    cmd.add_option("--intrinsics", a.intrinsics,
-                   "Pinhole camera FX,FY,CX,CY in pixels (OpenCV: pixel centers at integers, v "
-                   "down) for the --size image; pose from --eye/--target/--up (or --orbit), "
-                   "clip distances from --near/--far");
     cmd.add_option("--camera-json", a.camera_json,
                    "Write the camera used as JSON: convention \"opencv\", projection, K (3x3; "
                    "orthographic: pixels_per_unit and principal_point), camera_to_world (4x4), "
                    "near, far, width, height");
+}
+
+void add_depth_camera_model_options(CLI::App& cmd, DepthCameraArguments& a) {
+    cmd.add_option("--intrinsics", a.intrinsics,
+                   "Pinhole camera FX,FY,CX,CY in pixels (OpenCV: pixel centers at integers, v "
+                   "down) for the --size image; pose from --eye/--target/--up (or --orbit), "
+                   "clip distances from --near/--far");
     cmd.add_option("--sensor", a.sensor,
                    "Depth sensor for --z-out/--range-out/--points-out: ideal (exact) or kinect "
                    "(structured light: projector shadows, disparity quantization, range and "

@@ -22,7 +22,12 @@ struct DepthCameraArguments {
     std::string seed;
 };
 
+// Both of the two below.
 void add_depth_camera_options(CLI::App& cmd, DepthCameraArguments& arguments);
+// The output paths: --z-out, --range-out, --points-out, --camera-json.
+void add_depth_camera_output_options(CLI::App& cmd, DepthCameraArguments& arguments);
+// The camera and sensor model: --intrinsics, --sensor and its parameters.
+void add_depth_camera_model_options(CLI::App& cmd, DepthCameraArguments& arguments);
 
 // Before any work: the output paths (extension, then OutputFiles::check) and the flags'
 // consistency; throws InputError naming the option.

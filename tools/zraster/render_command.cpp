@@ -2,22 +2,18 @@
 #include "render_command.hpp"
 
 #include <zraster/abuffer.hpp>
-#include <zraster/image_io.hpp>
 #include <zraster/output_files.hpp>
 #include <zraster/render.hpp>
 #include <zraster/visibility.hpp>
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <chrono>
-#include <cmath>
-#include <filesystem>
 #include <numeric>
 
 #include "command_line.hpp"
-#include "output_maps.hpp"
 #include "progress.hpp"
+#include "render_outputs.hpp"
 
 namespace zraster::cli {
 
@@ -38,32 +34,9 @@ void add_render_command(CLI::App& app, RenderArguments& a) {
     add_depth_camera_options(*cmd, a.depth_camera);
 }
 
-// Material opacity only counts in the A-buffer: say so when the scene has any to ignore.
-void warn_if_transparent(const Scene& scene, const std::string& what) {
-    std::size_t transparent = 0;
-    std::string first;
-    for (const Instance& instance : scene.instances) {
-        const Mesh& mesh = scene.meshes.at(instance.mesh);
-        const Material& m =
-            scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
-        if (m.opacity < 1.0f && transparent++ == 0) first = m.name;
-    }
-    if (transparent > 0)
-        fmt::print(stderr,
-                   "note: {} instance(s) have a transparent material (opacity < 1, e.g. '{}'): "
-                   "{} draws them opaque; `zraster render --visibility abuffer` blends them\n",
-                   transparent, first, what);
-}
-
 int run_render(const RenderArguments& a) {
     OutputFiles outputs;  // written together at the end, or not at all
-    if (a.output.empty()) throw InputError("-o", "the output path is empty");
-    check_output(outputs, a.output, {".png"}, "-o");
-    check_output(outputs, a.depth_out, {".npy", ".png"}, "--depth-out");
-    check_output(outputs, a.normal_out, {".png"}, "--normal-out");
-    check_output(outputs, a.id_out, {".npy", ".png"}, "--id-out");
-    check_depth_camera_arguments(a.depth_camera, a.visibility, a.aa, a.msaa, a.ortho,
-                                 a.fovy.has_value(), outputs);
+    check_render_outputs(a, outputs);
     // Wall-clock times of the stages, for --stats.
     using Clock = std::chrono::steady_clock;
     const auto since = [](Clock::time_point start) {
@@ -73,42 +46,13 @@ int run_render(const RenderArguments& a) {
     const Scene scene = load_scene_or_procedural(a.scene);
     const double load_ms = since(load_start);
     for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
-    const Clock::time_point render_start = Clock::now();
-    RenderOptions options = make_render_options(a, scene);
-    options.camera =
-        apply_intrinsics(a.depth_camera, *options.camera, options.width, options.height);
-    options.progress = stderr_progress();
-    options.normal_target = !a.normal_out.empty();
-    options.id_targets = !a.id_out.empty();
-    options.normal_target |= depth_camera_needs_normals(a.depth_camera);
-    VisibilityStats visibility_stats;
-    ABufferStats abuffer_stats;
-    check_frame_arguments(a);
-    if (a.visibility != "abuffer") warn_if_transparent(scene, "--visibility " + a.visibility);
-    const RenderResult result = render_frame(a, scene, options, &visibility_stats, &abuffer_stats);
-    const RenderTargets& t = result.targets;
-    const double render_ms = since(render_start);
-
-    const Clock::time_point write_start = Clock::now();
-    // RGBA -> RGB: the alpha channel is always opaque.
-    std::vector<std::uint8_t> rgb(std::size_t(t.width) * std::size_t(t.height) * 3);
-    for (std::size_t i = 0, n = rgb.size() / 3; i < n; ++i)
-        std::copy_n(&t.color[i * 4], 3, &rgb[i * 3]);
-    outputs.add(a.output, encode_png8(t.width, t.height, 3, rgb));
-    if (!a.depth_out.empty()) outputs.add(a.depth_out, encode_depth_map(a.depth_out, t));
-    if (!a.normal_out.empty()) outputs.add(a.normal_out, encode_normal_map(a.normal_out, t));
-    if (!a.id_out.empty()) {
-        std::vector<std::int64_t> first_triangle;
-        std::int64_t total = 0;
-        for (const Instance& instance : scene.instances) {
-            first_triangle.push_back(total);
-            total += static_cast<std::int64_t>(scene.meshes[instance.mesh].triangle_count());
-        }
-        outputs.add(a.id_out, encode_id_map(a.id_out, t, first_triangle));
-    }
-    add_depth_camera_outputs(a.depth_camera, scene, options, t, outputs);
+    const RenderedFrame frame = render_outputs(a, scene, outputs, stderr_progress(), stderr);
+    const VisibilityStats& visibility_stats = frame.visibility;
+    const ABufferStats& abuffer_stats = frame.abuffer;
+    const double render_ms = frame.render_ms;
+    const Clock::time_point commit_start = Clock::now();
     outputs.commit();
-    const double write_ms = since(write_start);
+    const double write_ms = frame.encode_ms + since(commit_start);
 
     if (a.print_stats && a.visibility == "abuffer")
         fmt::print("abuffer: {} fragments over {} pixels, longest list {}\n",
@@ -136,7 +80,7 @@ int run_render(const RenderArguments& a) {
                                        v.warnock.classifications.end(), std::uint64_t{0}));
     }
     if (a.print_stats) {
-        const RenderStats& s = result.stats;
+        const RenderStats& s = frame.stats;
         fmt::print(
             "scene {}: {} instances ({} frustum-culled, {} occlusion-culled), {} triangles "
             "in\n",

@@ -12,7 +12,5 @@ namespace zraster::cli {
 
 void add_render_command(CLI::App& app, RenderArguments& arguments);
 int run_render(const RenderArguments& arguments);
-// A note on stderr when instances have transparent materials, which `what` draws opaque.
-void warn_if_transparent(const Scene& scene, const std::string& what);
 
 }  // namespace zraster::cli

@@ -12,8 +12,8 @@
 #include <exception>
 #include <new>
 #include <string>
-#include <utility>
 
+#include "batch_command.hpp"
 #include "bench_command.hpp"
 #include "command_line.hpp"
 #include "info_command.hpp"
@@ -21,25 +21,6 @@
 #include "svg_command.hpp"
 
 namespace zraster::cli {
-namespace {
-
-// The option that raises a library limit (LimitExceeded::limit()), as advice after its message.
-std::string how_to_raise(const std::string& limit) {
-    static const std::pair<const char*, const char*> kFlags[] = {
-        {"max_painter_comparisons", "--max-painter-comparisons"},
-        {"max_bsp_polygons", "--max-bsp-polygons"},
-        {"max_warnock_classifications", "--max-warnock-classifications"},
-        {"max_abuffer_fragments", "--max-abuffer-fragments"},
-        {"max_pixels", "--max-pixels"},
-        {"max_instances", "--max-instances"},
-    };
-    for (const auto& [name, flag] : kFlags)
-        if (limit == name) return fmt::format("; raise it with {} N", flag);
-    return "";
-}
-
-}  // namespace
-
 int run_zraster(std::vector<std::string> args) {
     CLI::App app{"zraster: an exact, fast CPU rasterizer", "zraster"};
     app.require_subcommand(0, 1);
@@ -52,6 +33,8 @@ int run_zraster(std::vector<std::string> args) {
     add_bench_command(app, bench_args);
     SvgArguments svg_args;
     add_svg_command(app, svg_args);
+    BatchArguments batch_args;
+    add_batch_command(app, batch_args);
     // Loading: Assimp (every format but the OBJ files zraster reads itself) runs in a worker
     // process, so that a crash in it is a refused file (RELIABILITY.md). Accepted after the
     // subcommand too.
@@ -95,10 +78,11 @@ int run_zraster(std::vector<std::string> args) {
         if (app.got_subcommand("info")) return run_info(info_args);
         if (app.got_subcommand("bench")) return run_bench(bench_args);
         if (app.got_subcommand("svg")) return run_svg(svg_args);
+        if (app.got_subcommand("batch")) return run_batch(batch_args);
         // No subcommand at all: render the built-in default scene to zraster.png.
         return run_render(render_args);
     } catch (const zraster::LimitExceeded& e) {
-        fmt::print(stderr, "zraster: {}{}\n", e.what(), how_to_raise(e.limit()));
+        fmt::print(stderr, "zraster: {}{}\n", e.what(), limit_advice(e.limit()));
         return kExitBadInput;
     } catch (const zraster::InputError& e) {
         fmt::print(stderr, "zraster: {}\n", e.what());

@@ -15,6 +15,7 @@
 #include "command_line.hpp"
 #include "io/atomic_write.hpp"
 #include "progress.hpp"
+#include "render_outputs.hpp"
 
 namespace zraster::cli {
 

@@ -1,0 +1,147 @@
+// A bad file is a record, never the end of `zraster batch`: unreadable, malformed and oversized
+// files each get an error record naming them, the others are rendered, and the exit status is 3.
+// Bad usage (clashing output names, bad flags) is refused with status 2 before anything is
+// rendered.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "batch_test_support.hpp"
+
+namespace zraster::test {
+namespace {
+
+bool single_line(const std::string& s) {
+    return !s.empty() && s.find('\n') == s.size() - 1;
+}
+
+TEST(BatchErrors, BrokenFilesAreErrorRecordsAndTheRestIsRendered) {
+    const auto dir = temp_dir("batch-broken");
+    write_sphere_obj(dir / "in" / "good1.obj", 12, 1);
+    write_box_stl(dir / "in" / "good2.stl", 2);
+    write_text(dir / "in" / "empty.obj", "");
+    write_text(dir / "in" / "bad_index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n");
+    write_text(dir / "in" / "garbage.ply", "ply\nformat nonsense 7\nend_header\n\x01\x02");
+    // A binary STL claiming 1000 triangles, holding one.
+    std::string stl(80, ' ');
+    stl += std::string("\xe8\x03\x00\x00", 4) + std::string(50, '\0');
+    write_text(dir / "in" / "truncated.stl", stl);
+    write_text(dir / "list.txt", "in/missing.obj\n");
+    const CommandResult r =
+        run_zraster("batch in --list list.txt -o out --size 32x32 --progress none", dir);
+    EXPECT_EQ(r.exit_code, 3) << r.output;
+    EXPECT_NE(r.output.find("2 ok, 5 failed, 0 skipped"), std::string::npos) << r.output;
+
+    const auto records = records_by_input(read_log(dir / "out" / "batch.jsonl"));
+    ASSERT_EQ(records.size(), 7u) << r.output;
+    for (const char* good : {"in/good1.obj", "in/good2.stl"})
+        EXPECT_EQ(records.at(good).at("status"), "ok") << good;
+    for (const char* bad : {"in/empty.obj", "in/bad_index.obj", "in/garbage.ply",
+                            "in/truncated.stl", "in/missing.obj"}) {
+        SCOPED_TRACE(bad);
+        const auto& record = records.at(bad);
+        EXPECT_EQ(record.at("status"), "error");
+        const std::string error = record.at("error").get<std::string>();
+        EXPECT_TRUE(error.starts_with(std::string(bad) + ": ")) << error;
+        EXPECT_GT(error.size(), std::string(bad).size() + 4) << error;
+        EXPECT_EQ(error.find('\n'), std::string::npos);
+        EXPECT_TRUE(record.at("outputs").empty());
+        EXPECT_TRUE(record.at("triangles").is_null());
+    }
+    EXPECT_NE(records.at("in/missing.obj").at("error").get<std::string>().find("not found"),
+              std::string::npos);
+    EXPECT_EQ(files_under(dir / "out"),
+              (std::set<std::string>{"batch.jsonl", "good1.png", "good2.png"}));
+}
+
+TEST(BatchErrors, FilesOverTheLimitsAreErrorRecords) {
+    const auto dir = temp_dir("batch-limits");
+    write_sphere_obj(dir / "in" / "small.obj", 6, 1);   // 24 triangles
+    write_sphere_obj(dir / "in" / "large.obj", 40, 2);  // 1520 triangles
+    const CommandResult triangles =
+        run_zraster("batch in -o tri --size 32x32 --max-triangles 100 --progress none", dir);
+    EXPECT_EQ(triangles.exit_code, 3) << triangles.output;
+    auto records = records_by_input(read_log(dir / "tri" / "batch.jsonl"));
+    EXPECT_EQ(records.at("in/small.obj").at("status"), "ok");
+    EXPECT_EQ(records.at("in/large.obj").at("status"), "error");
+    EXPECT_NE(records.at("in/large.obj").at("error").get<std::string>().find("--max-triangles"),
+              std::string::npos);
+    EXPECT_FALSE(std::filesystem::exists(dir / "tri" / "large.png"));
+
+    // 512 x 512 pixels need more than 4 MiB of targets: refused before rendering.
+    const CommandResult memory =
+        run_zraster("batch in -o mem --size 512x512 --max-memory 4M --progress none", dir);
+    EXPECT_EQ(memory.exit_code, 3) << memory.output;
+    records = records_by_input(read_log(dir / "mem" / "batch.jsonl"));
+    for (const char* input : {"in/small.obj", "in/large.obj"}) {
+        EXPECT_EQ(records.at(input).at("status"), "error") << input;
+        EXPECT_NE(records.at(input).at("error").get<std::string>().find("--max-memory"),
+                  std::string::npos);
+    }
+    const CommandResult enough =
+        run_zraster("batch in -o mem --size 512x512 --max-memory 1G --progress none", dir);
+    EXPECT_EQ(enough.exit_code, 0) << enough.output;
+}
+
+TEST(BatchErrors, OutputNameClashesAreRefusedBeforeAnyWork) {
+    const auto dir = temp_dir("batch-clash");
+    write_sphere_obj(dir / "a" / "x.obj", 8, 1);
+    write_sphere_obj(dir / "b" / "x.obj", 8, 2);
+    write_box_stl(dir / "c" / "y.stl", 1);
+    write_sphere_obj(dir / "c" / "y.obj", 8, 3);
+    write_sphere_obj(dir / "d" / "z.obj", 8, 4);
+    write_sphere_obj(dir / "d" / "z_depth.obj", 8, 5);
+    const std::pair<std::string, std::string> cases[] = {
+        {"a/x.obj b/x.obj", "a/x.obj"},    // two file arguments of one name
+        {"c", "y."},                       // one folder, one name in two formats
+        {"d --depth png", "z_depth.png"},  // a depth map named as another file's picture
+    };
+    for (const auto& [arguments, named] : cases) {
+        SCOPED_TRACE(arguments);
+        std::filesystem::remove_all(dir / "out");
+        const CommandResult r =
+            run_zraster("batch " + arguments + " -o out --size 16x16 --progress none", dir);
+        EXPECT_EQ(r.exit_code, 2) << r.output;
+        EXPECT_TRUE(single_line(r.output)) << r.output;
+        EXPECT_NE(r.output.find(named), std::string::npos) << r.output;
+        EXPECT_TRUE(files_under(dir / "out").empty());
+    }
+    // Without the depth map the names in d/ do not clash.
+    EXPECT_EQ(run_zraster("batch d -o out --size 16x16 --progress none", dir).exit_code, 0);
+}
+
+TEST(BatchErrors, BadUsageIsExitTwoWithNothingWritten) {
+    const auto dir = temp_dir("batch-usage");
+    write_sphere_obj(dir / "in" / "a.obj", 8, 1);
+    write_text(dir / "empty" / "notes.txt", "no meshes here\n");
+    write_text(dir / "bad-views.json", "[{\"eye\": [0, 0, 3]}]");
+    const std::pair<std::string, std::string> cases[] = {
+        {"in -o out --shard 3/3", "--shard"},
+        {"in -o out --shard two", "--shard"},
+        {"in -o out --depth tiff", "--depth"},
+        {"in -o out --max-memory 12Q", "--max-memory"},
+        {"in -o out --views 0", "--views"},
+        {"in -o out --views 2 --eye 1,2,3", "--views"},
+        {"in -o out --views-json bad-views.json", "bad-views.json: camera 0: \"target\""},
+        {"in -o out --views-json missing.json", "missing.json"},
+        {"in -o out --intrinsics 50,50,8,8 --fovy 40", "--intrinsics"},
+        {"in -o out --size 0x10", "--size"},
+        {"in -o out --aa 3 --msaa", "--aa"},
+        {"empty -o out", "no mesh files"},
+        {"-o out", "no inputs"},
+        {"in", "--output-dir"},
+    };
+    for (const auto& [arguments, named] : cases) {
+        SCOPED_TRACE(arguments);
+        std::filesystem::remove_all(dir / "out");
+        const CommandResult r = run_zraster("batch " + arguments + " --progress none", dir);
+        EXPECT_EQ(r.exit_code, 2) << r.output;
+        EXPECT_TRUE(single_line(r.output)) << r.output;
+        EXPECT_NE(r.output.find(named), std::string::npos) << r.output;
+        EXPECT_FALSE(std::filesystem::exists(dir / "out" / "batch.jsonl"));
+        EXPECT_FALSE(std::filesystem::exists(dir / "out" / "a.png"));
+    }
+}
+
+}  // namespace
+}  // namespace zraster::test

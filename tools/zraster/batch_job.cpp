@@ -1,0 +1,186 @@
+// See batch_job.hpp.
+#include "batch_job.hpp"
+
+#include <zraster/error.hpp>
+#include <zraster/output_files.hpp>
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <new>
+#include <span>
+#include <system_error>
+
+#include "command_line.hpp"
+#include "render_outputs.hpp"
+
+namespace zraster::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+std::string output_path(const BatchSettings& s, const BatchInput& input, const BatchView& view,
+                        const std::string& tail) {
+    return (s.out_dir / (input.stem + view.suffix + tail)).string();
+}
+
+bool stopping(const std::atomic<bool>* stop) {
+    return stop != nullptr && stop->load(std::memory_order_relaxed);
+}
+
+// The message of a failure, naming the input first (the loader's do; a flag's or an output's
+// name the option or the output path).
+std::string error_line(const std::string& input, const std::string& what) {
+    std::string line = what.starts_with(input + ": ") ? what : input + ": " + what;
+    for (char& c : line)
+        if (c == '\n' || c == '\r') c = ' ';
+    return line;
+}
+
+// The loader refuses a file over LoadOptions::max_triangles before reading its geometry; that
+// limit is the batch's --max-triangles, or what --max-memory leaves room for.
+Scene load_within_limits(const BatchInput& input, const LoadOptions& options) {
+    try {
+        return load_scene(input.source, options);
+    } catch (const LimitExceeded&) {
+        throw;
+    } catch (const InputError& e) {
+        if (e.cause().starts_with("too many triangles"))
+            throw InputError(e.file(), fmt::format("{}; raise it with --max-triangles N (or "
+                                                   "--max-memory, at {} bytes a triangle)",
+                                                   e.cause(), kMinBytesPerTriangle));
+        throw;
+    }
+}
+
+}  // namespace
+
+RenderArguments view_arguments(const BatchInput& input, const BatchSettings& s,
+                               const BatchView& view) {
+    RenderArguments a = with_view(s.render, view);
+    a.scene = input.source.string();
+    const BatchOutputKinds& k = s.outputs;
+    a.output = output_path(s, input, view, ".png");
+    a.depth_out = k.depth.empty() ? "" : output_path(s, input, view, "_depth." + k.depth);
+    a.depth_camera.z_out = k.z.empty() ? "" : output_path(s, input, view, "_z." + k.z);
+    a.depth_camera.range_out = k.range ? output_path(s, input, view, "_range.npy") : "";
+    a.normal_out = k.normal ? output_path(s, input, view, "_normal.png") : "";
+    a.id_out = k.id.empty() ? "" : output_path(s, input, view, "_id." + k.id);
+    a.depth_camera.points_out = k.points ? output_path(s, input, view, "_points.ply") : "";
+    a.depth_camera.camera_json = k.camera_json ? output_path(s, input, view, "_camera.json") : "";
+    return a;
+}
+
+std::vector<std::filesystem::path> planned_outputs(const BatchInput& input,
+                                                   const BatchSettings& settings) {
+    std::vector<std::filesystem::path> paths;
+    for (const BatchView& view : settings.views) {
+        const RenderArguments a = view_arguments(input, settings, view);
+        for (const std::string* p :
+             {&a.output, &a.depth_out, &a.depth_camera.z_out, &a.depth_camera.range_out,
+              &a.normal_out, &a.id_out, &a.depth_camera.points_out, &a.depth_camera.camera_json})
+            if (!p->empty()) paths.emplace_back(*p);
+    }
+    return paths;
+}
+
+bool outputs_up_to_date(const std::filesystem::path& input,
+                        const std::vector<std::filesystem::path>& outputs) {
+    std::error_code ec;
+    const auto input_time = std::filesystem::last_write_time(input, ec);
+    if (ec) return false;
+    for (const std::filesystem::path& output : outputs) {
+        const auto output_time = std::filesystem::last_write_time(output, ec);
+        if (ec || !(output_time > input_time)) return false;
+    }
+    return true;
+}
+
+void check_batch_settings(const BatchSettings& settings) {
+    // A stand-in input: its outputs' paths go through every check a real one's will.
+    const BatchInput probe{"probe", ".zraster-batch-check"};
+    for (const BatchView& view : settings.views) {
+        const RenderArguments a = view_arguments(probe, settings, view);
+        OutputFiles outputs;
+        check_render_outputs(a, outputs);
+        check_frame_arguments(a);
+        const RenderOptions options = make_render_options(a, std::span<const glm::vec3>(), {});
+        apply_intrinsics(a.depth_camera, *options.camera, options.width, options.height);
+    }
+}
+
+BatchRecord run_batch_job(const BatchInput& input, const BatchSettings& settings,
+                          const std::atomic<bool>* stop, Renderer* renderer) {
+    BatchRecord record;
+    record.input = input.source.string();
+    const std::vector<std::filesystem::path> planned = planned_outputs(input, settings);
+    if (!settings.force && outputs_up_to_date(input.source, planned)) {
+        record.status = BatchStatus::Skipped;
+        for (const std::filesystem::path& p : planned) record.outputs.push_back(p.string());
+        return record;
+    }
+    const auto dropped = [&] {
+        record.status = BatchStatus::Dropped;
+        return record;
+    };
+    try {
+        if (stopping(stop)) return dropped();
+        std::vector<RenderArguments> views;
+        OutputFiles outputs;
+        for (const BatchView& view : settings.views) {
+            views.push_back(view_arguments(input, settings, view));
+            std::filesystem::create_directories(
+                std::filesystem::path(views.back().output).parent_path());
+            check_render_outputs(views.back(), outputs);
+        }
+
+        const Clock::time_point load_start = Clock::now();
+        Scene scene;
+        try {
+            scene = load_within_limits(input, settings.load);
+        } catch (...) {
+            record.load_ms = ms_since(load_start);
+            throw;
+        }
+        record.load_ms = ms_since(load_start);
+        record.triangles = scene.triangle_count();
+        record.warnings = scene.warnings;
+        check_batch_limits(scene, views, settings.limits);
+
+        double encode_ms = 0.0;
+        for (const RenderArguments& view : views) {
+            if (stopping(stop)) return dropped();
+            const RenderedFrame frame =
+                render_outputs(view, scene, outputs, nullptr, nullptr, renderer);
+            record.render_ms += frame.render_ms;
+            encode_ms += frame.encode_ms;
+        }
+        if (stopping(stop)) return dropped();
+        const Clock::time_point commit_start = Clock::now();
+        outputs.commit();
+        record.write_ms = encode_ms + ms_since(commit_start);
+        record.status = BatchStatus::Ok;
+        for (const std::filesystem::path& p : planned) record.outputs.push_back(p.string());
+        return record;
+    } catch (const LimitExceeded& e) {
+        record.error = error_line(record.input, e.what() + limit_advice(e.limit()));
+    } catch (const InputError& e) {
+        record.error = error_line(record.input, e.what());
+    } catch (const std::bad_alloc&) {
+        record.error = error_line(record.input, "out of memory");
+    } catch (const std::filesystem::filesystem_error& e) {
+        record.error = error_line(record.input, e.what());
+    } catch (const std::exception& e) {
+        record.error = error_line(record.input, std::string("internal error: ") + e.what());
+    }
+    // A loader process killed by the same Ctrl-C, a frame cut short: not the file's fault.
+    if (stopping(stop)) return dropped();
+    record.status = BatchStatus::Error;
+    return record;
+}
+
+}  // namespace zraster::cli

@@ -1,0 +1,205 @@
+// See batch_views.hpp.
+#include "batch_views.hpp"
+
+#include <zraster/error.hpp>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+
+namespace zraster::cli {
+namespace {
+
+using Json = nlohmann::json;
+
+// Shortest text that reads back as the same double: the flags' parsers get the exact value.
+std::string number(double x) {
+    return fmt::format("{:.17g}", x);
+}
+
+std::string suffix(std::size_t index, std::size_t count) {
+    const int digits = count <= 100 ? 2 : 3;  // at most 1000 views
+    return fmt::format("_v{:0{}}", index, digits);
+}
+
+// Reads one camera of a --views-json file; errors name "FILE: camera I: field".
+class CameraReader {
+  public:
+    CameraReader(const std::filesystem::path& file, std::size_t index, const Json& camera)
+        : file_(file.string()), index_(index), camera_(camera) {
+        if (!camera.is_object()) fail("", "a camera must be a JSON object");
+    }
+
+    [[noreturn]] void fail(const std::string& field, const std::string& cause) const {
+        throw InputError(file_, "camera " + std::to_string(index_) +
+                                    (field.empty() ? "" : ": \"" + field + "\"") + ": " + cause);
+    }
+
+    bool has(const char* field) const { return camera_.contains(field); }
+
+    double scalar(const Json& value, const std::string& field) const {
+        if (!value.is_number()) fail(field, "expected a number, got " + value.dump());
+        const double x = value.get<double>();
+        if (!std::isfinite(x)) fail(field, "must be finite");
+        return x;
+    }
+
+    std::optional<double> optional_scalar(const char* field) const {
+        if (!has(field)) return std::nullopt;
+        return scalar(camera_.at(field), field);
+    }
+
+    std::vector<double> numbers(const Json& value, const std::string& field,
+                                std::size_t count) const {
+        if (!value.is_array() || value.size() != count)
+            fail(field, "expected " + std::to_string(count) + " numbers, got " + value.dump());
+        std::vector<double> out;
+        for (const Json& item : value) out.push_back(scalar(item, field));
+        return out;
+    }
+
+    // "X,Y,Z" as the flags take it.
+    std::string vec3(const char* field) const {
+        const std::vector<double> v = numbers(camera_.at(field), field, 3);
+        return number(v[0]) + "," + number(v[1]) + "," + number(v[2]);
+    }
+
+    const Json& at(const char* field) const { return camera_.at(field); }
+
+  private:
+    std::string file_;
+    std::size_t index_;
+    const Json& camera_;
+};
+
+// What --camera-json writes: the pinhole K and the OpenCV camera-to-world pose become
+// --intrinsics and --eye/--target/--up, width and height --size, near and far the clip distances.
+void read_pinhole(const CameraReader& r, BatchView& view) {
+    if (r.has("convention") && r.at("convention") != "opencv")
+        r.fail("convention", "only \"opencv\" is read, got " + r.at("convention").dump());
+    const Json& k = r.at("K");
+    if (!k.is_array() || k.size() != 3) r.fail("K", "expected a 3x3 array, got " + k.dump());
+    const std::vector<double> k0 = r.numbers(k[0], "K", 3), k1 = r.numbers(k[1], "K", 3),
+                              k2 = r.numbers(k[2], "K", 3);
+    if (k0[1] != 0.0 || k1[0] != 0.0 || k2 != std::vector<double>{0.0, 0.0, 1.0})
+        r.fail("K", "expected [[fx, 0, cx], [0, fy, cy], [0, 0, 1]] (no skew), got " + k.dump());
+    view.intrinsics =
+        number(k0[0]) + "," + number(k1[1]) + "," + number(k0[2]) + "," + number(k1[2]);
+    if (!r.has("camera_to_world")) r.fail("camera_to_world", "is missing (K needs a pose)");
+    const Json& pose = r.at("camera_to_world");
+    if (!pose.is_array() || pose.size() != 4)
+        r.fail("camera_to_world", "expected a 4x4 array, got " + pose.dump());
+    double m[4][4];
+    for (std::size_t row = 0; row < 4; ++row) {
+        const std::vector<double> values = r.numbers(pose[row], "camera_to_world", 4);
+        for (std::size_t col = 0; col < 4; ++col) m[row][col] = values[col];
+    }
+    // OpenCV camera axes: x right, y down, z forward; the translation is the eye.
+    const double eye[3] = {m[0][3], m[1][3], m[2][3]};
+    view.eye = number(eye[0]) + "," + number(eye[1]) + "," + number(eye[2]);
+    view.target =
+        number(eye[0] + m[0][2]) + "," + number(eye[1] + m[1][2]) + "," + number(eye[2] + m[2][2]);
+    view.up = number(-m[0][1]) + "," + number(-m[1][1]) + "," + number(-m[2][1]);
+    if (r.has("width") != r.has("height"))
+        r.fail(r.has("width") ? "height" : "width", "is missing (width and height go together)");
+    if (r.has("width")) {
+        const Json& w = r.at("width");
+        const Json& h = r.at("height");
+        if (!w.is_number_unsigned() || !h.is_number_unsigned())
+            r.fail("width",
+                   "width and height must be whole numbers, got " + w.dump() + " and " + h.dump());
+        view.size =
+            std::to_string(w.get<std::uint64_t>()) + "x" + std::to_string(h.get<std::uint64_t>());
+    }
+    if (r.has("far") && r.at("far").is_null()) view.infinite_far = true;
+}
+
+BatchView read_camera(const std::filesystem::path& file, std::size_t index, const Json& camera) {
+    const CameraReader r(file, index, camera);
+    BatchView view;
+    const int kinds = int(r.has("eye")) + int(r.has("orbit")) + int(r.has("K"));
+    if (kinds != 1)
+        r.fail("", kinds == 0 ? "needs \"eye\" and \"target\", \"orbit\", or \"K\" and "
+                                "\"camera_to_world\""
+                              : "give one of \"eye\", \"orbit\" and \"K\"");
+    if (r.has("eye")) {
+        if (!r.has("target")) r.fail("target", "is missing (\"eye\" needs it)");
+        view.eye = r.vec3("eye");
+        view.target = r.vec3("target");
+        if (r.has("up")) view.up = r.vec3("up");
+    } else if (r.has("orbit")) {
+        const std::vector<double> o = r.numbers(r.at("orbit"), "orbit", 3);
+        view.orbit = number(o[0]) + "," + number(o[1]) + "," + number(o[2]);
+    } else {
+        read_pinhole(r, view);
+    }
+    if (!r.has("K")) view.fovy = r.optional_scalar("fovy");
+    view.near = r.optional_scalar("near");
+    if (!view.infinite_far) view.far = r.optional_scalar("far");
+    return view;
+}
+
+}  // namespace
+
+std::vector<BatchView> single_view() {
+    return {BatchView{}};
+}
+
+std::vector<BatchView> orbit_views(int count, double elevation, std::optional<double> fovy) {
+    if (count < 1 || count > 1000) throw InputError("--views", "must be in 1..1000");
+    if (!(elevation >= -90.0 && elevation <= 90.0))
+        throw InputError("--elevation", "must be in -90..90 degrees");
+    const double half_fovy = fovy.value_or(60.0) * std::numbers::pi / 360.0;
+    if (!(std::sin(half_fovy) > 0.0))
+        throw InputError("--fovy", "must be in (0, 180) degrees for --views");
+    const double distance = 1.0 / std::sin(half_fovy);
+    std::vector<BatchView> views;
+    for (int i = 0; i < count; ++i) {
+        BatchView view;
+        view.suffix = suffix(std::size_t(i), std::size_t(count));
+        view.orbit = number(360.0 * i / count) + "," + number(elevation) + "," + number(distance);
+        views.push_back(view);
+    }
+    return views;
+}
+
+std::vector<BatchView> read_views_json(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path.string(), "cannot open the --views-json file");
+    Json document;
+    try {
+        document = Json::parse(in);
+    } catch (const Json::exception& e) {
+        throw InputError(path.string(), std::string("not valid JSON: ") + e.what());
+    }
+    if (document.is_object()) document = Json::array({document});
+    if (!document.is_array() || document.empty())
+        throw InputError(path.string(), "expected a camera object or a non-empty array of them");
+    if (document.size() > 1000) throw InputError(path.string(), "more than 1000 cameras");
+    std::vector<BatchView> views;
+    for (std::size_t i = 0; i < document.size(); ++i) {
+        views.push_back(read_camera(path, i, document[i]));
+        views.back().suffix = suffix(i, document.size());
+    }
+    return views;
+}
+
+RenderArguments with_view(const RenderArguments& base, const BatchView& view) {
+    RenderArguments a = base;
+    if (!view.orbit.empty()) a.orbit = view.orbit;
+    if (!view.eye.empty()) a.eye = view.eye;
+    if (!view.target.empty()) a.target = view.target;
+    if (!view.up.empty()) a.up = view.up;
+    if (!view.intrinsics.empty()) a.depth_camera.intrinsics = view.intrinsics;
+    if (!view.size.empty()) a.size = view.size;
+    if (view.fovy) a.fovy = view.fovy;
+    if (view.near) a.near = view.near;
+    if (view.far) a.far = view.far;
+    if (view.infinite_far) a.infinite_far = true;
+    return a;
+}
+
+}  // namespace zraster::cli

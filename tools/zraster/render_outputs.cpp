@@ -1,0 +1,101 @@
+// See render_outputs.hpp.
+#include "render_outputs.hpp"
+
+#include <zraster/error.hpp>
+#include <zraster/image_io.hpp>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <vector>
+
+#include "depth_camera_outputs.hpp"
+#include "output_maps.hpp"
+
+namespace zraster::cli {
+
+// Material opacity only counts in the A-buffer: say so when the scene has any to ignore.
+void warn_if_transparent(const Scene& scene, const std::string& what, std::FILE* notes) {
+    std::size_t transparent = 0;
+    std::string first;
+    for (const Instance& instance : scene.instances) {
+        const Mesh& mesh = scene.meshes.at(instance.mesh);
+        const Material& m =
+            scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
+        if (m.opacity < 1.0f && transparent++ == 0) first = m.name;
+    }
+    if (transparent > 0 && notes != nullptr)
+        fmt::print(notes,
+                   "note: {} instance(s) have a transparent material (opacity < 1, e.g. '{}'): "
+                   "{} draws them opaque; `zraster render --visibility abuffer` blends them\n",
+                   transparent, first, what);
+}
+
+void check_render_outputs(const RenderArguments& a, OutputFiles& outputs) {
+    if (a.output.empty()) throw InputError("-o", "the output path is empty");
+    check_output(outputs, a.output, {".png"}, "-o");
+    check_output(outputs, a.depth_out, {".npy", ".png"}, "--depth-out");
+    check_output(outputs, a.normal_out, {".png"}, "--normal-out");
+    check_output(outputs, a.id_out, {".npy", ".png"}, "--id-out");
+    check_depth_camera_arguments(a.depth_camera, a.visibility, a.aa, a.msaa, a.ortho,
+                                 a.fovy.has_value(), outputs);
+}
+
+RenderedFrame render_outputs(const RenderArguments& a, const Scene& scene, OutputFiles& outputs,
+                             ProgressReporter* progress, std::FILE* notes, Renderer* renderer) {
+    using Clock = std::chrono::steady_clock;
+    const auto since = [](Clock::time_point start) {
+        return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    };
+    RenderedFrame frame;
+    const Clock::time_point render_start = Clock::now();
+    RenderOptions options = make_render_options(a, scene);
+    options.camera =
+        apply_intrinsics(a.depth_camera, *options.camera, options.width, options.height);
+    options.progress = progress;
+    options.normal_target = !a.normal_out.empty();
+    options.id_targets = !a.id_out.empty();
+    options.normal_target |= depth_camera_needs_normals(a.depth_camera);
+    check_frame_arguments(a);
+    if (a.visibility != "abuffer")
+        warn_if_transparent(scene, "--visibility " + a.visibility, notes);
+    RenderResult own;
+    const RenderResult* result = &own;
+    if (renderer != nullptr && renders_with_pipeline(a)) {
+        // The renderer draws one scene after another: cluster bounds kept for one mesh would be
+        // matched to the next by its address and hash only, and are never reused anyway (the
+        // image is the same without them).
+        options.cluster_culling = false;
+        result = &renderer->render(scene, options);
+    } else {
+        own = render_frame(a, scene, options, &frame.visibility, &frame.abuffer);
+    }
+    const RenderTargets& t = result->targets;
+    frame.stats = result->stats;
+    frame.render_ms = since(render_start);
+
+    const Clock::time_point encode_start = Clock::now();
+    // RGBA -> RGB: the alpha channel is always opaque.
+    std::vector<std::uint8_t> rgb(std::size_t(t.width) * std::size_t(t.height) * 3);
+    for (std::size_t i = 0, n = rgb.size() / 3; i < n; ++i)
+        std::copy_n(&t.color[i * 4], 3, &rgb[i * 3]);
+    outputs.add(a.output, encode_png8(t.width, t.height, 3, rgb));
+    if (!a.depth_out.empty()) outputs.add(a.depth_out, encode_depth_map(a.depth_out, t));
+    if (!a.normal_out.empty()) outputs.add(a.normal_out, encode_normal_map(a.normal_out, t));
+    if (!a.id_out.empty()) {
+        std::vector<std::int64_t> first_triangle;
+        std::int64_t total = 0;
+        for (const Instance& instance : scene.instances) {
+            first_triangle.push_back(total);
+            total += static_cast<std::int64_t>(scene.meshes[instance.mesh].triangle_count());
+        }
+        outputs.add(a.id_out, encode_id_map(a.id_out, t, first_triangle));
+    }
+    add_depth_camera_outputs(a.depth_camera, scene, options, t, outputs);
+    frame.encode_ms = since(encode_start);
+    return frame;
+}
+
+}  // namespace zraster::cli
