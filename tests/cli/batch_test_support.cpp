@@ -1,11 +1,7 @@
 #include "batch_test_support.hpp"
 
-#include <sys/wait.h>
-
-#include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -95,14 +91,7 @@ std::set<std::string> files_under(const std::filesystem::path& dir) {
 }
 
 CommandResult run_shell(const std::string& command, const std::filesystem::path& cwd) {
-    const std::string line = "cd '" + cwd.string() + "' && { " + command + " ; } 2>&1";
-    FILE* pipe = popen(line.c_str(), "r");
-    std::string out;
-    std::array<char, 4096> buffer;
-    while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
-        out.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+    return run_shell_line("cd '" + cwd.string() + "' && { " + command + " ; } 2>&1");
 }
 
 std::string zraster_command() {

@@ -161,6 +161,15 @@ std::vector<double> json_numbers(const std::string& json, const std::string& key
     return out;
 }
 
+// A camera-space point through a row-major 4x4 camera_to_world of the camera JSON.
+glm::dvec3 transform_point(const std::vector<double>& pose, const glm::dvec4& camera_point) {
+    glm::dvec3 world(0.0);
+    for (int row = 0; row < 3; ++row)
+        for (int col = 0; col < 4; ++col)
+            world[row] += pose[std::size_t(row * 4 + col)] * camera_point[col];
+    return world;
+}
+
 TEST(DepthCameraCommand, PointsAndCameraJsonReprojectEachOther) {
     const auto dir = temp_dir("cli-points");
     const CommandResult r = run_zraster(
@@ -198,10 +207,7 @@ TEST(DepthCameraCommand, PointsAndCameraJsonReprojectEachOther) {
         const double depth = z[measured[n]];
         const glm::dvec4 camera_point((u - k[2]) / k[0] * depth, (v - k[5]) / k[4] * depth, depth,
                                       1.0);
-        glm::dvec3 world(0.0);
-        for (int row = 0; row < 3; ++row)
-            for (int col = 0; col < 4; ++col)
-                world[row] += pose[std::size_t(row * 4 + col)] * camera_point[col];
+        const glm::dvec3 world = transform_point(pose, camera_point);
         ASSERT_NEAR(world.x, cloud.positions[n].x, 1e-5) << "point " << n;
         ASSERT_NEAR(world.y, cloud.positions[n].y, 1e-5) << "point " << n;
         ASSERT_NEAR(world.z, cloud.positions[n].z, 1e-5) << "point " << n;
@@ -241,10 +247,7 @@ TEST(DepthCameraCommand, OrthographicCameraJsonReprojectsThePoints) {
         const double u = double(i % kWidth), v = double(i / kWidth);
         const glm::dvec4 camera_point((u - centre[0]) / scale[0], (v - centre[1]) / scale[1], z[i],
                                       1.0);
-        glm::dvec3 world(0.0);
-        for (int row = 0; row < 3; ++row)
-            for (int col = 0; col < 4; ++col)
-                world[row] += pose[std::size_t(row * 4 + col)] * camera_point[col];
+        const glm::dvec3 world = transform_point(pose, camera_point);
         ASSERT_NEAR(world.x, cloud.positions[n].x, 1e-5) << "pixel " << i;
         ASSERT_NEAR(world.y, cloud.positions[n].y, 1e-5) << "pixel " << i;
         ASSERT_NEAR(world.z, cloud.positions[n].z, 1e-5) << "pixel " << i;

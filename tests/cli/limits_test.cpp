@@ -4,12 +4,8 @@
 // address space) within a 2 GiB address-space limit: no big allocation was attempted.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
-#include <array>
 #include <chrono>
 #include <cstdint>
-#include <cstdio>
 #include <fstream>
 #include <string>
 
@@ -36,13 +32,7 @@ CommandResult run_limited(const std::string& arguments, const std::filesystem::p
     std::string command = "cd '" + dir.string() + "' && ";
     if (!kSanitized) command += "ulimit -v 2097152 && ";
     command += std::string("'") + ZRASTER_CLI + "' " + arguments + " 2>&1 </dev/null";
-    FILE* pipe = popen(command.c_str(), "r");
-    std::string out;
-    std::array<char, 4096> buffer;
-    while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
-        out.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+    return run_shell_line(command);
 }
 
 // Expects exit 2 within 5 s, one line of output containing `message`, and no out.png.

@@ -26,7 +26,11 @@ CommandResult run_zraster(const std::string& arguments, const std::filesystem::p
     std::string command;
     if (!cwd.empty()) command = "cd '" + cwd.string() + "' && ";
     command += std::string("'") + ZRASTER_CLI + "' " + arguments + " 2>&1 </dev/null";
-    FILE* pipe = popen(command.c_str(), "r");
+    return run_shell_line(command);
+}
+
+CommandResult run_shell_line(const std::string& line) {
+    FILE* pipe = popen(line.c_str(), "r");
     std::string out;
     std::array<char, 4096> buffer;
     while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))

@@ -22,6 +22,9 @@ struct CommandResult {
     std::string output;  // stdout and stderr
 };
 CommandResult run_zraster(const std::string& arguments, const std::filesystem::path& cwd = {});
+// Runs a shell command line as it is, its stdout (redirect stderr into it in the line) and exit
+// status (-1 when it did not exit normally).
+CommandResult run_shell_line(const std::string& line);
 
 }  // namespace zraster::test
 
