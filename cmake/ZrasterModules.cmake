@@ -31,22 +31,42 @@ set(ZRASTER_INCLUDE_DIRS $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>
                          $<BUILD_INTERFACE:${PROJECT_BINARY_DIR}/include>
                          $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
 
-# Under UndefinedBehaviorSanitizer, two checks multiply the compile time of the Highway kernels (a
-# file compiled once per SIMD target) four to six times: pointer-overflow and object-size, most
-# of a sanitizer build (shade_kernel.cpp: 150 s instead of 25 s at -O1). Those files alone are
-# compiled without them; AddressSanitizer still checks every access they make (a superset of what
-# object-size checks), and every other file keeps both.
-function(zraster_relax_kernel_sanitizer_checks sources)
-  if(NOT CMAKE_CXX_FLAGS MATCHES "-fsanitize=[^ ]*undefined")
-    return()
+# The Highway kernels: files that include hwy/foreach_target.h, which compiles the file once per
+# SIMD target by including it again. They stay out of unity builds (CMAKE_UNITY_BUILD, which the
+# scripts turn on: a file that re-includes itself cannot be pasted into another), and two
+# sanitizer settings are relaxed for them alone:
+# - under UndefinedBehaviorSanitizer, pointer-overflow and object-size multiply their compile time
+#   four to six times (shade_kernel.cpp: 150 s instead of 25 s at -O1); AddressSanitizer still
+#   checks every access they make (a superset of what object-size checks), and every other file
+#   keeps both;
+# - under AddressSanitizer (clang), their accesses are checked by calls into the runtime instead
+#   of inlined checks (-asan-instrumentation-with-call-threshold=0): the same checks, made by
+#   __asan_load/__asan_store, in a fifth of the compile time (visibility_kernel.cpp: 107 s
+#   inlined, 22 s with calls).
+function(zraster_mark_simd_kernels sources)
+  set(sanitizer_options)
+  if(CMAKE_CXX_FLAGS MATCHES "-fsanitize=[^ ]*undefined")
+    list(APPEND sanitizer_options -fno-sanitize=pointer-overflow,object-size)
+  endif()
+  if(CMAKE_CXX_FLAGS MATCHES "-fsanitize=[^ ]*address" AND CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    list(APPEND sanitizer_options "SHELL:-mllvm -asan-instrumentation-with-call-threshold=0")
   endif()
   foreach(source ${sources})
     file(STRINGS ${source} per_target_lines REGEX "hwy/foreach_target\\.h")
     if(per_target_lines)
-      set_property(SOURCE ${source} APPEND PROPERTY COMPILE_OPTIONS
-                                        -fno-sanitize=pointer-overflow,object-size)
+      set_property(SOURCE ${source} PROPERTY SKIP_UNITY_BUILD_INCLUSION ON)
+      if(sanitizer_options)
+        set_property(SOURCE ${source} APPEND PROPERTY COMPILE_OPTIONS ${sanitizer_options})
+      endif()
     endif()
   endforeach()
+endfunction()
+
+# zraster_unity_build(TARGET): batches of the target's sources compiled as one file when
+# ZRASTER_UNITY_BUILD is on (the SIMD kernels excluded, zraster_mark_simd_kernels).
+function(zraster_unity_build target)
+  set_target_properties(${target} PROPERTIES UNITY_BUILD ${ZRASTER_UNITY_BUILD}
+                                             UNITY_BUILD_BATCH_SIZE 8)
 endfunction()
 
 # zraster_module(NAME [DEPS module...] [PRIVATE_DEPS target...]): the object library
@@ -59,7 +79,8 @@ function(zraster_module name)
   file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/${name}/*.cpp)
   set(target zraster_module_${name})
   add_library(${target} OBJECT ${sources})
-  zraster_relax_kernel_sanitizer_checks("${sources}")
+  zraster_mark_simd_kernels("${sources}")
+  zraster_unity_build(${target})
   target_include_directories(${target} PUBLIC ${ZRASTER_INCLUDE_DIRS}
                                        PRIVATE ${PROJECT_SOURCE_DIR}/src)
   target_compile_definitions(${target} PUBLIC ${ZRASTER_GLM_DEFINITIONS} PRIVATE ZRASTER_BUILDING)

@@ -18,5 +18,6 @@ flags+=" -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all"
 flags+=" $(bash "$root/scripts/sanitizer-hwy-targets.sh")"
 CC=clang CXX=clang++ cmake -S "$root" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Sanitize \
     -DZRASTER_BUILD_TESTS=ON -DZRASTER_BUILD_FUZZERS=ON -DZRASTER_INSTALL=OFF -DZRASTER_BUILD_PYTHON=OFF \
+    -DZRASTER_UNITY_BUILD=ON \
     -DCMAKE_CXX_FLAGS="$flags" \
     -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null

@@ -123,7 +123,7 @@ CMAKE
     # Unoptimized: the check is about the build, the exports and the link, and -O0 compiles the
     # SIMD kernels in a fraction of the time.
     if ! cmake -S "$consumer" -B "$consumer/build" -G Ninja -DCMAKE_BUILD_TYPE=Debug \
-        -DCMAKE_CXX_FLAGS_DEBUG=-O0 \
+        -DCMAKE_CXX_FLAGS_DEBUG=-O0 -DZRASTER_UNITY_BUILD=ON \
         -DCMAKE_DISABLE_FIND_PACKAGE_GTest=ON -DCMAKE_DISABLE_FIND_PACKAGE_benchmark=ON \
         -DCMAKE_DISABLE_FIND_PACKAGE_CLI11=ON -DCMAKE_DISABLE_FIND_PACKAGE_fmt=ON \
         >"$work/log" 2>&1; then

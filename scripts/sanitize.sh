@@ -22,6 +22,7 @@ build() {
     shift 2
     CC=clang CXX=clang++ cmake -S "$root" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Sanitize \
         -DZRASTER_BUILD_TESTS=ON -DZRASTER_INSTALL=OFF -DZRASTER_BUILD_PYTHON=OFF \
+        -DZRASTER_UNITY_BUILD=ON \
         -DCMAKE_CXX_FLAGS="-O1 -gline-tables-only -fno-omit-frame-pointer $flags" \
         -DCMAKE_EXE_LINKER_FLAGS="$flags" >/dev/null
     ninja -C "$dir" -j "$jobs" "$@" >"$dir/build.log" 2>&1 || {

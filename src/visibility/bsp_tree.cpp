@@ -39,14 +39,10 @@ namespace {
 
 enum class Side { Coplanar, Front, Back, Spanning };
 
-double distance(const glm::dvec4& plane, const glm::dvec3& p) {
-    return glm::dot(glm::dvec3(plane), p) + plane.w;
-}
-
 Side classify(const BspPolygon& polygon, const glm::dvec4& plane, double eps) {
     bool front = false, back = false;
     for (const BspVertex& v : polygon.vertices) {
-        const double d = distance(plane, v.world);
+        const double d = visibility_detail::plane_distance(plane, v.world);
         front |= d > eps;
         back |= d < -eps;
     }

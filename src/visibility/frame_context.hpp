@@ -134,6 +134,11 @@ FlatShade flat_shade(const FrameContext& frame, std::int32_t instance, std::int3
 // Unit world plane through a, b, c along their winding; (0, 0, 0, 0) when degenerate.
 glm::dvec4 plane_through(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c);
 
+// Signed distance of `p` from a unit world plane (positive on the side the normal points to).
+inline double plane_distance(const glm::dvec4& plane, const glm::dvec3& p) {
+    return glm::dot(glm::dvec3(plane), p) + plane.w;
+}
+
 // A plane flipped (if needed) so that `viewer` is on its positive side.
 glm::dvec4 orient_towards(const glm::dvec4& plane, const glm::dvec4& viewer);
 
@@ -151,7 +156,7 @@ bool split_by_plane(const std::vector<Vertex>& v, const glm::dvec4& plane, doubl
     std::vector<int> side(n);
     bool any_front = false, any_back = false;
     for (std::size_t i = 0; i < n; ++i) {
-        d[i] = glm::dot(glm::dvec3(plane), v[i].world) + plane.w;
+        d[i] = plane_distance(plane, v[i].world);
         side[i] = d[i] > eps ? 1 : (d[i] < -eps ? -1 : 0);
         any_front |= side[i] > 0;
         any_back |= side[i] < 0;

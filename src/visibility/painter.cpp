@@ -71,20 +71,16 @@ Item make_item(ScreenPolygon polygon) {
     return item;
 }
 
-double distance(const glm::dvec4& plane, const glm::dvec3& p) {
-    return glm::dot(glm::dvec3(plane), p) + plane.w;
-}
-
 // Every vertex of `polygon` on the non-positive side of `plane` (behind it, seen from the viewer).
 bool all_behind(const ScreenPolygon& polygon, const glm::dvec4& plane, double eps) {
     for (const PolygonVertex& v : polygon.vertices)
-        if (distance(plane, v.world) > eps) return false;
+        if (visibility_detail::plane_distance(plane, v.world) > eps) return false;
     return true;
 }
 
 bool all_in_front(const ScreenPolygon& polygon, const glm::dvec4& plane, double eps) {
     for (const PolygonVertex& v : polygon.vertices)
-        if (distance(plane, v.world) < -eps) return false;
+        if (visibility_detail::plane_distance(plane, v.world) < -eps) return false;
     return true;
 }
 

@@ -130,7 +130,8 @@ bool in_plane(const ScreenPolygon& polygon, const glm::dvec4& plane) {
     for (const PolygonVertex& v : polygon.vertices)
         extent = std::max(extent, glm::length(v.world - polygon.vertices[0].world));
     for (const PolygonVertex& v : polygon.vertices)
-        if (std::abs(glm::dot(glm::dvec3(plane), v.world) + plane.w) > 1e-5 * extent) return false;
+        if (std::abs(visibility_detail::plane_distance(plane, v.world)) > 1e-5 * extent)
+            return false;
     return true;
 }
 

@@ -11,10 +11,6 @@
 namespace zraster::test {
 namespace {
 
-bool single_line(const std::string& s) {
-    return !s.empty() && s.find('\n') == s.size() - 1;
-}
-
 TEST(BatchErrors, BrokenFilesAreErrorRecordsAndTheRestIsRendered) {
     const auto dir = temp_dir("batch-broken");
     write_sphere_obj(dir / "in" / "good1.obj", 12, 1);

@@ -63,11 +63,6 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
     std::ofstream(path, std::ios::binary) << text;
 }
 
-std::string read_bytes(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), {}};
-}
-
 std::vector<nlohmann::json> read_log(const std::filesystem::path& path) {
     std::vector<nlohmann::json> records;
     std::ifstream in(path);

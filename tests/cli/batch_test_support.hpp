@@ -19,7 +19,6 @@ void write_sphere_obj(const std::filesystem::path& path, int segments, int seed)
 // A box as binary STL, its size set by `seed`.
 void write_box_stl(const std::filesystem::path& path, int seed);
 void write_text(const std::filesystem::path& path, const std::string& text);
-std::string read_bytes(const std::filesystem::path& path);
 
 // The records of a batch log, in file order.
 std::vector<nlohmann::json> read_log(const std::filesystem::path& path);

@@ -22,10 +22,6 @@ CommandResult run(const std::string& arguments, const std::filesystem::path& cwd
     return run_zraster(arguments, cwd);
 }
 
-bool single_line(const std::string& s) {
-    return !s.empty() && s.find('\n') == s.size() - 1;
-}
-
 TEST(Cli, NoArgumentsRendersTheDefaultSceneToZrasterPng) {
     const auto dir = temp_dir("cli-default");
     const CommandResult plain = run("", dir);

@@ -34,11 +34,6 @@ void write_wall_scene(const std::filesystem::path& file) {
     }
 }
 
-std::string slurp(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 TEST(CliOcclusion, OcclusionCullGivesTheSameImageAndCountsCulledInstances) {
     const auto dir = temp_dir("cli-occlusion");
     write_wall_scene(dir / "wall.obj");
@@ -50,7 +45,7 @@ TEST(CliOcclusion, OcclusionCullGivesTheSameImageAndCountsCulledInstances) {
     ASSERT_EQ(culled.exit_code, 0) << culled.output;
     EXPECT_NE(plain.output.find("0 occlusion-culled"), std::string::npos) << plain.output;
     EXPECT_NE(culled.output.find("3 occlusion-culled"), std::string::npos) << culled.output;
-    EXPECT_EQ(slurp(dir / "plain.png"), slurp(dir / "culled.png"));
+    EXPECT_EQ(read_bytes(dir / "plain.png"), read_bytes(dir / "culled.png"));
 }
 
 }  // namespace

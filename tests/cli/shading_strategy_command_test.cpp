@@ -11,11 +11,6 @@
 namespace zraster::test {
 namespace {
 
-std::string slurp(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 TEST(CliShadingStrategy, ForwardAndDeferredGiveTheSameImage) {
     const auto dir = temp_dir("cli-shading-strategy");
     const std::string common = "render sphere:20000 --size 160x120 --shading phong --stats";
@@ -30,8 +25,8 @@ TEST(CliShadingStrategy, ForwardAndDeferredGiveTheSameImage) {
     EXPECT_NE(deferred.output.find("(deferred)"), std::string::npos) << deferred.output;
     EXPECT_NE(forward.output.find("(forward)"), std::string::npos) << forward.output;
     EXPECT_NE(automatic.output.find("(deferred)"), std::string::npos) << automatic.output;
-    EXPECT_EQ(slurp(dir / "deferred.png"), slurp(dir / "forward.png"));
-    EXPECT_EQ(slurp(dir / "deferred.png"), slurp(dir / "auto.png"));
+    EXPECT_EQ(read_bytes(dir / "deferred.png"), read_bytes(dir / "forward.png"));
+    EXPECT_EQ(read_bytes(dir / "deferred.png"), read_bytes(dir / "auto.png"));
 
     const CommandResult bad = run_zraster(common + " --shading-strategy sideways -o x.png", dir);
     EXPECT_EQ(bad.exit_code, 2) << bad.output;

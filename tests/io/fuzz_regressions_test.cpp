@@ -16,17 +16,10 @@
 namespace zraster {
 namespace {
 
-std::filesystem::path fixture(const std::string& test, const std::string& name,
-                              std::string_view content) {
-    const auto path = test::temp_dir("io-fuzz-" + test) / name;
-    test::write_bytes(path, content);
-    return path;
-}
-
 // Loads `content` as `name`: it must be refused, with `cause` in the message, within a second.
 void expect_refused(const std::string& test, const std::string& name, std::string_view content,
                     std::string_view cause) {
-    const auto path = fixture(test, name, content);
+    const auto path = test::write_fixture("io-fuzz-" + std::string(test), name, content);
     const auto start = std::chrono::steady_clock::now();
     test::expect_input_error([&] { load_scene(path); }, path, cause);
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));
@@ -142,7 +135,8 @@ TEST(FuzzRegressions, GltfAccessorPastItsBufferView) {
                    "which holds 36");
     expect_refused("gltf-view", "view.gltf", gltf("0", "40"),
                    "glTF buffer view 0 spans bytes 0 + 40 of buffer 0, which holds 36");
-    EXPECT_NO_THROW(load_scene(fixture("gltf-fits", "fits.gltf", gltf("0", "36"))));
+    EXPECT_NO_THROW(
+        load_scene(test::write_fixture("io-fuzz-gltf-fits", "fits.gltf", gltf("0", "36"))));
 }
 
 // fuzz_load_gltf: file normals with tiny components were normalized in float, where their
@@ -161,7 +155,7 @@ TEST(FuzzRegressions, TinyFileNormalsComeOutUnitLength) {
         R"("type":"VEC3","min":[0,0,0],"max":[1,1,0]},{"bufferView":1,"componentType":5126,)"
         R"("count":3,"type":"VEC3"}],"meshes":[{"primitives":[{"attributes":{"POSITION":0,)"
         R"("NORMAL":1}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0})";
-    const Scene scene = load_scene(fixture("tiny-normals", "tiny.gltf", gltf));
+    const Scene scene = load_scene(test::write_fixture("io-fuzz-tiny-normals", "tiny.gltf", gltf));
     ASSERT_EQ(scene.meshes.size(), 1u);
     ASSERT_EQ(scene.meshes[0].normals.size(), 3u);
     for (const glm::vec3& n : scene.meshes[0].normals) {
@@ -200,7 +194,7 @@ TEST(FuzzRegressions, TextureDecodeWarningIsOneLine) {
         R"({"baseColorTexture":{"index":0}}}],"meshes":[{"primitives":[{"attributes":)"
         R"({"POSITION":0},"indices":1,"material":0}]}],"nodes":[{"mesh":0}],)"
         R"("scenes":[{"nodes":[0]}],"scene":0})";
-    const Scene scene = load_scene(fixture("png-chunk", "chunk.gltf", gltf));
+    const Scene scene = load_scene(test::write_fixture("io-fuzz-png-chunk", "chunk.gltf", gltf));
     ASSERT_FALSE(scene.warnings.empty());
     for (const std::string& w : scene.warnings) {
         EXPECT_EQ(w.find('\n'), std::string::npos) << w;

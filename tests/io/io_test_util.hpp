@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include "support/test_support.hpp"
+
 namespace zraster::test {
 
 inline void write_bytes(const std::filesystem::path& path, std::string_view bytes) {
@@ -20,9 +22,12 @@ inline void write_bytes(const std::filesystem::path& path, std::string_view byte
     ASSERT_TRUE(out.good()) << path;
 }
 
-inline std::string read_bytes(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+// A file `name` holding `content` in a fresh temp_dir(folder).
+inline std::filesystem::path write_fixture(const std::string& folder, const std::string& name,
+                                           std::string_view content) {
+    const auto path = temp_dir(folder) / name;
+    write_bytes(path, content);
+    return path;
 }
 
 inline std::vector<std::string> list_directory(const std::filesystem::path& dir) {

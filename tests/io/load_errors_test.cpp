@@ -12,11 +12,9 @@ namespace {
 
 const char* kTriangleObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
 
-std::filesystem::path fixture(const std::string& test, const std::string& name,
-                              std::string_view content) {
-    const auto path = test::temp_dir("io-errors-" + test) / name;
-    test::write_bytes(path, content);
-    return path;
+std::filesystem::path errors_fixture(const std::string& test, const std::string& name,
+                                     std::string_view content) {
+    return test::write_fixture("io-errors-" + test, name, content);
 }
 
 void expect_load_error(const std::filesystem::path& path, std::string_view cause) {
@@ -35,11 +33,11 @@ TEST(LoadErrors, Directory) {
 }
 
 TEST(LoadErrors, EmptyFile) {
-    expect_load_error(fixture("empty", "empty.obj", ""), "empty file");
+    expect_load_error(errors_fixture("empty", "empty.obj", ""), "empty file");
 }
 
 TEST(LoadErrors, TooLargeForTheLimit) {
-    const auto path = fixture("limit-bytes", "tri.obj", kTriangleObj);
+    const auto path = errors_fixture("limit-bytes", "tri.obj", kTriangleObj);
     LoadOptions options;
     options.max_file_bytes = 10;
     test::expect_input_error([&] { load_scene(path, options); }, path, "file too large");
@@ -48,14 +46,14 @@ TEST(LoadErrors, TooLargeForTheLimit) {
 TEST(LoadErrors, UnknownExtensionWithGarbage) {
     std::string garbage;
     for (int i = 0; i < 4096; ++i) garbage.push_back(static_cast<char>((i * 7919) % 251));
-    expect_load_error(fixture("garbage", "model.xyzzy", garbage),
+    expect_load_error(errors_fixture("garbage", "model.xyzzy", garbage),
                       "unsupported or malformed file: ");
 }
 
 TEST(LoadErrors, TruncatedBinaryStl) {
     ZRASTER_REQUIRE_SHARED_DATA();
     const std::string stl = test::read_bytes(test::shared_data("meshes/stl/Spider_binary.stl"));
-    expect_load_error(fixture("stl", "half.stl", stl.substr(0, stl.size() / 2)),
+    expect_load_error(errors_fixture("stl", "half.stl", stl.substr(0, stl.size() / 2)),
                       "unsupported or malformed file: ");
 }
 
@@ -64,30 +62,31 @@ TEST(LoadErrors, TruncatedGlb) {
     const std::string glb = test::read_bytes(test::shared_data("meshes/gltf/Duck.glb"));
     for (std::size_t keep : {glb.size() / 2, std::size_t{100}, std::size_t{11}}) {
         SCOPED_TRACE(keep);
-        expect_load_error(fixture("glb", "cut.glb", glb.substr(0, keep)),
+        expect_load_error(errors_fixture("glb", "cut.glb", glb.substr(0, keep)),
                           "unsupported or malformed file: ");
     }
 }
 
 TEST(LoadErrors, ObjFaceIndexBeyondTheVertices) {
-    expect_load_error(fixture("obj-index", "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n"),
-                      "index out of range");
+    expect_load_error(
+        errors_fixture("obj-index", "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n"),
+        "index out of range");
 }
 
 TEST(LoadErrors, PlyFaceIndexBeyondTheVertices) {
-    expect_load_error(fixture("ply-index", "bad.ply",
-                              "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
-                              "property float y\nproperty float z\nelement face 1\n"
-                              "property list uchar int vertex_indices\nend_header\n"
-                              "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"),
+    expect_load_error(errors_fixture("ply-index", "bad.ply",
+                                     "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                                     "property float y\nproperty float z\nelement face 1\n"
+                                     "property list uchar int vertex_indices\nend_header\n"
+                                     "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"),
                       "out of range");
 }
 
 TEST(LoadErrors, ObjNaNAndInfinity) {
-    expect_load_error(fixture("nan", "nan.obj", "v 0 0 0\nv 1 0 0\nv nan 0 0\nf 1 2 3\n"),
+    expect_load_error(errors_fixture("nan", "nan.obj", "v 0 0 0\nv 1 0 0\nv nan 0 0\nf 1 2 3\n"),
                       "non-finite vertex coordinates (mesh defaultobject, vertex 2)");
     // 1e999 overflows to infinity when parsed.
-    expect_load_error(fixture("inf", "inf.obj", "v 0 0 0\nv 1e999 0 0\nv 0 1 0\nf 1 2 3\n"),
+    expect_load_error(errors_fixture("inf", "inf.obj", "v 0 0 0\nv 1e999 0 0\nv 0 1 0\nf 1 2 3\n"),
                       "non-finite vertex coordinates (mesh defaultobject, vertex 1)");
 }
 
@@ -107,47 +106,49 @@ TEST(LoadErrors, PlyHeaderCountsBeyondTheFileSize) {
     const std::string body = "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
     const auto start = std::chrono::steady_clock::now();
     expect_load_error(
-        fixture("ply-huge", "huge.ply",
-                header_start + "element face 1099511627776\n" + face_list + body),
+        errors_fixture("ply-huge", "huge.ply",
+                       header_start + "element face 1099511627776\n" + face_list + body),
         "truncated or malformed file: the PLY header declares 1099511627776 face records");
-    expect_load_error(fixture("ply-huge-vertices", "huge.ply",
-                              "ply\nformat binary_little_endian 1.0\nelement vertex 300000000\n"
-                              "property float x\nproperty float y\nproperty float z\n"
-                              "element face 1\n" +
-                                  face_list + std::string(49, '\0')),
-                      "the PLY header declares 300000000 vertex records");
+    expect_load_error(
+        errors_fixture("ply-huge-vertices", "huge.ply",
+                       "ply\nformat binary_little_endian 1.0\nelement vertex 300000000\n"
+                       "property float x\nproperty float y\nproperty float z\n"
+                       "element face 1\n" +
+                           face_list + std::string(49, '\0')),
+        "the PLY header declares 300000000 vertex records");
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));
 }
 
 TEST(LoadErrors, OffHeaderCountsBeyondTheFileSize) {
-    expect_load_error(
-        fixture("off-huge", "huge.off", "OFF\n3 300000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
-        "the OFF header declares 300000000 face records");
+    expect_load_error(errors_fixture("off-huge", "huge.off",
+                                     "OFF\n3 300000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
+                      "the OFF header declares 300000000 face records");
 }
 
 // Fewer faces than the header says: Debian's Assimp (assertions enabled) would abort in its
 // triangulation; validating the structure first turns this into an error.
 TEST(LoadErrors, OffBodyShorterThanItsHeader) {
     expect_load_error(
-        fixture("off-short", "short.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
+        errors_fixture("off-short", "short.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
         "unsupported or malformed file: ");
 }
 
 TEST(LoadErrors, OnlyPointsAndLines) {
     expect_load_error(
-        fixture("lines", "lines.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\np 1\n"),
+        errors_fixture("lines", "lines.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\np 1\n"),
         "no triangles");
-    expect_load_error(fixture("points-ply", "points.ply",
-                              "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\n"
-                              "property float y\nproperty float z\nend_header\n0 0 0\n1 0 0\n"),
-                      "no triangles");
-    expect_load_error(fixture("vertices-only", "v.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n"),
+    expect_load_error(
+        errors_fixture("points-ply", "points.ply",
+                       "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\n"
+                       "property float y\nproperty float z\nend_header\n0 0 0\n1 0 0\n"),
+        "no triangles");
+    expect_load_error(errors_fixture("vertices-only", "v.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n"),
                       "no triangles");
 }
 
 TEST(LoadErrors, TooManyTriangles) {
-    const auto path = fixture("limit-triangles", "two.obj",
-                              "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n");
+    const auto path = errors_fixture("limit-triangles", "two.obj",
+                                     "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n");
     LoadOptions options;
     options.max_triangles = 1;
     test::expect_input_error([&] { load_scene(path, options); }, path,

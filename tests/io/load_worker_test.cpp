@@ -304,7 +304,7 @@ TEST(LoadWorker, SharedMeshesLoadTheSame) {
 }
 
 // The parent's validation of what the child sends.
-std::span<const std::uint8_t> bytes_of(const std::string& s) {
+std::span<const std::uint8_t> byte_span(const std::string& s) {
     return {reinterpret_cast<const std::uint8_t*>(s.data()), s.size()};
 }
 
@@ -351,14 +351,14 @@ std::string huge_count_message() {
 
 void expect_invalid(const std::string& message, std::string_view cause) {
     test::expect_input_error(
-        [&] { io::decode_worker_message(bytes_of(message), "m.ply", LoadOptions{}); }, "m.ply",
+        [&] { io::decode_worker_message(byte_span(message), "m.ply", LoadOptions{}); }, "m.ply",
         cause);
 }
 
 TEST(WorkerMessage, RoundTrip) {
     const Scene scene = load_scene(ply_fixture("roundtrip"));
     const std::string message = io::encode_scene_message(scene);
-    expect_same_scene(scene, io::decode_worker_message(bytes_of(message), "m.ply", {}), "quad");
+    expect_same_scene(scene, io::decode_worker_message(byte_span(message), "m.ply", {}), "quad");
 }
 
 TEST(WorkerMessage, RefusesMalformedMessages) {
@@ -387,27 +387,27 @@ TEST(WorkerMessage, RefusesMalformedMessages) {
     expect_invalid(huge_count_message(), "positions: 1152921504606846976 elements do not fit");
     LoadOptions limit;
     limit.max_triangles = 1;
-    test::expect_input_error([&] { io::decode_worker_message(bytes_of(good), "m.ply", limit); },
+    test::expect_input_error([&] { io::decode_worker_message(byte_span(good), "m.ply", limit); },
                              "m.ply", "more triangles than the limit (1)");
 }
 
 TEST(WorkerMessage, ErrorMessages) {
     test::expect_input_error(
         [&] {
-            io::decode_worker_message(
-                bytes_of(io::encode_error_message(io::WorkerMessageKind::InputError, "bad\nthing")),
-                "m.ply", {});
+            io::decode_worker_message(byte_span(io::encode_error_message(
+                                          io::WorkerMessageKind::InputError, "bad\nthing")),
+                                      "m.ply", {});
         },
         "m.ply", "bad thing");
     test::expect_input_error(
         [&] {
             io::decode_worker_message(
-                bytes_of(io::encode_error_message(io::WorkerMessageKind::OutOfMemory, "")), "m.ply",
-                {});
+                byte_span(io::encode_error_message(io::WorkerMessageKind::OutOfMemory, "")),
+                "m.ply", {});
         },
         "m.ply", "the importer ran out of memory");
     EXPECT_THROW(io::decode_worker_message(
-                     bytes_of(io::encode_error_message(io::WorkerMessageKind::InternalError, "x")),
+                     byte_span(io::encode_error_message(io::WorkerMessageKind::InternalError, "x")),
                      "m.ply", {}),
                  std::runtime_error);
 }

@@ -9,10 +9,13 @@
 #include <random>
 #include <string>
 
+#include "math/rotation_test_util.hpp"
+
 namespace zraster {
 namespace {
 
-constexpr float kPi = std::numbers::pi_v<float>;
+using test::kPi;
+using test::max_difference;
 constexpr EulerOrder kOrders[] = {EulerOrder::XYZ, EulerOrder::XZY, EulerOrder::YXZ,
                                   EulerOrder::YZX, EulerOrder::ZXY, EulerOrder::ZYX};
 
@@ -36,13 +39,6 @@ std::string name_of(EulerOrder order) {
 }
 int axis_applied(EulerOrder order, int step) {
     return name_of(order)[step] - 'X';
-}
-
-float max_difference(const glm::mat3& a, const glm::mat3& b) {
-    float d = 0.0f;
-    for (int c = 0; c < 3; ++c)
-        for (int r = 0; r < 3; ++r) d = std::max(d, std::abs(a[c][r] - b[c][r]));
-    return d;
 }
 
 glm::mat3 glm_rotation(float angle, const glm::vec3& axis) {

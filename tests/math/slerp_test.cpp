@@ -7,10 +7,13 @@
 #include <numbers>
 #include <random>
 
+#include "math/rotation_test_util.hpp"
+
 namespace zraster {
 namespace {
 
-constexpr float kPi = std::numbers::pi_v<float>;
+using test::kPi;
+using test::max_difference;
 
 glm::quat random_unit_quat(std::mt19937& rng) {
     std::normal_distribution<float> n(0.0f, 1.0f);
@@ -22,13 +25,6 @@ glm::quat random_unit_quat(std::mt19937& rng) {
 // The rotation angle (in [0, pi]) that takes a to b.
 float angle_between(const glm::quat& a, const glm::quat& b) {
     return quat_to_axis_angle(glm::inverse(a) * b).angle;
-}
-
-float max_difference(const glm::mat3& a, const glm::mat3& b) {
-    float d = 0.0f;
-    for (int c = 0; c < 3; ++c)
-        for (int r = 0; r < 3; ++r) d = std::max(d, std::abs(a[c][r] - b[c][r]));
-    return d;
 }
 
 TEST(Slerp, StaysUnitAndOrthonormalWithConstantAngularSpeed) {

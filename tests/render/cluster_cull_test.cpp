@@ -406,12 +406,6 @@ TEST(ClusterCull, UnsafeClustersAreNeverCullable) {
 
 // --- The renderer ------------------------------------------------------------------------
 
-template <typename T>
-bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
-    return a.size() == b.size() &&
-           (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
-}
-
 void expect_same_frame(const RenderResult& a, const RenderResult& b, const std::string& what) {
     EXPECT_TRUE(same_bits(a.targets.color, b.targets.color)) << what;
     EXPECT_TRUE(same_bits(a.targets.depth, b.targets.depth)) << what;

@@ -18,12 +18,6 @@
 namespace zraster::test {
 namespace {
 
-template <typename T>
-bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
-    return a.size() == b.size() &&
-           (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
-}
-
 void expect_same(const RenderTargets& a, const RenderTargets& b, const std::string& what) {
     EXPECT_TRUE(same_bits(a.color, b.color)) << what;
     EXPECT_TRUE(same_bits(a.depth, b.depth)) << what;

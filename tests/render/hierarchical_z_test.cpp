@@ -66,12 +66,6 @@ TEST(HierarchicalZ, BlockTestIsConservativeAndUseful) {
     EXPECT_GT(recognised, hideable * 95 / 100);
 }
 
-template <typename T>
-bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
-    return a.size() == b.size() &&
-           (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
-}
-
 // Large random triangles in [-1, 1]^3, some long and thin: about 40 layers of overdraw in
 // random depth order (at 640x480: most are larger than a single kernel job there, which is
 // where hierarchical z is kept up to date).

@@ -17,7 +17,7 @@
 namespace zraster::test {
 namespace {
 
-constexpr int kWidth = 160, kHeight = 120;
+constexpr int kSensorWidth = 160, kSensorHeight = 120;
 constexpr double kFocal = 150.0;
 
 StructuredLightSensor open_sensor() {
@@ -31,13 +31,14 @@ StructuredLightSensor open_sensor() {
 
 DepthFrame frame_of(const Scene& scene, const std::optional<StructuredLightSensor>& sensor,
                     int threads = 2) {
-    RenderOptions options = options_for(pinhole_camera(kWidth, kHeight, kFocal), kWidth, kHeight);
+    RenderOptions options = options_for(pinhole_camera(kSensorWidth, kSensorHeight, kFocal),
+                                        kSensorWidth, kSensorHeight);
     options.threads = threads;
     return render_depth_frame(scene, options, sensor);
 }
 
 std::size_t at(int px, int py) {
-    return std::size_t(py) * kWidth + std::size_t(px);
+    return std::size_t(py) * kSensorWidth + std::size_t(px);
 }
 
 // A wall at z = 3 and a square occluder at z = 1.5 covering x in [-0.3, 0.3]. The projector
@@ -52,13 +53,13 @@ TEST(StructuredLight, ShadowFallsOnTheFarSideOfTheOccluder) {
     const DepthFrame ideal = frame_of(scene, std::nullopt);
     const DepthFrame measured = frame_of(scene, sensor);
     EXPECT_GT(measured.sensor_stats.shadowed, 0u);
-    const double cx = 0.5 * kWidth - 0.5;
+    const double cx = 0.5 * kSensorWidth - 0.5;
     const double occluder_left = kFocal * -0.3 / 1.5 + cx;  // u of the occluder's left edge
     const double shadow_left = kFocal * (2 * -0.3 - sensor.baseline) / 3.0 + cx;
     // Rows well inside the occluder's vertical extent.
-    for (int py = kHeight / 2 - 10; py < kHeight / 2 + 10; ++py) {
+    for (int py = kSensorHeight / 2 - 10; py < kSensorHeight / 2 + 10; ++py) {
         int shadowed = 0;
-        for (int px = 0; px < kWidth; ++px) {
+        for (int px = 0; px < kSensorWidth; ++px) {
             const std::size_t i = at(px, py);
             if (!(ideal.z[i] > 0.0f) || measured.z[i] > 0.0f) continue;
             // The left columns the projector's image does not reach (f b / z of them).
@@ -85,9 +86,9 @@ TEST(StructuredLight, NoShadowOnAnUnobstructedWall) {
         const DepthFrame measured = frame_of(scene, open_sensor());
         EXPECT_EQ(measured.sensor_stats.shadowed, 0u);
         EXPECT_EQ(measured.sensor_stats.grazing, 0u);
-        EXPECT_GT(measured.sensor_stats.measured, std::size_t(kWidth * kHeight) / 2);
-        for (int py = 0; py < kHeight; ++py) {
-            for (int px = 0; px < kWidth; ++px) {
+        EXPECT_GT(measured.sensor_stats.measured, std::size_t(kSensorWidth * kSensorHeight) / 2);
+        for (int py = 0; py < kSensorHeight; ++py) {
+            for (int px = 0; px < kSensorWidth; ++px) {
                 const std::size_t i = at(px, py);
                 if (!(ideal.z[i] > 0.0f) || measured.z[i] > 0.0f) continue;
                 const double unreached = kFocal * open_sensor().baseline / ideal.z[i];

@@ -2,8 +2,12 @@
 #pragma once
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
+#include <vector>
 
 namespace zraster::test {
 
@@ -15,6 +19,24 @@ bool have_shared_data();
 
 // A fresh, empty directory for one test's output files.
 std::filesystem::path temp_dir(const std::string& name);
+
+// The whole content of a file (empty when it cannot be read).
+inline std::string read_bytes(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The same elements, bit for bit (NaNs and signed zeros included).
+template <typename T>
+bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
+    return a.size() == b.size() &&
+           (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+// One line of text, ending with its newline: what every error message of the command is.
+inline bool single_line(const std::string& s) {
+    return !s.empty() && s.find('\n') == s.size() - 1;
+}
 
 // Runs the built zraster command with `arguments` (shell syntax) in `cwd`, no standard input.
 struct CommandResult {

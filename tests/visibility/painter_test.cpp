@@ -27,11 +27,6 @@ RenderOptions front_options(CullMode cull = CullMode::Back) {
     return o;
 }
 
-// A triangle in the plane z = depth, counter-clockwise seen from +z.
-std::vector<glm::vec3> flat_triangle(float x0, float y0, float size, float depth) {
-    return {{x0, y0, depth}, {x0 + size, y0, depth}, {x0, y0 + size, depth}};
-}
-
 TEST(Painter, DepthSeparatedPairNeedsOneComparison) {
     const Scene scene =
         scene_from_triangles({flat_triangle(-1, -1, 2, 1.0f), flat_triangle(-1.5, -1.5, 2, -1.0f)});

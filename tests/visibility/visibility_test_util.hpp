@@ -11,6 +11,11 @@
 
 namespace zraster::test {
 
+// A triangle in the plane z = depth, counter-clockwise seen from +z.
+inline std::vector<glm::vec3> flat_triangle(float x0, float y0, float size, float depth) {
+    return {{x0, y0, depth}, {x0 + size, y0, depth}, {x0, y0 + size, depth}};
+}
+
 // A point uniform in [lo, hi]^3, its coordinates drawn in the order x, y, z. Not
 // glm::dvec3(rng.uniform(..), rng.uniform(..), rng.uniform(..)): the order in which a call's
 // arguments are evaluated is unspecified (GCC evaluates them right to left, clang left to right),

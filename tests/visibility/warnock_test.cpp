@@ -85,10 +85,6 @@ Case run(const std::vector<std::vector<glm::vec3>>& triangles) {
     return c;
 }
 
-std::vector<glm::vec3> flat_triangle(float x0, float y0, float size, float depth) {
-    return {{x0, y0, depth}, {x0 + size, y0, depth}, {x0, y0 + size, depth}};
-}
-
 // Covers the whole view of front_camera() at any depth near 0.
 std::vector<glm::vec3> screen_filling(float depth) {
     return {{-40, -40, depth}, {40, -40, depth}, {0, 40, depth}};

@@ -10,15 +10,12 @@
 #include <fstream>
 #include <numbers>
 
+#include "command_line.hpp"
+
 namespace zraster::cli {
 namespace {
 
 using Json = nlohmann::json;
-
-// Shortest text that reads back as the same double: the flags' parsers get the exact value.
-std::string number(double x) {
-    return fmt::format("{:.17g}", x);
-}
 
 std::string suffix(std::size_t index, std::size_t count) {
     const int digits = count <= 100 ? 2 : 3;  // at most 1000 views
@@ -64,7 +61,7 @@ class CameraReader {
     // "X,Y,Z" as the flags take it.
     std::string vec3(const char* field) const {
         const std::vector<double> v = numbers(camera_.at(field), field, 3);
-        return number(v[0]) + "," + number(v[1]) + "," + number(v[2]);
+        return exact_number(v[0]) + "," + exact_number(v[1]) + "," + exact_number(v[2]);
     }
 
     const Json& at(const char* field) const { return camera_.at(field); }
@@ -86,8 +83,8 @@ void read_pinhole(const CameraReader& r, BatchView& view) {
                               k2 = r.numbers(k[2], "K", 3);
     if (k0[1] != 0.0 || k1[0] != 0.0 || k2 != std::vector<double>{0.0, 0.0, 1.0})
         r.fail("K", "expected [[fx, 0, cx], [0, fy, cy], [0, 0, 1]] (no skew), got " + k.dump());
-    view.intrinsics =
-        number(k0[0]) + "," + number(k1[1]) + "," + number(k0[2]) + "," + number(k1[2]);
+    view.intrinsics = exact_number(k0[0]) + "," + exact_number(k1[1]) + "," + exact_number(k0[2]) +
+                      "," + exact_number(k1[2]);
     if (!r.has("camera_to_world")) r.fail("camera_to_world", "is missing (K needs a pose)");
     const Json& pose = r.at("camera_to_world");
     if (!pose.is_array() || pose.size() != 4)
@@ -99,10 +96,10 @@ void read_pinhole(const CameraReader& r, BatchView& view) {
     }
     // OpenCV camera axes: x right, y down, z forward; the translation is the eye.
     const double eye[3] = {m[0][3], m[1][3], m[2][3]};
-    view.eye = number(eye[0]) + "," + number(eye[1]) + "," + number(eye[2]);
-    view.target =
-        number(eye[0] + m[0][2]) + "," + number(eye[1] + m[1][2]) + "," + number(eye[2] + m[2][2]);
-    view.up = number(-m[0][1]) + "," + number(-m[1][1]) + "," + number(-m[2][1]);
+    view.eye = exact_number(eye[0]) + "," + exact_number(eye[1]) + "," + exact_number(eye[2]);
+    view.target = exact_number(eye[0] + m[0][2]) + "," + exact_number(eye[1] + m[1][2]) + "," +
+                  exact_number(eye[2] + m[2][2]);
+    view.up = exact_number(-m[0][1]) + "," + exact_number(-m[1][1]) + "," + exact_number(-m[2][1]);
     if (r.has("width") != r.has("height"))
         r.fail(r.has("width") ? "height" : "width", "is missing (width and height go together)");
     if (r.has("width")) {
@@ -132,7 +129,7 @@ BatchView read_camera(const std::filesystem::path& file, std::size_t index, cons
         if (r.has("up")) view.up = r.vec3("up");
     } else if (r.has("orbit")) {
         const std::vector<double> o = r.numbers(r.at("orbit"), "orbit", 3);
-        view.orbit = number(o[0]) + "," + number(o[1]) + "," + number(o[2]);
+        view.orbit = exact_number(o[0]) + "," + exact_number(o[1]) + "," + exact_number(o[2]);
     } else {
         read_pinhole(r, view);
     }
@@ -160,7 +157,8 @@ std::vector<BatchView> orbit_views(int count, double elevation, std::optional<do
     for (int i = 0; i < count; ++i) {
         BatchView view;
         view.suffix = suffix(std::size_t(i), std::size_t(count));
-        view.orbit = number(360.0 * i / count) + "," + number(elevation) + "," + number(distance);
+        view.orbit = exact_number(360.0 * i / count) + "," + exact_number(elevation) + "," +
+                     exact_number(distance);
         views.push_back(view);
     }
     return views;

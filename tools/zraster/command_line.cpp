@@ -39,6 +39,10 @@ std::vector<double> parse_numbers(const std::string& option, const std::string& 
 
 }  // namespace
 
+std::string exact_number(double x) {
+    return fmt::format("{:.17g}", x + 0.0);
+}
+
 std::string limit_advice(const std::string& limit) {
     static const std::pair<const char*, const char*> kFlags[] = {
         {"max_painter_comparisons", "--max-painter-comparisons"},

@@ -21,6 +21,10 @@ inline constexpr int kExitSomeFilesFailed = 3;  // `zraster batch`: the others w
 // message ("; raise it with --max-bsp-polygons N"); empty for a limit without one.
 std::string limit_advice(const std::string& limit);
 
+// Enough digits (17 significant) to read back the same double; -0 written as 0. For the flag
+// values the command makes and the numbers of the JSON it writes.
+std::string exact_number(double x);
+
 // "X,Y,Z" -> vec3; throws InputError naming the option on malformed or non-finite values.
 glm::dvec3 parse_vec3(const std::string& option, const std::string& text);
 glm::dvec4 parse_vec4(const std::string& option, const std::string& text);

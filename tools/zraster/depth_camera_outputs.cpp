@@ -83,17 +83,12 @@ StructuredLightSensor sensor_of(const DepthCameraArguments& a) {
     return s;
 }
 
-// Enough digits to read back the same double; -0 written as 0.
-std::string number(double x) {
-    return fmt::format("{:.17g}", x + 0.0);
-}
-
 // "[[a, b, c, d], ...]": the rows of a 4x4 matrix.
 std::string matrix_rows(const glm::dmat4& m) {
     std::string out = "[";
     for (int r = 0; r < 4; ++r) {
         out += r ? ", [" : "[";
-        for (int c = 0; c < 4; ++c) out += (c ? ", " : "") + number(m[c][r]);
+        for (int c = 0; c < 4; ++c) out += (c ? ", " : "") + exact_number(m[c][r]);
         out += "]";
     }
     return out + "]";
@@ -102,7 +97,7 @@ std::string matrix_rows(const glm::dmat4& m) {
 // JSON has no infinity or NaN: an infinite far plane, or a clip distance a given projection
 // matrix does not have, is null.
 std::string distance(double d) {
-    return std::isfinite(d) ? number(d) : std::string("null");
+    return std::isfinite(d) ? exact_number(d) : std::string("null");
 }
 
 // An orthographic camera's pixel mapping in OpenCV axes: u = su X + cu, v = sv Y + cv, from the
@@ -137,8 +132,8 @@ std::vector<std::uint8_t> camera_json(const Camera& camera, int width, int heigh
             "row) from the top left, pixel centers at integers; u = su X + cu, v = sv Y + cv "
             "(pixels_per_unit [su, sv], principal_point [cu, cv]); Z moves no pixel\",\n";
         out += fmt::format("  \"width\": {},\n  \"height\": {},\n", width, height);
-        out += "  \"pixels_per_unit\": [" + number(o.su) + ", " + number(o.sv) + "],\n";
-        out += "  \"principal_point\": [" + number(o.cu) + ", " + number(o.cv) + "],\n";
+        out += "  \"pixels_per_unit\": [" + exact_number(o.su) + ", " + exact_number(o.sv) + "],\n";
+        out += "  \"principal_point\": [" + exact_number(o.cu) + ", " + exact_number(o.cv) + "],\n";
     } else {
         const Intrinsics k = camera.intrinsics(width, height, CameraConvention::OpenCV);
         near = k.near;
@@ -149,8 +144,8 @@ std::vector<std::uint8_t> camera_json(const Camera& camera, int width, int heigh
             "row) from the top left, pixel centers at integers; u = fx X / Z + cx, v = fy Y / Z + "
             "cy\",\n";
         out += fmt::format("  \"width\": {},\n  \"height\": {},\n", width, height);
-        out += "  \"K\": [[" + number(k.fx) + ", 0, " + number(k.cx) + "], [0, " + number(k.fy) +
-               ", " + number(k.cy) + "], [0, 0, 1]],\n";
+        out += "  \"K\": [[" + exact_number(k.fx) + ", 0, " + exact_number(k.cx) + "], [0, " +
+               exact_number(k.fy) + ", " + exact_number(k.cy) + "], [0, 0, 1]],\n";
     }
     out += "  \"camera_to_world\": " + matrix_rows(pose) + ",\n";
     out += "  \"near\": " + distance(near) + ",\n";
