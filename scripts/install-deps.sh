@@ -9,7 +9,7 @@ packages=(
   libglm-dev libassimp-dev libstb-dev libdeflate-dev libcli11-dev libfmt-dev nlohmann-json3-dev
   libhwy-dev libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev
   libegl-dev libgles-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
-  pybind11-dev python3-pybind11 python3-numpy python3-pytest
+  pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-distributed
 )
 
 missing=()

@@ -64,5 +64,6 @@ void bind_mesh(py::module_& m);
 void bind_scene(py::module_& m);
 void bind_camera(py::module_& m);
 void bind_renderer(py::module_& m);
+void bind_batch(py::module_& m);
 
 }  // namespace zraster::python

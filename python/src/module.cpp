@@ -17,4 +17,5 @@ PYBIND11_MODULE(_zraster, m) {
     bind_camera(m);
     bind_renderer(m);
     bind_depth_camera(m);
+    bind_batch(m);
 }

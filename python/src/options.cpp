@@ -94,28 +94,19 @@ std::string with_keyword_names(std::string message) {
     return message;
 }
 
-RenderKeywords parse_render_keywords(const py::kwargs& keywords, int width, int height, int threads,
-                                     std::uint64_t max_pixels) {
-    thread_local FlagParser parser;  // one per thread, cleared for every parse
-    RenderKeywords result;
-    std::vector<std::string> args = {
-        "--size=" + std::to_string(width) + "x" + std::to_string(height),
-        "--threads=" + std::to_string(threads), "--max-pixels=" + std::to_string(max_pixels)};
+std::vector<std::string> flag_arguments(
+    const py::kwargs& keywords, const CLI::App& app,
+    const std::function<bool(const CLI::Option*)>& is_keyword,
+    const std::function<std::string(const std::string&)>& unknown, std::set<std::string>* given) {
+    std::vector<std::string> args;
     for (const auto& [key, value] : keywords) {
         const std::string keyword = py::str(key).cast<std::string>();
         std::string flag = "--" + keyword;
         std::replace(flag.begin(), flag.end(), '_', '-');
         const CLI::Option* option =
-            keyword.find('-') == std::string::npos ? parser.app.get_option_no_throw(flag) : nullptr;
-        if (option == nullptr || !is_keyword_flag(option)) {
-            std::string message = "render() got an unexpected keyword argument '";
-            message += keyword;
-            message += "'";
-            if (keyword == "size" || keyword == "threads" || keyword == "max_pixels")
-                message += " (the Renderer's: Renderer(width, height, threads, max_pixels))";
-            throw py::type_error(message);
-        }
-        result.given.insert(keyword);
+            keyword.find('-') == std::string::npos ? app.get_option_no_throw(flag) : nullptr;
+        if (option == nullptr || !is_keyword(option)) throw py::type_error(unknown(keyword));
+        if (given != nullptr) given->insert(keyword);
         if (option->get_expected_max() == 0) {  // a flag without a value: True or False
             if (!py::isinstance<py::bool_>(value) &&
                 !(py::hasattr(value, "dtype") &&
@@ -146,6 +137,34 @@ RenderKeywords parse_render_keywords(const py::kwargs& keywords, int width, int 
             args.push_back(flag + "=" + value_text(value, keyword));
         }
     }
+    return args;
+}
+
+InputError keyword_error(const CLI::ParseError& e) {
+    const std::string message = with_keyword_names(e.what());
+    const std::string source = source_in(e.what());
+    std::string cause = message;
+    if (!source.empty() && cause.starts_with(source + ": ")) cause.erase(0, source.size() + 2);
+    return InputError(source, cause);
+}
+
+RenderKeywords parse_render_keywords(const py::kwargs& keywords, int width, int height, int threads,
+                                     std::uint64_t max_pixels) {
+    thread_local FlagParser parser;  // one per thread, cleared for every parse
+    RenderKeywords result;
+    std::vector<std::string> args = {
+        "--size=" + std::to_string(width) + "x" + std::to_string(height),
+        "--threads=" + std::to_string(threads), "--max-pixels=" + std::to_string(max_pixels)};
+    const std::vector<std::string> given = flag_arguments(
+        keywords, parser.app, is_keyword_flag,
+        [](const std::string& keyword) {
+            std::string message = "render() got an unexpected keyword argument '" + keyword + "'";
+            if (keyword == "size" || keyword == "threads" || keyword == "max_pixels")
+                message += " (the Renderer's: Renderer(width, height, threads, max_pixels))";
+            return message;
+        },
+        &result.given);
+    args.insert(args.end(), given.begin(), given.end());
     // The same keywords as this thread's last call (a render loop): the same arguments, without
     // CLI11's parse (most of the 0.15 ms a small frame spent outside the renderer).
     thread_local std::vector<std::string> last_args;
@@ -160,11 +179,7 @@ RenderKeywords parse_render_keywords(const py::kwargs& keywords, int width, int 
     try {
         parser.app.parse(reversed);
     } catch (const CLI::ParseError& e) {
-        const std::string message = with_keyword_names(e.what());
-        const std::string source = source_in(e.what());
-        std::string cause = message;
-        if (!source.empty() && cause.starts_with(source + ": ")) cause.erase(0, source.size() + 2);
-        throw InputError(source, cause);
+        throw keyword_error(e);
     }
     last_args = std::move(args);
     last_arguments = parser.arguments;

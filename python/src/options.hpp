@@ -5,9 +5,15 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <zraster/error.hpp>
+
+#include <CLI/CLI.hpp>
+
 #include <cstdint>
+#include <functional>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "render_arguments.hpp"
 
@@ -25,6 +31,19 @@ struct RenderKeywords {
 // for a keyword that names no flag or a value of the wrong kind, InputError for a bad value.
 RenderKeywords parse_render_keywords(const py::kwargs& keywords, int width, int height, int threads,
                                      std::uint64_t max_pixels);
+
+// Keywords -> "--flag=value" arguments for `app`: a keyword is an option's name with dashes as
+// underscores, True/False a flag without a value, a number or a string a flag's value, a sequence
+// of numbers "X,Y,Z", a list of those a repeatable flag given once per item. `is_keyword` says
+// which options are keywords; for any other keyword a TypeError with the message unknown(keyword).
+// The keywords passed are added to `given` (may be null).
+std::vector<std::string> flag_arguments(
+    const py::kwargs& keywords, const CLI::App& app,
+    const std::function<bool(const CLI::Option*)>& is_keyword,
+    const std::function<std::string(const std::string&)>& unknown, std::set<std::string>* given);
+
+// CLI11's parse error as the InputError of the keyword it names ("--light-dir" -> "light_dir").
+InputError keyword_error(const CLI::ParseError& e);
 
 // A flag's name as a keyword ("--light-dir" -> "light_dir"); error messages are rewritten so.
 std::string keyword_name(const std::string& flag);

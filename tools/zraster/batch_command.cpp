@@ -5,55 +5,23 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <chrono>
 #include <csignal>
-#include <filesystem>
 #include <iostream>
-#include <system_error>
-#include <thread>
 
 #include <malloc.h>
 #include <unistd.h>
 
-#include "batch_inputs.hpp"
-#include "batch_job.hpp"
-#include "batch_limits.hpp"
 #include "batch_log.hpp"
+#include "batch_plan.hpp"
 #include "batch_progress.hpp"
 #include "batch_run.hpp"
 #include "batch_signals.hpp"
-#include "batch_views.hpp"
 #include "command_line.hpp"
 #include "depth_camera_outputs.hpp"
 
 namespace zraster::cli {
 namespace {
-
-BatchSettings settings_of(const BatchArguments& a, int jobs) {
-    const bool views = a.views > 0 || !a.views_json.empty();
-    if (a.views > 0 && !a.views_json.empty())
-        throw InputError("--views-json", "and --views both give the views: choose one");
-    if (views && (!a.render.orbit.empty() || !a.render.eye.empty() || !a.render.target.empty()))
-        throw InputError(a.views > 0 ? "--views" : "--views-json",
-                         "places the camera of every view: not with --orbit, --eye or --target");
-    BatchSettings s;
-    s.render = a.render;
-    // Checked (and clamped, with its warning) once, not once per file.
-    s.render.threads = checked_thread_count("--threads", a.render.threads);
-    s.outputs = {a.depth, a.z, a.id, a.range, a.normal, a.points, a.camera_json};
-    if (a.views > 0) s.views = orbit_views(a.views, a.elevation, a.render.fovy);
-    if (!a.views_json.empty()) s.views = read_views_json(a.views_json);
-    s.limits.max_triangles = a.max_triangles;
-    s.limits.max_memory = a.max_memory.empty() ? default_max_memory(jobs)
-                                               : parse_byte_size("--max-memory", a.max_memory);
-    s.load = command_load_options();
-    s.load.max_triangles = load_triangle_limit(s.limits);
-    s.load.worker_memory_bytes = s.limits.max_memory;
-    s.out_dir = a.out_dir;
-    s.force = a.force;
-    return s;
-}
 
 // One file after another of similar sizes: glibc would give the memory each one frees back to the
 // kernel (unmapping blocks over its mmap threshold, trimming its heaps), and the next file would
@@ -134,35 +102,12 @@ void add_batch_command(CLI::App& app, BatchArguments& a) {
 
 int run_batch(const BatchArguments& a) {
     const auto start = std::chrono::steady_clock::now();
-    const int jobs = a.jobs > 0 ? a.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
-    if (a.out_dir.empty()) throw InputError("-o", "the output folder is empty");
-    const BatchSettings settings = settings_of(a, jobs);
-    const Shard shard = a.shard.empty() ? Shard{} : parse_shard(a.shard);
-    std::error_code ec;
-    std::filesystem::create_directories(a.out_dir, ec);
-    if (ec || !std::filesystem::is_directory(a.out_dir))
-        throw InputError("-o " + a.out_dir, "cannot create the output folder" +
-                                                (ec ? ": " + ec.message() : std::string()));
-    check_batch_settings(settings);
+    const BatchPlan plan = plan_batch(a, std::cin);
+    const std::vector<BatchInput>& inputs = plan.inputs;
+    const BatchSettings& settings = plan.settings;
+    const int jobs = plan.jobs;
 
-    std::vector<std::string> paths = a.inputs;
-    for (const std::string& list : a.lists) {
-        const std::vector<std::string> listed = read_path_list(list, std::cin);
-        paths.insert(paths.end(), listed.begin(), listed.end());
-    }
-    if (paths.empty()) throw InputError("batch", "no inputs: give files, folders or --list FILE");
-    const std::vector<BatchInput> all = find_inputs(paths, a.out_dir);
-    if (all.empty())
-        throw InputError("batch", "no mesh files in the inputs given (" + paths.front() +
-                                      (paths.size() > 1 ? ", ..." : "") + ")");
-    check_output_clashes(all,
-                         [&](const BatchInput& input) { return planned_outputs(input, settings); });
-    std::vector<BatchInput> inputs;
-    std::copy_if(all.begin(), all.end(), std::back_inserter(inputs),
-                 [&](const BatchInput& input) { return in_shard(input, shard); });
-
-    BatchLog log(a.log.empty() ? std::filesystem::path(a.out_dir) / "batch.jsonl"
-                               : std::filesystem::path(a.log));
+    BatchLog log(plan.log);
     StopOnSignals signals;
     BatchProgress progress(progress_mode(a.progress, ::isatty(STDERR_FILENO) == 1), inputs.size());
     keep_freed_memory();

@@ -1,0 +1,79 @@
+// See batch_plan.hpp.
+#include "batch_plan.hpp"
+
+#include <zraster/error.hpp>
+
+#include <algorithm>
+#include <iterator>
+#include <string>
+#include <system_error>
+#include <thread>
+
+#include "batch_limits.hpp"
+#include "batch_views.hpp"
+#include "command_line.hpp"
+
+namespace zraster::cli {
+
+int batch_jobs(const BatchArguments& a) {
+    return a.jobs > 0 ? a.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+BatchSettings batch_settings(const BatchArguments& a, int jobs) {
+    if (a.out_dir.empty()) throw InputError("-o", "the output folder is empty");
+    const bool views = a.views > 0 || !a.views_json.empty();
+    if (a.views > 0 && !a.views_json.empty())
+        throw InputError("--views-json", "and --views both give the views: choose one");
+    if (views && (!a.render.orbit.empty() || !a.render.eye.empty() || !a.render.target.empty()))
+        throw InputError(a.views > 0 ? "--views" : "--views-json",
+                         "places the camera of every view: not with --orbit, --eye or --target");
+    BatchSettings s;
+    s.render = a.render;
+    // Checked (and clamped, with its warning) once, not once per file.
+    s.render.threads = checked_thread_count("--threads", a.render.threads);
+    s.outputs = {a.depth, a.z, a.id, a.range, a.normal, a.points, a.camera_json};
+    if (a.views > 0) s.views = orbit_views(a.views, a.elevation, a.render.fovy);
+    if (!a.views_json.empty()) s.views = read_views_json(a.views_json);
+    s.limits.max_triangles = a.max_triangles;
+    s.limits.max_memory = a.max_memory.empty() ? default_max_memory(jobs)
+                                               : parse_byte_size("--max-memory", a.max_memory);
+    s.load = command_load_options();
+    s.load.max_triangles = load_triangle_limit(s.limits);
+    s.load.worker_memory_bytes = s.limits.max_memory;
+    s.out_dir = a.out_dir;
+    s.force = a.force;
+    return s;
+}
+
+BatchPlan plan_batch(const BatchArguments& a, std::istream& standard_input) {
+    BatchPlan plan;
+    plan.jobs = batch_jobs(a);
+    plan.settings = batch_settings(a, plan.jobs);
+    const Shard shard = a.shard.empty() ? Shard{} : parse_shard(a.shard);
+    std::error_code ec;
+    std::filesystem::create_directories(a.out_dir, ec);
+    if (ec || !std::filesystem::is_directory(a.out_dir))
+        throw InputError("-o " + a.out_dir, "cannot create the output folder" +
+                                                (ec ? ": " + ec.message() : std::string()));
+    check_batch_settings(plan.settings);
+
+    std::vector<std::string> paths = a.inputs;
+    for (const std::string& list : a.lists) {
+        const std::vector<std::string> listed = read_path_list(list, standard_input);
+        paths.insert(paths.end(), listed.begin(), listed.end());
+    }
+    if (paths.empty()) throw InputError("batch", "no inputs: give files, folders or --list FILE");
+    const std::vector<BatchInput> all = find_inputs(paths, a.out_dir);
+    if (all.empty())
+        throw InputError("batch", "no mesh files in the inputs given (" + paths.front() +
+                                      (paths.size() > 1 ? ", ..." : "") + ")");
+    check_output_clashes(
+        all, [&](const BatchInput& input) { return planned_outputs(input, plan.settings); });
+    std::copy_if(all.begin(), all.end(), std::back_inserter(plan.inputs),
+                 [&](const BatchInput& input) { return in_shard(input, shard); });
+    plan.log = a.log.empty() ? std::filesystem::path(a.out_dir) / "batch.jsonl"
+                             : std::filesystem::path(a.log);
+    return plan;
+}
+
+}  // namespace zraster::cli
