@@ -48,6 +48,15 @@ struct LoadOptions {
     // FIFOs, devices and directories are refused either way.
     bool allow_outside_references = false;
 
+    // Textures. An image wider or taller than max_texture_side texels is reduced (halved with a
+    // box filter until it fits, as its mip levels are) with a warning. The decoded bytes of all
+    // of a model's textures, mip levels included, stay within max_texture_bytes: an image whose
+    // decoding alone would exceed it is not decoded (its header says its size), and a texture
+    // that would take the total past it is not kept; either way a warning, and the material's
+    // color is used.
+    int max_texture_side = 8192;
+    std::size_t max_texture_bytes = std::size_t{512} << 20;
+
     LoadIsolation isolation = LoadIsolation::InProcess;
     // WorkerProcess only: wall-clock limit of the child (its CPU time limit is this, rounded up,
     // plus one second), and the address space it may add to what it inherits (0: no limit). The

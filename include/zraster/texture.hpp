@@ -17,9 +17,12 @@ enum class TextureFilter { Nearest, Bilinear, Trilinear };
 
 class ZRASTER_API Texture {
   public:
-    // rgba holds width*height*4 bytes, rows top to bottom. Builds the mip chain.
+    // rgba holds width*height*4 bytes, rows top to bottom. Builds the mip chain. With max_side
+    // > 0, the levels wider or taller than max_side are left out: the texture starts at the
+    // first level of the chain that fits (the same box filter), so a huge image costs its
+    // reduced size (and the reductions down to it) rather than its full chain.
     // Throws std::invalid_argument for non-positive sizes or a short buffer.
-    Texture(int width, int height, std::span<const std::uint8_t> rgba);
+    Texture(int width, int height, std::span<const std::uint8_t> rgba, int max_side = 0);
 
     int width() const;
     int height() const;

@@ -8,6 +8,9 @@
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+// The std::vector/std::string conversions, the same in every file that converts them (a file
+// without them would compile and fail at run time: "Unregistered type").
+#include <pybind11/stl.h>
 
 #include <memory>
 #include <optional>

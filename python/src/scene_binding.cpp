@@ -68,7 +68,8 @@ std::shared_ptr<PyScene> scene_from_owned(std::shared_ptr<const Scene> owned, st
 
 std::shared_ptr<PyScene> load(const py::object& path_object, const std::string& isolation,
                               bool allow_outside_references, std::size_t max_instances,
-                              std::size_t max_triangles) {
+                              std::size_t max_triangles, int max_texture_side,
+                              std::size_t max_texture_bytes) {
     if (!py::isinstance<py::str>(path_object) && !py::hasattr(path_object, "__fspath__"))
         type_error("path", "a str or os.PathLike", path_object);
     const auto path = py::module_::import("os").attr("fspath")(path_object);
@@ -83,9 +84,12 @@ std::shared_ptr<PyScene> load(const py::object& path_object, const std::string& 
         input_error("isolation", "expected 'worker' or 'in-process', got '" + isolation + "'");
     if (max_instances < 1) input_error("max_instances", "must be at least 1");
     if (max_triangles < 1) input_error("max_triangles", "must be at least 1");
+    if (max_texture_side < 1) input_error("max_texture_side", "must be at least 1");
     options.allow_outside_references = allow_outside_references;
     options.max_instances = max_instances;
     options.max_triangles = max_triangles;
+    options.max_texture_side = max_texture_side;
+    options.max_texture_bytes = max_texture_bytes;
     std::shared_ptr<const Scene> owned;
     {
         py::gil_scoped_release release;
@@ -213,6 +217,8 @@ zraster.load() returns a Scene too (its meshes owned by zraster).)")
     m.def("load", &load, "path"_a, "isolation"_a = "worker", "allow_outside_references"_a = false,
           "max_instances"_a = LoadOptions{}.max_instances,
           "max_triangles"_a = LoadOptions{}.max_triangles,
+          "max_texture_side"_a = LoadOptions{}.max_texture_side,
+          "max_texture_bytes"_a = LoadOptions{}.max_texture_bytes,
           R"(Loads a scene: a mesh file or a procedural spec, as `zraster render` reads it.
 
 path: a file (OBJ with MTL, PLY, STL, glTF 2.0 .gltf/.glb, 3DS, OFF and the other formats
@@ -224,6 +230,9 @@ isolation: "worker" (the command's default: Assimp runs in a child process with 
 allow_outside_references: read a model's external files (glTF buffers, textures, material
   libraries) outside its folder too.
 max_instances, max_triangles: larger models are refused.
+max_texture_side, max_texture_bytes: textures wider or taller are reduced (halved as their mip
+  levels are); the decoded bytes of a model's textures stay within the budget (a texture past it
+  is not used). Both with a LoadWarning.
 
 Raises InputError naming the file and the cause (missing, unreadable, malformed, too large).
 Problems worked around (a missing texture, ...) are issued as zraster.LoadWarning (a

@@ -78,6 +78,8 @@ def load(
     allow_outside_references: bool = False,
     max_instances: int = 1000000,
     max_triangles: int = 50000000,
+    max_texture_side: int = 8192,
+    max_texture_bytes: int = 536870912,
 ) -> Scene: ...
 
 class Camera:

@@ -145,10 +145,17 @@ void check_ply_lists(const std::filesystem::path& path, std::size_t header_bytes
 }
 
 // GLB (binary glTF): Assimp allocates each chunk's declared length before reading it (a JSON
-// chunk claiming 1.9 GB in a 3 KB file, found by fuzz_load_gltf). Chunks must fit in the file.
+// chunk claiming 1.9 GB in a 3 KB file, found by fuzz_load_gltf). Chunks must fit in the file,
+// and so must the whole length the header declares (0xFFFFFFFF made Assimp answer "no suitable
+// reader found").
 void check_glb(const std::filesystem::path& path, std::uintmax_t file_size,
                const LoadOptions& options) {
     std::ifstream in(path, std::ios::binary);
+    char file_header[12];
+    if (!in.read(file_header, 12)) return;
+    std::uint64_t declared_size = 0;
+    for (int b = 0; b < 4; ++b)
+        declared_size |= std::uint64_t{static_cast<std::uint8_t>(file_header[8 + b])} << (8 * b);
     std::uint64_t at = 12;
     std::string json;
     std::optional<std::uint64_t> binary;
@@ -172,6 +179,11 @@ void check_glb(const std::filesystem::path& path, std::uintmax_t file_size,
         }
         at += 8 + length;
     }
+    if (declared_size > file_size)
+        throw InputError(path.string(), "unsupported or malformed file: the GLB header declares " +
+                                            std::to_string(declared_size) +
+                                            " bytes, the file holds " + std::to_string(file_size) +
+                                            " (truncated?)");
     check_gltf_bounds(path, json, binary, options);
 }
 

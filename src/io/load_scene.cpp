@@ -6,6 +6,7 @@
 #include "io/assimp_material.hpp"
 #include "io/assimp_mesh.hpp"
 #include "io/assimp_nodes.hpp"
+#include "io/assimp_warnings.hpp"
 #include "io/confined_io_system.hpp"
 #include "io/declared_counts_check.hpp"
 #include "io/input_file_check.hpp"
@@ -77,11 +78,12 @@ bool is_obj(const std::filesystem::path& path) {
 class MaterialTable {
   public:
     MaterialTable(const aiScene& scene, const std::filesystem::path& path,
-                  const io::ReferencePolicy& policy, Scene& out, std::vector<std::string>& warnings)
+                  const io::ReferencePolicy& policy, const LoadOptions& options, Scene& out,
+                  std::vector<std::string>& warnings)
         : scene_(scene),
           out_(out),
           warnings_(warnings),
-          textures_(scene, path, policy, warnings),
+          textures_(scene, path, policy, options, warnings),
           map_(scene.mNumMaterials, kUnset) {
         if (is_obj(path)) {
             io::ObjMaterialLibraries libraries = io::scan_obj_material_libraries(path, policy);
@@ -133,16 +135,18 @@ Scene load_scene(const std::filesystem::path& path, const LoadOptions& options) 
     std::variant<Scene, io::ObjFallback> fast = io::read_obj(path, options);
     if (Scene* scene = std::get_if<Scene>(&fast)) return std::move(*scene);
 
-    // A file the fast reader leaves to Assimp. If Assimp cannot read it either, say which line
-    // looked wrong first: Assimp's messages do not tell.
+    // A file the fast reader leaves to Assimp. If Assimp cannot read it either, the line that
+    // looked wrong comes first: Assimp's messages name neither the line nor, often, the cause
+    // ("vertex index out of range" for a coordinate that is not a number).
     const io::ObjFallback& fallback = std::get<io::ObjFallback>(fast);
     try {
         return io::load_scene_with_assimp(path, options);
     } catch (const InputError& e) {
         const std::string_view malformed = "unsupported or malformed file: ";
         if (fallback.line == 0 || !e.cause().starts_with(malformed)) throw;
-        throw InputError(e.file(), e.cause() + " (line " + std::to_string(fallback.line) + ": " +
-                                       fallback.reason + ")");
+        throw InputError(e.file(), "malformed OBJ file: line " + std::to_string(fallback.line) +
+                                       ": " + fallback.reason +
+                                       " (Assimp: " + e.cause().substr(malformed.size()) + ")");
     }
 }
 
@@ -174,6 +178,7 @@ Scene io::import_with_assimp(const std::filesystem::path& path, const LoadOption
         return InputError(file, "unsupported or malformed file: " + io::one_line(why));
     };
     const aiScene* ai = nullptr;
+    io::AssimpWarnings assimp_warnings;
     try {
         ai = importer.ReadFile(file, 0);
         if (ai == nullptr && !refusals.empty())
@@ -218,7 +223,8 @@ Scene io::import_with_assimp(const std::filesystem::path& path, const LoadOption
         for (const std::string& refusal : refusals)
             warnings.push_back(refusal + ": not read (" + io::ReferencePolicy::how_to_allow() +
                                ")");
-    MaterialTable materials(*ai, path, policy, scene, warnings);
+    for (std::string& warning : assimp_warnings.take()) warnings.push_back(std::move(warning));
+    MaterialTable materials(*ai, path, policy, options, scene, warnings);
     std::vector<unsigned> our_mesh(ai->mNumMeshes, kUnset);
     std::vector<std::string> labels(ai->mNumMeshes);
     for (unsigned m = 0; m < ai->mNumMeshes; ++m) {

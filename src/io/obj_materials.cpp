@@ -73,11 +73,12 @@ std::optional<ObjFallback> read_statements(const std::filesystem::path& obj_path
 }
 
 Materials::Materials(const std::filesystem::path& obj_path, const Statements& statements,
-                     Scene& scene, std::vector<std::string>& warnings)
+                     const LoadOptions& options, Scene& scene, std::vector<std::string>& warnings)
     : path_(obj_path),
       events_(statements.events),
       libraries_(statements.libraries),
       policy_(statements.policy),
+      options_(options),
       scene_(scene),
       warnings_(warnings) {
     // As scan_obj_material_libraries: each library name once.
@@ -141,7 +142,7 @@ const aiMaterial* Materials::assimp_material(const std::string& name) {
         } catch (const std::exception&) {
             ai_ = nullptr;
         }
-        if (ai_ != nullptr) textures_.emplace(*ai_, path_, policy_, warnings_);
+        if (ai_ != nullptr) textures_.emplace(*ai_, path_, policy_, options_, warnings_);
     }
     if (ai_ == nullptr) return nullptr;
     for (unsigned i = 0; i < ai_->mNumMaterials; ++i)

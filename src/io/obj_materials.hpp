@@ -62,8 +62,8 @@ std::optional<ObjFallback> read_statements(const std::filesystem::path& obj_path
 // warnings for missing libraries.
 class Materials {
   public:
-    Materials(const std::filesystem::path& obj_path, const Statements& statements, Scene& scene,
-              std::vector<std::string>& warnings);
+    Materials(const std::filesystem::path& obj_path, const Statements& statements,
+              const LoadOptions& options, Scene& scene, std::vector<std::string>& warnings);
     ~Materials();
     Materials(const Materials&) = delete;
     Materials& operator=(const Materials&) = delete;
@@ -79,6 +79,7 @@ class Materials {
     const std::vector<const Event*>& events_;
     const std::vector<LibraryLoad>& libraries_;
     ReferencePolicy policy_;
+    LoadOptions options_;  // the texture budget
     Scene& scene_;
     std::vector<std::string>& warnings_;
     std::set<std::string> defined_;

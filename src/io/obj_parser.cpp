@@ -184,12 +184,13 @@ std::variant<Scene, ObjFallback> assemble_scene(const std::filesystem::path& pat
                                                 std::vector<MeshOutcome>& built,
                                                 const Structure& structure,
                                                 const std::vector<std::uint32_t>& output,
-                                                const Statements& statements) {
+                                                const Statements& statements,
+                                                const LoadOptions& options) {
     const std::string file = path.string();
     Scene scene;
     scene.source = file;
     std::vector<std::string> warnings;
-    Materials materials(path, statements, scene, warnings);
+    Materials materials(path, statements, options, scene, warnings);
     for (std::size_t i = 0; i < built.size(); ++i) {
         const MeshPlan& plan = structure.meshes[output[i]];
         const std::optional<std::uint32_t> material = materials.index_of(plan.material);
@@ -237,7 +238,7 @@ std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
     std::vector<obj::MeshOutcome> built =
         obj::build_meshes(chunks, offsets.faces, attributes, structure.meshes, output.meshes);
     obj::check_finite_positions(built, chunks, offsets, structure, output.meshes, file);
-    return obj::assemble_scene(path, built, structure, output.meshes, statements);
+    return obj::assemble_scene(path, built, structure, output.meshes, statements, options);
 }
 
 }  // namespace zraster::io

@@ -1,5 +1,7 @@
 #include "io/texture_loader.hpp"
 
+#include "io/image_decode.hpp"
+#include "io/read_file.hpp"
 #include "io/text_util.hpp"
 
 #include <zraster/error.hpp>
@@ -16,10 +18,24 @@ namespace zraster::io {
 
 namespace {
 
-std::shared_ptr<const Texture> make_texture(int width, int height,
-                                            std::span<const std::uint8_t> rgba) {
-    return std::make_shared<const Texture>(width, height, rgba);
+// "3 MiB", "240 KiB", "900 bytes".
+std::string byte_size(std::uint64_t bytes) {
+    if (bytes >= (std::uint64_t{1} << 20))
+        return std::to_string((bytes + (1u << 19)) >> 20) + " MiB";
+    if (bytes >= 1024) return std::to_string((bytes + 512) >> 10) + " KiB";
+    return std::to_string(bytes) + " bytes";
 }
+
+std::size_t texture_bytes(const Texture& texture) {
+    std::size_t bytes = 0;
+    for (int level = 0; level < texture.levels(); ++level)
+        bytes +=
+            std::size_t(texture.level_width(level)) * std::size_t(texture.level_height(level)) * 4;
+    return bytes;
+}
+
+constexpr const char* kBudgetOption =
+    "LoadOptions::max_texture_bytes; the command's --max-texture-memory";
 
 // %XX escapes, as glTF URIs may carry them ("my%20texture.png").
 std::optional<std::string> percent_decoded(const std::string& s) {
@@ -41,11 +57,48 @@ std::optional<std::string> percent_decoded(const std::string& s) {
 }  // namespace
 
 TextureLoader::TextureLoader(const aiScene& scene, const std::filesystem::path& model_path,
-                             ReferencePolicy policy, std::vector<std::string>& warnings)
+                             ReferencePolicy policy, const LoadOptions& options,
+                             std::vector<std::string>& warnings)
     : scene_(scene),
       model_dir_(model_path.parent_path()),
       policy_(std::move(policy)),
+      max_side_(options.max_texture_side),
+      max_bytes_(options.max_texture_bytes),
       warnings_(warnings) {}
+
+bool TextureLoader::may_decode(const std::string& reference, std::uint64_t width,
+                               std::uint64_t height) {
+    const std::uint64_t decoded = width * height * 4;
+    if (decoded <= max_bytes_) return true;
+    warnings_.push_back("texture '" + reference + "' is " + std::to_string(width) + "x" +
+                        std::to_string(height) + " (" + byte_size(decoded) +
+                        " decoded), more than the textures' budget of " + byte_size(max_bytes_) +
+                        ": using the material color (" + kBudgetOption + ")");
+    return false;
+}
+
+std::shared_ptr<const Texture> TextureLoader::admit(const std::string& reference, int width,
+                                                    int height,
+                                                    std::span<const std::uint8_t> rgba) {
+    auto texture = std::make_shared<const Texture>(width, height, rgba, max_side_);
+    const std::size_t bytes = texture_bytes(*texture);
+    if (bytes > max_bytes_ - std::min(used_bytes_, max_bytes_)) {
+        warnings_.push_back(
+            "texture '" + reference + "' not kept: the model's textures would take " +
+            byte_size(used_bytes_ + bytes) + ", more than their budget of " +
+            byte_size(max_bytes_) + "; using the material color (" + kBudgetOption + ")");
+        return nullptr;
+    }
+    used_bytes_ += bytes;
+    if (texture->width() != width || texture->height() != height)
+        warnings_.push_back(
+            "texture '" + reference + "' is " + std::to_string(width) + "x" +
+            std::to_string(height) + ", reduced to " + std::to_string(texture->width()) + "x" +
+            std::to_string(texture->height()) + " (at most " + std::to_string(max_side_) +
+            " texels a side: LoadOptions::max_texture_side; the command's "
+            "--max-texture-side)");
+    return texture;
+}
 
 std::shared_ptr<const Texture> TextureLoader::load(const std::string& reference) {
     if (scene_.GetEmbeddedTexture(reference.c_str()) != nullptr) return load_embedded(reference);
@@ -61,25 +114,24 @@ std::shared_ptr<const Texture> TextureLoader::load_embedded(const std::string& r
     try {
         if (texture->mHeight == 0) {
             // Compressed (PNG, JPEG, ...): mWidth is the byte count.
-            if (texture->mWidth > static_cast<unsigned>(INT_MAX))
-                throw std::invalid_argument("embedded image too large");
-            stbi_set_flip_vertically_on_load_thread(0);
-            int w = 0, h = 0, channels = 0;
-            std::unique_ptr<stbi_uc, decltype(&stbi_image_free)> pixels(
-                stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(texture->pcData),
-                                      static_cast<int>(texture->mWidth), &w, &h, &channels, 4),
-                &stbi_image_free);
-            if (!pixels) {
-                const char* reason = stbi_failure_reason();
-                throw std::invalid_argument(reason ? one_line(reason) : "unknown error");
+            const std::span<const std::uint8_t> bytes(
+                reinterpret_cast<const std::uint8_t*>(texture->pcData), texture->mWidth);
+            const std::optional<ImageSize> size = encoded_image_size(bytes);
+            if (!size ||
+                may_decode(reference, std::uint64_t(size->width), std::uint64_t(size->height))) {
+                const ImageRGBA8 image = decode_image_rgba8(bytes, reference);
+                result = admit(reference, image.width, image.height, image.rgba);
             }
-            result = make_texture(w, h, {pixels.get(), static_cast<std::size_t>(w) * h * 4});
         } else {
             // Raw aiTexel, stored b, g, r, a.
             const std::size_t count = std::size_t{texture->mWidth} * texture->mHeight;
             if (texture->mWidth > static_cast<unsigned>(INT_MAX) ||
                 texture->mHeight > static_cast<unsigned>(INT_MAX))
                 throw std::invalid_argument("embedded image too large");
+            if (!may_decode(reference, texture->mWidth, texture->mHeight)) {
+                cache_[key] = nullptr;
+                return nullptr;
+            }
             std::vector<std::uint8_t> rgba(count * 4);
             for (std::size_t i = 0; i < count; ++i) {
                 const aiTexel& t = texture->pcData[i];
@@ -88,9 +140,12 @@ std::shared_ptr<const Texture> TextureLoader::load_embedded(const std::string& r
                 rgba[4 * i + 2] = t.b;
                 rgba[4 * i + 3] = t.a;
             }
-            result = make_texture(static_cast<int>(texture->mWidth),
-                                  static_cast<int>(texture->mHeight), rgba);
+            result = admit(reference, static_cast<int>(texture->mWidth),
+                           static_cast<int>(texture->mHeight), rgba);
         }
+    } catch (const InputError& e) {
+        warnings_.push_back("embedded texture '" + reference + "' cannot be decoded (" + e.cause() +
+                            "), using the material color");
     } catch (const std::exception& e) {
         warnings_.push_back("embedded texture '" + reference + "' cannot be decoded (" + e.what() +
                             "), using the material color");
@@ -140,8 +195,13 @@ std::shared_ptr<const Texture> TextureLoader::load_external(const std::string& r
         warnings_.push_back("texture '" + reference + "' not found, using the material color");
     } else {
         try {
-            const ImageRGBA8 image = read_image_rgba8(found);
-            result = make_texture(image.width, image.height, image.rgba);
+            const std::vector<std::uint8_t> bytes = read_file_bytes(found);
+            const std::optional<ImageSize> size = encoded_image_size(bytes);
+            if (!size ||
+                may_decode(reference, std::uint64_t(size->width), std::uint64_t(size->height))) {
+                const ImageRGBA8 image = decode_image_rgba8(bytes, found.string());
+                result = admit(reference, image.width, image.height, image.rgba);
+            }
         } catch (const InputError& e) {
             warnings_.push_back("texture '" + reference + "' cannot be read (" + e.cause() +
                                 "), using the material color");

@@ -1,6 +1,7 @@
 // Base-color textures of a loaded model: embedded ones (glTF binary, data URIs) and image files
 // beside the model. Each image is decoded once and shared by the materials that use it.
 #pragma once
+#include <zraster/load.hpp>
 #include <zraster/texture.hpp>
 
 #include <filesystem>
@@ -18,9 +19,11 @@ namespace zraster::io {
 class TextureLoader {
   public:
     // Problems are appended to `warnings` (as causes, without the model's name). Image files
-    // are read only where `policy` allows (the model's folder by default).
+    // are read only where `policy` allows (the model's folder by default). The textures' sizes
+    // and bytes stay within the options' max_texture_side and max_texture_bytes.
     TextureLoader(const aiScene& scene, const std::filesystem::path& model_path,
-                  ReferencePolicy policy, std::vector<std::string>& warnings);
+                  ReferencePolicy policy, const LoadOptions& options,
+                  std::vector<std::string>& warnings);
 
     // The texture a material refers to, or null (with a warning) when it is missing or
     // unreadable: the material's color is used then.
@@ -29,10 +32,19 @@ class TextureLoader {
   private:
     std::shared_ptr<const Texture> load_embedded(const std::string& reference);
     std::shared_ptr<const Texture> load_external(const std::string& reference);
+    // False, with a warning, when decoding a width x height image would exceed the budget.
+    bool may_decode(const std::string& reference, std::uint64_t width, std::uint64_t height);
+    // The texture of decoded pixels, reduced to max_texture_side, if it fits in what is left of
+    // the budget; else null with a warning.
+    std::shared_ptr<const Texture> admit(const std::string& reference, int width, int height,
+                                         std::span<const std::uint8_t> rgba);
 
     const aiScene& scene_;
     std::filesystem::path model_dir_;
     ReferencePolicy policy_;
+    int max_side_;
+    std::size_t max_bytes_;
+    std::size_t used_bytes_ = 0;
     std::vector<std::string>& warnings_;
     std::map<std::string, std::shared_ptr<const Texture>> cache_;  // null entries: warned once
 };

@@ -33,8 +33,7 @@ std::uint64_t overlap(std::int64_t s, std::int64_t x, std::int64_t in_size, std:
     return std::uint64_t(hi - lo);
 }
 
-std::vector<std::uint8_t> reduce(const std::vector<std::uint8_t>& in, int w, int h, int nw,
-                                 int nh) {
+std::vector<std::uint8_t> reduce(std::span<const std::uint8_t> in, int w, int h, int nw, int nh) {
     std::vector<std::uint8_t> out(std::size_t(nw) * std::size_t(nh) * 4);
     // Weights sum to w * h per output texel (at most 2^31 texels * 255 fits in 64 bits).
     const std::uint64_t total = std::uint64_t(w) * std::uint64_t(h);
@@ -71,12 +70,24 @@ glm::vec4 lerp4(const glm::vec4& a, const glm::vec4& b, float t) {
 
 }  // namespace
 
-Texture::Texture(int width, int height, std::span<const std::uint8_t> rgba) {
+Texture::Texture(int width, int height, std::span<const std::uint8_t> rgba, int max_side) {
     if (width <= 0 || height <= 0) throw std::invalid_argument("Texture: non-positive size");
     const std::size_t bytes = std::size_t(width) * std::size_t(height) * 4;
     if (rgba.size() < bytes) throw std::invalid_argument("Texture: rgba buffer too short");
-    levels_.push_back(
-        {width, height, std::vector<std::uint8_t>(rgba.begin(), rgba.begin() + bytes)});
+    // The levels too large for max_side, each reduced from the one before and dropped.
+    std::vector<std::uint8_t> reduced;
+    while (max_side > 0 && (width > max_side || height > max_side)) {
+        const int nw = std::max(1, width / 2), nh = std::max(1, height / 2);
+        reduced =
+            reduce(reduced.empty() ? rgba.first(bytes) : std::span<const std::uint8_t>(reduced),
+                   width, height, nw, nh);
+        width = nw;
+        height = nh;
+    }
+    levels_.push_back({width, height,
+                       reduced.empty()
+                           ? std::vector<std::uint8_t>(rgba.begin(), rgba.begin() + bytes)
+                           : std::move(reduced)});
     while (levels_.back().width > 1 || levels_.back().height > 1) {
         const Level& in = levels_.back();
         const int nw = std::max(1, in.width / 2), nh = std::max(1, in.height / 2);

@@ -76,6 +76,34 @@ TEST(Cli, WorkerAndInProcessLoadingAgree) {
     EXPECT_EQ(wb, pb);
 }
 
+// The loading flags before the subcommand, as --help shows them, or before render's flags alone.
+TEST(Cli, LoadingFlagsComeBeforeOrAfterTheSubcommand) {
+    const auto dir = temp_dir("cli-global-flags");
+    std::ofstream(dir / "tri.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    const char* forms[] = {
+        "--load-in-process render tri.obj -o a.png --size 32x24",
+        "--load-in-process --allow-outside-references --max-instances 5 render tri.obj -o b.png "
+        "--size 32x24",
+        "--max-instances=5 info tri.obj",
+        "--load-in-process -o d.png --size 32x24",
+        "render tri.obj -o e.png --size 32x24 --load-in-process",
+    };
+    for (const char* form : forms) {
+        const CommandResult r = run(form, dir);
+        EXPECT_EQ(r.exit_code, 0) << form << "\n" << r.output;
+    }
+    for (const char* png : {"a.png", "b.png", "d.png", "e.png"})
+        EXPECT_TRUE(std::filesystem::exists(dir / png)) << png;
+    EXPECT_EQ(read_bytes(dir / "a.png"), read_bytes(dir / "e.png"));
+    // A file where the subcommand goes: what to type instead, not CLI11's reversed leftovers.
+    const CommandResult file_first = run("--load-in-process tri.obj -o c.png", dir);
+    EXPECT_EQ(file_first.exit_code, 2);
+    EXPECT_EQ(file_first.output,
+              "zraster: 'tri.obj' is not a subcommand (render, info, bench, svg, batch): to render "
+              "it, zraster --load-in-process render tri.obj -o c.png\n");
+    EXPECT_FALSE(std::filesystem::exists(dir / "c.png"));
+}
+
 TEST(Cli, MalformedFileIsExitTwo) {
     const auto dir = temp_dir("cli-malformed");
     std::ofstream(dir / "bad.stl") << "solid x\nfacet normal 0 0 1\nouter loop\nvertex 1 2\n";

@@ -116,6 +116,16 @@ TEST(FuzzRegressions, GlbChunkLongerThanTheFile) {
                    "GLB chunk 0 declares 1929382784 bytes, more than the 27 left in the file");
 }
 
+// A GLB whose header declares more bytes than the file holds (0xFFFFFFFF): Assimp said "No
+// suitable reader found".
+TEST(FuzzRegressions, GlbHeaderLongerThanTheFile) {
+    const std::string json = R"({"asset":{"version":"2.0"}} )";  // 28 bytes, a multiple of 4
+    std::string glb("glTF\x02\0\0\0\xff\xff\xff\xff", 12);
+    glb += std::string("\x1c\0\0\0JSON", 8) + json;
+    expect_refused("glb-length", "length.glb", glb,
+                   "the GLB header declares 4294967295 bytes, the file holds 48 (truncated?)");
+}
+
 // fuzz_load_gltf: Assimp copied an accessor's bytes without checking them against its buffer
 // view: 72 VEC3 floats from byte 1 of an 864-byte view read one byte past the buffer
 // (heap-buffer-overflow in Assimp's memcpy).

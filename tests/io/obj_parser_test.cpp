@@ -330,10 +330,13 @@ TEST(ObjParser, ErrorsNameTheLine) {
     expect_error(write_obj("inf", "o thing\nv 0 0 0\nv 1e999 0 0\nv 0 1 0\nf 1 2 3\n"),
                  "line 3: non-finite vertex coordinates (mesh thing, vertex 1)");
     expect_error(write_obj("no-triangles", v + "l 1 2 3\np 4\nf\n"), "no triangles");
-    // Left to Assimp, which refuses it: Assimp's message, and the line the fast reader stopped at.
+    // Left to Assimp, which refuses it: the line the fast reader stopped at and why, then
+    // Assimp's message.
     expect_error(write_obj("comment-in-face", v + "f 1 2 3 # comment\n"),
-                 "unsupported or malformed file: OBJ: Invalid face index. (line 5: face element "
-                 "that is not v, v/vt, v//vn or v/vt/vn)");
+                 "malformed OBJ file: line 5: face element that is not v, v/vt, v//vn or v/vt/vn "
+                 "(Assimp: OBJ: Invalid face index.)");
+    expect_error(write_obj("word-coordinate", "v 0 0 0\nv 1 x 0\nv 0 1 0\nf 1 2 3\n"),
+                 "malformed OBJ file: line 2: vertex coordinate that is not a plain number");
     LoadOptions options;
     options.max_triangles = 2;
     const auto three = write_obj("limit", v + "f 1 2 3 4\nf 1 2 3\n");

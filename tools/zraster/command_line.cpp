@@ -112,7 +112,14 @@ namespace {
 bool g_load_in_process = false;
 bool g_allow_outside_references = false;
 std::size_t g_max_instances = LoadOptions{}.max_instances;
+int g_max_texture_side = LoadOptions{}.max_texture_side;
+std::size_t g_max_texture_bytes = LoadOptions{}.max_texture_bytes;
 }  // namespace
+
+void set_texture_limits(int max_side, std::size_t max_bytes) {
+    g_max_texture_side = max_side;
+    g_max_texture_bytes = max_bytes;
+}
 
 void set_max_instances(std::size_t max_instances) {
     g_max_instances = max_instances;
@@ -131,6 +138,8 @@ LoadOptions command_load_options() {
     options.isolation = g_load_in_process ? LoadIsolation::InProcess : LoadIsolation::WorkerProcess;
     options.allow_outside_references = g_allow_outside_references;
     options.max_instances = g_max_instances;
+    options.max_texture_side = g_max_texture_side;
+    options.max_texture_bytes = g_max_texture_bytes;
     return options;
 }
 

@@ -49,7 +49,9 @@ void set_load_in_process(bool in_process);
 void set_allow_outside_references(bool allow);
 // The --max-instances option (LoadOptions::max_instances).
 void set_max_instances(std::size_t max_instances);
-// The LoadOptions of the three settings above, the rest as LoadOptions' defaults.
+// --max-texture-side and --max-texture-memory (LoadOptions::max_texture_side, max_texture_bytes).
+void set_texture_limits(int max_side, std::size_t max_bytes);
+// The LoadOptions of the settings above, the rest as LoadOptions' defaults.
 LoadOptions command_load_options();
 
 }  // namespace zraster::cli

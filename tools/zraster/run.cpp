@@ -14,6 +14,7 @@
 #include <string>
 
 #include "batch_command.hpp"
+#include "batch_limits.hpp"
 #include "bench_command.hpp"
 #include "command_line.hpp"
 #include "info_command.hpp"
@@ -52,11 +53,47 @@ int run_zraster(std::vector<std::string> args) {
                    "share children multiply them)")
         ->check(CLI::Range(std::size_t{1}, std::size_t{1'000'000'000}))
         ->capture_default_str();
+    int max_texture_side = LoadOptions{}.max_texture_side;
+    app.add_option("--max-texture-side", max_texture_side,
+                   "Reduce textures wider or taller than this many texels (halving them, with a "
+                   "warning)")
+        ->check(CLI::Range(1, 1 << 16))
+        ->capture_default_str();
+    std::string max_texture_memory = "512M";
+    app.add_option("--max-texture-memory", max_texture_memory,
+                   "Decoded bytes of a model's textures, mip levels included (e.g. 1G): a "
+                   "texture past it is not used, with a warning")
+        ->capture_default_str();
     for (CLI::App* sub : app.get_subcommands({})) sub->fallthrough();
 
-    // `zraster -o x.png --size ...` means `zraster render -o x.png --size ...`.
-    if (!args.empty() && args[0].starts_with("-") && args[0] != "-h" && args[0] != "--help")
-        args.insert(args.begin(), "render");
+    // `zraster -o x.png --size ...` means `zraster render -o x.png --size ...`. The flags above
+    // may come first (`zraster --load-in-process render FILE`, `zraster --load-in-process -o
+    // x.png`): "render" goes after them, unless a subcommand follows them.
+    std::size_t first = 0;
+    while (first < args.size() && args[first].starts_with("--")) {
+        const std::string name = args[first].substr(0, args[first].find('='));
+        const CLI::Option* option = app.get_option_no_throw(name);
+        if (option == nullptr || name == "--help" || name == "--version") break;
+        const bool value_follows = option->get_expected_min() > 0 && name == args[first];
+        first += value_follows ? 2 : 1;
+    }
+    if (first < args.size() && args[first].starts_with("-") && args[first] != "-h" &&
+        args[first] != "--help" && args[first] != "--version")
+        args.insert(args.begin() + std::ptrdiff_t(first), "render");
+    std::string names;
+    bool names_subcommand = false;
+    for (const CLI::App* sub : app.get_subcommands({})) {
+        names += (names.empty() ? "" : ", ") + sub->get_name();
+        names_subcommand |= first < args.size() && args[first] == sub->get_name();
+    }
+    if (first < args.size() && !args[first].starts_with("-") && !names_subcommand) {
+        std::string before, after;
+        for (std::size_t i = 0; i < args.size(); ++i) (i < first ? before : after) += " " + args[i];
+        fmt::print(stderr,
+                   "zraster: '{}' is not a subcommand ({}): to render it, zraster{} render{}\n",
+                   args[first], names, before, after);
+        return kExitBadInput;
+    }
     std::reverse(args.begin(), args.end());  // CLI11 takes a reversed vector
     try {
         app.parse(args);
@@ -75,6 +112,8 @@ int run_zraster(std::vector<std::string> args) {
     set_allow_outside_references(allow_outside_references);
     set_max_instances(max_instances);
     try {
+        set_texture_limits(max_texture_side,
+                           parse_byte_size("--max-texture-memory", max_texture_memory));
         if (app.got_subcommand("info")) return run_info(info_args);
         if (app.got_subcommand("bench")) return run_bench(bench_args);
         if (app.got_subcommand("svg")) return run_svg(svg_args);

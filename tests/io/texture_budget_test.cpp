@@ -1,0 +1,102 @@
+// The texture budget (LoadOptions::max_texture_side, max_texture_bytes): large textures are
+// reduced as their mip chain would be, and a model's textures never take more than the budget.
+#include <zraster/image_io.hpp>
+#include <zraster/load.hpp>
+
+#include "io/io_test_util.hpp"
+#include "support/test_support.hpp"
+
+namespace zraster {
+namespace {
+
+std::vector<std::uint8_t> gradient(int width, int height) {
+    std::vector<std::uint8_t> rgba(std::size_t(width) * std::size_t(height) * 4);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            std::uint8_t* p = &rgba[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4];
+            p[0] = std::uint8_t(x * 7), p[1] = std::uint8_t(y * 3), p[2] = std::uint8_t(x ^ y),
+            p[3] = 255;
+        }
+    return rgba;
+}
+
+// A quad in two materials, each with its own texture: a.png (w x h) and b.png (64 x 64).
+std::filesystem::path write_model(const std::string& name, int w, int h) {
+    const auto dir = test::temp_dir(name);
+    write_png8(dir / "a.png", w, h, 4, gradient(w, h));
+    write_png8(dir / "b.png", 64, 64, 4, gradient(64, 64));
+    test::write_bytes(dir / "m.mtl", "newmtl a\nmap_Kd a.png\nnewmtl b\nmap_Kd b.png\n");
+    test::write_bytes(dir / "quad.obj",
+                      "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                      "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                      "usemtl a\nf 1/1 2/2 3/3\nusemtl b\nf 1/1 3/3 4/4\n");
+    return dir / "quad.obj";
+}
+
+const Texture* texture_of(const Scene& scene, std::size_t material) {
+    return scene.materials.at(material).base_color_texture.get();
+}
+
+TEST(TextureBudget, LargeTexturesAreReducedLikeTheirMipChain) {
+    const auto path = write_model("io-texture-side", 300, 200);
+    LoadOptions options;
+    options.max_texture_side = 64;
+    for (const LoadIsolation isolation : {LoadIsolation::InProcess, LoadIsolation::WorkerProcess}) {
+        options.isolation = isolation;
+        const Scene scene = load_scene(path, options);
+        const Texture* a = nullptr;
+        for (std::size_t m = 0; m < scene.materials.size(); ++m)
+            if (texture_of(scene, m) != nullptr && texture_of(scene, m)->width() != 64)
+                a = texture_of(scene, m);
+        ASSERT_NE(a, nullptr);
+        // 300x200 -> 150x100 -> 75x50 -> 37x25: level 3 of the full chain, bit for bit.
+        EXPECT_EQ(a->width(), 37);
+        EXPECT_EQ(a->height(), 25);
+        const Texture full(300, 200, gradient(300, 200));
+        ASSERT_EQ(full.level_width(3), 37);
+        const auto reduced = a->level_rgba(0), level3 = full.level_rgba(3);
+        EXPECT_TRUE(std::equal(reduced.begin(), reduced.end(), level3.begin(), level3.end()));
+        ASSERT_EQ(scene.warnings.size(), 1u);
+        EXPECT_NE(scene.warnings[0].find("texture 'a.png' is 300x200, reduced to 37x25 (at most "
+                                         "64 texels a side"),
+                  std::string::npos)
+            << scene.warnings[0];
+    }
+}
+
+TEST(TextureBudget, AModelsTexturesStayWithinTheBudget) {
+    // 64x64 with its mips: 21,844 bytes. A 600x400 image decodes to 960,000 bytes.
+    const auto path = write_model("io-texture-bytes", 600, 400);
+    LoadOptions options;
+    options.max_texture_bytes = 30'000;
+    const Scene scene = load_scene(path, options);
+    int textured = 0;
+    for (std::size_t m = 0; m < scene.materials.size(); ++m)
+        if (const Texture* t = texture_of(scene, m)) {
+            ++textured;
+            EXPECT_EQ(t->width(), 64);
+        }
+    EXPECT_EQ(textured, 1);
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_NE(scene.warnings[0].find("texture 'a.png' is 600x400 (938 KiB decoded), more than the "
+                                     "textures' budget of 29 KiB: using the material color"),
+              std::string::npos)
+        << scene.warnings[0];
+
+    // Both fit one at a time, not together: the second one used is not kept.
+    options.max_texture_bytes = 40'000;
+    const auto small = write_model("io-texture-bytes-small", 64, 64);
+    const Scene both = load_scene(small, options);
+    textured = 0;
+    for (std::size_t m = 0; m < both.materials.size(); ++m)
+        textured += texture_of(both, m) != nullptr;
+    EXPECT_EQ(textured, 1);
+    ASSERT_EQ(both.warnings.size(), 1u);
+    EXPECT_NE(both.warnings[0].find("not kept: the model's textures would take 43 KiB, more than "
+                                    "their budget of 39 KiB"),
+              std::string::npos)
+        << both.warnings[0];
+}
+
+}  // namespace
+}  // namespace zraster
