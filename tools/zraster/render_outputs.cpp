@@ -77,10 +77,16 @@ RenderedFrame render_outputs(const RenderArguments& a, const Scene& scene, Outpu
     frame.render_ms = since(render_start);
 
     const Clock::time_point encode_start = Clock::now();
-    // RGBA -> RGB: the alpha channel is always opaque.
+    // RGBA -> RGB: the alpha channel is always opaque. Byte by byte: a 3-byte copy_n per pixel
+    // was a memmove call each, 5% of a batch of small images.
     std::vector<std::uint8_t> rgb(std::size_t(t.width) * std::size_t(t.height) * 3);
-    for (std::size_t i = 0, n = rgb.size() / 3; i < n; ++i)
-        std::copy_n(&t.color[i * 4], 3, &rgb[i * 3]);
+    const std::uint8_t* in = t.color.data();
+    std::uint8_t* out = rgb.data();
+    for (std::size_t i = 0, n = rgb.size() / 3; i < n; ++i, in += 4, out += 3) {
+        out[0] = in[0];
+        out[1] = in[1];
+        out[2] = in[2];
+    }
     outputs.add(a.output, encode_png8(t.width, t.height, 3, rgb));
     if (!a.depth_out.empty()) outputs.add(a.depth_out, encode_depth_map(a.depth_out, t));
     if (!a.normal_out.empty()) outputs.add(a.normal_out, encode_normal_map(a.normal_out, t));
