@@ -36,7 +36,8 @@ namespace zraster {
 // finite and infinite far, perspective and orthographic cameras. Pixels holding `clear_depth`
 // (depth_clear_value(options): nothing drawn there) get 0. z and window_depth have the same
 // size. Throws InputError for different sizes and for projections whose depth depends on more
-// than eye z.
+// than eye z. Runs in parallel on the calling thread's oneTBB arena (the same values for any
+// number of threads), as range_from_z does.
 ZRASTER_API void metric_depth(const Camera& camera, float clear_depth,
                               std::span<const float> window_depth, std::span<float> z);
 

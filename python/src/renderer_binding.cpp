@@ -2,6 +2,7 @@
 #include <zraster/precision.hpp>
 
 #include <pybind11/stl.h>
+#include <tbb/task_arena.h>
 
 #include <array>
 #include <cstring>
@@ -38,6 +39,9 @@ struct PyRenderer {
     std::shared_ptr<ArrayPool> arrays = std::make_shared<ArrayPool>();
     std::vector<float> depth_scratch, z_scratch;
     std::vector<glm::vec3> normal_scratch;
+    // z and range are computed from the frame in parallel, on this many threads (`threads`; 0:
+    // every hardware thread), as the frame itself was.
+    std::unique_ptr<tbb::task_arena> post_arena;
 };
 
 std::unique_ptr<PyRenderer> make_renderer(const py::object& width, const py::object& height,
@@ -51,6 +55,8 @@ std::unique_ptr<PyRenderer> make_renderer(const py::object& width, const py::obj
     if (t < 0 || t > 1 << 20)
         input_error("threads", "must be >= 0 (0: every hardware thread), not " + std::to_string(t));
     r->threads = cli::checked_thread_count("threads", int(t));
+    r->post_arena = std::make_unique<tbb::task_arena>(
+        r->threads > 0 ? r->threads : int(tbb::task_arena::automatic));
     if (!max_pixels.is_none()) {
         if (py::isinstance<py::bool_>(max_pixels) || !py::hasattr(max_pixels, "__index__"))
             type_error("max_pixels", "an integer", max_pixels);
@@ -252,7 +258,9 @@ py::dict render(PyRenderer& r, const py::object& scene_object, const py::object&
                 copy_target(t.primitive_id, targets.primitive_id, n, "primitive_id", a.visibility);
             r.stats = result.stats;
         }
-        if (metric) depth_camera_images(depth_camera, scene->view(), options, r.stats.camera);
+        if (metric)
+            r.post_arena->execute(
+                [&] { depth_camera_images(depth_camera, scene->view(), options, r.stats.camera); });
         r.rendered = true;
     } catch (const InputError& e) {
         throw InputError(keyword_name(e.file()), with_keyword_names(e.cause()));

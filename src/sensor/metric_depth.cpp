@@ -5,6 +5,9 @@
 
 #include "sensor/pixel_rays.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <cmath>
 
 namespace zraster {
@@ -15,13 +18,19 @@ void metric_depth(const Camera& camera, float clear_depth, std::span<const float
         throw InputError("z", "holds " + std::to_string(z.size()) + " values, window_depth " +
                                   std::to_string(window_depth.size()));
     const sensor::DepthAxis axis(camera);
-    for (std::size_t i = 0; i < z.size(); ++i) {
-        const float depth = window_depth[i];
-        // The clear value is what no fragment wrote: no surface, no measurement. (A surface at
-        // an infinite far plane would be infinitely far too: also nothing to measure.)
-        const double metric = depth == clear_depth ? 0.0 : axis.z_of(depth);
-        z[i] = std::isfinite(metric) ? static_cast<float>(metric) : 0.0f;
-    }
+    // Pixel by pixel, in pieces on the caller's oneTBB arena: each value depends on its pixel
+    // alone, so the image is the same for any number of threads.
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, z.size(), 16384),
+                      [&](const tbb::blocked_range<std::size_t>& pixels) {
+                          for (std::size_t i = pixels.begin(); i < pixels.end(); ++i) {
+                              const float depth = window_depth[i];
+                              // The clear value is what no fragment wrote: no surface, no
+                              // measurement. (A surface at an infinite far plane would be
+                              // infinitely far too: also nothing to measure.)
+                              const double metric = depth == clear_depth ? 0.0 : axis.z_of(depth);
+                              z[i] = std::isfinite(metric) ? static_cast<float>(metric) : 0.0f;
+                          }
+                      });
 }
 
 }  // namespace zraster

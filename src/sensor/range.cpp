@@ -4,6 +4,9 @@
 
 #include "sensor/pixel_rays.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 namespace zraster {
 
 void range_from_z(const Camera& camera, int width, int height, std::span<const float> z,
@@ -12,18 +15,22 @@ void range_from_z(const Camera& camera, int width, int height, std::span<const f
     sensor::check_image_span("range", range.size(), width, height);
     const sensor::PixelRays rays(camera, width, height);
     const bool orthographic = rays.orthographic();
-    for (int py = 0; py < height; ++py) {
-        for (int px = 0; px < width; ++px) {
-            const std::size_t i = std::size_t(py) * std::size_t(width) + std::size_t(px);
-            if (!(z[i] > 0.0f) || orthographic) {
-                range[i] = z[i] > 0.0f ? z[i] : 0.0f;
-                continue;
+    // Rows in pieces on the caller's oneTBB arena: the same image for any number of threads.
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, height, 16), [&](const tbb::blocked_range<int>& rows) {
+            for (int py = rows.begin(); py < rows.end(); ++py) {
+                for (int px = 0; px < width; ++px) {
+                    const std::size_t i = std::size_t(py) * std::size_t(width) + std::size_t(px);
+                    if (!(z[i] > 0.0f) || orthographic) {
+                        range[i] = z[i] > 0.0f ? z[i] : 0.0f;
+                        continue;
+                    }
+                    // The ray's point at unit depth, its length the ratio range / z.
+                    const double per_unit_z = glm::length(rays.eye_point(px, py, 1.0));
+                    range[i] = static_cast<float>(double(z[i]) * per_unit_z);
+                }
             }
-            // The ray's point at unit depth, its length the ratio range / z.
-            const double per_unit_z = glm::length(rays.eye_point(px, py, 1.0));
-            range[i] = static_cast<float>(double(z[i]) * per_unit_z);
-        }
-    }
+        });
 }
 
 }  // namespace zraster
