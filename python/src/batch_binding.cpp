@@ -8,9 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
-#include <cstdio>
 #include <iostream>
-#include <memory>
 #include <string>
 #include <vector>
 
