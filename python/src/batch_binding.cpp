@@ -5,10 +5,12 @@
 #include <zraster/error.hpp>
 #include <zraster/render.hpp>
 
+#include <tbb/task_arena.h>
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -71,8 +73,17 @@ Renderer& thread_renderer() {
     return renderer;
 }
 
+// An arena of `threads` for this thread's jobs, as each of the command's job threads has (see
+// cli::run_batch_jobs): made again only when a batch asks for another count.
+tbb::task_arena& thread_arena(int threads) {
+    thread_local std::unique_ptr<tbb::task_arena> arena;
+    if (!arena || arena->max_concurrency() != threads)
+        arena = std::make_unique<tbb::task_arena>(threads);
+    return *arena;
+}
+
 // The settings of every file of a batch, from the command's arguments: what a worker needs to
-// run the jobs it is given. Pickled as those arguments.
+// run the jobs it is given, each on its share of the threads. Pickled as those arguments.
 struct BatchJobs {
     std::vector<std::string> argv;
     int jobs = 1;
@@ -80,13 +91,18 @@ struct BatchJobs {
 
     BatchJobs(std::vector<std::string> argv_, int jobs_) : argv(std::move(argv_)), jobs(jobs_) {
         settings = cli::batch_settings(parse_batch_arguments(argv), jobs);
+        settings.render.threads = cli::batch_job_threads(settings.render.threads, jobs);
     }
 
     // The record of the input's job as a line of batch.jsonl (without the newline).
     std::string run(const std::string& source, const std::string& stem) const {
         const cli::BatchInput input{source, stem};
         py::gil_scoped_release release;
-        return cli::record_json(cli::run_batch_job(input, settings, nullptr, &thread_renderer()));
+        cli::BatchRecord record;
+        thread_arena(settings.render.threads).execute([&] {
+            record = cli::run_batch_job(input, settings, nullptr, &thread_renderer());
+        });
+        return cli::record_json(record);
     }
 };
 

@@ -8,6 +8,9 @@
 #include <numbers>
 #include <string>
 
+#include <zraster/render.hpp>
+
+#include "batch_plan.hpp"
 #include "batch_test_support.hpp"
 
 namespace zraster::test {
@@ -176,6 +179,16 @@ TEST(BatchOutputs, ViewsJsonTakesLookAtOrbitAndCameraJsonCameras) {
         for (int c = 0; c < 4; ++c)
             EXPECT_NEAR(written.at("camera_to_world")[r][c].get<double>(),
                         original.at("camera_to_world")[r][c].get<double>(), 1e-12);
+}
+
+TEST(BatchOutputs, JobsShareTheThreads) {
+    EXPECT_EQ(cli::batch_job_threads(4, 2), 2);
+    EXPECT_EQ(cli::batch_job_threads(5, 2), 2);
+    EXPECT_EQ(cli::batch_job_threads(1, 3), 1);  // at least one each
+    EXPECT_EQ(cli::batch_job_threads(6, 0), 6);
+    const int all = render_thread_count(0);
+    EXPECT_EQ(cli::batch_job_threads(0, 1), all);
+    EXPECT_EQ(cli::batch_job_threads(0, all), 1);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 #include "batch_plan.hpp"
 
 #include <zraster/error.hpp>
+#include <zraster/render.hpp>
 
 #include <algorithm>
 #include <iterator>
@@ -17,6 +18,11 @@ namespace zraster::cli {
 
 int batch_jobs(const BatchArguments& a) {
     return a.jobs > 0 ? a.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+int batch_job_threads(int threads, int jobs) {
+    const int total = threads > 0 ? threads : render_thread_count(0);
+    return std::max(1, total / std::max(jobs, 1));
 }
 
 BatchSettings batch_settings(const BatchArguments& a, int jobs) {

@@ -16,6 +16,11 @@ namespace zraster::cli {
 // Files rendered at once: --jobs, or one per hardware thread when it is 0.
 int batch_jobs(const BatchArguments& arguments);
 
+// The threads each of `jobs` files at once is loaded, rendered and written on: `threads`
+// (--threads; 0: every hardware thread) divided among the jobs, at least one. With one thread per
+// job, no oneTBB worker wakes up (and spins) for the short parallel loops of a small file.
+int batch_job_threads(int threads, int jobs);
+
 // The settings of every job, from the flags. `jobs` shares the default --max-memory among the
 // files rendered at once. Throws InputError naming the flag for a value or combination no file
 // could be rendered with (also check_batch_settings's checks, which need the output folder).

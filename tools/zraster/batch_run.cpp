@@ -1,11 +1,15 @@
 // See batch_run.hpp.
 #include "batch_run.hpp"
 
+#include "batch_plan.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <exception>
 #include <mutex>
 #include <thread>
+
+#include <tbb/task_arena.h>
 
 namespace zraster::cli {
 
@@ -17,14 +21,22 @@ BatchTotals run_batch_jobs(const std::vector<BatchInput>& inputs, const BatchSet
     std::mutex totals_mutex;
     std::exception_ptr log_failure;
     std::atomic<std::size_t> next{0};
+    const std::size_t threads =
+        std::min<std::size_t>(std::size_t(std::max(jobs, 1)), inputs.size());
+    BatchSettings job_settings = settings;
+    job_settings.render.threads = batch_job_threads(settings.render.threads, int(threads));
     const auto work = [&] {
         Renderer renderer;  // its memory and thread arena serve every file of this thread
+        // This thread's files run in an arena of its share of the threads (batch_job_threads).
+        tbb::task_arena arena(job_settings.render.threads);
         for (;;) {
             if (stop.load()) return;
             const std::size_t i = next.fetch_add(1);
             if (i >= inputs.size()) return;
             progress.started(inputs[i].source.string());
-            const BatchRecord record = run_batch_job(inputs[i], settings, &stop, &renderer);
+            BatchRecord record;
+            arena.execute(
+                [&] { record = run_batch_job(inputs[i], job_settings, &stop, &renderer); });
             if (record.status == BatchStatus::Dropped) continue;
             try {
                 log.append(record);
@@ -44,8 +56,6 @@ BatchTotals run_batch_jobs(const std::vector<BatchInput>& inputs, const BatchSet
             progress.finished(record);
         }
     };
-    const std::size_t threads =
-        std::min<std::size_t>(std::size_t(std::max(jobs, 1)), inputs.size());
     std::vector<std::thread> pool;
     for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work);
     work();

@@ -1,5 +1,5 @@
 // The jobs of `zraster batch`: its inputs rendered `jobs` at a time on threads of this process
-// (each frame's render threads drawn from the one oneTBB pool), each record logged and shown as
+// (each file on its share of the threads), each record logged and shown as
 // its input ends.
 #pragma once
 #include <atomic>
