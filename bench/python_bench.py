@@ -6,7 +6,7 @@ MESH defaults to ../shared/data/meshes/obj/bunny.obj (the bunny of BENCHMARKS.md
 procedural sphere:70000. Prints, for 640x480 frames:
   - the median wall time of Renderer.render per frame (color + depth, Phong, 2 threads), the
     median time the C++ Renderer took inside it (Renderer.stats["total_ms"]) and their ratio;
-  - the same with every output (color, depth, z, range, normals, ids);
+  - the same with every output (color, depth, z, range, normals, ids), and with each alone;
   - frames per second of one thread running one single-threaded Renderer, and of two Python
     threads each running its own (the GIL is released while a frame renders), and their ratio.
 """
@@ -72,6 +72,9 @@ def main():
         wall, inside = frame_times(renderer, scene, camera, args.frames, outputs)
         print(f"  {'+'.join(outputs)}: {wall:.3f} ms per call, C++ Renderer {inside:.3f} ms "
               f"inside it: overhead {wall - inside:.3f} ms ({(wall / inside - 1) * 100:.1f}%)")
+    for output in ("color", "depth", "instance_id", "z", "range", "normal"):
+        wall, inside = frame_times(renderer, scene, camera, args.frames, (output,))
+        print(f"  {output} alone: {wall:.3f} ms per call, C++ Renderer {inside:.3f} ms")
     one = frames_per_second(scene, 1)
     two = frames_per_second(scene, 2)
     print(f"  one thread, one Renderer(threads=1): {one:.1f} frames/s; two threads with a "

@@ -103,9 +103,13 @@ struct FrameTargets {
 // Whether the frame may use tagged shading: the visibility kernel interpolates the attributes
 // of SIMD Phong instances' triangles, and either the deferred pass shades them a vector at a
 // time or, shading forward, the kernel lights them as they pass. (ShadingStrategy::Forward uses
-// it only when every instance is a SIMD Phong one: the others would be resolved first.)
+// it only when every instance is a SIMD Phong one: the others would be resolved first.) A
+// normal target is written from the normals the kernel interpolated, so deferred only: lighting
+// forward, the kernel keeps no normals.
 inline bool tagged_shading(const RenderOptions& options, const FrameTargets& targets) {
-    return options.simd && targets.color && !targets.normal &&
+    const bool forward = options.strategy == ShadingStrategy::Forward;
+    return options.simd &&
+           (forward ? targets.color && !targets.normal : targets.color || targets.normal) &&
            options.depth_format == DepthFormat::D32F && options.depth_test && !targets.coverage;
 }
 

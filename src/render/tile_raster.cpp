@@ -25,6 +25,7 @@
 #include "render/hierarchical_z.hpp"
 #include "render/shade_fragment.hpp"
 #include "render/stream_lines.hpp"
+#include "shade/phong_kernel.hpp"
 
 namespace zraster::detail {
 namespace {
@@ -359,6 +360,13 @@ struct TriangleRun {
     }
 };
 
+// The normal target's value at a tagged pixel: what shade_fragment gives a Phong fragment, from
+// the normal the kernel interpolated as shade_fragment interpolates it.
+glm::vec3 tagged_normal(const TileBuffers& tile, std::size_t at) {
+    const glm::vec3 n = unit_normal(glm::vec3(tile.nx[at], tile.ny[at], tile.nz[at]));
+    return (tile.shade_tag[at] & kShadeFlip) != 0 ? -n : n;
+}
+
 // Finishes a tile: deferred shading of every pixel with a triangle (once each), background
 // elsewhere, and the depth and id targets. With tagged shading, the SIMD shader colors the
 // tagged pixels a row at a time, and only the others (other materials) go pixel by pixel.
@@ -404,7 +412,7 @@ std::uint64_t finish_tile(const TileContext& c, const TileBuffers& tile, std::ui
         if (tagged && forward_tile) {  // lit as they passed
             c.write_row(color_row + std::size_t(c.x0) * 4, tile.color + at_row,
                         std::size_t(n) * sizeof(std::uint32_t));
-        } else if (tagged) {
+        } else if (tagged && want_color) {
             // (A copy, not a fill: GCC at -O2 fills element by element.)
             std::memcpy(row_rgba, background_row, std::size_t(n) * sizeof(std::uint32_t));
             shaded += std::uint64_t(
@@ -424,7 +432,11 @@ std::uint64_t finish_tile(const TileContext& c, const TileBuffers& tile, std::ui
                 if (primitive_row != nullptr) primitive_row[px] = -1;
                 continue;
             }
-            if (tagged && tile.shade_tag[at] != 0 && !want_ids) continue;
+            if (tagged && tile.shade_tag[at] != 0) {
+                if (want_normal) normal_row[px] = tagged_normal(tile, at);
+                shaded += !want_color;  // (counted by shade_tagged_row otherwise)
+                if (!want_ids) continue;
+            }
             if (id != run.id) run.load(c.frame, id);
             if (instance_row != nullptr) instance_row[px] = run.instance_id;
             if (primitive_row != nullptr) primitive_row[px] = run.primitive_id;
@@ -505,8 +517,7 @@ void rasterize_tiles(Frame& frame, RenderStats& stats) {
     const bool shade = targets.color || targets.normal;
     // Tagged shading: triangles of SIMD Phong instances interpolate their attributes in the
     // visibility kernel; the kernel lights them as they pass (forward) or the deferred pass
-    // shades them a vector at a time (the SIMD shader writes colors only: a normal target
-    // takes the scalar way).
+    // shades them a vector at a time and writes the normal target from the kernel's normals.
     const bool tagged = frame.tagged_shading;
     // Forward shading otherwise goes the scalar way, fragment by fragment.
     const bool forward = shade && options.strategy == ShadingStrategy::Forward && !tagged;

@@ -272,16 +272,28 @@ Camera near_plane_through(const Scene& sphere) {
     return cut;
 }
 
+// With a normal target too, and alone: the SIMD path writes it from the normals its kernel
+// interpolated.
 void expect_simd_equals_scalar(const Scene& scene, RenderOptions o) {
     o.id_targets = true;
-    o.simd = false;
-    const RenderResult scalar = render(scene, o);
-    o.simd = true;
-    const RenderResult simd = render(scene, o);
-    EXPECT_EQ(simd.targets.color, scalar.targets.color);
-    EXPECT_TRUE(same_bits(simd.targets.depth.data(), scalar.targets.depth.data(),
-                          simd.targets.depth.size()));
-    EXPECT_EQ(simd.targets.primitive_id, scalar.targets.primitive_id);
+    for (const int targets : {0, 1, 2}) {  // color, color and normals, normals
+        const bool normals = targets > 0;
+        o.normal_target = normals;
+        o.color_target = targets < 2;
+        o.simd = false;
+        const RenderResult scalar = render(scene, o);
+        o.simd = true;
+        const RenderResult simd = render(scene, o);
+        EXPECT_EQ(simd.targets.color, scalar.targets.color);
+        EXPECT_TRUE(same_bits(simd.targets.depth.data(), scalar.targets.depth.data(),
+                              simd.targets.depth.size()));
+        EXPECT_EQ(simd.targets.primitive_id, scalar.targets.primitive_id);
+        ASSERT_EQ(simd.targets.normal.size(), normals ? scalar.targets.depth.size() : 0u);
+        ASSERT_EQ(scalar.targets.normal.size(), simd.targets.normal.size());
+        EXPECT_TRUE(same_bits(simd.targets.normal.data(), scalar.targets.normal.data(),
+                              simd.targets.normal.size()))
+            << "normals";
+    }
 }
 
 void WholeFramesMatchTheScalarPath() {
