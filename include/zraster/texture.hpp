@@ -48,12 +48,16 @@ class ZRASTER_API Texture {
     // Sample with the given filter; Nearest and Bilinear use level 0 (no mipmapping).
     glm::vec4 sample(glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy, TextureFilter filter) const;
 
+    // Whether a texel of level 0 has an alpha below 255 (then so may any sample).
+    bool has_translucent_texels() const { return translucent_; }
+
   private:
     struct Level {
         int width, height;
         std::vector<std::uint8_t> rgba;
     };
     std::vector<Level> levels_;
+    bool translucent_ = false;
 };
 
 // A two-colour checkerboard of `squares` x `squares` cells, each `cell` texels wide.

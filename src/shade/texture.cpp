@@ -88,6 +88,8 @@ Texture::Texture(int width, int height, std::span<const std::uint8_t> rgba, int 
                        reduced.empty()
                            ? std::vector<std::uint8_t>(rgba.begin(), rgba.begin() + bytes)
                            : std::move(reduced)});
+    const std::vector<std::uint8_t>& top = levels_.front().rgba;
+    for (std::size_t i = 3; i < top.size() && !translucent_; i += 4) translucent_ = top[i] != 255;
     while (levels_.back().width > 1 || levels_.back().height > 1) {
         const Level& in = levels_.back();
         const int nw = std::max(1, in.width / 2), nh = std::max(1, in.height / 2);
