@@ -48,6 +48,10 @@ enum class ShadingStrategy {
     Deferred,  // resolve visibility per tile first, then shade each visible pixel once
 };
 
+// What materials' alpha does (Material::alpha_mode): as each material says (transparent and
+// cut-out surfaces), or nothing (every surface opaque, as renderers without transparency draw).
+enum class MaterialAlpha { Auto, Opaque };
+
 // The order instances are drawn in.
 enum class InstanceOrder {
     Submission,  // as in Scene::instances
@@ -119,6 +123,11 @@ struct RenderOptions {
     // Back faces are lit with the negated normal (two-sided lighting), as the benchmark shader
     // does.
     bool two_sided_lighting = true;
+    // Auto: Mask materials are alpha-tested (fragments under the cutoff are discarded before
+    // they write depth) and Blend materials whose alpha can be below 1 are composited over the
+    // opaque surfaces, per pixel, nearest last, in any submission order the same image; blended
+    // fragments write neither depth nor ids nor normals.
+    MaterialAlpha alpha_mode = MaterialAlpha::Auto;
     ShadingStrategy strategy = ShadingStrategy::Auto;
     // Use the SIMD kernels (off: the scalar reference path everywhere, for comparisons).
     bool simd = true;
@@ -245,6 +254,9 @@ struct RenderStats {
     std::uint64_t blocks_hidden = 0;     // skipped by hierarchical z (triangle x block)
     std::uint64_t fragments_passed = 0;  // passed the depth test
     std::uint64_t fragments_shaded = 0;
+    std::uint64_t fragments_alpha_discarded = 0;  // Mask materials' fragments under the cutoff
+    std::uint64_t fragments_blended = 0;  // Blend materials' fragments composited
+    std::uint64_t pixels_blended = 0;     // pixels with at least one of them
     bool deferred = false;         // some pixels were shaded deferred (resolved first, then shaded)
     const char* simd_target = "";  // instruction set of the SIMD kernels
     Camera camera;                 // the camera actually used

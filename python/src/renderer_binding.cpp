@@ -134,6 +134,9 @@ py::dict stats_dict(const RenderStats& s) {
     d["triangles_rasterized"] = s.triangles_rasterized;
     d["fragments_passed"] = s.fragments_passed;
     d["fragments_shaded"] = s.fragments_shaded;
+    d["fragments_alpha_discarded"] = s.fragments_alpha_discarded;
+    d["fragments_blended"] = s.fragments_blended;
+    d["pixels_blended"] = s.pixels_blended;
     d["deferred"] = s.deferred;
     d["simd_target"] = std::string(s.simd_target);
     d["setup_ms"] = s.setup_ms;

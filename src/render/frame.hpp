@@ -13,6 +13,7 @@
 #include <zraster/render.hpp>
 
 #include "raster/visibility_kernel.hpp"
+#include "render/blend_scratch.hpp"
 #include "render/classify_kernel.hpp"
 #include "render/cluster_cache.hpp"
 #include "render/mesh_access.hpp"
@@ -45,6 +46,8 @@ struct FrameInstance {
     glm::mat4 model{1.0f};
     glm::mat3 normal_matrix{1.0f};  // object to world for normals (inverse transpose)
     bool textured = false;
+    AlphaMode alpha = AlphaMode::Opaque;  // effective_alpha_mode (material_alpha.hpp)
+    bool alpha_textured = false;          // alpha from the material's textures (uvs needed)
     int phong_kernel = -1;  // index into Frame::phong_constants when the SIMD shader applies
     float distance = 0.0f;  // eye to the world bounding box (InstanceOrder::FrontToBack)
     // Cluster culling (cluster_cache.hpp): the vertex stage's hash of the mesh's positions
@@ -189,11 +192,18 @@ struct Chunk {
 // Scratch of one slot of the frame's arena (tbb::this_task_arena::current_thread_index()):
 // sized before the parallel stage that uses it, so that no thread allocates within a frame
 // whichever chunks or tiles it happens to take.
+// A tile's counts of alpha-tested and blended fragments (rasterize_tiles).
+struct TileAlphaCounts {
+    std::uint64_t discarded = 0;
+    std::uint64_t blended_fragments = 0, blended_pixels = 0;
+};
+
 struct SlotScratch {
     ClassifyOutput classify;                     // assemble_and_bin's front end
     std::unique_ptr<TileBuffers> tile;           // rasterize_tiles
     std::vector<std::size_t> run_start, cursor;  // write_bins
     std::vector<std::byte> bin_storage;          // write_bins, from its first cache line
+    BlendScratch blend;                          // rasterize_tiles' blended surfaces
 };
 
 // Instance culling's working memory (occlusion_cull.cpp), kept from frame to frame.
@@ -209,6 +219,7 @@ struct InstanceCulling {
         double screen_fraction = 0.0;  // of the projected box, clamped to the screen
         double distance = 0.0;         // eye to the world box's center
         std::size_t triangles = 0;
+        bool opaque = true;  // only opaque surfaces occlude (not alpha-tested or blended ones)
     };
     std::vector<Candidate> candidates;
     std::vector<std::size_t> by_size, occluders, by_distance;
@@ -264,6 +275,7 @@ struct Frame {
     SetupSettings setup_settings;
     bool needs_attributes = true;  // false for depth-only frames
     bool tagged_shading = false;   // tagged_shading(options) and an instance uses it
+    bool alpha_instances = false;  // an instance is alpha-tested or blended
     int tiles_x = 0, tiles_y = 0;
     std::vector<FrameInstance> instances;
     std::vector<std::size_t> instance_first_triangle;  // prefix sums, one more than instances
@@ -302,6 +314,7 @@ struct Frame {
     std::vector<std::size_t> tile_bytes, tile_base;  // bin_offsets
     // Per tile (rasterize_tiles): fragments passed and shaded, blocks hidden, deferred.
     std::vector<std::uint64_t> tile_passed, tile_shaded, tile_hidden;
+    std::vector<TileAlphaCounts> tile_alpha;  // empty when no instance is alpha-tested or blended
     std::vector<std::uint8_t> tile_deferred;
     std::vector<LinePixel> line;             // draw_edges
     std::optional<DepthBuffer> depth_codec;  // rasterize_tiles: encodes and decodes the format

@@ -4,6 +4,8 @@
 // nearest first, and visible instances of modest size join the occluders as they are found.
 #include "render/occlusion_cull.hpp"
 
+#include "render/material_alpha.hpp"
+
 #include <zraster/instance_bvh.hpp>
 #include <zraster/occlusion_buffer.hpp>
 
@@ -133,6 +135,9 @@ void cull_instances(Frame& frame, const glm::mat4& view_projection) {
         c.distance = glm::length(glm::dvec3(center) - frame.camera.position());
         if (!std::isfinite(c.distance)) c.distance = 0.0;
         c.triangles = mesh.triangle_count();
+        c.opaque =
+            effective_alpha_mode(scene.materials[mesh.view->material],
+                                 options.textures && mesh.has_uvs(), options) == AlphaMode::Opaque;
         candidates.push_back(c);
     }
     // (Sorts with ties in candidate order: stable, without stable_sort's buffer.)
@@ -164,7 +169,7 @@ void cull_instances(Frame& frame, const glm::mat4& view_projection) {
     for (const std::size_t k : by_size) {
         const Candidate& c = candidates[k];
         if (c.screen_fraction < kOccluderFraction) break;
-        if (c.triangles > budget) continue;
+        if (c.triangles > budget || !c.opaque) continue;
         budget -= c.triangles;
         is_occluder[k] = 1;
         occluders.push_back(k);
@@ -189,7 +194,8 @@ void cull_instances(Frame& frame, const glm::mat4& view_projection) {
         const OcclusionResult r = buffer.test_box(mesh.bounds, c.mvp);
         if (r == OcclusionResult::Occluded) {
             verdict[c.instance] = std::uint8_t(InstanceCull::Occluded);
-        } else if (r == OcclusionResult::Visible && c.screen_fraction >= kLateOccluderFraction &&
+        } else if (r == OcclusionResult::Visible && c.opaque &&
+                   c.screen_fraction >= kLateOccluderFraction &&
                    c.triangles <= kLateOccluderTriangles && c.triangles <= budget) {
             budget -= c.triangles;
             draw_occluder(culling, mesh, c, occluder);

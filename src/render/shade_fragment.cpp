@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "render/material_alpha.hpp"
+
 namespace zraster::detail {
 namespace {
 
@@ -10,29 +12,43 @@ glm::vec3 unit_or_up(glm::vec3 n) {
     return len > 0.0f ? n / len : glm::vec3(0, 1, 0);
 }
 
+// A fragment's texture coordinates and, for trilinear filtering, their screen derivatives.
+struct TextureLookup {
+    glm::vec2 uv{0.0f}, duv_dx{0.0f}, duv_dy{0.0f};
+};
+
+TextureLookup texture_lookup(const Frame& frame, const ShadingTriangle& t, int px, int py,
+                             const glm::vec3& b) {
+    const std::vector<glm::vec2>& uvs = frame.vertices.uv;
+    TextureLookup out;
+    out.uv = interpolate(uvs, t.ref->vertex, b);
+    if (frame.options->texture_filter == TextureFilter::Trilinear && t.has_setup) {
+        // Derivatives by evaluating the same interpolation one pixel over (exact, no quads).
+        const Interpolation interpolation = frame.options->interpolation;
+        out.duv_dx = interpolate(uvs, t.ref->vertex,
+                                 original_barycentrics(
+                                     t, barycentrics(t.setup, px + 1, py, interpolation))) -
+                     out.uv;
+        out.duv_dy = interpolate(uvs, t.ref->vertex,
+                                 original_barycentrics(
+                                     t, barycentrics(t.setup, px, py + 1, interpolation))) -
+                     out.uv;
+        if (!std::isfinite(out.duv_dx.x + out.duv_dx.y + out.duv_dy.x + out.duv_dy.y))
+            out.duv_dx = out.duv_dy = {};
+    }
+    return out;
+}
+
+glm::vec4 sample(const Frame& frame, const Texture& texture, const TextureLookup& at) {
+    return texture.sample(at.uv, at.duv_dx, at.duv_dy, frame.options->texture_filter);
+}
+
 glm::vec3 base_color(const Frame& frame, const FrameInstance& fi, const ShadingTriangle& t, int px,
                      int py, const glm::vec3& b) {
     const Material& material = *fi.material;
     if (!fi.textured) return material.base_color;
-    const std::vector<glm::vec2>& uvs = frame.vertices.uv;
-    const glm::vec2 uv = interpolate(uvs, t.ref->vertex, b);
-    glm::vec2 duv_dx(0.0f), duv_dy(0.0f);
-    if (frame.options->texture_filter == TextureFilter::Trilinear && t.has_setup) {
-        // Derivatives by evaluating the same interpolation one pixel over (exact, no quads).
-        const Interpolation interpolation = frame.options->interpolation;
-        duv_dx = interpolate(
-                     uvs, t.ref->vertex,
-                     original_barycentrics(t, barycentrics(t.setup, px + 1, py, interpolation))) -
-                 uv;
-        duv_dy = interpolate(
-                     uvs, t.ref->vertex,
-                     original_barycentrics(t, barycentrics(t.setup, px, py + 1, interpolation))) -
-                 uv;
-        if (!std::isfinite(duv_dx.x + duv_dx.y + duv_dy.x + duv_dy.y)) duv_dx = duv_dy = {};
-    }
-    const glm::vec4 texel =
-        material.base_color_texture->sample(uv, duv_dx, duv_dy, frame.options->texture_filter);
-    return material.base_color * glm::vec3(texel);
+    return material.base_color * glm::vec3(sample(frame, *material.base_color_texture,
+                                                  texture_lookup(frame, t, px, py, b)));
 }
 
 }  // namespace
@@ -43,7 +59,8 @@ void prepare_shading_triangle(const Frame& frame, const Chunk& chunk, const Tria
     out.ref = &ref;
     const FrameInstance& fi = frame.instances[ref.instance];
     out.has_setup = false;
-    if (fi.textured && frame.options->texture_filter == TextureFilter::Trilinear) {
+    if ((fi.textured || fi.alpha_textured) &&
+        frame.options->texture_filter == TextureFilter::Trilinear) {
         const std::array<ScreenVertex, 3> v{frame.screen_vertex(chunk, ref, 0),
                                             frame.screen_vertex(chunk, ref, 1),
                                             frame.screen_vertex(chunk, ref, 2)};
@@ -103,6 +120,21 @@ ShadedFragment shade_fragment(const Frame& frame, const ShadingTriangle& t, floa
         out.normal = flip ? -n : n;
     }
     return out;
+}
+
+float fragment_alpha(const Frame& frame, const ShadingTriangle& t, float b1, float b2, int px,
+                     int py) {
+    const FrameInstance& fi = frame.instances[t.ref->instance];
+    const Material& material = *fi.material;
+    float base_alpha = 1.0f, opacity_red = 1.0f;
+    if (fi.alpha_textured) {
+        const glm::vec3 b = original_barycentrics(t, {1.0f - b1 - b2, b1, b2});
+        const TextureLookup at = texture_lookup(frame, t, px, py, b);
+        if (material.base_color_texture)
+            base_alpha = sample(frame, *material.base_color_texture, at).w;
+        if (material.opacity_texture) opacity_red = sample(frame, *material.opacity_texture, at).x;
+    }
+    return material_alpha(material, base_alpha, opacity_red);
 }
 
 }  // namespace zraster::detail

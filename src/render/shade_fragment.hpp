@@ -40,4 +40,9 @@ void prepare_shading_triangle(const Frame& frame, const Chunk& chunk, const Tria
 ShadedFragment shade_fragment(const Frame& frame, const ShadingTriangle& triangle, float b1,
                               float b2, int px, int py, bool want_normal);
 
+// The fragment's alpha (material_alpha.hpp) at pixel (px, py), its textures sampled as the base
+// color is.
+float fragment_alpha(const Frame& frame, const ShadingTriangle& triangle, float b1, float b2,
+                     int px, int py);
+
 }  // namespace zraster::detail

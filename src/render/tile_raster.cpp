@@ -21,6 +21,7 @@
 #include "memory/huge_pages.hpp"
 #include "raster/setup_lanes.hpp"
 #include "raster/visibility_kernel.hpp"
+#include "render/blend_pass.hpp"
 #include "render/frame.hpp"
 #include "render/hierarchical_z.hpp"
 #include "render/shade_fragment.hpp"
@@ -62,11 +63,12 @@ struct TileContext {
     const FrameTargets& targets;
     const DepthBuffer& codec;  // encodes/decodes the depth format
     CompareFunc compare;
-    bool kernel;                   // the block traversal with the visibility kernel may be used
-    bool simd;                     // ... in its SIMD version
-    bool forward;                  // shade as fragments pass (scalar path)
-    HierarchicalZ hiz;             // per-block depth bounds in use (kernel path, depth writes on)
-    std::uint64_t& blocks_hidden;  // this tile's count of blocks skipped by them
+    bool kernel;                     // the block traversal with the visibility kernel may be used
+    bool simd;                       // ... in its SIMD version
+    bool forward;                    // shade as fragments pass (scalar path)
+    HierarchicalZ hiz;               // per-block depth bounds in use (kernel path, depth writes on)
+    std::uint64_t& blocks_hidden;    // this tile's count of blocks skipped by them
+    std::uint64_t& alpha_discarded;  // this tile's alpha-tested fragments under the cutoff
     // How many of the tile's blocks have a bound nearer than the clear depth: until one has,
     // no test can hide anything and none is made (a mesh of small triangles rarely covers a
     // whole block in one write).
@@ -132,21 +134,31 @@ std::uint64_t rasterize_scalar(const TileContext& c, const Chunk& chunk, const T
                                const PhongConstants* shade_constants, TileBuffers& tile, int x0,
                                int y0, int x1, int y1) {
     const RenderOptions& options = *c.frame.options;
+    const FrameInstance& instance = c.frame.instances[ref.instance];
+    const bool alpha_test = instance.alpha == AlphaMode::Mask;
     ShadingTriangle shading;
-    if (c.forward && c.shade) prepare_shading_triangle(c.frame, chunk, ref, shading);
+    if ((c.forward && c.shade) || alpha_test)
+        prepare_shading_triangle(c.frame, chunk, ref, shading);
     std::uint64_t passed = 0;
     for_each_covered_pixel(setup, x0, y0, x1, y1, [&](int px, int py) {
         const std::size_t at = tile_index(px - c.x0, py - c.y0);
+        float code = 0.0f;
         if (options.depth_test) {
             const float z = depth_at(setup, px, py);
-            const float code =
+            code =
                 c.codec.format() == DepthFormat::D32F ? z : static_cast<float>(c.codec.encode(z));
             if (!DepthBuffer::passes(code, tile.depth[at], c.compare)) return;
-            if (options.depth_write) tile.depth[at] = code;
         }
+        const glm::vec3 b = barycentrics(setup, px, py, options.interpolation);
+        // The alpha test, before the fragment writes depth (alpha NaN: discarded).
+        if (alpha_test && !(fragment_alpha(c.frame, shading, b.y, b.z, px, py) >=
+                            instance.material->alpha_cutoff)) {
+            ++c.alpha_discarded;
+            return;
+        }
+        if (options.depth_test && options.depth_write) tile.depth[at] = code;
         ++passed;
         if (c.targets.coverage) count_hit(c, ref.front_facing, px, py);
-        const glm::vec3 b = barycentrics(setup, px, py, options.interpolation);
         tile.ref[at] = id;
         tile.b1[at] = b.y;
         tile.b2[at] = b.z;
@@ -581,6 +593,10 @@ void rasterize_tiles(Frame& frame, RenderStats& stats) {
     std::vector<std::uint64_t>& shaded_per_tile = frame.tile_shaded;
     std::vector<std::uint64_t>& hidden_per_tile = frame.tile_hidden;
     std::vector<std::uint8_t>& deferred_per_tile = frame.tile_deferred;  // some shaded deferred
+    std::vector<TileAlphaCounts>& alpha_per_tile = frame.tile_alpha;
+    // (A local: the loops below would read the frame's flag again for every triangle.)
+    const bool alpha_instances = frame.alpha_instances;
+    alpha_per_tile.assign(alpha_instances ? tiles : 0, TileAlphaCounts{});
     passed_per_tile.assign(tiles, 0);
     shaded_per_tile.assign(tiles, 0);
     hidden_per_tile.assign(tiles, 0);
@@ -605,25 +621,28 @@ void rasterize_tiles(Frame& frame, RenderStats& stats) {
         const int tx = int(tile_number % std::size_t(frame.tiles_x));
         const int ty = int(tile_number / std::size_t(frame.tiles_x));
         int bounded_blocks = 0;
+        std::uint64_t unused_count = 0;  // (frames without alpha-tested instances)
         SmallJobsHiz small_jobs;
-        const TileContext c{frame,
-                            targets,
-                            codec,
-                            compare,
-                            kernel,
-                            options.simd,
-                            forward,
-                            hiz,
-                            hidden_per_tile[tile_number],
-                            bounded_blocks,
-                            small_jobs,
-                            shade,
-                            tagged,
-                            stream,
-                            tx * kTileSize,
-                            ty * kTileSize,
-                            std::min(width, (tx + 1) * kTileSize),
-                            std::min(height, (ty + 1) * kTileSize)};
+        const TileContext c{
+            frame,
+            targets,
+            codec,
+            compare,
+            kernel,
+            options.simd,
+            forward,
+            hiz,
+            hidden_per_tile[tile_number],
+            alpha_per_tile.empty() ? unused_count : alpha_per_tile[tile_number].discarded,
+            bounded_blocks,
+            small_jobs,
+            shade,
+            tagged,
+            stream,
+            tx * kTileSize,
+            ty * kTileSize,
+            std::min(width, (tx + 1) * kTileSize),
+            std::min(height, (ty + 1) * kTileSize)};
         const std::size_t chunks = frame.chunks.size();
         // The tile's run in each chunk (see Frame::bin_run_offsets).
         const std::size_t* run_offset = frame.bin_run_offsets.data() + tile_number * chunks;
@@ -660,6 +679,8 @@ void rasterize_tiles(Frame& frame, RenderStats& stats) {
 
         std::uint64_t passed = 0;
         bool untagged = false;  // a triangle without a shade tag was drawn
+        std::vector<BlendTriangle>& blended = slot.blend.triangles;
+        blended.clear();
         TriangleSetup setup;
         // The tile's entries, kSetupLanes at a time (set up together), the chunks in order.
         // Small triangles are single jobs (see rasterize_blocks), which the setup computes in
@@ -726,6 +747,10 @@ void rasterize_tiles(Frame& frame, RenderStats& stats) {
                 const Chunk& chunk = frame.chunks[lane_chunk_index[lane]];
                 const std::uint32_t local = entry(lane).ref & ~BinEntry::kClippedPiece;
                 jobs.ref[lane] = lane_chunk_index[lane] << kLocalBits | local;
+                // Alpha-tested and blended triangles go their own ways (below), not the lanes'.
+                if (alpha_instances &&
+                    frame.instances[chunk.refs[local].instance].alpha != AlphaMode::Opaque)
+                    lanes.single_job[lane] = 0;
                 const CornerAttributes* with = nullptr;
                 const glm::vec3* piece = nullptr;
                 if (kernel && tagged) {
@@ -763,6 +788,21 @@ void rasterize_tiles(Frame& frame, RenderStats& stats) {
                 const Chunk& chunk = frame.chunks[lane_chunk_index[lane]];
                 const std::uint32_t id = jobs.ref[lane];
                 const TriangleRef& ref = chunk.refs[id & ((1u << kLocalBits) - 1)];
+                if (alpha_instances) {
+                    const AlphaMode alpha = frame.instances[ref.instance].alpha;
+                    if (alpha == AlphaMode::Blend) {  // drawn after the tile (blend_pass.hpp)
+                        if (targets.color)
+                            blended.push_back(
+                                {lane_chunk_index[lane], id & ((1u << kLocalBits) - 1), setup});
+                        continue;
+                    }
+                    if (alpha == AlphaMode::Mask) {  // alpha-tested on the scalar way
+                        passed += rasterize_scalar(c, chunk, ref, setup, id, nullptr, nullptr,
+                                                   nullptr, tile, c.x0, c.y0, c.x1, c.y1);
+                        untagged = true;
+                        continue;
+                    }
+                }
                 if (!kernel) {
                     passed += rasterize_scalar(c, chunk, ref, setup, id, nullptr, nullptr, nullptr,
                                                tile, c.x0, c.y0, c.x1, c.y1);
@@ -781,6 +821,13 @@ void rasterize_tiles(Frame& frame, RenderStats& stats) {
             shaded_forward + finish_tile(c, tile, background, background_row, shade && !forward,
                                          untagged, forward_tile);
         if (forward) shaded_per_tile[tile_number] = passed;
+        if (!blended.empty()) {
+            const BlendCounts counts = composite_blended(
+                BlendTile{frame, codec, compare, targets.views, tile.depth, c.x0, c.y0, c.x1, c.y1},
+                slot.blend);
+            alpha_per_tile[tile_number].blended_fragments = counts.fragments;
+            alpha_per_tile[tile_number].blended_pixels = counts.pixels;
+        }
         deferred_per_tile[tile_number] = shade && !forward && (!forward_tile || untagged);
     });
     // Edges are drawn over the targets after this, across empty tiles too.
@@ -793,6 +840,11 @@ void rasterize_tiles(Frame& frame, RenderStats& stats) {
         stats.fragments_passed += passed_per_tile[t];
         stats.fragments_shaded += shaded_per_tile[t];
         stats.blocks_hidden += hidden_per_tile[t];
+    }
+    for (const TileAlphaCounts& counts : alpha_per_tile) {
+        stats.fragments_alpha_discarded += counts.discarded;
+        stats.fragments_blended += counts.blended_fragments;
+        stats.pixels_blended += counts.blended_pixels;
     }
 }
 

@@ -11,6 +11,7 @@
 
 #include "memory/huge_pages.hpp"
 #include "render/frame.hpp"
+#include "render/material_alpha.hpp"
 #include "render/mesh_access.hpp"
 #include "render/occlusion_cull.hpp"
 #include "render/shade_kernel.hpp"
@@ -50,8 +51,9 @@ void assign_phong_kernels(Frame& frame) {
     const RenderOptions& options = *frame.options;
     frame.phong_constants.clear();
     for (FrameInstance& fi : frame.instances) {
+        // (Alpha-tested and blended instances take the scalar way: their fragments need alpha.)
         if (fi.shading != ShadingMode::Phong || fi.textured || !options.simd ||
-            !phong_kernel_applies(options.lighting, *fi.material))
+            fi.alpha != AlphaMode::Opaque || !phong_kernel_applies(options.lighting, *fi.material))
             continue;
         fi.phong_kernel = static_cast<int>(frame.phong_constants.size());
         frame.phong_constants.push_back(
@@ -126,6 +128,7 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
     cull_instances(frame, view_projection);
     const std::vector<std::uint8_t>& culled = frame.culling.verdicts;
     std::uint32_t vertex_count = 0;
+    frame.alpha_instances = false;
     for (std::uint32_t i = 0; i < scene.instances.size(); ++i) {
         const InstanceView& instance = scene.instances[i];
         ++stats.instances;
@@ -151,6 +154,10 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
         fi.model = instance.transform;
         fi.normal_matrix = normal_matrix(instance.transform);
         fi.textured = options.textures && fi.material->base_color_texture && mesh.has_uvs();
+        fi.alpha = effective_alpha_mode(*fi.material, options.textures && mesh.has_uvs(), options);
+        fi.alpha_textured = fi.alpha != AlphaMode::Opaque && options.textures && mesh.has_uvs() &&
+                            (fi.material->base_color_texture || fi.material->opacity_texture);
+        frame.alpha_instances |= fi.alpha != AlphaMode::Opaque;
         frame.instances.push_back(fi);
     }
     // Nearest first, ties in submission order (a sort that needs no buffer, unlike stable_sort).
@@ -171,12 +178,17 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
         frame.tagged_shading &= frame.phong_constants.size() == frame.instances.size();
 
     FrameVertices& v = frame.vertices;
+    // Alpha-tested fragments need their texture coordinates even in a depth-only frame.
+    if (frame.alpha_instances && !frame.needs_attributes) {
+        frame.needs_attributes = true;
+        frame.setup_settings.barycentric_planes = true;
+    }
     const bool attributes = frame.needs_attributes;
     const bool world = attributes || !options.clip_planes.empty();
     bool any_gouraud = false, any_textured = false;
     for (const FrameInstance& fi : frame.instances) {
         any_gouraud |= fi.shading == ShadingMode::Gouraud;
-        any_textured |= fi.textured;
+        any_textured |= fi.textured || fi.alpha_textured;
     }
     memory::resize_on_huge_pages(v.screen, vertex_count);
     memory::resize_on_huge_pages(v.outcode, vertex_count);
@@ -315,10 +327,11 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
                     hash_low += static_cast<std::uint32_t>(h);
                     hash_high += static_cast<std::uint32_t>(h >> 32);
                 }
-                if (!attributes || (!fi.textured && !lit_per_vertex)) return;
+                const bool uvs = fi.textured || fi.alpha_textured;
+                if (!attributes || (!uvs && !lit_per_vertex)) return;
                 for (std::size_t k = r.begin(); k < r.end(); ++k) {
                     const std::size_t out = fi.first_vertex + k;
-                    if (fi.textured) v.uv[out] = mesh.uv(k);
+                    if (uvs) v.uv[out] = mesh.uv(k);
                     if (lit_per_vertex)
                         v.gouraud[out] =
                             evaluate_lighting(options.lighting, *fi.material, v.world[out],

@@ -110,6 +110,11 @@ void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
                    "auto (deferred) | forward | deferred (same image)")
         ->check(CLI::IsMember({"auto", "forward", "deferred"}))
         ->capture_default_str();
+    cmd.add_option("--alpha-mode", a.alpha_mode,
+                   "auto (as the file says: cut-outs alpha-tested, transparent surfaces "
+                   "blended) | opaque (every surface opaque)")
+        ->check(CLI::IsMember({"auto", "opaque"}))
+        ->capture_default_str();
     cmd.add_option("--front-face", a.front_face, "Front-face winding ccw|cw")
         ->check(CLI::IsMember({"ccw", "cw"}))
         ->capture_default_str();
@@ -268,6 +273,7 @@ RenderOptions make_render_options(const RenderArguments& a,
     o.occlusion_cull = a.occlusion_cull;
     if (a.front_to_back) o.instance_order = InstanceOrder::FrontToBack;
     o.strategy = shading_strategy(a.strategy);
+    o.alpha_mode = a.alpha_mode == "opaque" ? MaterialAlpha::Opaque : MaterialAlpha::Auto;
     parse_depth_format(a.depth_format, o.depth_format);
     if (!a.depth_compare.empty()) {
         CompareFunc f{};

@@ -42,6 +42,7 @@ struct RenderArguments {
     bool occlusion_cull = false;
     bool front_to_back = false;
     std::string strategy = "auto";
+    std::string alpha_mode = "auto";
     std::string front_face = "ccw";
     std::string depth_format = "d32f", depth_compare;
     bool no_depth_test = false, no_depth_write = false;

@@ -96,6 +96,11 @@ int run_render(const RenderArguments& a) {
             "  fragments shaded {} ({}); setup {:.1f} ms, raster {:.1f} ms, total {:.1f} ms\n",
             s.fragments_shaded, s.deferred ? "deferred" : "forward", s.setup_ms, s.raster_ms,
             s.total_ms);
+        if (s.fragments_alpha_discarded + s.fragments_blended > 0)
+            fmt::print(
+                "  alpha: fragments discarded by the alpha test {}, blended {} over {} "
+                "pixels\n",
+                s.fragments_alpha_discarded, s.fragments_blended, s.pixels_blended);
         fmt::print(
             "  camera eye ({:.6g}, {:.6g}, {:.6g}) target ({:.6g}, {:.6g}, {:.6g}) near "
             "{:.6g} far {:.6g}\n",

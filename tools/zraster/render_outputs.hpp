@@ -38,7 +38,9 @@ RenderedFrame render_outputs(const RenderArguments& arguments, const Scene& scen
                              OutputFiles& outputs, ProgressReporter* progress, std::FILE* notes,
                              Renderer* renderer = nullptr);
 
-// A note on `notes` when instances have transparent materials, which `what` draws opaque.
-void warn_if_transparent(const Scene& scene, const std::string& what, std::FILE* notes = stderr);
+// A note on `notes` when instances have blended or alpha-tested materials (as `options` would
+// draw them), which `what` draws opaque.
+void warn_if_transparent(const Scene& scene, const RenderOptions& options, const std::string& what,
+                         std::FILE* notes = stderr);
 
 }  // namespace zraster::cli

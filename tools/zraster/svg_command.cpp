@@ -62,7 +62,8 @@ int run_svg(const SvgArguments& a) {
     for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
     RenderOptions options = make_render_options(a.render, scene);
     options.progress = stderr_progress();
-    warn_if_transparent(scene, "zraster svg");
+    if (options.alpha_mode == MaterialAlpha::Auto)
+        warn_if_transparent(scene, options, "zraster svg");
 
     SvgOptions svg;
     svg.order = a.order == "painter" ? SvgOptions::Order::Painter : SvgOptions::Order::Bsp;

@@ -1,0 +1,24 @@
+// See material_alpha.hpp.
+#include "render/material_alpha.hpp"
+
+#include <cmath>
+
+namespace zraster::detail {
+
+AlphaMode effective_alpha_mode(const Material& material, bool textured,
+                               const RenderOptions& options) {
+    if (options.alpha_mode == MaterialAlpha::Opaque || material.alpha_mode == AlphaMode::Opaque)
+        return AlphaMode::Opaque;
+    const bool texture_alpha =
+        textured && ((material.base_color_texture != nullptr &&
+                      material.base_color_texture->has_translucent_texels()) ||
+                     material.opacity_texture != nullptr);
+    // (A NaN opacity counts as 1, as the A-buffer takes it.)
+    const float opacity = std::isnan(material.opacity) ? 1.0f : material.opacity;
+    if (material.alpha_mode == AlphaMode::Mask)
+        return texture_alpha || opacity < material.alpha_cutoff ? AlphaMode::Mask
+                                                                : AlphaMode::Opaque;
+    return texture_alpha || opacity < 1.0f ? AlphaMode::Blend : AlphaMode::Opaque;
+}
+
+}  // namespace zraster::detail

@@ -1,0 +1,272 @@
+// Materials' alpha in the z-buffer pipeline (RenderOptions::alpha_mode): blended surfaces
+// composited over the opaque ones farthest first, the same image in every submission order and
+// equal to the analytic "over" within 1/255; alpha-tested (Mask) surfaces discarding their
+// fragments under the cutoff before they write depth; both unchanged by the pipeline's exact
+// optimizations (SIMD, hierarchical z, occlusion and cluster culling, threads).
+#include <zraster/render.hpp>
+#include <zraster/scene.hpp>
+#include <zraster/texture.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "support/test_support.hpp"
+
+namespace zraster::test {
+namespace {
+
+constexpr int kImage = 64;
+
+// Orthographic on +z: world (x, y) lands on window (x + 32, 32 - y), so a square from -h to h
+// covers the pixels 32 - h .. 32 + h - 1 each way.
+RenderOptions alpha_options() {
+    RenderOptions o;
+    o.width = kImage;
+    o.height = kImage;
+    o.threads = 2;
+    o.shading = ShadingMode::Unlit;  // colors = base colors, for the analytic blend
+    o.background = {0.25f, 0.5f, 0.75f};
+    Camera c;
+    c.eye = {0.0, 0.0, 8.0};
+    c.target = {0.0, 0.0, 0.0};
+    c.projection = Camera::Projection::Orthographic;
+    c.ortho_height = kImage;
+    c.near = 1.0;
+    c.far = 20.0;
+    o.camera = c;
+    return o;
+}
+
+// A square of half-width h at depth z, as two triangles with texture coordinates 0..1.
+Mesh square(float h, float z) {
+    Mesh m;
+    m.positions = {{-h, -h, z}, {h, -h, z}, {h, h, z}, {-h, h, z}};
+    m.uvs = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
+    m.normals.assign(4, glm::vec3(0, 0, 1));
+    m.indices = {0, 1, 2, 0, 2, 3};
+    update_bounds(m);
+    return m;
+}
+
+struct Layer {
+    float half_width, z;
+    glm::vec3 color;
+    float opacity;
+};
+
+// Far opaque, then two blended layers nearer, each smaller.
+const std::array<Layer, 3> kLayers = {{
+    {20.0f, -2.0f, {0.9f, 0.2f, 0.1f}, 1.0f},
+    {14.0f, 0.0f, {0.1f, 0.8f, 0.3f}, 0.5f},
+    {8.0f, 2.0f, {0.2f, 0.3f, 0.9f}, 0.35f},
+}};
+
+Scene layered_scene(const std::array<int, 3>& order) {
+    Scene scene;
+    scene.materials.push_back(Material{});
+    for (const int k : order) {
+        const Layer& layer = kLayers[std::size_t(k)];
+        Material m;
+        m.base_color = layer.color;
+        m.opacity = layer.opacity;
+        scene.materials.push_back(m);
+        Mesh mesh = square(layer.half_width, layer.z);
+        mesh.material = std::uint32_t(scene.materials.size() - 1);
+        scene.meshes.push_back(std::move(mesh));
+        Instance instance;
+        instance.mesh = std::uint32_t(scene.meshes.size() - 1);
+        scene.instances.push_back(instance);
+    }
+    return scene;
+}
+
+int unorm8(double v) {
+    return int(std::clamp(float(v), 0.0f, 1.0f) * 255.0f + 0.5f);
+}
+
+glm::ivec3 pixel(const RenderResult& r, int px, int py) {
+    const std::uint8_t* p = &r.targets.color[(std::size_t(py) * kImage + std::size_t(px)) * 4];
+    return {p[0], p[1], p[2]};
+}
+
+TEST(AlphaModes, BlendIsIndependentOfSubmissionOrderAndMatchesOver) {
+    const RenderOptions options = alpha_options();
+    std::array<int, 3> order = {0, 1, 2};
+    RenderResult first;
+    int orders = 0;
+    do {
+        const RenderResult r = render(layered_scene(order), options);
+        if (orders++ == 0) {
+            first = r;
+            continue;
+        }
+        EXPECT_EQ(r.targets.color, first.targets.color)
+            << "order " << order[0] << order[1] << order[2];
+        EXPECT_TRUE(same_bits(r.targets.depth, first.targets.depth));
+    } while (std::next_permutation(order.begin(), order.end()));
+    EXPECT_EQ(orders, 6);
+
+    // Inside every layer: the background hidden by the opaque one, then "over" twice.
+    glm::dvec3 inner(kLayers[0].color);
+    for (std::size_t k = 1; k < 3; ++k)
+        inner = double(kLayers[k].opacity) * glm::dvec3(kLayers[k].color) +
+                (1.0 - double(kLayers[k].opacity)) * inner;
+    const glm::dvec3 middle = double(kLayers[1].opacity) * glm::dvec3(kLayers[1].color) +
+                              (1.0 - double(kLayers[1].opacity)) * glm::dvec3(kLayers[0].color);
+    for (const auto& [px, py, expected] :
+         {std::tuple{32, 32, inner}, std::tuple{26, 38, inner}, std::tuple{20, 20, middle},
+          std::tuple{14, 14, glm::dvec3(kLayers[0].color)}}) {
+        const glm::ivec3 got = pixel(first, px, py);
+        for (int c = 0; c < 3; ++c)
+            EXPECT_LE(std::abs(got[c] - unorm8(expected[c])), 1)
+                << "pixel " << px << "," << py << " channel " << c;
+    }
+    // Blended surfaces write no depth: the opaque layer's alone.
+    Scene opaque_only = layered_scene({0, 1, 2});
+    opaque_only.instances.resize(1);
+    const RenderResult reference = render(opaque_only, options);
+    EXPECT_TRUE(same_bits(first.targets.depth, reference.targets.depth));
+    EXPECT_EQ(first.stats.pixels_blended, std::uint64_t(28 * 28));
+    EXPECT_EQ(first.stats.fragments_blended, std::uint64_t(28 * 28 + 16 * 16));
+}
+
+TEST(AlphaModes, OpaqueModeIgnoresAlpha) {
+    RenderOptions options = alpha_options();
+    options.alpha_mode = MaterialAlpha::Opaque;
+    Scene scene = layered_scene({0, 1, 2});
+    const RenderResult ignored = render(scene, options);
+    for (Material& m : scene.materials) m.opacity = 1.0f;
+    options.alpha_mode = MaterialAlpha::Auto;
+    const RenderResult opaque = render(scene, options);
+    EXPECT_EQ(ignored.targets.color, opaque.targets.color);
+    EXPECT_EQ(ignored.stats.fragments_blended, 0u);
+    // And a material that says Opaque keeps its alpha ignored in Auto.
+    scene = layered_scene({0, 1, 2});
+    for (Material& m : scene.materials) m.alpha_mode = AlphaMode::Opaque;
+    EXPECT_EQ(render(scene, options).targets.color, opaque.targets.color);
+}
+
+// A square with a checkerboard of transparent and opaque 8x8-pixel cells in front of an opaque
+// one: the transparent cells show (and keep the depth of) what is behind.
+Scene cut_out_scene(AlphaMode mode, bool cut_out_first) {
+    Scene scene;
+    Material back;
+    back.base_color = {0.9f, 0.2f, 0.1f};
+    Material front;
+    front.base_color = {1.0f, 1.0f, 1.0f};
+    front.alpha_mode = mode;
+    front.alpha_cutoff = 0.5f;
+    // 4 x 4 cells of 16 texels over a square 32 pixels wide: 8 pixels a cell.
+    front.base_color_texture = std::make_shared<Texture>(
+        make_checkerboard_texture(4, 16, {40, 200, 60, 0}, {40, 200, 60, 255}));
+    scene.materials = {back, front};
+    Mesh far = square(24.0f, -2.0f);
+    Mesh near = square(16.0f, 1.0f);
+    near.material = 1;
+    if (cut_out_first) std::swap(far, near);
+    scene.meshes = {far, near};
+    scene.instances.resize(2);
+    scene.instances[1].mesh = 1;
+    return scene;
+}
+
+TEST(AlphaModes, MaskDiscardsFragmentsUnderTheCutoffBeforeTheyWriteDepth) {
+    const RenderOptions options = alpha_options();
+    const RenderResult r = render(cut_out_scene(AlphaMode::Mask, false), options);
+    EXPECT_EQ(render(cut_out_scene(AlphaMode::Mask, true), options).targets.color, r.targets.color);
+    const float far_depth = r.targets.depth[std::size_t(10) * kImage + 32];  // back square only
+    int cut = 0, kept = 0;
+    for (int cy = 0; cy < 4; ++cy)
+        for (int cx = 0; cx < 4; ++cx) {
+            // The cell's center pixel: texel alpha 0 at the top left cell, alternating.
+            const int px = 16 + 8 * cx + 4, py = 16 + 8 * cy + 4;
+            const bool transparent = ((cx + cy) & 1) == 0;
+            const glm::ivec3 got = pixel(r, px, py);
+            const float depth = r.targets.depth[std::size_t(py) * kImage + std::size_t(px)];
+            if (transparent) {
+                EXPECT_EQ(got, glm::ivec3(unorm8(0.9), unorm8(0.2), unorm8(0.1)))
+                    << px << "," << py;
+                EXPECT_EQ(depth, far_depth);
+                ++cut;
+            } else {
+                EXPECT_EQ(got, glm::ivec3(40, 200, 60)) << px << "," << py;
+                EXPECT_LT(depth, far_depth);
+                ++kept;
+            }
+        }
+    EXPECT_EQ(cut, 8);
+    EXPECT_EQ(kept, 8);
+    EXPECT_GT(r.stats.fragments_alpha_discarded, 8u * 60u);
+    EXPECT_EQ(r.stats.fragments_blended, 0u);
+    // A depth-only frame cuts the same holes.
+    RenderOptions depth_only = options;
+    depth_only.color_target = false;
+    EXPECT_TRUE(same_bits(render(cut_out_scene(AlphaMode::Mask, false), depth_only).targets.depth,
+                          r.targets.depth));
+}
+
+TEST(AlphaModes, TextureAlphaBlendsTooAndTheOptimizationsDoNotChangeABit) {
+    for (const AlphaMode mode : {AlphaMode::Mask, AlphaMode::Blend}) {
+        for (const bool first : {false, true}) {
+            const Scene scene = cut_out_scene(mode, first);
+            RenderOptions options = alpha_options();
+            const RenderResult reference = render(scene, options);
+            if (mode == AlphaMode::Blend) {
+                EXPECT_GT(reference.stats.fragments_blended, 0u);
+            }
+            for (int variant = 0; variant < 5; ++variant) {
+                RenderOptions o = options;
+                o.simd = variant != 0;
+                o.hierarchical_z = variant != 1;
+                o.occlusion_cull = variant == 2;
+                o.cluster_culling = variant != 3;
+                o.threads = variant == 4 ? 1 : 2;
+                o.strategy = variant == 4 ? ShadingStrategy::Forward : ShadingStrategy::Auto;
+                const RenderResult r = render(scene, o);
+                EXPECT_EQ(r.targets.color, reference.targets.color) << "variant " << variant;
+                EXPECT_TRUE(same_bits(r.targets.depth, reference.targets.depth))
+                    << "variant " << variant;
+            }
+        }
+    }
+}
+
+// A cut-out or blended square in front of a smaller opaque one, which it would hide if it were
+// opaque: it must not serve as an occluder.
+TEST(AlphaModes, CutOutsAndBlendedSurfacesDoNotOcclude) {
+    for (const AlphaMode mode : {AlphaMode::Mask, AlphaMode::Blend}) {
+        Scene scene = cut_out_scene(mode, true);
+        scene.meshes[0] = square(2.0f, 1.0f);  // the cut-out square, 4 x 4 cells
+        scene.meshes[0].material = 1;
+        // Small (under the 1% of the screen that makes every instance an occluder), behind the
+        // middle of a transparent cell (the second in each direction).
+        scene.meshes[1] = square(0.15f, -2.0f);
+        scene.meshes[1].material = 0;
+        scene.instances[1].transform = glm::translate(glm::mat4(1.0f), {-0.5f, 0.5f, 0.0f});
+        // (In perspective: the occlusion buffer compares 1/w, constant in an orthographic view.)
+        RenderOptions options = alpha_options();
+        options.camera->projection = Camera::Projection::Perspective;
+        options.camera->fovy_degrees = 40.0;
+        const RenderResult plain = render(scene, options);
+        options.occlusion_cull = true;
+        const RenderResult culled = render(scene, options);
+        EXPECT_EQ(culled.stats.instances_occlusion_culled, 0u);
+        // (Opaque, the square does hide the other one: the test above could fail.)
+        scene.materials[1].alpha_mode = AlphaMode::Opaque;
+        EXPECT_EQ(render(scene, options).stats.instances_occlusion_culled, 1u);
+        scene.materials[1].alpha_mode = mode;
+        EXPECT_EQ(culled.targets.color, plain.targets.color);
+        EXPECT_TRUE(same_bits(culled.targets.depth, plain.targets.depth));
+        // The opaque square shows through the holes.
+        EXPECT_EQ(pixel(plain, 27, 27), glm::ivec3(unorm8(0.9), unorm8(0.2), unorm8(0.1)));
+    }
+}
+
+}  // namespace
+}  // namespace zraster::test
