@@ -120,6 +120,12 @@ inline void check_loaded_scene(const Scene& scene) {
     }
     for (const Instance& instance : scene.instances)
         if (instance.mesh >= scene.meshes.size()) fail("instance names a missing mesh");
+    for (const Material& m : scene.materials) {
+        if (!(m.opacity >= 0.0f && m.opacity <= 1.0f)) fail("opacity outside [0, 1]: " + m.name);
+        if (!(m.alpha_cutoff >= 0.0f && m.alpha_cutoff <= 1.0f))
+            fail("alpha cutoff outside [0, 1]: " + m.name);
+        if (m.alpha_mode > AlphaMode::Blend) fail("unknown alpha mode: " + m.name);
+    }
     for (const std::string& w : scene.warnings)
         if (w.find('\n') != std::string::npos) fail("multi-line warning: " + w);
 }

@@ -65,8 +65,9 @@ struct LoadOptions {
     std::size_t worker_memory_bytes = std::size_t{8} << 30;
 };
 
-// Loads every mesh with its material (base color, specular, shininess, opacity, base-color
-// texture) and the node hierarchy as instances (node transforms applied). Computes
+// Loads every mesh with its material (base color, specular, shininess, alpha: opacity, alpha
+// mode and cutoff, base-color and opacity textures; docs/materials.md says what each format
+// gives) and the node hierarchy as instances (node transforms applied). Computes
 // angle-weighted normals when the file has none, and bounds.
 // Missing material libraries or textures become Scene::warnings (default material used).
 // Throws InputError (one line naming the file and the cause) for a missing or unreadable file,
@@ -85,7 +86,8 @@ ZRASTER_API bool has_mesh_file_extension(const std::filesystem::path& path);
 
 // A human-readable summary (for `zraster info`), one item per line, each line ending in '\n':
 // source, meshes (name, triangles, vertices, material, mesh-space bounds), instances, totals
-// over instances, exact world bounds, materials (name, base color, texture size) and warnings.
+// over instances, exact world bounds, materials (name, base color, texture sizes, alpha mode and
+// whether alpha can be below 1, from what) and warnings.
 // Long lists are cut after 50 entries with a count of the rest.
 ZRASTER_API std::string describe_scene(const Scene& scene);
 

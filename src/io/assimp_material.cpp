@@ -2,10 +2,12 @@
 
 #include "io/text_util.hpp"
 
+#include <assimp/GltfMaterial.h>
 #include <assimp/material.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace zraster::io {
 
@@ -29,6 +31,65 @@ std::optional<float> get_float(const aiMaterial& m, const char* key, unsigned ty
     return f;
 }
 
+std::optional<std::string> get_string(const aiMaterial& m, const char* key, unsigned type,
+                                      unsigned index) {
+    aiString s;
+    if (m.Get(key, type, index, s) != AI_SUCCESS) return std::nullopt;
+    return std::string(s.C_Str());
+}
+
+std::optional<std::string> texture_reference(const aiMaterial& material, aiTextureType type) {
+    aiString path;
+    if (material.GetTextureCount(type) > 0 && material.GetTexture(type, 0, &path) == AI_SUCCESS) {
+        std::string reference(trim(path.C_Str()));
+        if (!reference.empty()) return reference;
+    }
+    return std::nullopt;
+}
+
+std::string number(float v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%g", double(v));
+    return buffer;
+}
+
+// glTF 2.0's alpha (section 3.9.4 of the specification). Assimp's glTF2 importer always sets
+// alphaMode ("OPAQUE" when the file has none, as the specification's default) and alphaCutoff
+// (0.5 by default), and copies baseColorFactor's alpha to AI_MATKEY_OPACITY as well: opacity is
+// taken from the base color alone so that the factor counts once.
+void convert_gltf_alpha(const aiMaterial& material, const std::string& mode, Material& out,
+                        std::vector<std::string>& warnings) {
+    const std::string label = "material '" + out.name + "'";
+    if (mode == "MASK") {
+        out.alpha_mode = AlphaMode::Mask;
+    } else if (mode == "BLEND") {
+        out.alpha_mode = AlphaMode::Blend;
+    } else {
+        if (mode != "OPAQUE")
+            warnings.push_back(label + ": alphaMode '" + mode +
+                               "' is not OPAQUE, MASK or BLEND, drawn opaque (glTF's default)");
+        out.alpha_mode = AlphaMode::Opaque;
+    }
+    // OPAQUE ignores alpha: opacity stays 1 so that a reader of Material that does not look at
+    // alpha_mode (the A-buffer) still draws it opaque.
+    if (out.alpha_mode != AlphaMode::Opaque) {
+        const std::optional<aiColor4D> base = get_color(material, AI_MATKEY_BASE_COLOR);
+        if (base && std::isfinite(base->a)) out.opacity = std::clamp(base->a, 0.0f, 1.0f);
+    }
+    // The specification bounds alphaCutoff below by 0 only; zraster keeps it in [0, 1] (1 already
+    // keeps only fully opaque texels). NaN, which JSON cannot spell, takes the default.
+    float cutoff = 0.5f;
+    if (material.Get(AI_MATKEY_GLTF_ALPHACUTOFF, cutoff) != AI_SUCCESS) cutoff = 0.5f;
+    if (!(cutoff >= 0.0f && cutoff <= 1.0f)) {
+        const float kept = std::isnan(cutoff) ? 0.5f : std::clamp(cutoff, 0.0f, 1.0f);
+        if (out.alpha_mode == AlphaMode::Mask)
+            warnings.push_back(label + ": alphaCutoff " + number(cutoff) +
+                               " is outside [0, 1], using " + number(kept));
+        cutoff = kept;
+    }
+    out.alpha_cutoff = cutoff;
+}
+
 }  // namespace
 
 std::string material_name(const aiMaterial& material) {
@@ -47,10 +108,11 @@ bool is_placeholder_material(const aiMaterial& material) {
            !base_color_texture_reference(material);
 }
 
-Material convert_material(const aiMaterial& material) {
+Material convert_material(const aiMaterial& material, const std::string& fallback_name,
+                          std::vector<std::string>& warnings) {
     Material out;
     const std::string name = material_name(material);
-    if (!name.empty()) out.name = name;
+    out.name = name.empty() ? fallback_name : name;
 
     std::optional<aiColor4D> base = get_color(material, AI_MATKEY_BASE_COLOR);
     if (!base) base = get_color(material, AI_MATKEY_COLOR_DIFFUSE);
@@ -67,6 +129,13 @@ Material convert_material(const aiMaterial& material) {
     if (auto shininess = get_float(material, AI_MATKEY_SHININESS); shininess && *shininess > 0.0f)
         out.shininess = std::clamp(*shininess, 1.0f, 1024.0f);
 
+    if (auto mode = get_string(material, AI_MATKEY_GLTF_ALPHAMODE)) {
+        convert_gltf_alpha(material, *mode, out, warnings);
+        return out;
+    }
+    // Every other format: Assimp's opacity (MTL d or 1 - Tr, FBX Opacity, 3DS transparency...),
+    // else the diffuse color's alpha, blended (alpha 1 everywhere draws opaque).
+    out.alpha_mode = AlphaMode::Blend;
     if (auto opacity = get_float(material, AI_MATKEY_OPACITY))
         out.opacity = std::clamp(*opacity, 0.0f, 1.0f);
     else if (base && std::isfinite(base->a))
@@ -75,15 +144,12 @@ Material convert_material(const aiMaterial& material) {
 }
 
 std::optional<std::string> base_color_texture_reference(const aiMaterial& material) {
-    for (aiTextureType type : {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE}) {
-        aiString path;
-        if (material.GetTextureCount(type) > 0 &&
-            material.GetTexture(type, 0, &path) == AI_SUCCESS) {
-            std::string reference(trim(path.C_Str()));
-            if (!reference.empty()) return reference;
-        }
-    }
-    return std::nullopt;
+    if (auto reference = texture_reference(material, aiTextureType_BASE_COLOR)) return reference;
+    return texture_reference(material, aiTextureType_DIFFUSE);
+}
+
+std::optional<std::string> opacity_texture_reference(const aiMaterial& material) {
+    return texture_reference(material, aiTextureType_OPACITY);
 }
 
 }  // namespace zraster::io

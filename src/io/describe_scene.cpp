@@ -57,6 +57,37 @@ Bounds3f exact_world_bounds(const Scene& scene) {
     return b;
 }
 
+std::string size_text(const Texture& t) {
+    return std::to_string(t.width()) + "x" + std::to_string(t.height());
+}
+
+// Whether an opacity texture (read in its red channel) has a texel below 1.
+bool has_partial_red(const Texture& t) {
+    const std::span<const std::uint8_t> rgba = t.level_rgba(0);
+    for (std::size_t i = 0; i < rgba.size(); i += 4)
+        if (rgba[i] != 255) return true;
+    return false;
+}
+
+// "alpha opaque", "alpha mask (cutoff 0.5)", "alpha blend (opacity 0.5)", then for mask and
+// blend whether alpha can be below 1 and from which factors (material.hpp's product).
+std::string alpha_text(const Material& m) {
+    if (m.alpha_mode == AlphaMode::Opaque) return "alpha opaque";
+    std::string out = m.alpha_mode == AlphaMode::Mask
+                          ? "alpha mask (cutoff " + number(m.alpha_cutoff) +
+                                (m.opacity != 1.0f ? ", opacity " + number(m.opacity) : "") + ")"
+                          : "alpha blend (opacity " + number(m.opacity) + ")";
+    std::string sources;
+    const auto add = [&](const char* source) {
+        sources += (sources.empty() ? "" : ", ") + std::string(source);
+    };
+    if (!(m.opacity >= 1.0f)) add("opacity");
+    if (m.base_color_texture && m.base_color_texture->has_translucent_texels())
+        add("texture alpha");
+    if (m.opacity_texture && has_partial_red(*m.opacity_texture)) add("opacity texture");
+    return out + (sources.empty() ? ", alpha 1 everywhere" : ", alpha below 1 from " + sources);
+}
+
 template <typename Item>
 void list(std::string& out, const char* title, const std::vector<Item>& items, auto describe) {
     out += std::string(title) + ": " + std::to_string(items.size()) + "\n";
@@ -87,12 +118,12 @@ std::string describe_scene(const Scene& scene) {
            std::to_string(scene.vertex_count()) + " vertices (over instances)\n";
     out += "world bounds: " + box(exact_world_bounds(scene)) + "\n";
     list(out, "materials", scene.materials, [&](std::size_t i, const Material& m) {
-        std::string texture = "none";
-        if (m.base_color_texture)
-            texture = std::to_string(m.base_color_texture->width()) + "x" +
-                      std::to_string(m.base_color_texture->height());
+        const std::string texture =
+            m.base_color_texture ? size_text(*m.base_color_texture) : "none";
+        const std::string opacity_texture =
+            m.opacity_texture ? ", opacity texture " + size_text(*m.opacity_texture) : "";
         return "material " + std::to_string(i) + " " + quoted(m.name) + ": base color " +
-               vec(m.base_color) + ", texture " + texture;
+               vec(m.base_color) + ", texture " + texture + opacity_texture + ", " + alpha_text(m);
     });
     if (!scene.warnings.empty())
         list(out, "warnings", scene.warnings, [](std::size_t, const std::string& w) { return w; });

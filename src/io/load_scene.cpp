@@ -11,6 +11,7 @@
 #include "io/declared_counts_check.hpp"
 #include "io/input_file_check.hpp"
 #include "io/load_worker.hpp"
+#include "io/mtl_dissolve.hpp"
 #include "io/obj_material_libraries.hpp"
 #include "io/obj_parser.hpp"
 #include "io/reference_policy.hpp"
@@ -90,6 +91,7 @@ class MaterialTable {
             warnings.insert(warnings.end(), libraries.warnings.begin(), libraries.warnings.end());
             obj_missing_library_ = !libraries.warnings.empty();
             obj_defined_ = std::move(libraries.defined_materials);
+            obj_dissolve_ = std::move(libraries.dissolve);
         }
     }
 
@@ -108,10 +110,10 @@ class MaterialTable {
                                     "' is not defined, using the default material");
             return 0;
         }
-        Material material = io::convert_material(source);
-        if (name.empty()) material.name = "material " + std::to_string(ai_index);
-        if (auto reference = io::base_color_texture_reference(source))
-            material.base_color_texture = textures_.load(*reference);
+        Material material =
+            io::convert_material(source, "material " + std::to_string(ai_index), warnings_);
+        obj_dissolve_.apply(material);
+        textures_.attach_textures(source, material);
         map_[ai_index] = static_cast<std::uint32_t>(out_.materials.size());
         out_.materials.push_back(std::move(material));
         return map_[ai_index];
@@ -124,6 +126,7 @@ class MaterialTable {
     io::TextureLoader textures_;
     std::vector<unsigned> map_;
     std::optional<std::set<std::string>> obj_defined_;
+    io::MtlDissolve obj_dissolve_;  // OBJ only: `d` over `Tr`
     bool obj_missing_library_ = false;
 };
 

@@ -56,7 +56,9 @@ ObjMaterialLibraries scan_obj_material_libraries(const std::filesystem::path& ob
         if (!directive(line, "mtllib", library) || !seen.insert(library).second) continue;
         const MaterialLibraryChoice choice = resolve_material_library(obj_path, library, policy);
         if (!choice.warning.empty()) result.warnings.push_back(choice.warning);
-        if (choice.file) read_material_names(*choice.file, result.defined_materials);
+        if (!choice.file) continue;
+        read_material_names(*choice.file, result.defined_materials);
+        result.dissolve.read(*choice.file);
     }
     return result;
 }

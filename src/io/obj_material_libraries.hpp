@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/mtl_dissolve.hpp"
 #include "io/reference_policy.hpp"
 
 namespace zraster::io {
@@ -15,6 +16,7 @@ namespace zraster::io {
 struct ObjMaterialLibraries {
     std::vector<std::string> warnings;        // missing libraries, substitutes
     std::set<std::string> defined_materials;  // `newmtl` names of the libraries found
+    MtlDissolve dissolve;                     // `d` values a later `Tr` hid from Assimp
 };
 
 // The rest of a line after `keyword` and blanks, when the trimmed line starts with it (how
@@ -36,7 +38,7 @@ MaterialLibraryChoice resolve_material_library(const std::filesystem::path& obj_
 // Scans the OBJ's `mtllib` lines and the libraries they name, resolving them as Assimp 5.2 does:
 // the rest of the line relative to the OBJ's directory, else "<obj name>.mtl" beside it.
 // Libraries `policy` refuses (outside the model's folder, not regular files) are not read, with
-// a warning.
+// a warning. Each library found is also read for MTL `d` over `Tr` (mtl_dissolve.hpp).
 ObjMaterialLibraries scan_obj_material_libraries(const std::filesystem::path& obj_path,
                                                  const ReferencePolicy& policy);
 

@@ -63,6 +63,7 @@ std::optional<ObjFallback> read_statements(const std::filesystem::path& obj_path
                                            "material library " + l.file->string() +
                                                " that Assimp may read differently"};
                     it = read.emplace(*l.file, std::move(*names)).first;
+                    out.dissolve.read(*l.file);
                 }
                 l.materials = it->second;
             }
@@ -77,6 +78,7 @@ Materials::Materials(const std::filesystem::path& obj_path, const Statements& st
     : path_(obj_path),
       events_(statements.events),
       libraries_(statements.libraries),
+      dissolve_(statements.dissolve),
       policy_(statements.policy),
       options_(options),
       scene_(scene),
@@ -109,9 +111,9 @@ std::optional<std::uint32_t> Materials::index_of(const std::optional<std::string
         const aiMaterial* source = assimp_material(*name);
         if (source == nullptr) return std::nullopt;
         if (!is_placeholder_material(*source)) {
-            Material material = convert_material(*source);
-            if (auto reference = base_color_texture_reference(*source))
-                material.base_color_texture = textures_->load(*reference);
+            Material material = convert_material(*source, Material{}.name, warnings_);
+            dissolve_.apply(material);
+            textures_->attach_textures(*source, material);
             index = static_cast<std::uint32_t>(scene_.materials.size());
             scene_.materials.push_back(std::move(material));
         }

@@ -11,6 +11,7 @@
 #pragma once
 #include <zraster/scene.hpp>
 
+#include "io/mtl_dissolve.hpp"
 #include "io/obj_chunk_parser.hpp"
 #include "io/obj_parser.hpp"
 #include "io/reference_policy.hpp"
@@ -49,11 +50,13 @@ struct Statements {
     std::vector<const Event*> events;    // into the chunks
     std::vector<LibraryLoad> libraries;  // one per mtllib statement
     ReferencePolicy policy;              // which library and texture files may be read
+    MtlDissolve dissolve;                // `d` values a later `Tr` hid from Assimp
 };
 
 // Collects the statements of `chunks` (whose first_line is set) and resolves and scans the
-// libraries, each file once. Returns the mtllib line when a library's `newmtl` names could be
-// read differently by Assimp's MTL reader and the Assimp path's library check.
+// libraries, each file once (for their `newmtl` names and MTL `d` over `Tr`). Returns the mtllib
+// line when a library's `newmtl` names could be read differently by Assimp's MTL reader and the
+// Assimp path's library check.
 std::optional<ObjFallback> read_statements(const std::filesystem::path& obj_path,
                                            const std::vector<Chunk>& chunks,
                                            const ReferencePolicy& policy, Statements& out);
@@ -78,6 +81,7 @@ class Materials {
     std::filesystem::path path_;
     const std::vector<const Event*>& events_;
     const std::vector<LibraryLoad>& libraries_;
+    const MtlDissolve& dissolve_;
     ReferencePolicy policy_;
     LoadOptions options_;  // the texture budget
     Scene& scene_;

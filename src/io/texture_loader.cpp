@@ -1,5 +1,6 @@
 #include "io/texture_loader.hpp"
 
+#include "io/assimp_material.hpp"
 #include "io/image_decode.hpp"
 #include "io/read_file.hpp"
 #include "io/text_util.hpp"
@@ -103,6 +104,33 @@ std::shared_ptr<const Texture> TextureLoader::admit(const std::string& reference
 std::shared_ptr<const Texture> TextureLoader::load(const std::string& reference) {
     if (scene_.GetEmbeddedTexture(reference.c_str()) != nullptr) return load_embedded(reference);
     return load_external(reference);
+}
+
+void TextureLoader::attach_textures(const aiMaterial& source, Material& material) {
+    if (auto reference = base_color_texture_reference(source))
+        material.base_color_texture = load(*reference);
+    if (material.alpha_mode == AlphaMode::Opaque) return;
+    if (auto reference = opacity_texture_reference(source))
+        material.opacity_texture = load_opacity(*reference, material.base_color_texture.get());
+}
+
+std::shared_ptr<const Texture> TextureLoader::load_opacity(const std::string& reference,
+                                                           const Texture* base_color) {
+    std::shared_ptr<const Texture> image = load(reference);
+    if (!image || !image->has_translucent_texels()) return image;
+    if (image.get() == base_color) return nullptr;
+    if (auto it = alpha_as_red_.find(image.get()); it != alpha_as_red_.end()) return it->second;
+    // From the image as kept (level 0, already within max_texture_side), so the size is the same.
+    const std::span<const std::uint8_t> rgba = image->level_rgba(0);
+    std::vector<std::uint8_t> alpha(rgba.size());
+    for (std::size_t i = 0; i < rgba.size(); i += 4) {
+        alpha[i] = alpha[i + 1] = alpha[i + 2] = rgba[i + 3];
+        alpha[i + 3] = 255;
+    }
+    std::shared_ptr<const Texture> result =
+        admit(reference, image->width(), image->height(), alpha);
+    alpha_as_red_[image.get()] = result;
+    return result;
 }
 
 std::shared_ptr<const Texture> TextureLoader::load_embedded(const std::string& reference) {

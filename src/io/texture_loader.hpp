@@ -1,7 +1,9 @@
-// Base-color textures of a loaded model: embedded ones (glTF binary, data URIs) and image files
-// beside the model. Each image is decoded once and shared by the materials that use it.
+// Textures of a loaded model (base color, opacity): embedded ones (glTF binary, data URIs) and
+// image files beside the model. Each image is decoded once and shared by the materials that use
+// it.
 #pragma once
 #include <zraster/load.hpp>
+#include <zraster/material.hpp>
 #include <zraster/texture.hpp>
 
 #include <filesystem>
@@ -12,6 +14,7 @@
 
 #include "io/reference_policy.hpp"
 
+struct aiMaterial;
 struct aiScene;
 
 namespace zraster::io {
@@ -28,6 +31,17 @@ class TextureLoader {
     // The texture a material refers to, or null (with a warning) when it is missing or
     // unreadable: the material's color is used then.
     std::shared_ptr<const Texture> load(const std::string& reference);
+
+    // The textures `source` refers to, into `material` (converted from it): the base-color
+    // texture and, unless alpha is ignored (AlphaMode::Opaque), the opacity texture.
+    void attach_textures(const aiMaterial& source, Material& material);
+
+    // An opacity image (MTL map_d) as Material::opacity_texture reads it, in its red channel:
+    // an image with translucent texels (a PNG with an alpha channel) gives its alpha, any other
+    // its red (a grey image's grey). Null when the image is `base_color` and has translucent
+    // texels: that alpha already counts once as the base-color texture's.
+    std::shared_ptr<const Texture> load_opacity(const std::string& reference,
+                                                const Texture* base_color);
 
   private:
     std::shared_ptr<const Texture> load_embedded(const std::string& reference);
@@ -47,6 +61,8 @@ class TextureLoader {
     std::size_t used_bytes_ = 0;
     std::vector<std::string>& warnings_;
     std::map<std::string, std::shared_ptr<const Texture>> cache_;  // null entries: warned once
+    // Images with translucent texels and their alpha as an opacity texture (null: over budget).
+    std::map<const Texture*, std::shared_ptr<const Texture>> alpha_as_red_;
 };
 
 }  // namespace zraster::io

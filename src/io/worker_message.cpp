@@ -20,6 +20,8 @@ namespace {
 constexpr char kMagic[4] = {'Z', 'R', 'W', 'M'};
 constexpr std::uint32_t kNoTexture = ~0u;
 constexpr std::uint8_t kNoShading = 255;
+// A material's fixed part: name length, 10 floats, alpha mode, alpha cutoff, two textures.
+constexpr std::size_t kMinMaterialBytes = 4 + 40 + 1 + 4 + 8;
 
 class Writer {
   public:
@@ -151,10 +153,11 @@ Scene decode_scene(Reader& in, const LoadOptions& options) {
         textures.push_back(std::make_shared<const Texture>(int(w), int(h), rgba));
     }
 
-    const std::uint32_t material_count = in.get_count(48, "materials");
+    const std::uint32_t material_count = in.get_count(kMinMaterialBytes, "materials");
     check(material_count >= 1, "no materials");
     for (std::uint32_t i = 0; i < material_count; ++i) {
         Material m;
+        const std::string label = "material " + std::to_string(i);
         m.name = in.get_string("a material name");
         m.base_color = in.get<glm::vec3>();
         m.ambient = in.get<float>();
@@ -164,13 +167,23 @@ Scene decode_scene(Reader& in, const LoadOptions& options) {
         m.opacity = in.get<float>();
         check(finite3(m.base_color) && std::isfinite(m.ambient) && std::isfinite(m.diffuse) &&
                   finite3(m.specular) && std::isfinite(m.shininess) && std::isfinite(m.opacity),
-              "material " + std::to_string(i) + " has non-finite values");
-        const auto texture = in.get<std::uint32_t>();
-        if (texture != kNoTexture) {
-            check(texture < textures.size(),
-                  "material " + std::to_string(i) + " names a missing texture");
-            m.base_color_texture = textures[texture];
-        }
+              label + " has non-finite values");
+        check(m.opacity >= 0.0f && m.opacity <= 1.0f, label + ": opacity outside [0, 1]");
+        const auto mode = in.get<std::uint8_t>();
+        check(mode <= std::uint8_t(AlphaMode::Blend),
+              label + ": unknown alpha mode " + std::to_string(mode));
+        m.alpha_mode = static_cast<AlphaMode>(mode);
+        m.alpha_cutoff = in.get<float>();
+        check(m.alpha_cutoff >= 0.0f && m.alpha_cutoff <= 1.0f,  // false for NaN
+              label + ": alpha cutoff not in [0, 1]");
+        const auto texture = [&](const char* what) -> std::shared_ptr<const Texture> {
+            const auto index = in.get<std::uint32_t>();
+            if (index == kNoTexture) return nullptr;
+            check(index < textures.size(), label + " names a missing " + what);
+            return textures[index];
+        };
+        m.base_color_texture = texture("texture");
+        m.opacity_texture = texture("opacity texture");
         scene.materials.push_back(std::move(m));
     }
 
@@ -244,11 +257,10 @@ std::string encode_scene_message(const Scene& scene) {
 
     std::map<const Texture*, std::uint32_t> texture_index;
     std::vector<const Texture*> textures;
-    for (const Material& m : scene.materials) {
-        const Texture* t = m.base_color_texture.get();
-        if (t != nullptr && texture_index.emplace(t, std::uint32_t(textures.size())).second)
-            textures.push_back(t);
-    }
+    for (const Material& m : scene.materials)
+        for (const Texture* t : {m.base_color_texture.get(), m.opacity_texture.get()})
+            if (t != nullptr && texture_index.emplace(t, std::uint32_t(textures.size())).second)
+                textures.push_back(t);
     out.put(static_cast<std::uint32_t>(textures.size()));
     for (const Texture* t : textures) {
         out.put(static_cast<std::uint32_t>(t->width()));
@@ -265,7 +277,10 @@ std::string encode_scene_message(const Scene& scene) {
         out.put(m.specular);
         out.put(m.shininess);
         out.put(m.opacity);
+        out.put(static_cast<std::uint8_t>(m.alpha_mode));
+        out.put(m.alpha_cutoff);
         out.put(m.base_color_texture ? texture_index.at(m.base_color_texture.get()) : kNoTexture);
+        out.put(m.opacity_texture ? texture_index.at(m.opacity_texture.get()) : kNoTexture);
     }
 
     out.put(static_cast<std::uint32_t>(scene.meshes.size()));

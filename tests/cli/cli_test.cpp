@@ -210,6 +210,48 @@ TEST(Cli, InfoPrintsCounts) {
     EXPECT_NE(r.output.find("960"), std::string::npos) << r.output;
 }
 
+// Each material's alpha: an OBJ read in process, a glTF through the worker process.
+TEST(Cli, InfoReportsMaterialAlpha) {
+    const auto dir = temp_dir("cli-info-alpha");
+    std::ofstream(dir / "m.mtl") << "newmtl glass\nKd 1 1 1\nd 0.5\nnewmtl paper\nKd 1 1 1\n";
+    std::ofstream(dir / "m.obj") << "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl glass\n"
+                                    "f 1 2 3\nusemtl paper\nf 1 3 2\n";
+    const CommandResult obj = run("info m.obj", dir);
+    ASSERT_EQ(obj.exit_code, 0) << obj.output;
+    EXPECT_NE(obj.output.find("'glass': base color (1, 1, 1), texture none, alpha blend (opacity "
+                              "0.5), alpha below 1 from opacity\n"),
+              std::string::npos)
+        << obj.output;
+    EXPECT_NE(obj.output.find("'paper': base color (1, 1, 1), texture none, alpha blend (opacity "
+                              "1), alpha 1 everywhere\n"),
+              std::string::npos)
+        << obj.output;
+
+    const float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    std::ofstream(dir / "t.bin", std::ios::binary)
+        .write(reinterpret_cast<const char*>(positions), sizeof positions);
+    std::ofstream(dir / "t.gltf")
+        << R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0,1]}],)"
+           R"("nodes":[{"mesh":0},{"mesh":1}],"meshes":[)"
+           R"({"primitives":[{"attributes":{"POSITION":0},"material":0}]},)"
+           R"({"primitives":[{"attributes":{"POSITION":0},"material":1}]}],)"
+           R"("materials":[{"name":"leaf","alphaMode":"MASK","alphaCutoff":0.25},)"
+           R"({"name":"wall","pbrMetallicRoughness":{"baseColorFactor":[1,1,1,0.5]}}],)"
+           R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3",)"
+           R"("min":[0,0,0],"max":[1,1,0]}],"bufferViews":[{"buffer":0,"byteLength":36}],)"
+           R"("buffers":[{"uri":"t.bin","byteLength":36}]})";
+    const CommandResult gltf = run("info t.gltf", dir);
+    ASSERT_EQ(gltf.exit_code, 0) << gltf.output;
+    EXPECT_NE(gltf.output.find("'leaf': base color (1, 1, 1), texture none, alpha mask (cutoff "
+                               "0.25), alpha 1 everywhere\n"),
+              std::string::npos)
+        << gltf.output;
+    EXPECT_NE(gltf.output.find("'wall': base color (1, 1, 1), texture none, alpha opaque\n"),
+              std::string::npos)
+        << gltf.output;
+    EXPECT_EQ(gltf.output, run("info t.gltf --load-in-process", dir).output);
+}
+
 TEST(Cli, InfoOnSharedMeshReportsManifestCounts) {
     ZRASTER_REQUIRE_SHARED_DATA();
     const CommandResult r = run("info '" + shared_data("meshes/obj/bunny.obj").string() + "'");

@@ -25,21 +25,6 @@ void expect_refused(const std::string& test, const std::string& name, std::strin
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));
 }
 
-std::string base64(std::string_view bytes) {
-    static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (std::size_t i = 0; i < bytes.size(); i += 3) {
-        std::uint32_t v = std::uint32_t(std::uint8_t(bytes[i])) << 16;
-        if (i + 1 < bytes.size()) v |= std::uint32_t(std::uint8_t(bytes[i + 1])) << 8;
-        if (i + 2 < bytes.size()) v |= std::uint32_t(std::uint8_t(bytes[i + 2]));
-        out += digits[(v >> 18) & 63];
-        out += digits[(v >> 12) & 63];
-        out += i + 1 < bytes.size() ? digits[(v >> 6) & 63] : '=';
-        out += i + 2 < bytes.size() ? digits[v & 63] : '=';
-    }
-    return out;
-}
-
 template <typename T>
 void append(std::string& out, const T& value) {
     out.append(reinterpret_cast<const char*>(&value), sizeof value);
@@ -134,8 +119,8 @@ TEST(FuzzRegressions, GltfAccessorPastItsBufferView) {
     const auto gltf = [&](const std::string& accessor_offset, const std::string& view_length) {
         return R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":)"
                R"("data:application/octet-stream;base64,)" +
-               base64(buffer) + R"("}],"bufferViews":[{"buffer":0,"byteLength":)" + view_length +
-               R"(}],"accessors":[{"bufferView":0,"byteOffset":)" + accessor_offset +
+               test::base64(buffer) + R"("}],"bufferViews":[{"buffer":0,"byteLength":)" +
+               view_length + R"(}],"accessors":[{"bufferView":0,"byteOffset":)" + accessor_offset +
                R"(,"componentType":5126,"count":3,"type":"VEC3"}],"meshes":[{"primitives":)"
                R"([{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],)"
                R"("scene":0})";
@@ -159,7 +144,7 @@ TEST(FuzzRegressions, TinyFileNormalsComeOutUnitLength) {
     const std::string gltf =
         R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":72,"uri":)"
         R"("data:application/octet-stream;base64,)" +
-        base64(buffer) +
+        test::base64(buffer) +
         R"("}],"bufferViews":[{"buffer":0,"byteLength":36},{"buffer":0,"byteOffset":36,)"
         R"("byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,)"
         R"("type":"VEC3","min":[0,0,0],"max":[1,1,0]},{"bufferView":1,"componentType":5126,)"
@@ -191,7 +176,7 @@ TEST(FuzzRegressions, TextureDecodeWarningIsOneLine) {
     const std::string gltf =
         R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":42,"uri":)"
         R"("data:application/octet-stream;base64,)" +
-        base64(std::string(
+        test::base64(std::string(
             "\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x80\x3f\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x80\x3f\0\0\0\0"
             "\0\0\x01\0\x02\0",
             42)) +
@@ -199,7 +184,7 @@ TEST(FuzzRegressions, TextureDecodeWarningIsOneLine) {
         R"("byteLength":6}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,)"
         R"("type":"VEC3","min":[0,0,0],"max":[1,1,0]},{"bufferView":1,"componentType":5123,)"
         R"("count":3,"type":"SCALAR"}],"images":[{"uri":"data:image/png;base64,)" +
-        base64(png) +
+        test::base64(png) +
         R"("}],"textures":[{"source":0}],"materials":[{"pbrMetallicRoughness":)"
         R"({"baseColorTexture":{"index":0}}}],"meshes":[{"primitives":[{"attributes":)"
         R"({"POSITION":0},"indices":1,"material":0}]}],"nodes":[{"mesh":0}],)"

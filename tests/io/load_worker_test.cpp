@@ -10,9 +10,11 @@
 #include "support/test_support.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <span>
 #include <thread>
 #include <vector>
@@ -85,7 +87,11 @@ void expect_same_scene(const Scene& a, const Scene& b, const std::string& what) 
         EXPECT_EQ(x.specular, y.specular) << where;
         EXPECT_EQ(x.shininess, y.shininess) << where;
         EXPECT_EQ(x.opacity, y.opacity) << where;
+        EXPECT_EQ(x.alpha_mode, y.alpha_mode) << where;
+        EXPECT_EQ(x.alpha_cutoff, y.alpha_cutoff) << where;
         expect_same_texture(x.base_color_texture.get(), y.base_color_texture.get(), where);
+        expect_same_texture(x.opacity_texture.get(), y.opacity_texture.get(),
+                            where + " opacity texture");
     }
     ASSERT_EQ(a.meshes.size(), b.meshes.size()) << what;
     for (std::size_t i = 0; i < a.meshes.size(); ++i) {
@@ -335,14 +341,17 @@ std::string huge_count_message() {
     append(payload, std::uint32_t{1});  // materials
     append(payload, std::uint32_t{0});  // name
     for (int i = 0; i < 10; ++i) append(payload, 0.5f);
+    append(payload, std::uint8_t(AlphaMode::Blend));
+    append(payload, 0.5f);               // alpha cutoff
     append(payload, ~std::uint32_t{0});  // no texture
+    append(payload, ~std::uint32_t{0});  // no opacity texture
     append(payload, std::uint32_t{1});   // meshes
     append(payload, std::uint32_t{0});   // name
     append(payload, std::uint32_t{0});   // material
     append(payload, std::uint64_t{1} << 60);
     payload.append(64, '\0');
     std::string message = "ZRWM";
-    append(message, std::uint32_t{1});
+    append(message, io::kWorkerMessageVersion);
     append(message, std::uint32_t{1});
     append(message, std::uint32_t{0});
     append(message, std::uint64_t{payload.size()});
@@ -366,8 +375,8 @@ TEST(WorkerMessage, RefusesMalformedMessages) {
     expect_invalid("", "invalid result: truncated header");
     expect_invalid("XRWM" + good.substr(4), "invalid result: bad magic");
     std::string version = good;
-    version[4] = 2;
-    expect_invalid(version, "format version 2, expected 1");
+    version[4] = 1;  // a child of a zraster before the materials' alpha
+    expect_invalid(version, "format version 1, expected 2");
     expect_invalid(good.substr(0, good.size() - 1), "the header says");
     std::string longer = good + "x";
     expect_invalid(longer, "the header says");
@@ -389,6 +398,81 @@ TEST(WorkerMessage, RefusesMalformedMessages) {
     limit.max_triangles = 1;
     test::expect_input_error([&] { io::decode_worker_message(byte_span(good), "m.ply", limit); },
                              "m.ply", "more triangles than the limit (1)");
+}
+
+// A 2 x 1 RGBA texture with `alpha` in its second texel.
+std::shared_ptr<const Texture> two_texels(std::uint8_t alpha) {
+    const std::uint8_t rgba[8] = {10, 20, 30, 255, 40, 50, 60, alpha};
+    return std::make_shared<const Texture>(2, 1, rgba);
+}
+
+// Every alpha mode, cutoff and texture arrangement crosses intact, and a texture two materials
+// (or one material's two slots) share stays one texture.
+TEST(WorkerMessage, RoundTripKeepsMaterialAlpha) {
+    const auto shared = two_texels(255), cutout = two_texels(0);
+    Scene scene = load_scene(ply_fixture("roundtrip-alpha"));
+    Material opaque, mask, blend;
+    opaque.name = "opaque";
+    opaque.alpha_mode = AlphaMode::Opaque;
+    opaque.base_color_texture = cutout;
+    mask.name = "mask";
+    mask.alpha_mode = AlphaMode::Mask;
+    mask.alpha_cutoff = 0.3f;
+    mask.opacity = 0.75f;
+    mask.base_color_texture = shared;
+    mask.opacity_texture = cutout;
+    blend.name = "blend";
+    blend.alpha_mode = AlphaMode::Blend;
+    blend.opacity = 0.25f;
+    blend.alpha_cutoff = 1.0f;
+    blend.base_color_texture = shared;
+    blend.opacity_texture = shared;
+    scene.materials.insert(scene.materials.end(), {opaque, mask, blend});
+    const std::string message = io::encode_scene_message(scene);
+    const Scene decoded = io::decode_worker_message(byte_span(message), "m.ply", {});
+    expect_same_scene(scene, decoded, "alpha");
+    ASSERT_EQ(decoded.materials.size(), scene.materials.size());
+    const std::size_t n = decoded.materials.size();
+    EXPECT_EQ(decoded.materials[n - 1].base_color_texture,
+              decoded.materials[n - 1].opacity_texture);
+    EXPECT_EQ(decoded.materials[n - 2].base_color_texture,
+              decoded.materials[n - 1].base_color_texture);
+    EXPECT_EQ(decoded.materials[n - 2].opacity_texture,
+              decoded.materials[n - 3].base_color_texture);
+    EXPECT_TRUE(decoded.materials[n - 3].base_color_texture->has_translucent_texels());
+}
+
+// The parent refuses material alpha the loader never produces: an unknown mode, a cutoff or
+// opacity outside [0, 1] or NaN, an opacity texture that is not in the message.
+TEST(WorkerMessage, RefusesBadMaterialAlpha) {
+    Mesh tri;
+    tri.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    tri.indices = {0, 1, 2};
+    compute_angle_weighted_normals(tri);
+    update_bounds(tri);
+    const auto message_with = [&](auto change) {
+        Scene scene = scene_from_meshes({tri});
+        change(scene.materials.at(0));
+        return io::encode_scene_message(scene);
+    };
+    expect_invalid(message_with([](Material& m) { m.alpha_mode = static_cast<AlphaMode>(3); }),
+                   "material 0: unknown alpha mode 3");
+    for (const float cutoff : {-0.1f, 1.5f, std::nanf("")}) {
+        SCOPED_TRACE(cutoff);
+        expect_invalid(message_with([&](Material& m) { m.alpha_cutoff = cutoff; }),
+                       "material 0: alpha cutoff not in [0, 1]");
+    }
+    expect_invalid(message_with([](Material& m) { m.opacity = 1.5f; }),
+                   "material 0: opacity outside [0, 1]");
+    expect_invalid(message_with([](Material& m) { m.opacity = std::nanf(""); }),
+                   "material 0 has non-finite values");
+    // No texture in the message, and the material's opacity texture index set to 0.
+    std::string missing = message_with([](Material&) {});
+    const std::string none(8, '\xff');  // the two texture indices, ~0 each
+    const std::size_t at = missing.find(none);
+    ASSERT_NE(at, std::string::npos);
+    missing.replace(at + 4, 4, std::string(4, '\0'));
+    expect_invalid(missing, "material 0 names a missing opacity texture");
 }
 
 TEST(WorkerMessage, ErrorMessages) {

@@ -88,10 +88,18 @@ void expect_same_scene(const Scene& fast, const Scene& assimp) {
         }
         EXPECT_TRUE(near_ulps(a.shininess, b.shininess, 2));
         EXPECT_TRUE(near_ulps(a.opacity, b.opacity, 2));
+        EXPECT_EQ(a.alpha_mode, b.alpha_mode);
+        EXPECT_EQ(a.alpha_cutoff, b.alpha_cutoff);
         ASSERT_EQ(a.base_color_texture != nullptr, b.base_color_texture != nullptr);
         if (a.base_color_texture) {
             EXPECT_EQ(a.base_color_texture->width(), b.base_color_texture->width());
             EXPECT_EQ(a.base_color_texture->height(), b.base_color_texture->height());
+        }
+        // Opacity textures are small in the tests: every texel.
+        ASSERT_EQ(a.opacity_texture != nullptr, b.opacity_texture != nullptr);
+        if (a.opacity_texture) {
+            const auto x = a.opacity_texture->level_rgba(0), y = b.opacity_texture->level_rgba(0);
+            EXPECT_TRUE(std::equal(x.begin(), x.end(), y.begin(), y.end()));
         }
     }
 }
@@ -278,6 +286,48 @@ TEST(ObjParser, MaterialLibrariesAndTexturesLikeTheAssimpPath) {
     ASSERT_EQ(c.warnings.size(), 1u);
     EXPECT_NE(c.warnings[0].find("material library 'none.mtl' not found, using the default"),
               std::string::npos);
+}
+
+// MTL alpha (d, Tr, d over Tr, map_d) is the same on both paths, and through the worker that
+// runs the Assimp path; a file left to Assimp gets it too.
+TEST(ObjParser, MaterialAlphaLikeTheAssimpPath) {
+    const auto dir = test::temp_dir("io-obj-alpha");
+    std::vector<std::uint8_t> grey = {0, 64, 128, 255};
+    write_png8(dir / "grey.png", 2, 2, 1, grey);
+    std::vector<std::uint8_t> rgba(16, 255);
+    rgba[7] = 0;
+    write_png8(dir / "cut.png", 2, 2, 4, rgba);
+    test::write_bytes(dir / "alpha.mtl",
+                      "newmtl half\nd 0.5\nnewmtl tr\nTr 0.25\nnewmtl both\nd 0.5\nTr 0.9\n"
+                      "newmtl grey\nmap_d grey.png\nnewmtl cut\nmap_Kd grey.png\nmap_d cut.png\n");
+    const std::string body = "mtllib alpha.mtl\n" + std::string(kSquare) + "vt 0 0\nvt 1 0\n";
+    std::string faces;
+    for (const char* name : {"half", "tr", "both", "grey", "cut"})
+        faces += std::string("usemtl ") + name + "\nf 1/1 2/2 3/1\n";
+    test::write_bytes(dir / "fast.obj", body + faces);
+    test::write_bytes(dir / "left.obj", body + "f 1 2 3 4 1\n" + faces);  // a degenerate n-gon
+    const Scene fast = expect_parity(dir / "fast.obj");
+    ASSERT_EQ(fast.materials.size(), 6u);
+    EXPECT_EQ(fast.materials[1].opacity, 0.5f);
+    EXPECT_EQ(fast.materials[2].opacity, 0.75f);
+    EXPECT_EQ(fast.materials[3].opacity, 0.5f);  // d over Tr
+    EXPECT_TRUE(fast.materials[4].opacity_texture);
+    ASSERT_TRUE(fast.materials[5].opacity_texture);
+    EXPECT_EQ(fast.materials[5].opacity_texture->level_rgba(0)[4], 0);  // cut.png's alpha
+    LoadOptions worker;
+    worker.isolation = LoadIsolation::WorkerProcess;
+    expect_same_scene(fast, io::load_scene_with_assimp(dir / "fast.obj", worker));
+    expect_fallback(dir / "left.obj", 8);
+    const Scene left = load_scene(dir / "left.obj");
+    ASSERT_EQ(left.materials.size(), fast.materials.size());
+    for (const Material& a : fast.materials) {
+        const auto b = std::find_if(left.materials.begin(), left.materials.end(),
+                                    [&](const Material& m) { return m.name == a.name; });
+        ASSERT_NE(b, left.materials.end()) << a.name;
+        EXPECT_EQ(b->opacity, a.opacity) << a.name;
+        EXPECT_EQ(b->alpha_mode, a.alpha_mode) << a.name;
+        EXPECT_EQ(b->opacity_texture != nullptr, a.opacity_texture != nullptr) << a.name;
+    }
 }
 
 TEST(ObjParser, MissingAndUnusableAttributesLikeTheAssimpPath) {

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <set>
 
 #include <unistd.h>
 
@@ -39,9 +40,14 @@ std::uint64_t scene_bytes(const Scene& scene) {
         bytes += mesh.positions.size() * sizeof(glm::vec3) +
                  mesh.normals.size() * sizeof(glm::vec3) + mesh.uvs.size() * sizeof(glm::vec2) +
                  mesh.indices.size() * sizeof(std::uint32_t);
+    // Each texture once: materials share them, and an image can be both a base-color and an
+    // opacity texture.
+    std::set<const Texture*> textures;
     for (const Material& material : scene.materials)
-        if (const Texture* t = material.base_color_texture.get())
-            for (int level = 0; level < t->levels(); ++level) bytes += t->level_rgba(level).size();
+        for (const Texture* t : {material.base_color_texture.get(), material.opacity_texture.get()})
+            if (t != nullptr && textures.insert(t).second)
+                for (int level = 0; level < t->levels(); ++level)
+                    bytes += t->level_rgba(level).size();
     return bytes;
 }
 

@@ -1,0 +1,354 @@
+// Material alpha as each loader fills it (docs/materials.md): glTF's alphaMode, alphaCutoff and
+// baseColorFactor alpha, base-color texture alpha, MTL d / Tr / map_d, and Assimp's opacity for
+// the other formats; the same through the worker process.
+#include <zraster/image_io.hpp>
+#include <zraster/load.hpp>
+
+#include <cstring>
+
+#include "io/io_test_util.hpp"
+#include "support/test_support.hpp"
+
+namespace zraster {
+namespace {
+
+LoadOptions alpha_load_options(LoadIsolation isolation) {
+    LoadOptions o;
+    o.isolation = isolation;
+    return o;
+}
+
+// Two RGBA8 textures hold the same level-0 bytes (both null counts as the same).
+void expect_same_texels(const Texture* a, const Texture* b) {
+    ASSERT_EQ(a == nullptr, b == nullptr);
+    if (a == nullptr) return;
+    ASSERT_EQ(a->width(), b->width());
+    ASSERT_EQ(a->height(), b->height());
+    const auto x = a->level_rgba(0), y = b->level_rgba(0);
+    EXPECT_TRUE(std::equal(x.begin(), x.end(), y.begin(), y.end()));
+}
+
+// The file loaded in process and through the worker: the materials' alpha must agree field by
+// field. Returns the in-process scene.
+Scene load_alpha_both_ways(const std::filesystem::path& path) {
+    SCOPED_TRACE(path.string());
+    Scene in_process = load_scene(path, alpha_load_options(LoadIsolation::InProcess));
+    const Scene worker = load_scene(path, alpha_load_options(LoadIsolation::WorkerProcess));
+    EXPECT_EQ(in_process.warnings, worker.warnings);
+    EXPECT_EQ(in_process.materials.size(), worker.materials.size());
+    for (std::size_t i = 0; i < std::min(in_process.materials.size(), worker.materials.size());
+         ++i) {
+        const Material &a = in_process.materials[i], &b = worker.materials[i];
+        SCOPED_TRACE("material " + a.name);
+        EXPECT_EQ(a.opacity, b.opacity);
+        EXPECT_EQ(a.alpha_mode, b.alpha_mode);
+        EXPECT_EQ(a.alpha_cutoff, b.alpha_cutoff);
+        expect_same_texels(a.base_color_texture.get(), b.base_color_texture.get());
+        expect_same_texels(a.opacity_texture.get(), b.opacity_texture.get());
+    }
+    return in_process;
+}
+
+// The material of the file's one mesh.
+const Material& only_material(const Scene& scene) {
+    EXPECT_EQ(scene.meshes.size(), 1u);
+    return scene.materials.at(scene.meshes.at(0).material);
+}
+
+// One textured triangle (buffer as a data URI) whose material is `material` (a JSON object);
+// `images` is the glTF images array or empty.
+std::string alpha_gltf(const std::string& material, const std::string& images = "") {
+    const float data[15] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1};  // positions, uvs
+    const std::string bin(reinterpret_cast<const char*>(data), sizeof data);
+    std::string json =
+        R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
+        R"("meshes":[{"primitives":[{"attributes":{"POSITION":0,"TEXCOORD_0":1},"material":0}]}],)"
+        R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3",)"
+        R"("min":[0,0,0],"max":[1,1,0]},{"bufferView":1,"componentType":5126,"count":3,)"
+        R"("type":"VEC2"}],"bufferViews":[{"buffer":0,"byteLength":36},)"
+        R"({"buffer":0,"byteOffset":36,"byteLength":24}],)"
+        R"("buffers":[{"byteLength":60,"uri":"data:application/octet-stream;base64,)" +
+        test::base64(bin) + R"("}],"materials":[)" + material + "]";
+    if (!images.empty()) json += R"(,"textures":[{"source":0}],"images":)" + images;
+    return json + "}";
+}
+
+std::filesystem::path write_alpha_gltf(const std::string& test, const std::string& material) {
+    return test::write_fixture("io-alpha-" + test, "m.gltf", alpha_gltf(material));
+}
+
+TEST(MaterialAlpha, GltfMaskKeepsItsCutoff) {
+    const Scene scene = load_alpha_both_ways(
+        write_alpha_gltf("mask", R"({"name":"leaf","alphaMode":"MASK","alphaCutoff":0.3,)"
+                                 R"("pbrMetallicRoughness":{"baseColorFactor":[1,1,1,0.8]}})"));
+    EXPECT_TRUE(scene.warnings.empty());
+    const Material& m = only_material(scene);
+    EXPECT_EQ(m.name, "leaf");
+    EXPECT_EQ(m.alpha_mode, AlphaMode::Mask);
+    EXPECT_EQ(m.alpha_cutoff, 0.3f);
+    EXPECT_EQ(m.opacity, 0.8f);  // tested against the cutoff with the texture's alpha
+}
+
+// Assimp gives baseColorFactor's alpha twice (as the base color's alpha and as its opacity):
+// it must count once.
+TEST(MaterialAlpha, GltfBlendTakesBaseColorAlphaOnce) {
+    const Scene scene = load_alpha_both_ways(write_alpha_gltf(
+        "blend", R"({"name":"glass","alphaMode":"BLEND",)"
+                 R"("pbrMetallicRoughness":{"baseColorFactor":[0.2,0.4,0.6,0.25]}})"));
+    const Material& m = only_material(scene);
+    EXPECT_EQ(m.alpha_mode, AlphaMode::Blend);
+    EXPECT_EQ(m.opacity, 0.25f);
+    EXPECT_EQ(m.base_color, glm::vec3(0.2f, 0.4f, 0.6f));
+    EXPECT_FALSE(m.opacity_texture);
+}
+
+TEST(MaterialAlpha, GltfOpaqueIgnoresBaseColorAlpha) {
+    const Scene scene = load_alpha_both_ways(
+        write_alpha_gltf("opaque", R"({"name":"wall","alphaMode":"OPAQUE",)"
+                                   R"("pbrMetallicRoughness":{"baseColorFactor":[1,1,1,0.5]}})"));
+    const Material& m = only_material(scene);
+    EXPECT_EQ(m.alpha_mode, AlphaMode::Opaque);
+    EXPECT_EQ(m.opacity, 1.0f);  // ignored: kept at 1 for readers that do not look at the mode
+    EXPECT_EQ(m.alpha_cutoff, 0.5f);
+}
+
+TEST(MaterialAlpha, GltfWithoutAlphaModeIsOpaque) {
+    const Scene scene = load_alpha_both_ways(write_alpha_gltf(
+        "default", R"({"name":"plain","pbrMetallicRoughness":{"baseColorFactor":[1,0,0,0.5]}})"));
+    const Material& m = only_material(scene);
+    EXPECT_EQ(m.name, "plain");
+    EXPECT_EQ(m.alpha_mode, AlphaMode::Opaque);
+    EXPECT_EQ(m.opacity, 1.0f);
+    EXPECT_EQ(m.alpha_cutoff, 0.5f);
+}
+
+// An alphaCutoff outside [0, 1] is clamped into it with a warning naming the material, not
+// refused: the rest of the file is fine. 1e39 is infinite as a float.
+TEST(MaterialAlpha, GltfCutoffOutsideZeroToOneIsClampedWithAWarning) {
+    struct Case {
+        const char* cutoff;
+        float kept;
+        const char* warning;
+    };
+    for (const Case& c : {Case{"-0.5", 0.0f, "alphaCutoff -0.5 is outside [0, 1], using 0"},
+                          Case{"1.5", 1.0f, "alphaCutoff 1.5 is outside [0, 1], using 1"},
+                          Case{"1e39", 1.0f, "alphaCutoff inf is outside [0, 1], using 1"}}) {
+        SCOPED_TRACE(c.cutoff);
+        const auto path = write_alpha_gltf(
+            "cutoff",
+            std::string(R"({"name":"m","alphaMode":"MASK","alphaCutoff":)") + c.cutoff + "}");
+        const Scene scene = load_alpha_both_ways(path);
+        EXPECT_EQ(only_material(scene).alpha_mode, AlphaMode::Mask);
+        EXPECT_EQ(only_material(scene).alpha_cutoff, c.kept);
+        ASSERT_EQ(scene.warnings.size(), 1u);
+        EXPECT_EQ(scene.warnings[0], path.string() + ": material 'm': " + c.warning);
+    }
+    // Outside MASK the cutoff means nothing: clamped without a warning.
+    const Scene blend = load_alpha_both_ways(
+        write_alpha_gltf("cutoff-blend", R"({"alphaMode":"BLEND","alphaCutoff":-1})"));
+    EXPECT_TRUE(blend.warnings.empty());
+    EXPECT_EQ(only_material(blend).alpha_cutoff, 0.0f);
+}
+
+TEST(MaterialAlpha, GltfUnknownAlphaModeIsOpaqueWithAWarning) {
+    const auto path = write_alpha_gltf("mode", R"({"name":"odd","alphaMode":"blend"})");
+    const Scene scene = load_alpha_both_ways(path);
+    EXPECT_EQ(only_material(scene).alpha_mode, AlphaMode::Opaque);
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_EQ(scene.warnings[0],
+              path.string() +
+                  ": material 'odd': alphaMode 'blend' is not OPAQUE, MASK or BLEND, "
+                  "drawn opaque (glTF's default)");
+}
+
+// A 2 x 2 image of color 200: RGBA (`channels` 4) with alpha 255 but 64 at texel (1, 1), or RGB.
+void write_alpha_png(const std::filesystem::path& path, int channels) {
+    std::vector<std::uint8_t> pixels(std::size_t(2 * 2 * channels), 200);
+    if (channels == 4)
+        for (int i = 0; i < 4; ++i) pixels[std::size_t(4 * i + 3)] = i == 3 ? 64 : 255;
+    write_png8(path, 2, 2, channels, pixels);
+}
+
+// The base-color texture keeps its alpha channel: RGBA texels with alpha below 255 stay so, an
+// RGB image is opaque everywhere. Both as an external file and as a data URI.
+TEST(MaterialAlpha, GltfBaseColorTextureAlpha) {
+    const auto dir = test::temp_dir("io-alpha-texture");
+    write_alpha_png(dir / "rgba.png", 4);
+    write_alpha_png(dir / "rgb.png", 3);
+    const std::string material =
+        R"({"alphaMode":"BLEND","pbrMetallicRoughness":{"baseColorTexture":{"index":0}}})";
+    const std::string data_uri =
+        "data:image/png;base64," + test::base64(test::read_bytes(dir / "rgba.png"));
+    test::write_bytes(dir / "rgba.gltf", alpha_gltf(material, R"([{"uri":"rgba.png"}])"));
+    test::write_bytes(dir / "rgb.gltf", alpha_gltf(material, R"([{"uri":"rgb.png"}])"));
+    test::write_bytes(dir / "embedded.gltf",
+                      alpha_gltf(material, R"([{"uri":")" + data_uri + R"("}])"));
+    for (const char* name : {"rgba.gltf", "embedded.gltf"}) {
+        const Scene scene = load_alpha_both_ways(dir / name);
+        const Material& m = only_material(scene);
+        ASSERT_TRUE(m.base_color_texture) << name;
+        EXPECT_TRUE(m.base_color_texture->has_translucent_texels()) << name;
+        EXPECT_EQ(m.base_color_texture->level_rgba(0)[3 * 4 + 3], 64) << name;
+        EXPECT_EQ(m.opacity, 1.0f);
+    }
+    const Scene rgb = load_alpha_both_ways(dir / "rgb.gltf");
+    ASSERT_TRUE(only_material(rgb).base_color_texture);
+    EXPECT_FALSE(only_material(rgb).base_color_texture->has_translucent_texels());
+}
+
+// --- OBJ and MTL: both OBJ readers (obj_parser_test.cpp compares them on these files too).
+
+const char* kAlphaObjBody = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\n";
+
+// An OBJ with one triangle per material of `mtl`, named after them.
+std::filesystem::path write_alpha_obj(const std::filesystem::path& dir, const std::string& mtl,
+                                      const std::vector<std::string>& materials) {
+    test::write_bytes(dir / "m.mtl", mtl);
+    std::string obj = std::string("mtllib m.mtl\n") + kAlphaObjBody;
+    for (const std::string& name : materials)
+        obj += "o " + name + "\nusemtl " + name + "\nf 1/1 2/2 3/3\n";
+    test::write_bytes(dir / "m.obj", obj);
+    return dir / "m.obj";
+}
+
+const Material& alpha_material_of(const Scene& scene, const std::string& mesh) {
+    for (const Mesh& m : scene.meshes)
+        if (m.name == mesh) return scene.materials.at(m.material);
+    ADD_FAILURE() << "no mesh " << mesh;
+    return scene.materials.at(0);
+}
+
+TEST(MaterialAlpha, MtlDissolveAndTransparency) {
+    const auto dir = test::temp_dir("io-alpha-mtl");
+    const auto path =
+        write_alpha_obj(dir,
+                        "newmtl half\nd 0.5\n"
+                        "newmtl tr\nTr 0.25\n"
+                        "newmtl d_then_tr\nd 0.5\nTr 0.25\n"
+                        "newmtl tr_then_d\nTr 0.25\nd 0.5\n"
+                        "newmtl both_opaque\nd 1\nTr 1\n"
+                        "newmtl plain\nKd 1 0 0\n",
+                        {"half", "tr", "d_then_tr", "tr_then_d", "both_opaque", "plain"});
+    const Scene scene = load_alpha_both_ways(path);
+    EXPECT_TRUE(scene.warnings.empty());
+    EXPECT_EQ(alpha_material_of(scene, "half").opacity, 0.5f);
+    EXPECT_EQ(alpha_material_of(scene, "tr").opacity, 0.75f);
+    // d wins over Tr in either order (Assimp alone keeps the last of the two).
+    EXPECT_EQ(alpha_material_of(scene, "d_then_tr").opacity, 0.5f);
+    EXPECT_EQ(alpha_material_of(scene, "tr_then_d").opacity, 0.5f);
+    EXPECT_EQ(alpha_material_of(scene, "both_opaque").opacity, 1.0f);
+    EXPECT_EQ(alpha_material_of(scene, "plain").opacity, 1.0f);
+    for (const Material& m : scene.materials) {
+        EXPECT_EQ(m.alpha_mode, AlphaMode::Blend) << m.name;
+        EXPECT_EQ(m.alpha_cutoff, 0.5f) << m.name;
+        EXPECT_FALSE(m.opacity_texture) << m.name;
+    }
+}
+
+// map_d: a grey image's grey, an image with an alpha channel its alpha, in the red channel the
+// renderer reads; the base-color image again adds nothing (its alpha counts already).
+TEST(MaterialAlpha, MtlOpacityTextures) {
+    const auto dir = test::temp_dir("io-alpha-map-d");
+    std::vector<std::uint8_t> grey = {0, 64, 128, 255};
+    write_png8(dir / "grey.png", 2, 2, 1, grey);
+    write_alpha_png(dir / "leaf.png", 4);
+    const auto path = write_alpha_obj(dir,
+                                      "newmtl grey\nd 0.5\nmap_d grey.png\n"
+                                      "newmtl cutout\nmap_d -imfchan m leaf.png\n"
+                                      "newmtl leaf\nmap_Kd leaf.png\nmap_d leaf.png\n",
+                                      {"grey", "cutout", "leaf"});
+    const Scene scene = load_alpha_both_ways(path);
+    EXPECT_TRUE(scene.warnings.empty());
+
+    const Material& g = alpha_material_of(scene, "grey");
+    EXPECT_EQ(g.opacity, 0.5f);
+    ASSERT_TRUE(g.opacity_texture);
+    EXPECT_FALSE(g.base_color_texture);
+    ASSERT_EQ(g.opacity_texture->width(), 2);
+    for (int i = 0; i < 4; ++i)
+        EXPECT_EQ(g.opacity_texture->level_rgba(0)[std::size_t(4 * i)], grey[std::size_t(i)]);
+
+    const Material& c = alpha_material_of(scene, "cutout");
+    ASSERT_TRUE(c.opacity_texture);
+    const auto texels = c.opacity_texture->level_rgba(0);
+    EXPECT_EQ(texels[3 * 4], 64);  // the alpha of texel (1, 1)
+    EXPECT_EQ(texels[0], 255);     // opaque texels: red 255, not the image's red (200)
+    EXPECT_FALSE(c.opacity_texture->has_translucent_texels());
+
+    const Material& l = alpha_material_of(scene, "leaf");
+    ASSERT_TRUE(l.base_color_texture);
+    EXPECT_TRUE(l.base_color_texture->has_translucent_texels());
+    EXPECT_FALSE(l.opacity_texture);
+}
+
+// map_d images have the budgets of map_Kd images: too large to decode is a warning and no
+// texture, and images past max_texture_side are reduced.
+TEST(MaterialAlpha, MtlOpacityTextureBudgets) {
+    const auto dir = test::temp_dir("io-alpha-map-d-budget");
+    std::vector<std::uint8_t> grey(std::size_t(64 * 64), 100);
+    write_png8(dir / "big.png", 64, 64, 1, grey);
+    const auto path = write_alpha_obj(dir, "newmtl m\nmap_d big.png\n", {"m"});
+    LoadOptions small_side;
+    small_side.max_texture_side = 16;
+    const Scene reduced = load_scene(path, small_side);
+    ASSERT_TRUE(alpha_material_of(reduced, "m").opacity_texture);
+    EXPECT_EQ(alpha_material_of(reduced, "m").opacity_texture->width(), 16);
+    ASSERT_EQ(reduced.warnings.size(), 1u);
+    EXPECT_NE(reduced.warnings[0].find("texture 'big.png' is 64x64, reduced to 16x16"),
+              std::string::npos)
+        << reduced.warnings[0];
+    LoadOptions small_budget;
+    small_budget.max_texture_bytes = 1000;
+    const Scene refused = load_scene(path, small_budget);
+    EXPECT_FALSE(alpha_material_of(refused, "m").opacity_texture);
+    ASSERT_EQ(refused.warnings.size(), 1u);
+    EXPECT_NE(refused.warnings[0].find("more than the textures' budget"), std::string::npos)
+        << refused.warnings[0];
+}
+
+// A DirectX .x material: Assimp gives its diffuse color's alpha (0.4), no opacity of its own.
+TEST(MaterialAlpha, OtherFormatsBlendWithAssimpsAlpha) {
+    const auto path = test::write_fixture("io-alpha-x", "tri.x",
+                                          "xof 0303txt 0032\n"
+                                          "Mesh tri {\n 3;\n 0.0;0.0;0.0;,\n 1.0;0.0;0.0;,\n"
+                                          " 0.0;1.0;0.0;;\n 1;\n 3;0,1,2;;\n"
+                                          " MeshMaterialList {\n  1;\n  1;\n  0;;\n"
+                                          "  Material glass {\n   1.0;0.0;0.0;0.4;;\n   10.0;\n"
+                                          "   0.0;0.0;0.0;;\n   0.0;0.0;0.0;;\n  }\n }\n}\n");
+    const Scene scene = load_alpha_both_ways(path);
+    const Material& m = only_material(scene);
+    EXPECT_EQ(m.name, "glass");
+    EXPECT_EQ(m.base_color, glm::vec3(1, 0, 0));
+    EXPECT_EQ(m.alpha_mode, AlphaMode::Blend);
+    EXPECT_EQ(m.opacity, 0.4f);
+    EXPECT_EQ(m.alpha_cutoff, 0.5f);
+}
+
+// The shared meshes say nothing about transparency: none may load with alpha that can be
+// below 1. (Computed here from the fields, independently of `zraster info`.)
+TEST(MaterialAlpha, SharedMeshesAreOpaque) {
+    ZRASTER_REQUIRE_SHARED_DATA();
+    int loaded = 0;
+    for (const auto& entry :
+         std::filesystem::recursive_directory_iterator(test::shared_data("meshes"))) {
+        if (!entry.is_regular_file() || !has_mesh_file_extension(entry.path())) continue;
+        Scene scene;
+        try {
+            scene = load_scene(entry.path());
+        } catch (const InputError&) {
+            continue;  // the broken ones (BoxWithInfinites.glb)
+        }
+        ++loaded;
+        for (const Material& m : scene.materials) {
+            SCOPED_TRACE(entry.path().string() + " material " + m.name);
+            if (m.alpha_mode == AlphaMode::Opaque) continue;
+            EXPECT_EQ(m.opacity, 1.0f);
+            EXPECT_FALSE(m.base_color_texture && m.base_color_texture->has_translucent_texels());
+            EXPECT_FALSE(m.opacity_texture);
+        }
+    }
+    EXPECT_GE(loaded, 20);
+}
+
+}  // namespace
+}  // namespace zraster
