@@ -218,6 +218,7 @@ class Renderer:
         occlusion_cull: bool = ...,
         front_to_back: bool = ...,
         shading_strategy: Literal["auto", "forward", "deferred"] = ...,
+        alpha_mode: Literal["auto", "opaque"] = ...,
         front_face: Literal["ccw", "cw"] = ...,
         depth_format: Literal["d32f", "d24", "d16"] = ...,
         depth_compare: Literal["never", "less", "lequal", "equal", "notequal", "gequal", "greater", "always"] = ...,

@@ -24,29 +24,43 @@ void write_transparent_scene(const std::filesystem::path& dir) {
            "o front\nusemtl glass\nf 5 6 7\nf 5 7 8\n";
 }
 
-TEST(VisibilityCommand, TransparentMaterialsAreBlendedByTheABufferOnly) {
+TEST(VisibilityCommand, TransparentMaterialsAreBlendedByTheZBufferAndTheABuffer) {
     const auto dir = temp_dir("visibility-transparent");
     write_transparent_scene(dir);
     const std::string common =
         "render layers.obj --size 64x64 --shading unlit --eye 0.25,0.25,6 --target 0.25,0.25,0 ";
-    for (const char* visibility : {"zbuffer", "painter", "bsp", "warnock"}) {
+    for (const char* visibility : {"painter", "bsp", "warnock"}) {
         const CommandResult r =
             run_zraster(common + "--visibility " + visibility + " -o opaque.png", dir);
         ASSERT_EQ(r.exit_code, 0) << r.output;
         EXPECT_NE(r.output.find("draws them opaque"), std::string::npos) << visibility << r.output;
         EXPECT_NE(r.output.find("--visibility abuffer"), std::string::npos) << r.output;
     }
+    const CommandResult z = run_zraster(common + "-o zbuffer.png --stats", dir);
+    ASSERT_EQ(z.exit_code, 0) << z.output;
+    EXPECT_EQ(z.output.find("opaque"), std::string::npos) << z.output;
+    EXPECT_NE(z.output.find("blended"), std::string::npos) << z.output;
     const CommandResult a = run_zraster(common + "--visibility abuffer -o blended.png", dir);
     ASSERT_EQ(a.exit_code, 0) << a.output;
     EXPECT_EQ(a.output.find("opaque"), std::string::npos) << a.output;
-    // Where the two overlap (the image center): half blue over red.
+    const CommandResult off =
+        run_zraster(common + "--alpha-mode opaque -o opaque_zbuffer.png", dir);
+    ASSERT_EQ(off.exit_code, 0) << off.output;
+    EXPECT_EQ(off.output.find("opaque"), std::string::npos) << off.output;
+    // Where the two overlap (the image center): half blue over red, in both ways that blend.
     const ImageRGBA8 opaque = read_image_rgba8(dir / "opaque.png");
+    const ImageRGBA8 opaque_zbuffer = read_image_rgba8(dir / "opaque_zbuffer.png");
     const ImageRGBA8 blended = read_image_rgba8(dir / "blended.png");
+    const ImageRGBA8 zbuffer = read_image_rgba8(dir / "zbuffer.png");
     const std::size_t center = (32 * 64 + 32) * 4;
-    EXPECT_EQ(opaque.rgba[center + 0], 0);  // the front quad, opaque blue
-    EXPECT_EQ(opaque.rgba[center + 2], 255);
-    EXPECT_NEAR(blended.rgba[center + 0], 128, 1);
-    EXPECT_NEAR(blended.rgba[center + 2], 128, 1);
+    for (const ImageRGBA8* image : {&opaque, &opaque_zbuffer}) {
+        EXPECT_EQ(image->rgba[center + 0], 0);  // the front quad, opaque blue
+        EXPECT_EQ(image->rgba[center + 2], 255);
+    }
+    for (const ImageRGBA8* image : {&blended, &zbuffer}) {
+        EXPECT_NEAR(image->rgba[center + 0], 128, 1);
+        EXPECT_NEAR(image->rgba[center + 2], 128, 1);
+    }
     const CommandResult svg = run_zraster("svg layers.obj --size 64x64 -o out.svg", dir);
     ASSERT_EQ(svg.exit_code, 0) << svg.output;
     EXPECT_NE(svg.output.find("zraster svg draws them opaque"), std::string::npos) << svg.output;
