@@ -15,6 +15,7 @@
 #include <zraster/scenes.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <string>
@@ -450,6 +451,57 @@ BENCHMARK(BM_EntryPoint)
     ->ArgsProduct({{0, 1}, {0, 1, 2, 3, 4, 5}, {1920}, {1, 2}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+
+// Transparency's cost: sphere:70000 (Phong) behind four nested quads facing the camera, the
+// largest over 20% of the image and each next one over about half the one before (1 to 4 layers
+// per pixel), opacity 0.4; arg 0 draws the quads opaque (RenderOptions::alpha_mode Opaque), arg
+// 1 blends them. 1920x1080, two threads.
+void BM_Blended(benchmark::State& state) {
+    Scene scene = make_procedural_scene("sphere:70000");
+    RenderOptions o;
+    o.width = 1920;
+    o.height = 1080;
+    o.threads = 2;
+    o.shading = ShadingMode::Phong;
+    o.camera = fit_camera(scene.world_positions());
+    o.alpha_mode = state.range(0) != 0 ? MaterialAlpha::Auto : MaterialAlpha::Opaque;
+    // The quads between the eye and the sphere (the near plane moved nearer to make room),
+    // spanning fractions of the view there.
+    o.camera->near *= 0.2;
+    const Camera& camera = *o.camera;
+    const glm::dvec3 forward = glm::normalize(camera.target - camera.eye);
+    const glm::dvec3 right = glm::normalize(glm::cross(forward, camera.up));
+    const glm::dvec3 up = glm::cross(right, forward);
+    const double distance = 0.5 * glm::length(camera.target - camera.eye);
+    const double half_height = 0.6 * distance * std::tan(glm::radians(camera.fovy_degrees) / 2.0);
+    const double half_width = half_height * double(o.width) / double(o.height);
+    Material glass;
+    glass.base_color = {0.3f, 0.6f, 0.9f};
+    glass.opacity = 0.4f;
+    scene.materials.push_back(glass);
+    for (const double side : {0.447, 0.32, 0.22, 0.15}) {  // of the view's width and height
+        Mesh quad;
+        const glm::dvec3 center = camera.eye + forward * distance * (0.6 - 0.05 * side);
+        for (const auto& [x, y] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
+            quad.positions.push_back(glm::vec3(center + right * (x * side * half_width) +
+                                               up * (y * side * half_height)));
+        quad.normals.assign(4, glm::vec3(-forward));
+        quad.indices = {0, 1, 2, 0, 2, 3};
+        quad.material = std::uint32_t(scene.materials.size() - 1);
+        update_bounds(quad);
+        scene.meshes.push_back(std::move(quad));
+        Instance instance;
+        instance.mesh = std::uint32_t(scene.meshes.size() - 1);
+        scene.instances.push_back(instance);
+    }
+    Renderer renderer;
+    renderer.render(scene, o);
+    std::uint64_t blended = 0;
+    for (auto _ : state) blended = renderer.render(scene, o).stats.pixels_blended;
+    state.counters["blended_pixels_%"] = 100.0 * double(blended) / double(o.width * o.height);
+    state.SetLabel(state.range(0) != 0 ? "quads blended" : "quads opaque");
+}
+BENCHMARK(BM_Blended)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace zraster

@@ -16,6 +16,7 @@
 #include "memory/huge_pages.hpp"
 #include "render/classify_kernel.hpp"
 #include "render/frame.hpp"
+#include "render/shade_fragment.hpp"
 #include "render/vertex_kernel.hpp"
 #include "render/word_hash.hpp"
 
@@ -280,20 +281,6 @@ void process_chunk(const Frame& frame, Chunk& chunk, ClassifyOutput& out) {
     std::size_t bytes = 0;
     for (const std::uint32_t n : chunk.bin_counts) bytes += whole_lines(n * frame.bin_record_bytes);
     chunk.bin_bytes = bytes;
-}
-
-// The corners' world positions and normals of a triangle the SIMD Phong shader draws, for
-// interpolation in the visibility kernel: the same values shade_fragment() interpolates.
-void corner_attributes(const Frame& frame, const TriangleRef& ref, CornerAttributes& corners) {
-    const FrameInstance& fi = frame.instances[ref.instance];
-    corners.tag = 0;  // the scalar shader's
-    if (fi.phong_kernel < 0) return;
-    const bool flip = !ref.front_facing && frame.options->two_sided_lighting;
-    corners.tag = std::uint32_t(fi.phong_kernel + 1) | (flip ? kShadeFlip : 0u);
-    for (std::size_t k = 0; k < 3; ++k) {
-        corners.world[k] = frame.vertices.world[ref.vertex[k]];
-        corners.normal[k] = frame.vertices.normal[ref.vertex[k]];
-    }
 }
 
 // Binning is a counting sort of all chunks' refs into tiles, in two passes around a prefix sum

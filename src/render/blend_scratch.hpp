@@ -19,9 +19,10 @@ struct BlendTriangle {
 
 struct BlendFragment {
     std::uint32_t pixel = 0;  // index in the tile, row-major over its width
+    std::uint32_t next = 0;   // the pixel's next fragment (a list, newest first)
     float depth = 0.0f;       // as stored (the depth format's code)
     float alpha = 0.0f;       // in (0, 1]
-    glm::vec3 color{0.0f};    // shaded, clamped to [0, 1]
+    std::uint32_t rgba = 0;   // shaded, RGBA8 as the color target holds it
     std::uint32_t instance = 0, primitive = 0;
 };
 
@@ -29,6 +30,8 @@ struct BlendFragment {
 struct BlendScratch {
     std::vector<BlendTriangle> triangles;
     std::vector<BlendFragment> fragments;
+    std::vector<std::uint32_t> head;  // per pixel of the tile: its newest fragment
+    std::vector<std::uint32_t> list;  // one pixel's fragments, sorted
 };
 
 }  // namespace zraster::detail

@@ -137,4 +137,18 @@ float fragment_alpha(const Frame& frame, const ShadingTriangle& t, float b1, flo
     return material_alpha(material, base_alpha, opacity_red);
 }
 
+// The corners' world positions and normals of a triangle the SIMD Phong shader draws, for
+// interpolation in the visibility kernel: the same values shade_fragment() interpolates.
+void corner_attributes(const Frame& frame, const TriangleRef& ref, CornerAttributes& corners) {
+    const FrameInstance& fi = frame.instances[ref.instance];
+    corners.tag = 0;  // the scalar shader's
+    if (fi.phong_kernel < 0) return;
+    const bool flip = !ref.front_facing && frame.options->two_sided_lighting;
+    corners.tag = std::uint32_t(fi.phong_kernel + 1) | (flip ? kShadeFlip : 0u);
+    for (std::size_t k = 0; k < 3; ++k) {
+        corners.world[k] = frame.vertices.world[ref.vertex[k]];
+        corners.normal[k] = frame.vertices.normal[ref.vertex[k]];
+    }
+}
+
 }  // namespace zraster::detail

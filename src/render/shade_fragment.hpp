@@ -40,6 +40,11 @@ void prepare_shading_triangle(const Frame& frame, const Chunk& chunk, const Tria
 ShadedFragment shade_fragment(const Frame& frame, const ShadingTriangle& triangle, float b1,
                               float b2, int px, int py, bool want_normal);
 
+// The corners' world positions and normals of a triangle the SIMD Phong shader draws (tag:
+// its Phong constants + 1 and kShadeFlip for a back face lit two-sided; 0, nothing else set,
+// for the scalar shader's): the values shade_fragment() interpolates.
+void corner_attributes(const Frame& frame, const TriangleRef& ref, CornerAttributes& corners);
+
 // The fragment's alpha (material_alpha.hpp) at pixel (px, py), its textures sampled as the base
 // color is.
 float fragment_alpha(const Frame& frame, const ShadingTriangle& triangle, float b1, float b2,

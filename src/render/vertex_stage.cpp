@@ -51,9 +51,8 @@ void assign_phong_kernels(Frame& frame) {
     const RenderOptions& options = *frame.options;
     frame.phong_constants.clear();
     for (FrameInstance& fi : frame.instances) {
-        // (Alpha-tested and blended instances take the scalar way: their fragments need alpha.)
         if (fi.shading != ShadingMode::Phong || fi.textured || !options.simd ||
-            fi.alpha != AlphaMode::Opaque || !phong_kernel_applies(options.lighting, *fi.material))
+            !phong_kernel_applies(options.lighting, *fi.material))
             continue;
         fi.phong_kernel = static_cast<int>(frame.phong_constants.size());
         frame.phong_constants.push_back(

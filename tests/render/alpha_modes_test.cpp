@@ -211,11 +211,22 @@ TEST(AlphaModes, MaskDiscardsFragmentsUnderTheCutoffBeforeTheyWriteDepth) {
                           r.targets.depth));
 }
 
-TEST(AlphaModes, TextureAlphaBlendsTooAndTheOptimizationsDoNotChangeABit) {
-    for (const AlphaMode mode : {AlphaMode::Mask, AlphaMode::Blend}) {
+TEST(AlphaModes, TheOptimizationsAndTheSimdShaderDoNotChangeABit) {
+    // (Phong: blended fragments lit by the SIMD shader, against the scalar one without SIMD.)
+    for (const auto& [mode, shading] : {std::pair{AlphaMode::Mask, ShadingMode::Unlit},
+                                        {AlphaMode::Blend, ShadingMode::Unlit},
+                                        {AlphaMode::Mask, ShadingMode::Phong},
+                                        {AlphaMode::Blend, ShadingMode::Phong}}) {
         for (const bool first : {false, true}) {
-            const Scene scene = cut_out_scene(mode, first);
+            Scene scene = cut_out_scene(mode, first);
+            if (shading == ShadingMode::Phong)  // untextured, alpha from the opacity: SIMD-lit
+                for (Material& m : scene.materials) {
+                    m.base_color_texture.reset();
+                    if (m.alpha_mode == AlphaMode::Blend) m.opacity = 0.6f;
+                }
             RenderOptions options = alpha_options();
+            options.shading = shading;
+            options.camera->projection = Camera::Projection::Perspective;
             const RenderResult reference = render(scene, options);
             if (mode == AlphaMode::Blend) {
                 EXPECT_GT(reference.stats.fragments_blended, 0u);
