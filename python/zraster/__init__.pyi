@@ -206,6 +206,7 @@ class Renderer:
         near: float = ...,
         far: float = ...,
         ortho: bool = ...,
+        ortho_height: float = ...,
         reversed_z: bool = ...,
         infinite_far: bool = ...,
         shading: Literal["flat", "gouraud", "phong", "unlit"] = ...,

@@ -181,6 +181,42 @@ TEST(BatchOutputs, ViewsJsonTakesLookAtOrbitAndCameraJsonCameras) {
                         original.at("camera_to_world")[r][c].get<double>(), 1e-12);
 }
 
+// An orthographic camera as --camera-json writes it (--ortho) is a views file too; one whose
+// pixels the command's orthographic camera cannot make is refused, naming the field.
+TEST(BatchOutputs, ViewsJsonTakesOrthographicCameraJsonCameras) {
+    const auto dir = temp_dir("batch-views-ortho");
+    write_sphere_obj(dir / "in" / "ball.obj", 20, 4);
+    const CommandResult ortho = run_zraster(
+        "render in/ball.obj --size 64x48 --ortho --ortho-height 3.5 --eye 0.5,1,3 --target "
+        "0,0,0 --near 0.5 --far 10 -o ortho.png --camera-json ortho.json",
+        dir);
+    ASSERT_EQ(ortho.exit_code, 0) << ortho.output;
+    const CommandResult batch = run_zraster(
+        "batch in/ball.obj -o out --size 64x48 --views-json ortho.json --camera-json "
+        "--progress none",
+        dir);
+    ASSERT_EQ(batch.exit_code, 0) << batch.output;
+    EXPECT_TRUE(read_bytes(dir / "out" / "ball_v00.png") == read_bytes(dir / "ortho.png"));
+    const auto written = nlohmann::json::parse(read_bytes(dir / "out" / "ball_v00_camera.json"));
+    const auto original = nlohmann::json::parse(read_bytes(dir / "ortho.json"));
+    EXPECT_EQ(written.at("projection"), "orthographic");
+    EXPECT_NEAR(written.at("pixels_per_unit")[1].get<double>(),
+                original.at("pixels_per_unit")[1].get<double>(), 1e-9);
+    EXPECT_EQ(written.at("principal_point"), original.at("principal_point"));
+
+    auto off_center = original;
+    off_center["principal_point"] = {20.0, 23.5};
+    write_text(dir / "off.json", off_center.dump());
+    const CommandResult refused =
+        run_zraster("batch in/ball.obj -o out2 --views-json off.json --progress none", dir);
+    EXPECT_EQ(refused.exit_code, 2) << refused.output;
+    EXPECT_NE(refused.output.find("off.json: camera 0: \"principal_point\""), std::string::npos)
+        << refused.output;
+    const CommandResult alone = run_zraster("render in/ball.obj --ortho-height 2 -o x.png", dir);
+    EXPECT_EQ(alone.exit_code, 2) << alone.output;
+    EXPECT_NE(alone.output.find("--ortho-height"), std::string::npos) << alone.output;
+}
+
 TEST(BatchOutputs, JobsShareTheThreads) {
     EXPECT_EQ(cli::batch_job_threads(4, 2), 2);
     EXPECT_EQ(cli::batch_job_threads(5, 2), 2);

@@ -72,6 +72,8 @@ class CameraReader {
     const Json& camera_;
 };
 
+void read_pose_and_size(const CameraReader& r, BatchView& view, const char* needs);
+
 // What --camera-json writes: the pinhole K and the OpenCV camera-to-world pose become
 // --intrinsics and --eye/--target/--up, width and height --size, near and far the clip distances.
 void read_pinhole(const CameraReader& r, BatchView& view) {
@@ -85,7 +87,14 @@ void read_pinhole(const CameraReader& r, BatchView& view) {
         r.fail("K", "expected [[fx, 0, cx], [0, fy, cy], [0, 0, 1]] (no skew), got " + k.dump());
     view.intrinsics = exact_number(k0[0]) + "," + exact_number(k1[1]) + "," + exact_number(k0[2]) +
                       "," + exact_number(k1[2]);
-    if (!r.has("camera_to_world")) r.fail("camera_to_world", "is missing (K needs a pose)");
+    read_pose_and_size(r, view, "K");
+}
+
+// An OpenCV camera-to-world pose (x right, y down, z forward; the translation is the eye) as
+// --eye/--target/--up, and width and height as --size.
+void read_pose_and_size(const CameraReader& r, BatchView& view, const char* needs) {
+    if (!r.has("camera_to_world"))
+        r.fail("camera_to_world", std::string("is missing (") + needs + " needs a pose)");
     const Json& pose = r.at("camera_to_world");
     if (!pose.is_array() || pose.size() != 4)
         r.fail("camera_to_world", "expected a 4x4 array, got " + pose.dump());
@@ -94,7 +103,6 @@ void read_pinhole(const CameraReader& r, BatchView& view) {
         const std::vector<double> values = r.numbers(pose[row], "camera_to_world", 4);
         for (std::size_t col = 0; col < 4; ++col) m[row][col] = values[col];
     }
-    // OpenCV camera axes: x right, y down, z forward; the translation is the eye.
     const double eye[3] = {m[0][3], m[1][3], m[2][3]};
     view.eye = exact_number(eye[0]) + "," + exact_number(eye[1]) + "," + exact_number(eye[2]);
     view.target = exact_number(eye[0] + m[0][2]) + "," + exact_number(eye[1] + m[1][2]) + "," +
@@ -114,14 +122,48 @@ void read_pinhole(const CameraReader& r, BatchView& view) {
     if (r.has("far") && r.at("far").is_null()) view.infinite_far = true;
 }
 
+// What --camera-json writes for an orthographic camera: u = su X + cu, v = sv Y + cv. The
+// command's orthographic camera is centered with square pixels: others are refused.
+void read_orthographic(const CameraReader& r, BatchView& view) {
+    if (r.has("convention") && r.at("convention") != "opencv")
+        r.fail("convention", "only \"opencv\" is read, got " + r.at("convention").dump());
+    if (!r.has("pixels_per_unit")) r.fail("pixels_per_unit", "is missing (orthographic)");
+    if (!r.has("principal_point")) r.fail("principal_point", "is missing (orthographic)");
+    if (!r.has("width") || !r.has("height"))
+        r.fail(r.has("width") ? "height" : "width", "is missing (orthographic)");
+    const std::vector<double> scale = r.numbers(r.at("pixels_per_unit"), "pixels_per_unit", 2);
+    const std::vector<double> center = r.numbers(r.at("principal_point"), "principal_point", 2);
+    read_pose_and_size(r, view, "an orthographic camera");
+    const double width = r.at("width").get<double>(), height = r.at("height").get<double>();
+    if (!(scale[0] > 0.0 && scale[1] > 0.0) ||
+        std::abs(scale[0] - scale[1]) > 1e-6 * std::max(scale[0], scale[1]))
+        r.fail("pixels_per_unit", "expected two equal positive scales (square pixels), got " +
+                                      r.at("pixels_per_unit").dump());
+    if (std::abs(center[0] - 0.5 * (width - 1.0)) > 1e-6 * width ||
+        std::abs(center[1] - 0.5 * (height - 1.0)) > 1e-6 * height)
+        r.fail("principal_point",
+               "expected the image center [(width - 1) / 2, (height - 1) / 2]"
+               ", got " +
+                   r.at("principal_point").dump());
+    view.ortho_height = height / scale[1];
+}
+
 BatchView read_camera(const std::filesystem::path& file, std::size_t index, const Json& camera) {
     const CameraReader r(file, index, camera);
     BatchView view;
-    const int kinds = int(r.has("eye")) + int(r.has("orbit")) + int(r.has("K"));
+    // ("projection": "orthographic" is what --camera-json writes for --ortho.)
+    if (r.has("projection") && r.at("projection") != "orthographic" &&
+        r.at("projection") != "perspective")
+        r.fail("projection",
+               "expected \"perspective\" or \"orthographic\", got " + r.at("projection").dump());
+    const bool orthographic = r.has("projection") && r.at("projection") == "orthographic";
+    const int kinds = int(r.has("eye")) + int(r.has("orbit")) + int(r.has("K")) + int(orthographic);
     if (kinds != 1)
-        r.fail("", kinds == 0 ? "needs \"eye\" and \"target\", \"orbit\", or \"K\" and "
-                                "\"camera_to_world\""
-                              : "give one of \"eye\", \"orbit\" and \"K\"");
+        r.fail("", kinds == 0 ? "needs \"eye\" and \"target\", \"orbit\", \"K\" and "
+                                "\"camera_to_world\", or an orthographic camera as "
+                                "--camera-json writes it"
+                              : "give one of \"eye\", \"orbit\", \"K\" and an orthographic "
+                                "projection");
     if (r.has("eye")) {
         if (!r.has("target")) r.fail("target", "is missing (\"eye\" needs it)");
         view.eye = r.vec3("eye");
@@ -130,10 +172,12 @@ BatchView read_camera(const std::filesystem::path& file, std::size_t index, cons
     } else if (r.has("orbit")) {
         const std::vector<double> o = r.numbers(r.at("orbit"), "orbit", 3);
         view.orbit = exact_number(o[0]) + "," + exact_number(o[1]) + "," + exact_number(o[2]);
+    } else if (orthographic) {
+        read_orthographic(r, view);
     } else {
         read_pinhole(r, view);
     }
-    if (!r.has("K")) view.fovy = r.optional_scalar("fovy");
+    if (!r.has("K") && !orthographic) view.fovy = r.optional_scalar("fovy");
     view.near = r.optional_scalar("near");
     if (!view.infinite_far) view.far = r.optional_scalar("far");
     return view;
@@ -197,6 +241,10 @@ RenderArguments with_view(const RenderArguments& base, const BatchView& view) {
     if (view.near) a.near = view.near;
     if (view.far) a.far = view.far;
     if (view.infinite_far) a.infinite_far = true;
+    if (view.ortho_height) {
+        a.ortho = true;
+        a.ortho_height = view.ortho_height;
+    }
     return a;
 }
 

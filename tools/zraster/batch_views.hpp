@@ -17,6 +17,7 @@ struct BatchView {
     // The `zraster render` flags this view sets (empty or unset: the command's own value).
     std::string orbit, eye, target, up, intrinsics, size;
     std::optional<double> fovy, near, far;
+    std::optional<double> ortho_height;  // set: --ortho --ortho-height
     bool infinite_far = false;
 };
 

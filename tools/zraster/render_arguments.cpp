@@ -83,6 +83,9 @@ void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
     cmd.add_option("--near", a.near, "Near plane distance");
     cmd.add_option("--far", a.far, "Far plane distance");
     cmd.add_flag("--ortho", a.ortho, "Orthographic projection (frames the bounding sphere)");
+    cmd.add_option("--ortho-height", a.ortho_height,
+                   "With --ortho: the view's height in scene units (default: the bounding "
+                   "sphere's diameter)");
     cmd.add_flag("--reversed-z", a.reversed_z, "Reversed-Z projection (near->1, far->0, GREATER)");
     cmd.add_flag("--infinite-far", a.infinite_far, "Far plane at infinity");
     cmd.add_option("--shading", a.shading, "flat|gouraud|phong|unlit")
@@ -192,9 +195,15 @@ Camera place_camera(const RenderArguments& a, Camera camera, const BoundingSpher
         camera.far = d + 1.01 * radius;
     }
     if (a.fovy) camera.fovy_degrees = *a.fovy;
+    if (a.ortho_height && !a.ortho) throw InputError("--ortho-height", "goes with --ortho");
     if (a.ortho) {
         camera.projection = Camera::Projection::Orthographic;
         camera.ortho_height = 2.0 * radius;
+        if (a.ortho_height) {
+            if (!(std::isfinite(*a.ortho_height) && *a.ortho_height > 0.0))
+                throw InputError("--ortho-height", "must be a positive number");
+            camera.ortho_height = *a.ortho_height;
+        }
     }
     return camera;
 }

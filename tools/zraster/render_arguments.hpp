@@ -33,6 +33,7 @@ struct RenderArguments {
     int threads = 0;
     std::string eye, target, up = "0,1,0", orbit;
     std::optional<double> fovy, near, far;
+    std::optional<double> ortho_height;  // --ortho-height: with --ortho, the view's height
     bool ortho = false, reversed_z = false, infinite_far = false;
     std::string shading = "phong", reflection = "blinn-phong";
     bool infinite_viewer = false;
