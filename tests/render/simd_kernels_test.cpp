@@ -22,9 +22,10 @@
 namespace zraster::detail {
 namespace {
 
+// (n may be 0 with null pointers: empty targets.)
 template <class T>
 bool same_bits(const T* a, const T* b, std::size_t n) {
-    return std::memcmp(a, b, n * sizeof(T)) == 0;
+    return n == 0 || std::memcmp(a, b, n * sizeof(T)) == 0;
 }
 
 std::unique_ptr<TileBuffers> cleared_tile() {
