@@ -92,17 +92,31 @@ PixelRays::PixelRays(const Camera& camera, int width, int height)
     inverse_xy_ = glm::inverse(xy);
 }
 
-glm::dvec3 PixelRays::eye_point(int px, int py, double z) const {
+// The sample point in normalized device coordinates, as to_screen maps them (raster.hpp), and
+// the projection's x and y rows solved for eye x and y at eye z = -z.
+double PixelRays::column_term(int px, double z) const {
     const glm::dmat4& p = projection_;
-    // The sample point in normalized device coordinates, as to_screen maps them (raster.hpp).
     const double ndc_x = (double(px) + 0.5) / width_ * 2.0 - 1.0;
+    const double eye_z = -z;
+    const double w = p[2][3] * eye_z + p[3][3];
+    return ndc_x * w - p[2][0] * eye_z - p[3][0];
+}
+
+double PixelRays::row_term(int py, double z) const {
+    const glm::dmat4& p = projection_;
     const double ndc_y = 1.0 - (double(py) + 0.5) / height_ * 2.0;
     const double eye_z = -z;
     const double w = p[2][3] * eye_z + p[3][3];
-    const glm::dvec2 rhs(ndc_x * w - p[2][0] * eye_z - p[3][0],
-                         ndc_y * w - p[2][1] * eye_z - p[3][1]);
-    const glm::dvec2 xy = inverse_xy_ * rhs;
-    return {xy.x, xy.y, eye_z};
+    return ndc_y * w - p[2][1] * eye_z - p[3][1];
+}
+
+glm::dvec3 PixelRays::eye_point_of_terms(double column, double row, double z) const {
+    const glm::dvec2 xy = inverse_xy_ * glm::dvec2(column, row);
+    return {xy.x, xy.y, -z};
+}
+
+glm::dvec3 PixelRays::eye_point(int px, int py, double z) const {
+    return eye_point_of_terms(column_term(px, z), row_term(py, z), z);
 }
 
 bool PixelRays::window_of(const glm::dvec3& eye, glm::dvec2& window) const {

@@ -41,6 +41,12 @@ class PixelRays {
   public:
     PixelRays(const Camera& camera, int width, int height);
     glm::dvec3 eye_point(int px, int py, double z) const;
+    // eye_point in parts, for loops over many pixels: the part of the projection's inverse that
+    // depends on the column alone and on the row alone, then the point from the two (the same
+    // operations as eye_point, so the same bits).
+    double column_term(int px, double z) const;
+    double row_term(int py, double z) const;
+    glm::dvec3 eye_point_of_terms(double column, double row, double z) const;
     // Window coordinates (x right, y down, in pixels) of an eye-space point; false when it is
     // behind the center of projection.
     bool window_of(const glm::dvec3& eye, glm::dvec2& window) const;
