@@ -23,7 +23,7 @@
 //
 // Supersampling (src/visibility/supersample.cpp): render() at factor x the resolution with the
 // same options, box-filtered down. Cost: factor^2 times a frame's memory and work (every
-// subsample is shaded). Opaque only (the z-buffer keeps the nearest surface; opacity is ignored).
+// subsample is shaded). Transparency and cut-outs as render() draws them, per sample.
 #pragma once
 #include <zraster/export.hpp>
 #include <zraster/render.hpp>

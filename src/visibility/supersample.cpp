@@ -9,8 +9,8 @@
 // 0.5) / factor): for factor 4 the same 4 x 4 grid as the A-buffer's masks.
 //
 // Cost: factor^2 times the frame's rasterization, shading and memory (every subsample is shaded);
-// the filter is O(big pixels). Opaque only: the z-buffer keeps the nearest surface per sample and
-// ignores material opacity.
+// the filter is O(big pixels). Transparency and cut-outs are render()'s (RenderOptions::
+// alpha_mode), per sample.
 //
 // When to use: as the reference for antialiasing quality, or when per-sample shading matters
 // (texture and specular aliasing inside polygons, which the A-buffer does not address).

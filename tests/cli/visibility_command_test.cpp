@@ -40,6 +40,12 @@ TEST(VisibilityCommand, TransparentMaterialsAreBlendedByTheZBufferAndTheABuffer)
     ASSERT_EQ(z.exit_code, 0) << z.output;
     EXPECT_EQ(z.output.find("opaque"), std::string::npos) << z.output;
     EXPECT_NE(z.output.find("blended"), std::string::npos) << z.output;
+    const CommandResult ssaa = run_zraster(common + "--aa 2 -o ssaa.png", dir);
+    ASSERT_EQ(ssaa.exit_code, 0) << ssaa.output;
+    EXPECT_EQ(ssaa.output.find("opaque"), std::string::npos) << ssaa.output;
+    const CommandResult msaa = run_zraster(common + "--aa 2 --msaa -o msaa.png", dir);
+    ASSERT_EQ(msaa.exit_code, 0) << msaa.output;
+    EXPECT_NE(msaa.output.find("--msaa draws them opaque"), std::string::npos) << msaa.output;
     const CommandResult a = run_zraster(common + "--visibility abuffer -o blended.png", dir);
     ASSERT_EQ(a.exit_code, 0) << a.output;
     EXPECT_EQ(a.output.find("opaque"), std::string::npos) << a.output;
@@ -52,12 +58,13 @@ TEST(VisibilityCommand, TransparentMaterialsAreBlendedByTheZBufferAndTheABuffer)
     const ImageRGBA8 opaque_zbuffer = read_image_rgba8(dir / "opaque_zbuffer.png");
     const ImageRGBA8 blended = read_image_rgba8(dir / "blended.png");
     const ImageRGBA8 zbuffer = read_image_rgba8(dir / "zbuffer.png");
+    const ImageRGBA8 supersampled = read_image_rgba8(dir / "ssaa.png");
     const std::size_t center = (32 * 64 + 32) * 4;
     for (const ImageRGBA8* image : {&opaque, &opaque_zbuffer}) {
         EXPECT_EQ(image->rgba[center + 0], 0);  // the front quad, opaque blue
         EXPECT_EQ(image->rgba[center + 2], 255);
     }
-    for (const ImageRGBA8* image : {&blended, &zbuffer}) {
+    for (const ImageRGBA8* image : {&blended, &zbuffer, &supersampled}) {
         EXPECT_NEAR(image->rgba[center + 0], 128, 1);
         EXPECT_NEAR(image->rgba[center + 2], 128, 1);
     }

@@ -35,7 +35,7 @@ void warn_if_transparent(const Scene& scene, const RenderOptions& options, const
     if (transparent > 0 && notes != nullptr)
         fmt::print(notes,
                    "note: {} instance(s) have a transparent or cut-out material (e.g. '{}'): {} "
-                   "draws them opaque; `zraster render` (the z-buffer, without --aa or --msaa) "
+                   "draws them opaque; `zraster render` (the z-buffer, with or without --aa) "
                    "and `--visibility abuffer` do not\n",
                    transparent, first, what);
 }
@@ -66,11 +66,13 @@ RenderedFrame render_outputs(const RenderArguments& a, const Scene& scene, Outpu
     options.id_targets = !a.id_out.empty();
     options.normal_target |= depth_camera_needs_normals(a.depth_camera);
     check_frame_arguments(a);
-    if (a.alpha_mode == "auto" && a.visibility != "abuffer" && !renders_with_pipeline(a))
-        warn_if_transparent(scene, options,
-                            a.visibility == "zbuffer" ? std::string(a.msaa ? "--msaa" : "--aa")
-                                                      : "--visibility " + a.visibility,
-                            notes);
+    // (Supersampling renders with the pipeline: it blends and cuts out as the frame does.)
+    if (a.alpha_mode == "auto" && a.visibility != "abuffer" &&
+        !(a.visibility == "zbuffer" && !a.msaa))
+        warn_if_transparent(
+            scene, options,
+            a.visibility == "zbuffer" ? std::string("--msaa") : "--visibility " + a.visibility,
+            notes);
     RenderResult own;
     const RenderResult* result = &own;
     if (renderer != nullptr && renders_with_pipeline(a)) {
