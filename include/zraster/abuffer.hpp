@@ -70,7 +70,9 @@ ZRASTER_API std::vector<PixelCoverage> polygon_coverage(const ScreenPolygon& pol
 
 // One frame through the A-buffer. Geometry is project_scene's with keep_subpixel (the renderer's
 // camera, clipping, back-face culling per options.cull; slivers between pixel centers are kept,
-// they may cover subsamples). Fragment alpha = the mesh material's opacity (clamped to [0, 1]),
+// they may cover subsamples). Fragment alpha = the mesh material's opacity (clamped to [0, 1];
+// with options.alpha_mode Auto, 1 for an Opaque material, and 1 or 0 for a Mask one as its
+// opacity reaches the cutoff or not; textures' alpha is not sampled),
 // fragment depth = the polygon's window-space depth plane at the pixel center. Fragment color =
 // the surface shaded as render() shades it (options.shading or the instance's, lighting,
 // textures, options.interpolation): a fragment covering every sample is shaded at the pixel

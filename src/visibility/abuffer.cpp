@@ -42,11 +42,29 @@
 #include <string>
 #include <tuple>
 
+#include "render/material_alpha.hpp"
 #include "visibility/frame_context.hpp"
 #include "visibility/surface_shader.hpp"
 
 namespace zraster {
 namespace {
+
+// A polygon's alpha from its material's (material_alpha.hpp), one value per polygon: textures'
+// alpha is not sampled here. Opaque: 1; Blend: the opacity; Mask: 1 where the opacity reaches
+// the cutoff, else 0 (the polygon hides nothing and shows nothing).
+float polygon_alpha(const Material& material, bool textured, const RenderOptions& options) {
+    const float opacity =
+        std::isnan(material.opacity) ? 1.0f : std::clamp(material.opacity, 0.0f, 1.0f);
+    switch (detail::effective_alpha_mode(material, textured, options)) {
+        case AlphaMode::Opaque:
+            return 1.0f;
+        case AlphaMode::Mask:
+            return opacity >= material.alpha_cutoff ? 1.0f : 0.0f;
+        case AlphaMode::Blend:
+            break;
+    }
+    return opacity;
+}
 
 std::int64_t floor_div(std::int64_t a, std::int64_t b) {
     std::int64_t q = a / b;
@@ -192,9 +210,9 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
         tbb::parallel_for(std::size_t{0}, polygons.size(), [&](std::size_t i) {
             const ScreenPolygon& p = polygons[i];
             const Mesh& mesh = scene.meshes.at(scene.instances.at(std::size_t(p.instance)).mesh);
-            const float opacity =
-                scene.materials[mesh.material < scene.materials.size() ? mesh.material : 0].opacity;
-            alphas[i] = std::isnan(opacity) ? 1.0f : std::clamp(opacity, 0.0f, 1.0f);
+            alphas[i] = polygon_alpha(
+                scene.materials[mesh.material < scene.materials.size() ? mesh.material : 0],
+                options.textures && !mesh.uvs.empty(), options);
             planes[i] = depth_plane(p);
             shader.prepare(p, prepared[i]);
         });

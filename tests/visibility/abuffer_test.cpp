@@ -130,6 +130,36 @@ Scene layered_scene(const std::array<int, 3>& order) {
     return scene;
 }
 
+// Materials' alpha modes, per polygon: Opaque ignores the opacity, Mask keeps or drops the
+// whole polygon by its opacity against the cutoff, --alpha-mode opaque draws all opaque.
+TEST(ABuffer, AlphaModesPerPolygon) {
+    RenderOptions options = ortho_options();
+    options.shading = ShadingMode::Unlit;
+    const auto colors = [&](const Scene& scene, const RenderOptions& o) {
+        return render_abuffer(scene, o, {}).targets.color;
+    };
+    Scene all_opaque = layered_scene({0, 1, 2});
+    for (Material& m : all_opaque.materials) m.opacity = 1.0f;
+    Scene scene = layered_scene({0, 1, 2});
+    for (Material& m : scene.materials) m.alpha_mode = AlphaMode::Opaque;
+    EXPECT_EQ(colors(scene, options), colors(all_opaque, options));
+    RenderOptions opaque_mode = options;
+    opaque_mode.alpha_mode = MaterialAlpha::Opaque;
+    EXPECT_EQ(colors(layered_scene({0, 1, 2}), opaque_mode), colors(all_opaque, options));
+
+    // The middle layer (opacity 0.5) as a cut-out: gone under a cutoff of 0.6, opaque at 0.4.
+    scene = layered_scene({0, 1, 2});
+    Scene without_middle = scene;
+    without_middle.instances.erase(without_middle.instances.begin() + 1);
+    scene.materials[2].alpha_mode = AlphaMode::Mask;
+    scene.materials[2].alpha_cutoff = 0.6f;
+    EXPECT_EQ(colors(scene, options), colors(without_middle, options));
+    scene.materials[2].alpha_cutoff = 0.4f;
+    Scene middle_opaque = layered_scene({0, 1, 2});
+    middle_opaque.materials[2].opacity = 1.0f;
+    EXPECT_EQ(colors(scene, options), colors(middle_opaque, options));
+}
+
 TEST(ABuffer, TransparencyIsIndependentOfSubmissionOrderAndMatchesSortedBlend) {
     RenderOptions options = ortho_options();
     options.shading = ShadingMode::Unlit;  // colors = base colors, for the reference blend
