@@ -138,6 +138,9 @@ Material make_material(FuzzedDataProvider& in) {
         rgba.resize(std::size_t(w * h * 4), 128);
         m.base_color_texture = std::make_shared<const Texture>(w, h, rgba);
     }
+    m.alpha_mode = static_cast<AlphaMode>(in.ConsumeIntegralInRange(0, 2));
+    m.alpha_cutoff = hostile_float(in);
+    if (in.ConsumeBool()) m.opacity_texture = m.base_color_texture;
     return m;
 }
 
