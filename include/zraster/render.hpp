@@ -26,6 +26,7 @@
 // given size, options and scene shape it makes no heap allocation.
 #pragma once
 #include <zraster/camera.hpp>
+#include <zraster/debug_view.hpp>
 #include <zraster/depth_buffer.hpp>
 #include <zraster/export.hpp>
 #include <zraster/lighting.hpp>
@@ -184,6 +185,9 @@ struct RenderOptions {
     // Per-pixel counts of front- and back-facing fragments that passed the depth test
     // (with depth_test = false: every fragment): the watertightness check.
     bool coverage_counts = false;
+
+    // A picture of what the pipeline did in place of the shaded color (debug_view.hpp).
+    DebugView view = DebugView::None;
 
     RenderLimits limits;
     ProgressReporter* progress = nullptr;  // not owned; null: no reports
