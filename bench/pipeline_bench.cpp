@@ -292,14 +292,14 @@ void BM_TaggedTileShading(benchmark::State& state) {
         std::fill_n(tile->shade_tag, detail::TileBuffers::kPixels, 1u);
     }
     int next = 0;
-    std::uint32_t rgba[detail::TileBuffers::kStride];
+    std::uint32_t rgba[detail::kTileStride];
     for (auto _ : state) {
         const auto& tile = all[std::size_t(next)];
         next = (next + 1) % tiles;
-        for (int row = 0; row < detail::TileBuffers::kStride; ++row)
+        for (int row = 0; row < detail::kTileStride; ++row)
             detail::shade_tagged_row(&constants, *tile,
-                                     std::size_t(row) * detail::TileBuffers::kStride,
-                                     detail::TileBuffers::kStride, rgba);
+                                     std::size_t(row) * detail::kTileStride,
+                                     detail::kTileStride, rgba);
         benchmark::DoNotOptimize(rgba[0]);
     }
     state.SetItemsProcessed(std::int64_t(state.iterations()) * 64 * 64);

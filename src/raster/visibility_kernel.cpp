@@ -156,7 +156,7 @@ int VisibilityRows(DF df, const BlockJob& job, TileBuffers& tile) {
             auto z = plane_at(df, t.depth, dx, dy);
             z = hn::Add(hn::Min(hn::Max(z, zero_f), one_f), zero_f);
             const std::size_t at =
-                static_cast<std::size_t>((job.y0 + y) * TileBuffers::kStride + job.x0 + x);
+                static_cast<std::size_t>((job.y0 + y) * kTileStride + job.x0 + x);
             const auto stored = hn::LoadU(df, tile.depth + at);
             const auto pass =
                 hn::And(hn::RebindMask(df, covered), depth_passes(df, z, stored, compare));
@@ -199,7 +199,7 @@ int VisibilityRows(DF df, const BlockJob& job, TileBuffers& tile) {
 // back. The rows past the block (or the tile: TileBuffers has room) go back unchanged.
 template <int kRows, class D, class T>
 HWY_INLINE hn::Vec<D> LoadRows(D d, const T* from) {
-    constexpr std::size_t kNext = TileBuffers::kStride;
+    constexpr std::size_t kNext = kTileStride;
     const hn::Half<D> dh;
     if constexpr (kRows == 2) {
         return hn::Combine(d, hn::LoadU(dh, from + kNext), hn::LoadU(dh, from));
@@ -276,8 +276,7 @@ int VisibilityRowGroups(D16 d, const BlockJob& job, TileBuffers& tile) {
         };
         auto z = plane(t.depth);
         z = hn::Add(hn::Min(hn::Max(z, zero_f), one_f), zero_f);
-        const std::size_t at =
-            static_cast<std::size_t>((job.y0 + y) * TileBuffers::kStride + job.x0);
+        const std::size_t at = static_cast<std::size_t>((job.y0 + y) * kTileStride + job.x0);
         const auto stored = LoadRows<kRows>(d, tile.depth + at);
         const auto pass = hn::And(hn::RebindMask(d, covered), depth_passes(d, z, stored, compare));
         // Depth only, the rows go through without a branch: whether a group has pixels
@@ -288,7 +287,7 @@ int VisibilityRowGroups(D16 d, const BlockJob& job, TileBuffers& tile) {
         passed += static_cast<int>(hn::CountTrue(d, pass));
         if (write_depth)
             ForEachRow<kRows>(d, hn::IfThenElse(pass, z, stored), [&](int r, auto v) {
-                hn::StoreU(v, dr, tile.depth + at + std::size_t(r) * TileBuffers::kStride);
+                hn::StoreU(v, dr, tile.depth + at + std::size_t(r) * kTileStride);
             });
         if (!attributes) continue;
         // Arrays only written here (see store_where), a row at a time.
@@ -297,7 +296,7 @@ int VisibilityRowGroups(D16 d, const BlockJob& job, TileBuffers& tile) {
                           [&](int r, auto v) { row_pass[r] = hn::MaskFromVec(v); });
         const auto store = [&](auto v, auto* to) {
             ForEachRow<kRows>(d, hn::BitCast(d, v), [&](int r, auto row) {
-                store_where(dr, row_pass[r], row, to + at + std::size_t(r) * TileBuffers::kStride);
+                store_where(dr, row_pass[r], row, to + at + std::size_t(r) * kTileStride);
             });
         };
         store(ref, tile.ref);
@@ -373,13 +372,13 @@ LaneJobsDone VisibilityLanes(const LaneJobs& jobs, int first, int count, const B
 }
 
 float BlockFarthestDepth(const TileBuffers& tile, int block_x, int block_y, bool largest) {
-    const hn::CappedTag<float, 8> df;
-    const float* row = tile.depth + (block_y * 8 * TileBuffers::kStride + block_x * 8);
-    // 8 rows of 8 floats; narrower vectors take each row in several steps.
+    const hn::CappedTag<float, kBlockSize> df;
+    const float* row = tile.depth + tile_index(block_x * kBlockSize, block_y * kBlockSize);
+    // kBlockSize rows of kBlockSize floats; narrower vectors take each row in several steps.
     auto acc = hn::LoadU(df, row);
-    for (int y = 0; y < 8; ++y)
-        for (int x = 0; x < 8; x += static_cast<int>(hn::Lanes(df))) {
-            const auto v = hn::LoadU(df, row + y * TileBuffers::kStride + x);
+    for (int y = 0; y < kBlockSize; ++y)
+        for (int x = 0; x < kBlockSize; x += static_cast<int>(hn::Lanes(df))) {
+            const auto v = hn::LoadU(df, row + y * kTileStride + x);
             acc = largest ? hn::Max(acc, v) : hn::Min(acc, v);
         }
     return hn::GetLane(largest ? hn::MaxOfLanes(df, acc) : hn::MinOfLanes(df, acc));
@@ -405,11 +404,11 @@ float block_farthest_depth(const TileBuffers& tile, int block_x, int block_y, bo
 }
 
 float block_farthest_depth_scalar(const TileBuffers& tile, int block_x, int block_y, bool largest) {
-    const float* row = tile.depth + (block_y * 8 * TileBuffers::kStride + block_x * 8);
+    const float* row = tile.depth + tile_index(block_x * kBlockSize, block_y * kBlockSize);
     float farthest = row[0];
-    for (int y = 0; y < 8; ++y)
-        for (int x = 0; x < 8; ++x) {
-            const float v = row[y * TileBuffers::kStride + x];
+    for (int y = 0; y < kBlockSize; ++y)
+        for (int x = 0; x < kBlockSize; ++x) {
+            const float v = row[y * kTileStride + x];
             farthest = largest ? (v > farthest ? v : farthest) : (v < farthest ? v : farthest);
         }
     return farthest;
@@ -450,7 +449,7 @@ int visibility_block_scalar(const BlockJob& job, TileBuffers& tile) {
             const int dx = job.plane_dx + x, dy = job.plane_dy + y;
             const float z = std::min(std::max(t.depth.at(dx, dy), 0.0f), 1.0f) + 0.0f;
             const std::size_t at =
-                static_cast<std::size_t>((job.y0 + y) * TileBuffers::kStride + job.x0 + x);
+                static_cast<std::size_t>((job.y0 + y) * kTileStride + job.x0 + x);
             if (!DepthBuffer::passes(z, tile.depth[at], job.compare)) continue;
             ++passed;
             if (job.write_depth) tile.depth[at] = z;

@@ -16,18 +16,16 @@
 #include <cstdint>
 
 #include "raster/setup_lanes.hpp"
+#include "raster/tile_layout.hpp"
 #include "shade/phong_kernel.hpp"
 
 namespace zraster::detail {
 
-inline constexpr std::uint32_t kNoTriangle = 0xffffffffu;
-
-// Tile-local buffers with row stride kStride and padding, so a vector may run past the end of
-// a row (into the next row or the padding) without leaving the buffer.
+// Tile-local buffers with row stride kTileStride (tile_layout.hpp) and padding, so a vector may
+// run past the end of a row (into the next row or the padding) without leaving the buffer.
 struct TileBuffers {
-    static constexpr int kStride = 64;
     // (The kernel reads and writes back up to three rows below the tile's last, unchanged.)
-    static constexpr int kPixels = kStride * kStride + 3 * kStride + 32;
+    static constexpr int kPixels = kTileStride * kTileSize + 3 * kTileStride + 32;
     alignas(64) float depth[kPixels];  // D32F depth, or the D24/D16 unorm code as a float
     alignas(64) std::uint32_t ref[kPixels];
     alignas(64) float b1[kPixels];
@@ -40,10 +38,9 @@ struct TileBuffers {
     alignas(64) std::uint32_t shade_tag[kPixels];
     // RGBA8 of the pixels shaded forward (BlockJob::shade_constants), background elsewhere.
     alignas(64) std::uint32_t color[kPixels];
-    // Hierarchical z: per 8x8 block (row-major, kStride / 8 per row), the farthest depth stored
-    // in it (render/hierarchical_z.hpp).
-    static constexpr int kBlocksPerRow = kStride / 8;
-    alignas(64) float farthest[kBlocksPerRow * kBlocksPerRow];
+    // Hierarchical z: per block (row-major, kBlocksPerTileRow per row), the farthest depth
+    // stored in it (render/hierarchical_z.hpp).
+    alignas(64) float farthest[kBlocksPerTileRow * kBlocksPerTileRow];
 };
 
 inline constexpr std::uint32_t kShadeFlip = 0x80000000u;
@@ -87,16 +84,18 @@ struct JobPlanes {
     PlaneEquation depth, q, p1, p2, l1, l2;
 };
 
-// One block of at most 8 pixels wide (any height) of one triangle.
+// A rectangle of one triangle's pixels inside a tile: a block of the traversal (at most
+// kBlockSize square), or a small triangle's single job (at most JobWindow::max_columns wide,
+// any height). Wider rows are taken a vector at a time.
 struct BlockJob {
     // Edge function values at the block's first pixel (x0, y0), and their steps per pixel in
     // x and in y. Exact: the caller checks that every value inside the block fits in 32 bits.
     std::int32_t e[3];
     std::int32_t step_x[3];
     std::int32_t step_y[3];
-    bool full = false;               // all pixels covered: skip the edge tests
-    int x0 = 0, y0 = 0;              // tile-local position of the block's first pixel
-    int width = 0, height = 0;       // width <= 8
+    bool full = false;   // all pixels covered: skip the edge tests
+    int x0 = 0, y0 = 0;  // tile-local position of the block's first pixel
+    int width = 0, height = 0;
     int plane_dx = 0, plane_dy = 0;  // (x0, y0) relative to the triangle's plane origin
     JobPlanes planes;
     bool perspective = true;

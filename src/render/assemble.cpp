@@ -1,8 +1,8 @@
-// Primitive assembly and binning: triangles from indices, trivial accept/reject by outcodes,
-// homogeneous clipping of the rest, back-face culling and a pixel-coverage test on the snapped
-// vertices (most triangles of a dense mesh cover no pixel center and stop here), then binning
-// into screen tiles. Runs in parallel over chunks of triangles; each chunk keeps its own refs
-// and bins, and the tiles visit the chunks in order.
+// Primitive assembly: triangles from indices, trivial accept/reject by outcodes, homogeneous
+// clipping of the rest, back-face culling and a pixel-coverage test on the snapped vertices
+// (most triangles of a dense mesh cover no pixel center and stop here). Runs in parallel over
+// chunks of triangles (each keeps its own refs and counts them per tile as it makes them), then
+// bins them into screen tiles (binning.hpp).
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -13,7 +13,7 @@
 
 #include <zraster/error.hpp>
 
-#include "memory/huge_pages.hpp"
+#include "render/binning.hpp"
 #include "render/classify_kernel.hpp"
 #include "render/frame.hpp"
 #include "render/shade_fragment.hpp"
@@ -22,20 +22,6 @@
 
 namespace zraster::detail {
 namespace {
-
-constexpr std::size_t kTaggedRecord = sizeof(BinEntry) + sizeof(CornerAttributes);
-
-std::size_t whole_lines(std::size_t bytes) {
-    return (bytes + kCacheLine - 1) / kCacheLine * kCacheLine;
-}
-
-// Counts a new ref in the bins of the tiles it touches (binning's first pass, done as refs are
-// made: they are still in cache).
-void count_in_bins(const Frame& frame, const TriangleRef& r, Chunk& chunk) {
-    for (int ty = r.tile_y0; ty <= r.tile_y1; ++ty)
-        for (int tx = r.tile_x0; tx <= r.tile_x1; ++tx)
-            ++chunk.bin_counts[std::size_t(ty * frame.tiles_x + tx)];
-}
 
 // Tests a triangle of snapped vertices and, if it covers a pixel center, appends its ref.
 void emit(const Frame& frame, TriangleRef ref, const ScreenVertex& v0, const ScreenVertex& v1,
@@ -283,113 +269,6 @@ void process_chunk(const Frame& frame, Chunk& chunk, ClassifyOutput& out) {
     chunk.bin_bytes = bytes;
 }
 
-// Binning is a counting sort of all chunks' refs into tiles, in two passes around a prefix sum
-// over (tile, chunk): the front end counts a chunk's refs per tile as it makes them
-// (count_in_bins), write_bins writes its records at their final places (see
-// Frame::bin_run_offsets).
-void write_bins(Frame& frame, std::size_t chunk_index) {
-    const Chunk& chunk = frame.chunks[chunk_index];
-    const std::size_t tiles = std::size_t(frame.tiles_x) * std::size_t(frame.tiles_y);
-    const std::size_t chunks = frame.chunks.size();
-    const std::size_t record = frame.bin_record_bytes;
-    // The chunk's runs in a scratch buffer laid out like them (each on a cache line), kept
-    // from chunk to chunk so it stays in cache (the slot's: sized for the largest chunk).
-    SlotScratch& slot = frame.slot();
-    std::vector<std::size_t>& run_start = slot.run_start;
-    std::vector<std::size_t>& cursor = slot.cursor;
-    std::size_t bytes = 0;
-    for (std::size_t t = 0; t < tiles; ++t) {
-        run_start[t] = cursor[t] = bytes;
-        bytes += whole_lines(chunk.bin_counts[t] * record);
-    }
-    std::byte* scratch = align_to_cache_line(slot.bin_storage.data());
-    for (std::uint32_t i = 0; i < chunk.refs.size(); ++i) {
-        const TriangleRef& r = chunk.refs[i];
-        // The first bin's record is written in place, the others copy it (a struct built on
-        // the stack and copied out stalls on store forwarding).
-        const std::byte* first = nullptr;
-        for (int ty = r.tile_y0; ty <= r.tile_y1; ++ty)
-            for (int tx = r.tile_x0; tx <= r.tile_x1; ++tx) {
-                std::size_t& at = cursor[std::size_t(ty * frame.tiles_x + tx)];
-                std::byte* to = scratch + at;
-                at += record;
-                if (first != nullptr) {
-                    // (Sizes the compiler knows: a copy of a run-time size is a library call.)
-                    if (record == kTaggedRecord)
-                        std::memcpy(to, first, kTaggedRecord);
-                    else
-                        std::memcpy(to, first, sizeof(BinEntry));
-                    continue;
-                }
-                first = to;
-                BinEntry& entry = *reinterpret_cast<BinEntry*>(to);
-                for (std::size_t k = 0; k < 3; ++k)
-                    entry.vertices[k] = frame.screen_vertex(chunk, r, k);
-                entry.ref = i | (r.piece == TriangleRef::kNotClipped ? 0 : BinEntry::kClippedPiece);
-                if (frame.tagged_shading)
-                    corner_attributes(frame, r,
-                                      *reinterpret_cast<CornerAttributes*>(to + sizeof(BinEntry)));
-            }
-    }
-    std::byte* records = frame.bin_records();
-    for (std::size_t t = 0; t < tiles; ++t)
-        if (cursor[t] != run_start[t])
-            stream_lines(records + frame.bin_run_offsets[t * chunks + chunk_index],
-                         scratch + run_start[t],
-                         whole_lines(cursor[t] - run_start[t]) / kCacheLine);
-    stream_fence();
-}
-
-// The runs' places from the chunks' counts: tile-major, chunks in order inside a tile, each
-// run on a cache line.
-void bin_offsets(Frame& frame) {
-    const std::size_t tiles = std::size_t(frame.tiles_x) * std::size_t(frame.tiles_y);
-    const std::size_t chunks = frame.chunks.size();
-    const std::size_t record = frame.bin_record_bytes;
-    frame.bin_run_offsets.resize(tiles * chunks);
-    frame.bin_run_counts.resize(tiles * chunks);
-    frame.tile_bin_counts.resize(tiles);
-    // Each loop over tiles writes only its tile's slots: in parallel unless the table is small
-    // (then two parallel loops cost more than they save).
-    const auto over_tiles = [&](const auto& body) {
-        if (tiles * chunks < (std::size_t{1} << 15))
-            for (std::size_t t = 0; t < tiles; ++t) body(t);
-        else
-            tbb::parallel_for(std::size_t{0}, tiles, body);
-    };
-    // Per tile first (its runs' counts, in the tile-major table), then the tiles' bases, then
-    // the runs' places.
-    std::vector<std::size_t>& tile_bytes = frame.tile_bytes;
-    tile_bytes.resize(tiles);
-    over_tiles([&](std::size_t t) {
-        std::size_t bytes = 0, count = 0;
-        for (std::size_t c = 0; c < chunks; ++c) {
-            const std::uint32_t n = frame.chunks[c].bin_counts[t];
-            frame.bin_run_counts[t * chunks + c] = n;
-            bytes += whole_lines(n * record);
-            count += n;
-        }
-        tile_bytes[t] = bytes;
-        frame.tile_bin_counts[t] = count;
-    });
-    std::vector<std::size_t>& tile_base = frame.tile_base;
-    tile_base.assign(tiles + 1, 0);
-    for (std::size_t t = 0; t < tiles; ++t) tile_base[t + 1] = tile_base[t] + tile_bytes[t];
-    over_tiles([&](std::size_t t) {
-        std::size_t at = tile_base[t];
-        for (std::size_t c = 0; c < chunks; ++c) {
-            frame.bin_run_offsets[t * chunks + c] = at;
-            at += whole_lines(frame.bin_run_counts[t * chunks + c] * record);
-        }
-    });
-    // Grown empty (nothing of the old records is worth copying, and new storage is advised),
-    // never shrunk (a smaller frame then a larger one would zero the difference again).
-    frame.bin_bytes = tile_base[tiles];
-    const std::size_t bytes = tile_base[tiles] + kCacheLine;
-    if (bytes > frame.bin_storage.capacity()) frame.bin_storage = {};
-    if (bytes > frame.bin_storage.size()) memory::resize_on_huge_pages(frame.bin_storage, bytes);
-}
-
 }  // namespace
 
 void assemble_and_bin(Frame& frame, RenderStats& stats) {
@@ -399,12 +278,12 @@ void assemble_and_bin(Frame& frame, RenderStats& stats) {
         total += fi.mesh->triangle_count();
         frame.instance_first_triangle.push_back(total);
     }
-    // Chunks of at least 16k triangles and at most 4000 of them: the back end packs the chunk
-    // into 12 bits of a pixel's triangle reference and the ref index into 20 (a triangle yields
-    // at most kMaxClippedVertices - 2 pieces, so 2^20 refs hold 16k * 13 pieces and more).
-    if (total > std::size_t{4000} * 65536)
-        throw InputError("", "more than 262,144,000 triangles in one frame");
-    const std::size_t chunk_triangles = std::max<std::size_t>(4096, total / 4000 + 1);
+    // At most kMaxChunks chunks (the chunk is the top bits of a pixel's triangle reference,
+    // tile_layout.hpp), of at least kMinChunkTriangles triangles.
+    if (total > kMaxFrameTriangles)
+        throw InputError(
+            "", "more than " + std::to_string(kMaxFrameTriangles) + " triangles in one frame");
+    const std::size_t chunk_triangles = std::max(kMinChunkTriangles, total / kMaxChunks + 1);
     // Chunk objects are reused from frame to frame (their arrays keep their capacity).
     frame.chunks.resize((total + chunk_triangles - 1) / chunk_triangles);
     for (std::size_t c = 0; c < frame.chunks.size(); ++c) {
@@ -412,25 +291,13 @@ void assemble_and_bin(Frame& frame, RenderStats& stats) {
         frame.chunks[c].end_triangle = std::min(total, (c + 1) * chunk_triangles);
     }
     const auto start = std::chrono::steady_clock::now();
-    frame.bin_record_bytes = frame.tagged_shading ? kTaggedRecord : sizeof(BinEntry);
+    frame.bin_record_bytes = bin_record_bytes(frame.tagged_shading);
     tbb::parallel_for(std::size_t{0}, frame.chunks.size(), [&](std::size_t c) {
         process_chunk(frame, frame.chunks[c], frame.slot().classify);
     });
     const auto assembled = std::chrono::steady_clock::now();
     stats.assembly_ms = std::chrono::duration<double, std::milli>(assembled - start).count();
-    bin_offsets(frame);
-    // Every slot's scratch sized for the largest chunk before any takes one.
-    std::size_t largest_chunk = 0;
-    for (const Chunk& c : frame.chunks) largest_chunk = std::max(largest_chunk, c.bin_bytes);
-    const std::size_t tiles = std::size_t(frame.tiles_x) * std::size_t(frame.tiles_y);
-    for (SlotScratch& slot : frame.slots) {
-        slot.run_start.resize(tiles);
-        slot.cursor.resize(tiles);
-        if (slot.bin_storage.size() < largest_chunk + kCacheLine)
-            slot.bin_storage.resize(largest_chunk + kCacheLine);
-    }
-    tbb::parallel_for(std::size_t{0}, frame.chunks.size(),
-                      [&](std::size_t c) { write_bins(frame, c); });
+    bin_triangles(frame);
     stats.binning_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - assembled)
             .count();

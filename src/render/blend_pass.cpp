@@ -131,7 +131,7 @@ BlendCounts composite_blended(const BlendTile& tile, BlendScratch& scratch) {
         for_each_covered_pixel(
             blended.setup, tile.x0, tile.y0, tile.x1, tile.y1, [&](int px, int py) {
                 const std::size_t at =
-                    std::size_t(py - tile.y0) * TileBuffers::kStride + std::size_t(px - tile.x0);
+                    std::size_t(py - tile.y0) * kTileStride + std::size_t(px - tile.x0);
                 const float z = depth_at(blended.setup, px, py);
                 const float code = tile.codec.format() == DepthFormat::D32F
                                        ? z

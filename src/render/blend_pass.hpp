@@ -23,7 +23,7 @@ struct BlendCounts {
     std::uint64_t pixels = 0;     // with at least one
 };
 
-// The tile [x0, x1) x [y0, y1) whose depths are `depth` (tile rows of TileBuffers::kStride)
+// The tile [x0, x1) x [y0, y1) whose depths are `depth` (tile rows of kTileStride)
 // and whose color is already in `targets.color`.
 struct BlendTile {
     const Frame& frame;

@@ -12,6 +12,7 @@
 #include <zraster/precision.hpp>
 #include <zraster/render.hpp>
 
+#include "raster/tile_layout.hpp"
 #include "raster/visibility_kernel.hpp"
 #include "render/blend_scratch.hpp"
 #include "render/classify_kernel.hpp"
@@ -29,11 +30,6 @@
 #include <vector>
 
 namespace zraster::detail {
-
-// Tiles are kTileSize x kTileSize pixels; inside a tile, blocks of kBlockSize x kBlockSize are
-// accepted or rejected whole by their corners before any per-pixel work.
-inline constexpr int kTileSize = 64;
-inline constexpr int kBlockSize = 8;
 
 // One instance as the later stages see it.
 struct FrameInstance {
@@ -140,7 +136,6 @@ struct TriangleRef {
     bool front_facing = true;
     static constexpr std::uint32_t kNotClipped = 0xffffffffu;
 };
-static_assert(kMaxViewport / kTileSize <= 256, "tile coordinates fit TriangleRef's bytes");
 static_assert(sizeof(TriangleRef) == 32);
 
 // A clipped piece: the barycentric weights of its corners relative to its original triangle,
@@ -150,7 +145,6 @@ struct ClippedPiece {
     std::array<std::uint32_t, 3> screen;
 };
 
-// A run of consecutive triangles in draw order (instances one after another).
 // A triangle in a tile's bin: its snapped vertices travel with it, so the back end reads its
 // bins sequentially instead of chasing refs and vertices all over memory.
 struct BinEntry {
@@ -189,14 +183,15 @@ struct Chunk {
     std::vector<std::uint8_t> cluster_verdicts;
 };
 
-// Scratch of one slot of the frame's arena (tbb::this_task_arena::current_thread_index()):
-// sized before the parallel stage that uses it, so that no thread allocates within a frame
-// whichever chunks or tiles it happens to take.
 // A tile's counts of alpha-tested and blended fragments (rasterize_tiles).
 struct TileAlphaCounts {
     std::uint64_t discarded = 0;
     std::uint64_t blended_fragments = 0, blended_pixels = 0;
 };
+
+// Scratch of one slot of the frame's arena (tbb::this_task_arena::current_thread_index()):
+// sized before the parallel stage that uses it, so that no thread allocates within a frame
+// whichever chunks or tiles it happens to take.
 
 struct SlotScratch {
     ClassifyOutput classify;                     // assemble_and_bin's front end

@@ -12,7 +12,7 @@ namespace zraster::detail {
 
 // Shades the pixels [at, at + count) of a tile row whose shade_tag is set (constants[tag - 1])
 // from the interpolated normals and positions there, and writes them as RGBA8 (R in the low
-// byte) to rgba[0, count); other pixels of rgba are left alone (rgba holds TileBuffers::kStride
+// byte) to rgba[0, count); other pixels of rgba are left alone (rgba holds kTileStride
 // values: vectors may run past count). Returns the number of pixels shaded.
 int shade_tagged_row(const PhongConstants* constants, const TileBuffers& tile, std::size_t at,
                      int count, std::uint32_t* rgba);

@@ -157,7 +157,7 @@ void VisibilityBlockMatchesScalarOnRandomTriangles() {
     expect_same_tiles(*simd_tile, *scalar_tile);
     // The interpolating triangles kept pixels to the end (their tags are there).
     int tagged = 0;
-    for (int at = 0; at < TileBuffers::kStride * TileBuffers::kStride; ++at)
+    for (int at = 0; at < kTileStride * kTileStride; ++at)
         tagged += scalar_tile->shade_tag[at] != 0;
     EXPECT_GT(tagged, 100);
     ::testing::Test::RecordProperty("target", visibility_kernel_target());
@@ -243,17 +243,17 @@ void TaggedRowShadingMatchesScalar() {
             tile->shade_tag[i] = material | (i % 3 == 0 ? kShadeFlip : 0u);
         }
         const int row = round % 64, count = 1 + (round * 13) % 64;
-        const std::size_t at = std::size_t(row * TileBuffers::kStride);
-        std::uint32_t simd[TileBuffers::kStride], scalar[TileBuffers::kStride];
-        std::fill_n(simd, TileBuffers::kStride, 0x12345678u);
-        std::fill_n(scalar, TileBuffers::kStride, 0x12345678u);
+        const std::size_t at = std::size_t(row * kTileStride);
+        std::uint32_t simd[kTileStride], scalar[kTileStride];
+        std::fill_n(simd, kTileStride, 0x12345678u);
+        std::fill_n(scalar, kTileStride, 0x12345678u);
         const int a = shade_tagged_row(constants, *tile, at, count, simd);
         const int b = shade_tagged_row_scalar(constants, *tile, at, count, scalar);
         ASSERT_EQ(a, b) << "round " << round;
         shaded += a;
         for (int i = 0; i < count; ++i)
             ASSERT_EQ(simd[i], scalar[i]) << "round " << round << " " << i;
-        for (int i = count; i < TileBuffers::kStride; ++i)  // past the row: left alone
+        for (int i = count; i < kTileStride; ++i)  // past the row: left alone
             ASSERT_EQ(simd[i], 0x12345678u) << "round " << round << " " << i;
     }
     EXPECT_GT(shaded, 1500);
