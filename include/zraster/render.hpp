@@ -284,12 +284,22 @@ ZRASTER_API RenderResult render(const Scene& scene, const RenderOptions& options
 ZRASTER_API RenderStats render(const SceneView& scene, const RenderOptions& options,
                                const TargetViews& targets);
 
+// How a Renderer fits the machine it runs on. The defaults ask the operating system.
+struct RendererConfig {
+    // A frame whose bins, vertices and targets together exceed this many bytes will not find
+    // its targets in the cache at the next frame, so it writes them with non-temporal stores
+    // (past the cache). 0: the size of the last-level cache (Linux's sysfs; 32 MiB where it
+    // says nothing). The images never depend on it.
+    std::size_t streaming_threshold_bytes = 0;
+};
+
 // The same, keeping its working memory (vertex arrays, bins, image targets) and its thread arena
 // from frame to frame: what an application rendering many frames wants. Not thread-safe: one
 // frame at a time.
 class ZRASTER_API Renderer {
   public:
     Renderer();
+    explicit Renderer(const RendererConfig& config);
     ~Renderer();
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;

@@ -18,10 +18,6 @@ float unit_clamp(float v) {
     return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;  // (NaN: 0)
 }
 
-std::uint8_t to_unorm8(float v) {
-    return static_cast<std::uint8_t>(to_unorm8_int(v));
-}
-
 // v / 255 for each 8-bit value v (a division per channel per fragment, looked up).
 using UnormTable = std::array<float, 256>;
 const UnormTable& unorm_table() {

@@ -20,6 +20,7 @@
 #include "render/mesh_access.hpp"
 #include "render/shade_kernel.hpp"
 #include "render/stream_lines.hpp"
+#include "shade/surface_shading.hpp"
 
 #include <array>
 #include <cstddef>
@@ -59,17 +60,6 @@ struct FrameInstance {
     const std::uint8_t* culled_clusters = nullptr;
     bool cluster_indices_checked = false;
 };
-
-// A vertex's world position and unit world normal ((0, 1, 0) for a zero normal): the one
-// definition the vertex stage's SIMD and scalar paths share, operation for operation.
-inline void world_attributes(const glm::mat4& model, const glm::mat3& normal_matrix,
-                             const glm::vec3& position, const glm::vec3& object_normal,
-                             glm::vec3& world, glm::vec3& normal) {
-    world = glm::vec3(model * glm::vec4(position, 1.0f));
-    const glm::vec3 n = normal_matrix * object_normal;
-    const float len = glm::length(n);
-    normal = len > 0.0f ? n / len : glm::vec3(0, 1, 0);
-}
 
 // Row y of a target whose rows are `pitch` bytes apart.
 template <class T>
@@ -313,6 +303,10 @@ struct Frame {
     std::vector<std::uint8_t> tile_deferred;
     std::vector<LinePixel> line;             // draw_edges
     std::optional<DepthBuffer> depth_codec;  // rasterize_tiles: encodes and decodes the format
+    // The size above which a frame's data is taken not to stay in the last-level cache from one
+    // frame to the next: rasterize_tiles then writes the targets with non-temporal stores
+    // (RendererConfig::streaming_threshold_bytes, resolved).
+    std::size_t streaming_threshold = std::size_t{32} << 20;
 
     // The slot of the calling thread in the frame's arena.
     SlotScratch& slot();
@@ -331,10 +325,6 @@ void run_vertex_stage(Frame& frame, RenderStats& stats);
 void attach_clusters(Frame& frame);  // cluster_cache.cpp
 void assemble_and_bin(Frame& frame, RenderStats& stats);
 void drop_stale_clusters(Frame& frame);
-// The size above which a frame's data is taken not to stay in the last-level cache from one
-// frame to the next: rasterize_tiles then writes the targets with non-temporal stores.
-// Initially the L3's size (32 MiB if unknown); tests set it to force either way.
-std::size_t& streaming_threshold();
 
 // Sizes Frame::slots to the arena's concurrency (each with its TileBuffers).
 void prepare_slots(Frame& frame);

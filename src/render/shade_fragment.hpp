@@ -1,36 +1,33 @@
-// Fragment shading: interpolates the attributes a fragment needs and evaluates the instance's
-// shading mode (unlit, flat, Gouraud, Phong). Used by the deferred pass (once per visible pixel)
-// and by the forward path (once per fragment that passes the depth test).
+// Fragment shading in the renderer: a pixel's barycentrics mapped to its source triangle and
+// shaded by the shading core (shade/surface_shading.hpp). Used by the deferred pass (once per
+// visible pixel), the forward path (once per fragment that passes the depth test) and the blend
+// pass.
 #pragma once
 #include "render/frame.hpp"
+#include "shade/surface_shading.hpp"
 
 namespace zraster::detail {
 
-struct ShadedFragment {
-    glm::vec3 color{0.0f};
-    glm::vec3 normal{0.0f};  // world space, facing the viewer side when two-sided lighting is on
-};
+using ShadedFragment = SurfaceShade;
 
 // What the shader needs about one triangle, computed once and reused for its pixels.
 struct ShadingTriangle {
     const Chunk* chunk = nullptr;
     const TriangleRef* ref = nullptr;
-    TriangleSetup setup;  // valid when has_setup (textured instances need derivatives)
+    ShadingCorners corners;  // its vertices, facing and flat lighting
+    TriangleSetup setup;     // valid when has_setup (textured instances need derivatives)
     bool has_setup = false;
-    LightTerms flat;  // flat shading, lit once per triangle
 };
+
+// The frame's vertex attributes and lighting as the shading core takes them.
+VertexAttributes vertex_attributes(const Frame& frame);
+ShadingFrame shading_frame(const Frame& frame);
 
 // Barycentric weights of the ORIGINAL triangle's vertices from those of a (clipped) piece.
 inline glm::vec3 original_barycentrics(const ShadingTriangle& t, glm::vec3 b) {
     if (t.ref->piece == TriangleRef::kNotClipped) return b;
     const auto& w = t.chunk->pieces[t.ref->piece].weights;
     return b.x * w[0] + b.y * w[1] + b.z * w[2];
-}
-
-template <class T>
-T interpolate(const std::vector<T>& values, const std::array<std::uint32_t, 3>& v,
-              const glm::vec3& b) {
-    return values[v[0]] * b.x + values[v[1]] * b.y + values[v[2]] * b.z;
 }
 
 void prepare_shading_triangle(const Frame& frame, const Chunk& chunk, const TriangleRef& ref,

@@ -7,8 +7,9 @@
 
 namespace zraster::detail {
 
-// True when the frame's bins, vertices and targets (target_bytes) exceed streaming_threshold():
-// the targets will not be in the cache at the next frame, so writing them past it is cheaper.
+// True when the frame's bins, vertices and targets (target_bytes) exceed
+// Frame::streaming_threshold: the targets will not be in the cache at the next frame, so writing
+// them past it is cheaper.
 bool stream_targets(const Frame& frame, std::size_t target_bytes);
 
 }  // namespace zraster::detail

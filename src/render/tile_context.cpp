@@ -23,10 +23,9 @@ void write_shaded(const TilePlan& plan, const ShadedFragment& fragment, int px, 
     const TargetViews& t = plan.targets.views;
     if (t.color != nullptr) {
         std::uint8_t* rgba = target_row(t.color, t.color_pitch, py) + std::size_t(px) * 4;
-        // Rounded as the SIMD shader rounds (+ 0.5 and truncate).
-        rgba[0] = static_cast<std::uint8_t>(to_unorm8_int(fragment.color.x));
-        rgba[1] = static_cast<std::uint8_t>(to_unorm8_int(fragment.color.y));
-        rgba[2] = static_cast<std::uint8_t>(to_unorm8_int(fragment.color.z));
+        rgba[0] = to_unorm8(fragment.color.x);
+        rgba[1] = to_unorm8(fragment.color.y);
+        rgba[2] = to_unorm8(fragment.color.z);
         rgba[3] = 255;
     }
     if (t.normal != nullptr) target_row(t.normal, t.normal_pitch, py)[px] = fragment.normal;

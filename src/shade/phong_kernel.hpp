@@ -57,6 +57,9 @@ inline std::int32_t to_unorm8_int(float v) {
     v = v < 1.0f ? v : 1.0f;
     return static_cast<std::int32_t>(v * 255.0f + 0.5f);
 }
+inline std::uint8_t to_unorm8(float v) {
+    return static_cast<std::uint8_t>(to_unorm8_int(v));
+}
 
 // RGBA8 (R in the low byte, alpha 255) of pixel i of a shaded batch.
 inline std::uint32_t batch_rgba(const PhongBatch& batch, int i) {

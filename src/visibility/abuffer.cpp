@@ -340,7 +340,8 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
                     }
                     sum /= double(samples);
                     for (int c = 0; c < 3; ++c)
-                        t.color[p * 4 + std::size_t(c)] = visibility_detail::unorm8(float(sum[c]));
+                        t.color[p * 4 + std::size_t(c)] =
+                            visibility_detail::to_unorm8(float(sum[c]));
                 }
                 if (!list.empty()) {
                     Entry& nearest = list.front();

@@ -14,6 +14,8 @@
 #include <span>
 #include <vector>
 
+#include "shade/phong_kernel.hpp"
+
 namespace zraster::visibility_detail {
 
 // What render() derives from its options before the vertex stage, recomputed here from the same
@@ -33,12 +35,8 @@ struct FrameContext {
     bool keep_subpixel = false;
 };
 
-// The renderer's color quantization (src/render/shade_kernel.hpp, to_unorm8_int).
-inline std::uint8_t unorm8(float v) {
-    v = v > 0.0f ? v : 0.0f;
-    v = v < 1.0f ? v : 1.0f;
-    return static_cast<std::uint8_t>(v * 255.0f + 0.5f);
-}
+// The renderer's color quantization.
+using detail::to_unorm8;
 
 // Targets as options asks for them, cleared: color white (RGBA 255), depth to
 // depth_clear_value, normal zero, ids -1.

@@ -132,7 +132,8 @@ RenderResult render_multisampled(const Scene& scene, const RenderOptions& option
                 if (options.color_target) {
                     sum /= double(samples);
                     for (int c = 0; c < 3; ++c)
-                        t.color[p * 4 + std::size_t(c)] = visibility_detail::unorm8(float(sum[c]));
+                        t.color[p * 4 + std::size_t(c)] =
+                            visibility_detail::to_unorm8(float(sum[c]));
                 }
                 const std::uint32_t nearest = own[center_sample];
                 if (nearest != kNone) {

@@ -16,14 +16,6 @@
 
 namespace zraster {
 namespace visibility_detail {
-namespace {
-
-std::uint8_t to_unorm8(float v) {
-    return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
-}
-
-}  // namespace
-
 Canvas::Canvas(const RenderOptions& options, const Camera& camera) : options_(options) {
     setup_.viewport = {options.width, options.height};
     setup_.depth_range = camera.clip_depth_range();

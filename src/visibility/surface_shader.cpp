@@ -7,26 +7,18 @@
 namespace zraster::visibility_detail {
 namespace {
 
-glm::vec3 unit_or_up(glm::vec3 n) {
-    const float len = glm::length(n);
-    return len > 0.0f ? n / len : glm::vec3(0, 1, 0);
-}
-
-// The renderer's Phong normalization (src/render/shade_kernel.cpp, unit_normal).
-glm::vec3 unit_normal(const glm::vec3& n) {
-    const float len = std::sqrt((n.x * n.x + n.y * n.y) + n.z * n.z);
-    return len > 0.0f ? glm::vec3(n.x / len, n.y / len, n.z / len) : glm::vec3(0, 1, 0);
-}
-
-template <class T>
-T interpolate(const std::vector<T>& values, const std::array<std::uint32_t, 3>& v,
-              const glm::vec3& b) {
-    return values[v[0]] * b.x + values[v[1]] * b.y + values[v[2]] * b.z;
-}
+// The source triangle's weights one pixel over, computed with the point's own.
+struct KnownNeighbours {
+    detail::NeighbourWeights weights;
+    std::optional<detail::NeighbourWeights> operator()() const { return weights; }
+};
 
 }  // namespace
 
-SurfaceShader::SurfaceShader(const FrameContext& frame) : frame_(frame) {
+SurfaceShader::SurfaceShader(const FrameContext& frame)
+    : frame_(frame),
+      shading_{&frame.options->lighting, frame.eye, frame.view_axis, frame.options->texture_filter,
+               frame.options->two_sided_lighting} {
     const Scene& scene = *frame.scene;
     const RenderOptions& options = *frame.options;
     std::uint32_t total = 0;
@@ -53,11 +45,9 @@ SurfaceShader::SurfaceShader(const FrameContext& frame) : frame_(frame) {
         const glm::mat3 to_world_normal = normal_matrix(instance.transform);
         for (std::size_t k = 0; k < mesh.positions.size(); ++k) {
             const std::size_t out = info.first_vertex + k;
-            world_[out] = glm::vec3(instance.transform * glm::vec4(mesh.positions[k], 1.0f));
-            glm::vec3 n = k < mesh.normals.size() ? mesh.normals[k] : glm::vec3(0, 1, 0);
-            n = to_world_normal * n;
-            const float len = glm::length(n);
-            normal_[out] = len > 0.0f ? n / len : glm::vec3(0, 1, 0);
+            const glm::vec3 n = k < mesh.normals.size() ? mesh.normals[k] : glm::vec3(0, 1, 0);
+            detail::world_attributes(instance.transform, to_world_normal, mesh.positions[k], n,
+                                     world_[out], normal_[out]);
             uv_[out] = k < mesh.uvs.size() ? mesh.uvs[k] : glm::vec2(0.0f);
             if (info.shading == ShadingMode::Gouraud)
                 gouraud_[out] = evaluate_lighting(options.lighting, *info.material, world_[out],
@@ -72,12 +62,15 @@ void SurfaceShader::prepare(const ScreenPolygon& polygon, Prepared& out) const {
     out.instance = static_cast<std::uint32_t>(polygon.instance);
     const InstanceInfo& info = instances_[out.instance];
     const Mesh& mesh = scene.meshes[scene.instances[out.instance].mesh];
+    std::array<std::uint32_t, 3>& vertex = out.corners.vertex;
     for (std::size_t k = 0; k < 3; ++k)
-        out.vertex[k] =
+        vertex[k] =
             info.first_vertex + mesh.indices[3 * static_cast<std::size_t>(polygon.primitive) + k];
-    out.flat =
+    out.corners.front_facing = polygon.front_facing;
+    out.corners.flat =
         info.shading == ShadingMode::Flat
-            ? flat_shade(frame_, polygon.instance, polygon.primitive, polygon.front_facing).terms
+            ? detail::flat_terms(shading_, *info.material, world_[vertex[0]], world_[vertex[1]],
+                                 world_[vertex[2]], polygon.front_facing)
             : LightTerms{};
     const auto& v = polygon.vertices;
     out.screen.resize(v.size());
@@ -168,54 +161,11 @@ Shaded SurfaceShader::shade(const Prepared& p, int px, int py, bool center, doub
         b_dy = original_weights(p, fan, fan_barycentrics(p, fan, x, y + 1.0));
     }
 
-    const auto& idx = p.vertex;
-    glm::vec3 base = material.base_color;
-    if (info.textured) {
-        const glm::vec2 uv = interpolate(uv_, idx, b);
-        glm::vec2 duv_dx(0.0f), duv_dy(0.0f);
-        if (options.texture_filter == TextureFilter::Trilinear) {
-            duv_dx = interpolate(uv_, idx, b_dx) - uv;
-            duv_dy = interpolate(uv_, idx, b_dy) - uv;
-            if (!std::isfinite(duv_dx.x + duv_dx.y + duv_dy.x + duv_dy.y)) duv_dx = duv_dy = {};
-        }
-        const glm::vec4 texel =
-            material.base_color_texture->sample(uv, duv_dx, duv_dy, options.texture_filter);
-        base = material.base_color * glm::vec3(texel);
-    }
-    const bool flip = !p.polygon->front_facing && options.two_sided_lighting;
-    Shaded out;
-    switch (info.shading) {
-        case ShadingMode::Unlit:
-            out.color = base;
-            break;
-        case ShadingMode::Flat:
-            out.color = combine(p.flat, base);
-            break;
-        case ShadingMode::Gouraud: {
-            LightTerms terms;
-            terms.diffuse = gouraud_[idx[0]].diffuse * b.x + gouraud_[idx[1]].diffuse * b.y +
-                            gouraud_[idx[2]].diffuse * b.z;
-            terms.specular = gouraud_[idx[0]].specular * b.x + gouraud_[idx[1]].specular * b.y +
-                             gouraud_[idx[2]].specular * b.z;
-            out.color = combine(terms, base);
-            break;
-        }
-        case ShadingMode::Phong: {
-            glm::vec3 n = unit_normal(interpolate(normal_, idx, b));
-            if (flip) n = -n;
-            const glm::vec3 position = interpolate(world_, idx, b);
-            out.color = combine(evaluate_lighting(options.lighting, material, position, n,
-                                                  frame_.eye, frame_.view_axis),
-                                base);
-            out.normal = n;
-            return out;
-        }
-    }
-    if (want_normal) {
-        const glm::vec3 n = unit_or_up(interpolate(normal_, idx, b));
-        out.normal = flip ? -n : n;
-    }
-    return out;
+    const detail::SurfaceMaterial surface{&material, info.shading, info.textured};
+    const detail::VertexAttributes attributes{world_, normal_, uv_, gouraud_};
+    return detail::shade_surface(shading_, surface, attributes, p.corners, b,
+                                 KnownNeighbours{detail::NeighbourWeights{b_dx, b_dy}},
+                                 want_normal);
 }
 
 }  // namespace zraster::visibility_detail

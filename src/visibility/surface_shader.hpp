@@ -5,10 +5,10 @@
 //
 // At a pixel center covered by one of the polygon's fan triangles the result is render()'s for
 // that pixel bit for bit: the same fan (the renderer triangulates a clipped polygon from its first
-// vertex too), the same setup_triangle planes, the same barycentrics and the same operations in
-// the same order (src/render/shade_fragment.cpp, which this mirrors through the public API; keep
-// the two in step). Anywhere else (the centroid of a partial A-buffer fragment) the barycentrics
-// come from the fan's window positions in double.
+// vertex too), the same setup_triangle planes, the same barycentrics, the same per-vertex
+// attributes (detail::world_attributes) and the same shading core (shade/surface_shading.hpp).
+// Anywhere else (the centroid of a partial A-buffer fragment) the barycentrics come from the
+// fan's window positions in double.
 //
 // Cost: O(vertices) once per frame for the per-vertex attributes (world position, normal, uv,
 // Gouraud lighting), O(fan triangles) setups per polygon, one lighting evaluation per shade.
@@ -18,27 +18,25 @@
 #include <cstdint>
 #include <vector>
 
+#include "shade/surface_shading.hpp"
 #include "visibility/frame_context.hpp"
 
 namespace zraster::visibility_detail {
 
-struct Shaded {
-    glm::vec3 color{0.0f};
-    glm::vec3 normal{0.0f};  // world-space shading normal, as render()'s normal target
-};
+using Shaded = detail::SurfaceShade;
 
 class SurfaceShader {
   public:
     // What shading needs about one polygon, computed once.
     struct Prepared {
         const ScreenPolygon* polygon = nullptr;
-        std::vector<ScreenVertex> screen;       // the polygon's vertices through to_screen
-        std::vector<TriangleSetup> fans;        // setup_triangle of fan (0, k, k + 1), with planes
-        std::vector<std::uint32_t> fan_k;       // k of each entry of fans
-        std::vector<std::uint8_t> fan_valid;    // setup_triangle accepted it (else only `screen`)
-        std::array<std::uint32_t, 3> vertex{};  // the source triangle's vertices (frame arrays)
+        std::vector<ScreenVertex> screen;     // the polygon's vertices through to_screen
+        std::vector<TriangleSetup> fans;      // setup_triangle of fan (0, k, k + 1), with planes
+        std::vector<std::uint32_t> fan_k;     // k of each entry of fans
+        std::vector<std::uint8_t> fan_valid;  // setup_triangle accepted it (else only `screen`)
+        // The source triangle's vertices (the shader's arrays), facing and flat lighting.
+        detail::ShadingCorners corners;
         std::uint32_t instance = 0;
-        LightTerms flat;  // flat shading, lit once per polygon
     };
 
     // `frame` must outlive the shader. Computes the per-vertex attributes of every instance.
@@ -63,6 +61,7 @@ class SurfaceShader {
     glm::vec3 fan_barycentrics(const Prepared& p, std::size_t fan, double x, double y) const;
 
     const FrameContext& frame_;
+    detail::ShadingFrame shading_;
     std::vector<InstanceInfo> instances_;
     std::vector<glm::vec3> world_, normal_;
     std::vector<glm::vec2> uv_;

@@ -29,8 +29,9 @@ using Point = std::array<std::int64_t, 2>;  // snapped window position, 1/kSubpi
 constexpr std::size_t kMaxMergedVertices = 256;
 
 std::uint32_t rgb8(const glm::vec3& c) {
-    using visibility_detail::unorm8;
-    return std::uint32_t(unorm8(c.x)) << 16 | std::uint32_t(unorm8(c.y)) << 8 | unorm8(c.z);
+    using visibility_detail::to_unorm8;
+    return std::uint32_t(to_unorm8(c.x)) << 16 | std::uint32_t(to_unorm8(c.y)) << 8 |
+           to_unorm8(c.z);
 }
 
 struct Box {

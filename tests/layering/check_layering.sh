@@ -5,8 +5,10 @@
 # LAYERS_FILE has one line per module, "module dep dep ...", with the modules it builds on
 # directly. A file of src/M may include "X/..." only for X = M, a module M builds on (directly
 # or through others), or the header-only utilities simd/ and memory/. The engine (every module
-# but io) includes no file-format or command-line library, and bench/ includes nothing of
-# tools/. Prints each violation with its file and line.
+# but io) includes no file-format or command-line library; it knows no files or processes
+# (no file streams, /sys, /proc or environment variables) but in platform/, which asks the
+# operating system; and bench/ includes nothing of tools/. Prints each violation with its file
+# and line.
 set -euo pipefail
 source=$1 layers=$2
 declare -A direct
@@ -44,6 +46,12 @@ for module in "${!direct[@]}"; do
             violations=$((violations + 1))
         done < <(grep -rnE '^#include <(assimp|stb|stb_image|libdeflate|fmt|CLI|nlohmann)|^#include <zraster/(load|image_io)\.hpp>' \
             "$source/src/$module" || true)
+    fi
+    if [ "$module" != io ] && [ "$module" != platform ]; then
+        while IFS= read -r hit; do
+            echo "layering: ${hit#$source/}: the engine reads files or its process's environment (platform/ does)"
+            violations=$((violations + 1))
+        done < <(grep -rnE '^#include <(fstream|filesystem)>|"/(sys|proc)/|getenv\(' "$source/src/$module" || true)
     fi
 done
 while IFS= read -r hit; do

@@ -1,6 +1,7 @@
-// Large frames (see streaming_threshold) write the target rows with non-temporal stores: the
-// images are those of ordinary copies. Every target, rows of any alignment (a width that is not
-// a multiple of the tile), tiles drawn and tiles left clear, forward and deferred shading.
+// Large frames (RendererConfig::streaming_threshold_bytes) write the target rows with non-temporal
+// stores: the images are those of ordinary copies. Every target, rows of any alignment (a width
+// that is not a multiple of the tile), tiles drawn and tiles left clear, forward and deferred
+// shading.
 #include <gtest/gtest.h>
 #include <zraster/render.hpp>
 #include <zraster/scenes.hpp>
@@ -13,23 +14,16 @@
 namespace zraster {
 namespace {
 
-// Restores the threshold when a test ends, however it ends.
-struct ThresholdOverride {
-    std::size_t saved = detail::streaming_threshold();
-    explicit ThresholdOverride(std::size_t value) { detail::streaming_threshold() = value; }
-    ~ThresholdOverride() { detail::streaming_threshold() = saved; }
-};
-
 RenderResult render_with_threshold(const Scene& scene, const RenderOptions& o,
                                    std::size_t threshold) {
-    const ThresholdOverride override(threshold);
-    return render(scene, o);
+    Renderer renderer(RendererConfig{threshold});
+    return renderer.render(scene, o);
 }
 
 void expect_same_targets(const Scene& scene, const RenderOptions& o) {
     const RenderResult copied =
         render_with_threshold(scene, o, std::numeric_limits<std::size_t>::max());
-    const RenderResult streamed = render_with_threshold(scene, o, 0);
+    const RenderResult streamed = render_with_threshold(scene, o, 1);  // every frame streams
     ASSERT_EQ(copied.targets.depth.size(), streamed.targets.depth.size());
     EXPECT_EQ(std::memcmp(copied.targets.depth.data(), streamed.targets.depth.data(),
                           copied.targets.depth.size() * sizeof(float)),
