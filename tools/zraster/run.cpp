@@ -20,6 +20,7 @@
 #include "info_command.hpp"
 #include "render_command.hpp"
 #include "svg_command.hpp"
+#include "view_command.hpp"
 
 namespace zraster::cli {
 int run_zraster(std::vector<std::string> args) {
@@ -36,6 +37,8 @@ int run_zraster(std::vector<std::string> args) {
     add_svg_command(app, svg_args);
     BatchArguments batch_args;
     add_batch_command(app, batch_args);
+    ViewArguments view_args;
+    add_view_command(app, view_args);
     // Loading: Assimp (every format but the OBJ files zraster reads itself) runs in a worker
     // process, so that a crash in it is a refused file (RELIABILITY.md). Accepted after the
     // subcommand too.
@@ -118,6 +121,7 @@ int run_zraster(std::vector<std::string> args) {
         if (app.got_subcommand("bench")) return run_bench(bench_args);
         if (app.got_subcommand("svg")) return run_svg(svg_args);
         if (app.got_subcommand("batch")) return run_batch(batch_args);
+        if (app.got_subcommand("view")) return run_view(view_args);
         // No subcommand at all: render the built-in default scene to zraster.png.
         return run_render(render_args);
     } catch (const zraster::LimitExceeded& e) {
