@@ -107,7 +107,7 @@ struct PainterOptions {
     // Past this many comparisons the sort throws LimitExceeded ("max_painter_comparisons").
     // 0: painter_comparison_budget(RenderLimits{}, polygons).
     std::uint64_t max_comparisons = 0;
-    ProgressReporter* progress = nullptr;  // stage "painter's algorithm"; not owned
+    ProgressReporter* progress = nullptr;       // stage "painter's algorithm"; not owned
     const PainterObserver* observer = nullptr;  // not owned
 };
 
@@ -260,11 +260,11 @@ struct WarnockStats {
 
 // What Warnock's algorithm decided for a region, for pictures of it (zraster explain warnock).
 enum class WarnockRegionOutcome {
-    Empty,        // no polygon: background
-    Single,       // one polygon, drawn clipped to the region
-    Surrounded,   // a surrounding polygon in front of all others
-    Pixel,        // one pixel: the nearest polygon at its center
-    Subdivided,   // too complex: split into four
+    Empty,       // no polygon: background
+    Single,      // one polygon, drawn clipped to the region
+    Surrounded,  // a surrounding polygon in front of all others
+    Pixel,       // one pixel: the nearest polygon at its center
+    Subdivided,  // too complex: split into four
 };
 struct WarnockObserver {
     std::function<void(const PixelRegion& region, std::size_t level, WarnockRegionOutcome)> region;

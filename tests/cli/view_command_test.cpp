@@ -14,15 +14,16 @@ namespace {
 
 // The viewer run under Xvfb; skips the test when Xvfb is not installed.
 CommandResult run_viewer(const std::string& arguments, const std::filesystem::path& cwd) {
-    const std::string line = "cd '" + cwd.string() + "' && bash '" ZRASTER_SOURCE_DIR
+    const std::string line = "cd '" + cwd.string() +
+                             "' && bash '" ZRASTER_SOURCE_DIR
                              "/tests/cli/with_xvfb.sh' '" ZRASTER_CLI "' view " +
                              arguments + " 2>&1 </dev/null";
     return run_shell_line(line);
 }
 
-#define VIEWER_OR_SKIP(result)                                                  \
-    do {                                                                        \
-        if ((result).exit_code == 77) GTEST_SKIP() << (result).output;          \
+#define VIEWER_OR_SKIP(result)                                         \
+    do {                                                               \
+        if ((result).exit_code == 77) GTEST_SKIP() << (result).output; \
     } while (0)
 
 void write_view_script(const std::filesystem::path& path, const std::string& text) {
@@ -34,8 +35,8 @@ void write_view_script(const std::filesystem::path& path, const std::string& tex
                                       const std::filesystem::path& b) {
     const ImageRGBA8 x = read_image_rgba8(a), y = read_image_rgba8(b);
     if (x.width != y.width || x.height != y.height)
-        return ::testing::AssertionFailure() << x.width << "x" << x.height << " vs " << y.width
-                                             << "x" << y.height;
+        return ::testing::AssertionFailure()
+               << x.width << "x" << x.height << " vs " << y.width << "x" << y.height;
     std::size_t differing = 0;
     for (std::size_t i = 0; i < x.rgba.size(); ++i) differing += x.rgba[i] != y.rgba[i];
     if (differing == 0) return ::testing::AssertionSuccess();
@@ -45,8 +46,8 @@ void write_view_script(const std::filesystem::path& path, const std::string& tex
 TEST(ViewCommand, ScreenshotIsTheRenderCommandsImage) {
     const auto dir = temp_dir("view-screenshot");
     for (const std::string scene : {"sphere:200", "builtin:default"}) {
-        const CommandResult v = run_viewer(
-            scene + " --size 160x120 --no-hud --frames 2 --screenshot view.png", dir);
+        const CommandResult v =
+            run_viewer(scene + " --size 160x120 --no-hud --frames 2 --screenshot view.png", dir);
         VIEWER_OR_SKIP(v);
         ASSERT_EQ(v.exit_code, 0) << v.output;
         EXPECT_NE(v.output.find("view: 2 frames in "), std::string::npos) << v.output;
@@ -63,13 +64,15 @@ TEST(ViewCommand, HudDrawsOnlyItsBandAtTheTop) {
     VIEWER_OR_SKIP(v);
     ASSERT_EQ(v.exit_code, 0) << v.output;
     ASSERT_EQ(run_zraster("render sphere:200 --size 320x120 -o r.png", dir).exit_code, 0);
-    const ImageRGBA8 hud = read_image_rgba8(dir / "hud.png"), plain = read_image_rgba8(dir / "r.png");
+    const ImageRGBA8 hud = read_image_rgba8(dir / "hud.png"),
+                     plain = read_image_rgba8(dir / "r.png");
     ASSERT_EQ(hud.rgba.size(), plain.rgba.size());
     int differing_in_band = 0, differing_below = 0;
     for (int y = 0; y < hud.height; ++y)
         for (int x = 0; x < hud.width; ++x) {
             const std::size_t i = (std::size_t(y) * std::size_t(hud.width) + std::size_t(x)) * 4;
-            const bool differs = hud.rgba[i] != plain.rgba[i] || hud.rgba[i + 1] != plain.rgba[i + 1];
+            const bool differs =
+                hud.rgba[i] != plain.rgba[i] || hud.rgba[i + 1] != plain.rgba[i + 1];
             (y < 12 ? differing_in_band : differing_below) += differs;
         }
     EXPECT_GT(differing_in_band, 500);  // a dark band with white text
@@ -89,13 +92,13 @@ TEST(ViewCommand, ScriptedOrbitAndZoomAreTheOrbitFlag) {
     VIEWER_OR_SKIP(v);
     ASSERT_EQ(v.exit_code, 0) << v.output;
     EXPECT_NE(v.output.find("view: camera --orbit 40,22,2.625\n"), std::string::npos) << v.output;
-    ASSERT_EQ(run_zraster("render sphere:200 --orbit 40,22,2.625 --size 160x120 -o r.png", dir)
-                  .exit_code,
-              0);
+    ASSERT_EQ(
+        run_zraster("render sphere:200 --orbit 40,22,2.625 --size 160x120 -o r.png", dir).exit_code,
+        0);
     EXPECT_TRUE(same_image(dir / "view.png", dir / "r.png"));
-    ASSERT_EQ(run_zraster("render sphere:200 --orbit 30,20,3 --size 160x120 -o start.png", dir)
-                  .exit_code,
-              0);
+    ASSERT_EQ(
+        run_zraster("render sphere:200 --orbit 30,20,3 --size 160x120 -o start.png", dir).exit_code,
+        0);
     EXPECT_FALSE(same_image(dir / "view.png", dir / "start.png"));
 }
 
@@ -109,8 +112,7 @@ TEST(ViewCommand, PanGivesTheEyeAndTargetItPrints) {
     ASSERT_EQ(v.exit_code, 0) << v.output;
     const std::size_t at = v.output.find("view: camera --eye ");
     ASSERT_NE(at, std::string::npos) << v.output;
-    const std::string flags =
-        v.output.substr(at + 13, v.output.find('\n', at) - (at + 13));
+    const std::string flags = v.output.substr(at + 13, v.output.find('\n', at) - (at + 13));
     ASSERT_EQ(run_zraster("render builtin:cube --size 160x120 -o r.png " + flags, dir).exit_code,
               0);
     EXPECT_TRUE(same_image(dir / "view.png", dir / "r.png")) << flags;

@@ -6,8 +6,9 @@
 namespace zraster::cli {
 
 ViewSummary run_view_window(ViewSession&) {
-    throw InputError("view", "this zraster was built without SDL2 (install libsdl2-dev and "
-                             "configure again)");
+    throw InputError("view",
+                     "this zraster was built without SDL2 (install libsdl2-dev and "
+                     "configure again)");
 }
 
 }  // namespace zraster::cli

@@ -95,12 +95,12 @@ class FpsMeter {
   public:
     void shown(Clock::time_point t) {
         times_.push_back(t);
-        while (times_.size() > 1 && t - times_.front() > std::chrono::seconds(1)) times_.pop_front();
+        while (times_.size() > 1 && t - times_.front() > std::chrono::seconds(1))
+            times_.pop_front();
     }
     double fps() const {
         if (times_.size() < 2) return 0.0;
-        const double span =
-            std::chrono::duration<double>(times_.back() - times_.front()).count();
+        const double span = std::chrono::duration<double>(times_.back() - times_.front()).count();
         return span > 0.0 ? double(times_.size() - 1) / span : 0.0;
     }
 
@@ -162,8 +162,8 @@ void ViewerWindow::open_window() {
         throw InputError("view", std::string("cannot open a window (") + SDL_GetError() + ")");
     renderer_.reset(SDL_CreateRenderer(window_.get(), -1, SDL_RENDERER_SOFTWARE));
     if (!renderer_)
-        throw InputError("view", std::string("cannot draw into the window (") + SDL_GetError() +
-                                     ")");
+        throw InputError("view",
+                         std::string("cannot draw into the window (") + SDL_GetError() + ")");
 }
 
 void ViewerWindow::apply_due_script_events() {
@@ -233,11 +233,9 @@ void ViewerWindow::present(bool read_back) {
     if (help_shown_) draw_help(shown_);
     if (!texture_ || texture_width_ != shown_.width || texture_height_ != shown_.height) {
         texture_.reset(SDL_CreateTexture(renderer_.get(), SDL_PIXELFORMAT_RGBA32,
-                                         SDL_TEXTUREACCESS_STREAMING, shown_.width,
-                                         shown_.height));
+                                         SDL_TEXTUREACCESS_STREAMING, shown_.width, shown_.height));
         if (!texture_)
-            throw InputError("view", std::string("cannot make a texture (") + SDL_GetError() +
-                                         ")");
+            throw InputError("view", std::string("cannot make a texture (") + SDL_GetError() + ")");
         texture_width_ = shown_.width;
         texture_height_ = shown_.height;
     }

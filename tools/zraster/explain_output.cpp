@@ -39,7 +39,9 @@ ExplainOutput::ExplainOutput(std::filesystem::path folder, std::string title,
     if (std::filesystem::exists(folder_, error) && !std::filesystem::is_directory(folder_, error))
         throw InputError("-o", folder_.string() + " exists and is not a folder");
     std::filesystem::create_directories(folder_, error);
-    if (error) throw InputError("-o", "cannot make the folder " + folder_.string() + ": " + error.message());
+    if (error)
+        throw InputError("-o",
+                         "cannot make the folder " + folder_.string() + ": " + error.message());
 }
 
 void ExplainOutput::add(const std::string& file, std::vector<std::uint8_t> bytes) {

@@ -23,7 +23,8 @@ std::string svg_paint(const char* name, Rgba c) {
 
 std::string svg_points(const std::vector<glm::dvec2>& points) {
     std::string s;
-    for (const glm::dvec2& p : points) s += fmt::format("{}{:.6g},{:.6g}", s.empty() ? "" : " ", p.x, p.y);
+    for (const glm::dvec2& p : points)
+        s += fmt::format("{}{:.6g},{:.6g}", s.empty() ? "" : " ", p.x, p.y);
     return s;
 }
 
@@ -115,7 +116,8 @@ std::string Figure::svg() const {
                 double y = shape.points[0].y + 8.0 * shape.scale;
                 std::size_t start = 0;
                 while (start <= shape.text.size()) {
-                    const std::size_t end = std::min(shape.text.find('\n', start), shape.text.size());
+                    const std::size_t end =
+                        std::min(shape.text.find('\n', start), shape.text.size());
                     s += fmt::format(
                         "<text x=\"{:.6g}\" y=\"{:.6g}\" font-family=\"monospace\" "
                         "font-size=\"{}\"{}>{}</text>\n",
@@ -155,7 +157,8 @@ RgbaImage Figure::raster() const {
                 std::vector<glm::dvec2> ring;
                 for (int i = 0; i < 24; ++i) {
                     const double t = 2.0 * 3.141592653589793 * i / 24.0;
-                    ring.push_back(shape.points[0] + shape.radius * glm::dvec2(std::cos(t), std::sin(t)));
+                    ring.push_back(shape.points[0] +
+                                   shape.radius * glm::dvec2(std::cos(t), std::sin(t)));
                 }
                 fill_polygon(image, ring, st.fill);
                 break;

@@ -86,8 +86,7 @@ void fill_polygon(RgbaImage& image, std::span<const glm::dvec2> polygon, Rgba co
     }
 }
 
-void outline_polygon(RgbaImage& image, std::span<const glm::dvec2> polygon, Rgba color,
-                     int width) {
+void outline_polygon(RgbaImage& image, std::span<const glm::dvec2> polygon, Rgba color, int width) {
     for (std::size_t i = 0; i < polygon.size(); ++i)
         draw_line(image, polygon[i], polygon[(i + 1) % polygon.size()], color, width);
 }

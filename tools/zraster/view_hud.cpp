@@ -27,12 +27,12 @@ std::string hud_line(const ViewState& state, const FrameResult& frame, double fp
         counts = fmt::format("{} tris in, {} culled, {} rasterized", s.triangles_in,
                              s.triangles_trivially_rejected + s.triangles_backface_culled,
                              s.triangles_rasterized);
-    std::string line = fmt::format(
-        "{:.1f} ms {:.0f} fps | {} | {} | view {} | {} {}{}{}{}", frame.render_ms, fps, counts,
-        state.algorithm_name(), debug_view_name(state.debug_view()), a.shading,
-        a.reversed_z ? "reversed-Z" : a.depth_format, a.occlusion_cull ? " occl" : "",
-        a.no_cull || a.cull == "none" ? " nocull" : "",
-        a.wireframe ? " wire" : (a.hidden_line ? " hidden-line" : ""));
+    std::string line =
+        fmt::format("{:.1f} ms {:.0f} fps | {} | {} | view {} | {} {}{}{}{}", frame.render_ms, fps,
+                    counts, state.algorithm_name(), debug_view_name(state.debug_view()), a.shading,
+                    a.reversed_z ? "reversed-Z" : a.depth_format, a.occlusion_cull ? " occl" : "",
+                    a.no_cull || a.cull == "none" ? " nocull" : "",
+                    a.wireframe ? " wire" : (a.hidden_line ? " hidden-line" : ""));
     const std::string note = state.note();
     if (!note.empty()) line += " | " + note;
     if (!frame.error.empty()) line += " | " + frame.error;

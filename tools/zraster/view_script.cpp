@@ -28,8 +28,8 @@ T script_number(const std::string& token, const std::string& name, int line, con
     return value;
 }
 
-InputEvent parse_event(std::istringstream& words, const std::string& kind,
-                       const std::string& name, int line) {
+InputEvent parse_event(std::istringstream& words, const std::string& kind, const std::string& name,
+                       int line) {
     const auto fail = [&](const std::string& cause) {
         return InputError(name, "line " + std::to_string(line) + ": " + cause);
     };
@@ -99,8 +99,9 @@ std::vector<ScriptEvent> parse_view_script(const std::string& text, const std::s
                                        " is negative or before the previous event's");
         last_frame = event.frame;
         if (!(words >> kind))
-            throw InputError(name, "line " + std::to_string(line) + ": an event must follow the "
-                                                                    "frame");
+            throw InputError(name, "line " + std::to_string(line) +
+                                       ": an event must follow the "
+                                       "frame");
         event.event = parse_event(words, kind, name, line);
         events.push_back(event);
     }

@@ -84,18 +84,26 @@ void ViewState::apply(const InputEvent& event) {
 
 void ViewState::apply_key(char key) {
     switch (key) {
-        case '1': args_.shading = "flat"; break;
-        case '2': args_.shading = "gouraud"; break;
-        case '3': args_.shading = "phong"; break;
+        case '1':
+            args_.shading = "flat";
+            break;
+        case '2':
+            args_.shading = "gouraud";
+            break;
+        case '3':
+            args_.shading = "phong";
+            break;
         case 'v': {
-            const auto* current = std::find(kAlgorithms.begin(), kAlgorithms.end(),
-                                            args_.visibility);
+            const auto* current =
+                std::find(kAlgorithms.begin(), kAlgorithms.end(), args_.visibility);
             const std::size_t index =
                 current == kAlgorithms.end() ? 0 : std::size_t(current - kAlgorithms.begin());
             args_.visibility = kAlgorithms[(index + 1) % kAlgorithms.size()];
             break;
         }
-        case 'a': antialias_ = !antialias_; break;
+        case 'a':
+            antialias_ = !antialias_;
+            break;
         case 'w':
             // none -> wireframe -> hidden-line -> none
             if (args_.wireframe) {
@@ -114,7 +122,9 @@ void ViewState::apply_key(char key) {
             args_.cull = culling ? "none" : (initially_none ? "back" : initial_.cull);
             break;
         }
-        case 'o': args_.occlusion_cull = !args_.occlusion_cull; break;
+        case 'o':
+            args_.occlusion_cull = !args_.occlusion_cull;
+            break;
         case 'z':
             // d32f -> d24 -> d16 -> reversed-Z (d32f) -> d32f
             if (args_.reversed_z) {
@@ -132,7 +142,8 @@ void ViewState::apply_key(char key) {
         case 'd': {
             const std::span<const DebugView> views = debug_views();
             const auto* current = std::find(views.begin(), views.end(), view_);
-            const std::size_t index = current == views.end() ? 0 : std::size_t(current - views.begin());
+            const std::size_t index =
+                current == views.end() ? 0 : std::size_t(current - views.begin());
             view_ = views[(index + 1) % views.size()];
             break;
         }
@@ -145,11 +156,18 @@ void ViewState::apply_key(char key) {
             antialias_ = initial_.aa > 1;
             break;
         }
-        case 's': ++screenshots_; return;
-        case 'h': help_ = !help_; return;
+        case 's':
+            ++screenshots_;
+            return;
+        case 'h':
+            help_ = !help_;
+            return;
         case 'q':
-        case kEscapeKey: quit_ = true; return;
-        default: return;  // other keys do nothing
+        case kEscapeKey:
+            quit_ = true;
+            return;
+        default:
+            return;  // other keys do nothing
     }
     ++serial_;
 }

@@ -27,8 +27,8 @@ struct ViewSession {
 
 struct ViewSummary {
     long long frames_shown = 0;
-    double seconds = 0.0;            // from the first request to the exit
-    std::vector<double> render_ms;   // of every frame drawn
+    double seconds = 0.0;           // from the first request to the exit
+    std::vector<double> render_ms;  // of every frame drawn
 };
 
 // Opens the window and runs until the user quits (or the frames or the script end). Throws

@@ -44,8 +44,7 @@ FrameResult FrameDrawer::draw(const FrameRequest& request) {
     }
     if (!result.error.empty()) result.rgba.clear();
     result.render_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-            .count();
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return result;
 }
 

@@ -40,7 +40,8 @@ struct FrameResult {
 // pipeline's frames through a Renderer kept from frame to frame, which draws the same images).
 class FrameDrawer {
   public:
-    FrameDrawer(const Scene& scene, std::span<const glm::vec3> world) : scene_(scene), world_(world) {}
+    FrameDrawer(const Scene& scene, std::span<const glm::vec3> world)
+        : scene_(scene), world_(world) {}
     FrameResult draw(const FrameRequest& request);
 
   private:
