@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <deque>
 #include <filesystem>
 #include <memory>
@@ -28,6 +29,18 @@ class SdlVideo {
   public:
     SdlVideo() {
         SDL_SetHint(SDL_HINT_RENDER_DRIVER, "software");
+        // SDL would also try drivers that need no display (KMS/DRM, offscreen) and print
+        // libwayland's complaints: without SDL_VIDEODRIVER, only a display that is there.
+        if (std::getenv("SDL_VIDEODRIVER") == nullptr) {
+            const char* driver = std::getenv("DISPLAY") != nullptr           ? "x11"
+                                 : std::getenv("WAYLAND_DISPLAY") != nullptr ? "wayland"
+                                                                             : nullptr;
+            if (driver == nullptr)
+                throw InputError("view",
+                                 "cannot open a window (no display: DISPLAY and WAYLAND_DISPLAY "
+                                 "are not set): set DISPLAY, or run it under xvfb-run");
+            SDL_SetHint(SDL_HINT_VIDEODRIVER, driver);
+        }
         if (SDL_Init(SDL_INIT_VIDEO) != 0)
             throw InputError("view", std::string("cannot open a window (") + SDL_GetError() +
                                          "): set DISPLAY, or run it under xvfb-run");

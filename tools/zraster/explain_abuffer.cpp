@@ -32,7 +32,7 @@ Rgba to_rgba(const glm::vec3& c) {
     const auto b = [](float v) {
         return std::uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
     };
-    return {b(c.r), b(c.g), b(c.b), 255};
+    return {b(c.x), b(c.y), b(c.z), 255};
 }
 
 // Draws an n x n sample grid at (x, y), cells of `cell` pixels, the samples of `mask` filled.

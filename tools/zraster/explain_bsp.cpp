@@ -74,7 +74,7 @@ std::string tree_svg(const BspTree& tree, const TreeLayout& t) {
     const auto x = [&](std::size_t n) { return dx * double(t.rank[n] + 1); };
     const auto y = [&](std::size_t n) { return dy * double(t.depth[n] + 1); };
     for (std::size_t n = 0; n < nodes.size(); ++n)
-        for (const auto [child, color] :
+        for (const auto& [child, color] :
              {std::pair{nodes[n].front, "#2a9d3a"}, std::pair{nodes[n].back, "#d03030"}})
             if (child >= 0)
                 s += fmt::format(
@@ -94,7 +94,7 @@ RgbaImage paint(const BspTree& tree, const std::vector<std::uint32_t>& order, st
                 const Camera& camera, const RenderOptions& o, auto color_of) {
     const glm::vec3 bg = o.background * 255.0f;
     RgbaImage image(o.width, o.height,
-                    Rgba{std::uint8_t(bg.r), std::uint8_t(bg.g), std::uint8_t(bg.b), 255});
+                    Rgba{std::uint8_t(bg.x), std::uint8_t(bg.y), std::uint8_t(bg.z), 255});
     for (std::size_t i = 0; i < count; ++i) {
         const BspPolygon& p = tree.polygons()[order[i]];
         std::vector<glm::dvec2> points;

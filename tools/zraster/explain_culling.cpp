@@ -13,8 +13,8 @@
 namespace zraster::cli {
 namespace {
 
-const glm::vec3 kKept{0.25f, 0.75f, 0.3f}, kRemoved{0.85f, 0.2f, 0.15f},
-    kClippedColor{0.95f, 0.6f, 0.1f}, kOutside{0.55f, 0.55f, 0.55f};
+const glm::vec3 kKeptColor{0.25f, 0.75f, 0.3f}, kRemovedColor{0.85f, 0.2f, 0.15f},
+    kClippedColor{0.95f, 0.6f, 0.1f}, kOutsideColor{0.55f, 0.55f, 0.55f};
 
 // A camera up and to the side of `camera`, twice as far from its target: the view that shows
 // what the camera does not.
@@ -102,7 +102,7 @@ void explain_frustum_culling(const ExplainInput& in, ExplainOutput& out) {
     const glm::mat4 view_projection = camera.view_projection(aspect);
     std::size_t counts[3] = {};
     const Scene colored = recolored_scene(
-        in.scene, {kKept, kClippedColor, kRemoved}, [&](std::size_t i, std::size_t t) {
+        in.scene, {kKeptColor, kClippedColor, kRemovedColor}, [&](std::size_t i, std::size_t t) {
             const Instance& instance = in.scene.instances[i];
             const auto codes = triangle_outcodes(view_projection * instance.transform,
                                                  in.scene.meshes[instance.mesh], t);
@@ -127,8 +127,8 @@ void explain_backface_culling(const ExplainInput& in, ExplainOutput& out) {
     for (const ScreenPolygon& p : project_scene(in.scene, all))
         (p.front_facing ? front : back).insert({p.instance, p.primitive});
     std::size_t counts[3] = {};
-    const Scene colored =
-        recolored_scene(in.scene, {kKept, kRemoved, kOutside}, [&](std::size_t i, std::size_t t) {
+    const Scene colored = recolored_scene(
+        in.scene, {kKeptColor, kRemovedColor, kOutsideColor}, [&](std::size_t i, std::size_t t) {
             const std::pair key{std::int32_t(i), std::int32_t(t)};
             const int c = front.count(key) ? 0 : back.count(key) ? 1 : 2;
             ++counts[c];
@@ -167,7 +167,7 @@ void explain_occlusion_culling(const ExplainInput& in, ExplainOutput& out) {
         ++counts[class_of_instance[i]];
     }
     const Scene colored =
-        recolored_scene(in.scene, {kKept, kRemoved, kOutside},
+        recolored_scene(in.scene, {kKeptColor, kRemovedColor, kOutsideColor},
                         [&](std::size_t i, std::size_t) { return class_of_instance[i]; });
     two_views(out, "occlusion-culling", colored, in.options, camera, in.options.cull,
               fmt::format("instances: green visible ({}), red in view but hidden ({}), gray "

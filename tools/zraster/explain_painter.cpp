@@ -18,7 +18,7 @@ Rgba byte_color(const glm::vec3& c) {
     const auto b = [](float v) {
         return std::uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
     };
-    return {b(c.r), b(c.g), b(c.b), 255};
+    return {b(c.x), b(c.y), b(c.z), 255};
 }
 
 // Bars of how the comparisons were settled.
@@ -64,7 +64,7 @@ void explain_painter(const ExplainInput& in, ExplainOutput& out) {
     const PainterResult result =
         painter_sort(std::move(polygons), Viewport{in.options.width, in.options.height}, options);
     const glm::vec3 bg = in.options.background * 255.0f;
-    const Rgba background{std::uint8_t(bg.r), std::uint8_t(bg.g), std::uint8_t(bg.b), 255};
+    const Rgba background{std::uint8_t(bg.x), std::uint8_t(bg.y), std::uint8_t(bg.z), 255};
     std::vector<RgbaImage> frames;
     for (const std::size_t n : frame_counts(result.order.size(), in.step)) {
         RgbaImage image(in.options.width, in.options.height, background);

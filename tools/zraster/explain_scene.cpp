@@ -41,7 +41,39 @@ RgbaImage side_by_side(const RgbaImage& left, const RgbaImage& right) {
     return image;
 }
 
-RgbaImage captioned(const RgbaImage& image, const std::string& text) {
+namespace {
+
+// The text with lines broken between words to at most `columns` characters.
+std::string wrapped(const std::string& text, std::size_t columns) {
+    std::string out, line, word;
+    const auto end_word = [&] {
+        if (!line.empty() && line.size() + 1 + word.size() > columns) {
+            out += line + '\n';
+            line.clear();
+        }
+        line += (line.empty() ? "" : " ") + word;
+        word.clear();
+    };
+    for (const char c : text + '\n') {
+        if (c != ' ' && c != '\n') {
+            word += c;
+            continue;
+        }
+        end_word();
+        if (c == '\n') {
+            out += line + '\n';
+            line.clear();
+        }
+    }
+    out.pop_back();
+    return out;
+}
+
+}  // namespace
+
+RgbaImage captioned(const RgbaImage& image, const std::string& caption) {
+    // The bitmap font's characters are 6 pixels wide at scale 1.
+    const std::string text = wrapped(caption, std::size_t(std::max(8, (image.width - 8) / 6)));
     const int lines = int(std::count(text.begin(), text.end(), '\n')) + 1;
     RgbaImage out(image.width, image.height + lines * kTextLineHeight + 6,
                   Rgba{255, 255, 255, 255});

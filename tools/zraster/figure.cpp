@@ -54,15 +54,24 @@ void draw_dashed(RgbaImage& image, glm::dvec2 a, glm::dvec2 b, Rgba color, int w
 
 }  // namespace
 
+Figure::Shape Figure::make_shape(Shape::Kind kind, std::vector<glm::dvec2> points,
+                                 FigureStyle style) {
+    Shape s;
+    s.kind = kind;
+    s.points = std::move(points);
+    s.style = style;
+    return s;
+}
+
 Figure::Figure(int width, int height, Rgba background)
     : width_(width), height_(height), background_(background) {}
 
 void Figure::polygon(std::vector<glm::dvec2> points, FigureStyle style) {
-    shapes_.push_back({Shape::Kind::Polygon, std::move(points), style});
+    shapes_.push_back(make_shape(Shape::Kind::Polygon, std::move(points), style));
 }
 
 void Figure::polyline(std::vector<glm::dvec2> points, FigureStyle style) {
-    shapes_.push_back({Shape::Kind::Polyline, std::move(points), style});
+    shapes_.push_back(make_shape(Shape::Kind::Polyline, std::move(points), style));
 }
 
 void Figure::line(glm::dvec2 a, glm::dvec2 b, Rgba color, int width, bool dashed) {
@@ -74,13 +83,13 @@ void Figure::rect(double x0, double y0, double x1, double y1, FigureStyle style)
 }
 
 void Figure::circle(glm::dvec2 center, double radius, Rgba fill) {
-    Shape s{Shape::Kind::Circle, {center}, FigureStyle{fill}};
+    Shape s = make_shape(Shape::Kind::Circle, {center}, FigureStyle{fill});
     s.radius = radius;
     shapes_.push_back(std::move(s));
 }
 
 void Figure::text(glm::dvec2 p, const std::string& text, Rgba color, int scale) {
-    Shape s{Shape::Kind::Text, {p}, FigureStyle{color}};
+    Shape s = make_shape(Shape::Kind::Text, {p}, FigureStyle{color});
     s.text = text;
     s.scale = scale;
     shapes_.push_back(std::move(s));

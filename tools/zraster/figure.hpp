@@ -36,13 +36,14 @@ class Figure {
 
   private:
     struct Shape {
-        enum class Kind { Polygon, Polyline, Circle, Text } kind;
+        enum class Kind { Polygon, Polyline, Circle, Text } kind = Kind::Polygon;
         std::vector<glm::dvec2> points;
         FigureStyle style;
         double radius = 0.0;
         std::string text;
         int scale = 1;
     };
+    static Shape make_shape(Shape::Kind kind, std::vector<glm::dvec2> points, FigureStyle style);
     int width_, height_;
     Rgba background_;
     std::vector<Shape> shapes_;

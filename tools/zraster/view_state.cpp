@@ -141,7 +141,7 @@ void ViewState::apply_key(char key) {
             break;
         case 'd': {
             const std::span<const DebugView> views = debug_views();
-            const auto* current = std::find(views.begin(), views.end(), view_);
+            const auto current = std::find(views.begin(), views.end(), view_);
             const std::size_t index =
                 current == views.end() ? 0 : std::size_t(current - views.begin());
             view_ = views[(index + 1) % views.size()];
