@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "apng_encode.hpp"
 
 namespace zraster::cli {
@@ -72,7 +74,19 @@ void ExplainOutput::svg(const std::string& name, const std::string& text,
 
 void ExplainOutput::animation(const std::string& name, const std::vector<RgbaImage>& frames,
                               int delay_ms, const std::string& caption) {
-    add(name + ".png", encode_apng(frames, delay_ms));
+    // Captions may wrap to different heights: every frame on a canvas of the largest size.
+    int width = 0, height = 0;
+    for (const RgbaImage& f : frames) {
+        width = std::max(width, f.width);
+        height = std::max(height, f.height);
+    }
+    std::vector<RgbaImage> padded;
+    for (const RgbaImage& f : frames) {
+        RgbaImage canvas(width, height, Rgba{255, 255, 255, 255});
+        paste(canvas, f, 0, 0);
+        padded.push_back(std::move(canvas));
+    }
+    add(name + ".png", encode_apng(padded, delay_ms));
     entries_.push_back({name + ".png", caption + " (animated PNG)"});
 }
 
