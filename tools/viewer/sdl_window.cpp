@@ -224,8 +224,10 @@ bool ViewerWindow::take_finished_frame() {
     }
     ++summary_.frames_shown;
     fps_.shown(Clock::now());
-    present(false);
     apply_due_script_events();
+    // The next frame is drawn while this one goes to the window.
+    if (!finished()) request_frame_if_due();
+    present(false);
     return true;
 }
 
