@@ -57,15 +57,24 @@ void explain_abuffer(const ExplainInput& in, ExplainOutput& out) {
         for (const PixelCoverage& c : polygon_coverage(polygons[i], Viewport{w, h}, n))
             lists[std::size_t(c.y) * std::size_t(w) + std::size_t(c.x)].push_back(
                 {i, c.mask, depth_at(polygons[i], c.x + 0.5, c.y + 0.5)});
-    // The pixel with the longest list that has a partly covered fragment: an edge pixel.
+    // An edge pixel a slide can show: a partly covered fragment over a farther surface, and a
+    // short list (about three fragments; sphere poles gather dozens).
     const std::uint64_t full = n == 8 ? ~std::uint64_t{0} : (std::uint64_t{1} << (n * n)) - 1;
-    std::size_t best = 0, best_length = 0;
+    std::size_t best = 0, best_score = 0;
     for (std::size_t p = 0; p < lists.size(); ++p) {
-        const bool partial = std::any_of(lists[p].begin(), lists[p].end(),
-                                         [&](const PixelFragment& f) { return f.mask != full; });
-        if (partial && lists[p].size() > best_length) {
+        const std::vector<PixelFragment>& l = lists[p];
+        if (l.size() < 2) continue;
+        const bool partial =
+            std::any_of(l.begin(), l.end(), [&](const PixelFragment& f) { return f.mask != full; });
+        const auto [nearest, farthest] = std::minmax_element(
+            l.begin(), l.end(),
+            [](const PixelFragment& a, const PixelFragment& b) { return a.depth < b.depth; });
+        const bool layered = farthest->depth - nearest->depth > 1e-3;
+        const std::size_t score = (partial ? 100 : 0) + (layered ? 50 : 0) +
+                                  (l.size() <= 6 ? 10 + std::min<std::size_t>(l.size(), 4) : 0);
+        if (score > best_score) {
             best = p;
-            best_length = lists[p].size();
+            best_score = score;
         }
     }
     std::vector<PixelFragment> list = lists[best];
