@@ -77,7 +77,8 @@ std::optional<FrameResult> FrameWorker::take() {
 
 bool FrameWorker::busy() const {
     const std::lock_guard lock(mutex_);
-    return drawing_ || pending_.has_value();
+    // A finished frame not yet taken counts: a new request then would outrun it.
+    return drawing_ || pending_.has_value() || finished_.has_value();
 }
 
 void FrameWorker::run() {

@@ -60,7 +60,7 @@ class FrameWorker {
     void request(FrameRequest request);
     // The finished frame not yet taken, if any.
     std::optional<FrameResult> take();
-    // A request is pending or being drawn.
+    // A request is pending or being drawn, or its frame is not taken yet.
     bool busy() const;
 
   private:
