@@ -17,6 +17,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -87,6 +88,15 @@ ZRASTER_API RenderTargets paint_polygons(std::span<const ScreenPolygon> back_to_
 // ---------------------------------------------------------------------------------------------
 // Painter's algorithm (src/visibility/painter.cpp).
 
+// Told of the sort's decisions, for pictures of it (zraster explain painter). Every callback is
+// optional; with PainterOptions::observer null (the default) nothing is called.
+struct PainterObserver {
+    // The overlap tests failed and `moved` goes ahead of `of` (counted in PainterStats::swaps).
+    std::function<void(const ScreenPolygon& moved, const ScreenPolygon& of)> swapped;
+    // `polygon` is about to be split by `plane` (interpenetration, or to break a cycle).
+    std::function<void(const ScreenPolygon& polygon, const glm::dvec4& plane)> split;
+};
+
 struct PainterOptions {
     // Plane-side tests count a vertex as on the plane within this fraction of the polygons'
     // world-space extent (absorbs float rounding of the input; it is not a tuning knob).
@@ -97,7 +107,8 @@ struct PainterOptions {
     // Past this many comparisons the sort throws LimitExceeded ("max_painter_comparisons").
     // 0: painter_comparison_budget(RenderLimits{}, polygons).
     std::uint64_t max_comparisons = 0;
-    ProgressReporter* progress = nullptr;  // stage "painter's algorithm"; not owned
+    ProgressReporter* progress = nullptr;       // stage "painter's algorithm"; not owned
+    const PainterObserver* observer = nullptr;  // not owned
 };
 
 struct PainterStats {
@@ -247,6 +258,18 @@ struct WarnockStats {
     std::array<std::uint64_t, 4> classifications{};  // by RegionRelation
 };
 
+// What Warnock's algorithm decided for a region, for pictures of it (zraster explain warnock).
+enum class WarnockRegionOutcome {
+    Empty,       // no polygon: background
+    Single,      // one polygon, drawn clipped to the region
+    Surrounded,  // a surrounding polygon in front of all others
+    Pixel,       // one pixel: the nearest polygon at its center
+    Subdivided,  // too complex: split into four
+};
+struct WarnockObserver {
+    std::function<void(const PixelRegion& region, std::size_t level, WarnockRegionOutcome)> region;
+};
+
 struct WarnockResult {
     RenderTargets targets;
     WarnockStats stats;
@@ -257,8 +280,10 @@ struct WarnockResult {
 // z-buffer's LESS test keeps the first one drawn). More classifications than
 // warnock_classification_budget(options.limits, ...) throw LimitExceeded
 // ("max_warnock_classifications"); options.progress hears of the area done.
+// `observer` (optional, not owned) hears of every region's outcome.
 ZRASTER_API WarnockResult warnock_render(std::span<const ScreenPolygon> polygons,
-                                         const RenderOptions& options, const Camera& camera);
+                                         const RenderOptions& options, const Camera& camera,
+                                         const WarnockObserver* observer = nullptr);
 
 // ---------------------------------------------------------------------------------------------
 // Budgets (RenderLimits): the limit's value when set, else the automatic one for an input of

@@ -159,6 +159,7 @@ class Painter {
                                ? options.max_comparisons
                                : painter_comparison_budget(RenderLimits{}, polygons.size());
         progress_ = options.progress;
+        observer_ = options.observer;
         items_.reserve(polygons.size());
         for (ScreenPolygon& p : polygons) add(std::move(p));
     }
@@ -242,6 +243,8 @@ class Painter {
                     items_[q].marked = true;
                     stack_.push_back(q);
                     ++stats_.swaps;
+                    if (observer_ && observer_->swapped)
+                        observer_->swapped(items_[q].polygon, items_[p].polygon);
                     return false;
                 }
                 return !resolve_cycle(p, q);
@@ -280,6 +283,8 @@ class Painter {
             if (!split_polygon(items_[victim].polygon, items_[by].polygon.plane, eps_, viewport_,
                                front, back))
                 continue;
+            if (observer_ && observer_->split)
+                observer_->split(items_[victim].polygon, items_[by].polygon.plane);
             // Unmark and return every moved polygon to the depth-sorted list.
             for (const std::uint32_t s : stack_) {
                 items_[s].marked = false;
@@ -301,6 +306,7 @@ class Painter {
     bool split(std::uint32_t p, const glm::dvec4& plane) {
         ScreenPolygon front, back;
         if (!split_polygon(items_[p].polygon, plane, eps_, viewport_, front, back)) return false;
+        if (observer_ && observer_->split) observer_->split(items_[p].polygon, plane);
         remove(p);
         if (usable(front)) add(std::move(front));
         if (usable(back)) add(std::move(back));
@@ -337,6 +343,7 @@ class Painter {
     std::size_t input_polygons_ = 0;
     std::uint64_t max_comparisons_ = 0;
     ProgressReporter* progress_ = nullptr;
+    const PainterObserver* observer_ = nullptr;
     std::uint64_t next_report_ = 0;
     double reported_ = 0.0;
     std::vector<Item> items_;

@@ -108,7 +108,10 @@ RegionRelation classify_polygon(const ScreenPolygon& polygon, const PixelRegion&
 }
 
 WarnockResult warnock_render(std::span<const ScreenPolygon> polygons, const RenderOptions& options,
-                             const Camera& camera) {
+                             const Camera& camera, const WarnockObserver* observer) {
+    auto observe = [observer](const PixelRegion& r, std::size_t level, WarnockRegionOutcome o) {
+        if (observer != nullptr && observer->region) observer->region(r, level, o);
+    };
     visibility_detail::Canvas canvas(options, camera);
     const std::size_t n = polygons.size();
     std::vector<Edges> edges(n);
@@ -181,12 +184,14 @@ WarnockResult warnock_render(std::span<const ScreenPolygon> polygons, const Rend
         }
         if (kept.empty()) {
             ++stats.empty_leaves;
+            observe(r, task.level, WarnockRegionOutcome::Empty);
             area_done += region_area;
             continue;
         }
         if (kept.size() == 1) {
             draw(kept[0], r);
             ++stats.single_leaves;
+            observe(r, task.level, WarnockRegionOutcome::Single);
             area_done += region_area;
             continue;
         }
@@ -215,6 +220,7 @@ WarnockResult warnock_render(std::span<const ScreenPolygon> polygons, const Rend
             if (in_front) {
                 draw(s, r);
                 ++stats.surrounded_leaves;
+                observe(r, task.level, WarnockRegionOutcome::Surrounded);
                 area_done += region_area;
                 continue;
             }
@@ -229,11 +235,13 @@ WarnockResult warnock_render(std::span<const ScreenPolygon> polygons, const Rend
                     best = kept[k];
             if (best >= 0) draw(static_cast<std::uint32_t>(best), r);
             ++stats.pixel_leaves;
+            observe(r, task.level, WarnockRegionOutcome::Pixel);
             area_done += region_area;
             continue;
         }
 
         ++stats.subdivisions_per_level[task.level];
+        observe(r, task.level, WarnockRegionOutcome::Subdivided);
         const int xm = r.x0 + (r.x1 - r.x0) / 2, ym = r.y0 + (r.y1 - r.y0) / 2;
         const PixelRegion quadrants[4] = {
             {r.x0, r.y0, xm, ym}, {xm, r.y0, r.x1, ym}, {r.x0, ym, xm, r.y1}, {xm, ym, r.x1, r.y1}};

@@ -98,8 +98,8 @@ TEST(Cli, LoadingFlagsComeBeforeOrAfterTheSubcommand) {
     const CommandResult file_first = run("--load-in-process tri.obj -o c.png", dir);
     EXPECT_EQ(file_first.exit_code, 2);
     EXPECT_EQ(file_first.output,
-              "zraster: 'tri.obj' is not a subcommand (render, info, bench, svg, batch): to render "
-              "it, zraster --load-in-process render tri.obj -o c.png\n");
+              "zraster: 'tri.obj' is not a subcommand (render, info, bench, svg, batch, explain, "
+              "view): to render it, zraster --load-in-process render tri.obj -o c.png\n");
     EXPECT_FALSE(std::filesystem::exists(dir / "c.png"));
 }
 

@@ -17,9 +17,11 @@
 #include "batch_limits.hpp"
 #include "bench_command.hpp"
 #include "command_line.hpp"
+#include "explain_command.hpp"
 #include "info_command.hpp"
 #include "render_command.hpp"
 #include "svg_command.hpp"
+#include "view_command.hpp"
 
 namespace zraster::cli {
 int run_zraster(std::vector<std::string> args) {
@@ -36,6 +38,10 @@ int run_zraster(std::vector<std::string> args) {
     add_svg_command(app, svg_args);
     BatchArguments batch_args;
     add_batch_command(app, batch_args);
+    ExplainArguments explain_args;
+    add_explain_command(app, explain_args);
+    ViewArguments view_args;
+    add_view_command(app, view_args);
     // Loading: Assimp (every format but the OBJ files zraster reads itself) runs in a worker
     // process, so that a crash in it is a refused file (RELIABILITY.md). Accepted after the
     // subcommand too.
@@ -118,6 +124,8 @@ int run_zraster(std::vector<std::string> args) {
         if (app.got_subcommand("bench")) return run_bench(bench_args);
         if (app.got_subcommand("svg")) return run_svg(svg_args);
         if (app.got_subcommand("batch")) return run_batch(batch_args);
+        if (app.got_subcommand("view")) return run_view(view_args);
+        if (app.got_subcommand("explain")) return run_explain(explain_args);
         // No subcommand at all: render the built-in default scene to zraster.png.
         return run_render(render_args);
     } catch (const zraster::LimitExceeded& e) {

@@ -1,0 +1,197 @@
+// `zraster view` under a private Xvfb server (tests/cli/with_xvfb.sh): its frames are `zraster
+// render`'s bit for bit, scripted input moves the camera and the toggles as the flags would, and
+// bad input, a missing display and abrupt exits are refused or survived cleanly.
+#include <gtest/gtest.h>
+#include <zraster/image_io.hpp>
+
+#include <fstream>
+#include <string>
+
+#include "support/test_support.hpp"
+
+namespace zraster::test {
+namespace {
+
+// The viewer run under Xvfb; skips the test when Xvfb is not installed.
+CommandResult run_viewer(const std::string& arguments, const std::filesystem::path& cwd) {
+    const std::string line = "cd '" + cwd.string() +
+                             "' && bash '" ZRASTER_SOURCE_DIR
+                             "/tests/cli/with_xvfb.sh' '" ZRASTER_CLI "' view " +
+                             arguments + " 2>&1 </dev/null";
+    return run_shell_line(line);
+}
+
+#define VIEWER_OR_SKIP(result)                                         \
+    do {                                                               \
+        if ((result).exit_code == 77) GTEST_SKIP() << (result).output; \
+    } while (0)
+
+void write_view_script(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+// The same pixels (decoded), and the same size.
+::testing::AssertionResult same_image(const std::filesystem::path& a,
+                                      const std::filesystem::path& b) {
+    const ImageRGBA8 x = read_image_rgba8(a), y = read_image_rgba8(b);
+    if (x.width != y.width || x.height != y.height)
+        return ::testing::AssertionFailure()
+               << x.width << "x" << x.height << " vs " << y.width << "x" << y.height;
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < x.rgba.size(); ++i) differing += x.rgba[i] != y.rgba[i];
+    if (differing == 0) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << differing << " bytes differ";
+}
+
+TEST(ViewCommand, ScreenshotIsTheRenderCommandsImage) {
+    const auto dir = temp_dir("view-screenshot");
+    for (const std::string scene : {"sphere:200", "builtin:default"}) {
+        const CommandResult v =
+            run_viewer(scene + " --size 160x120 --no-hud --frames 2 --screenshot view.png", dir);
+        VIEWER_OR_SKIP(v);
+        ASSERT_EQ(v.exit_code, 0) << v.output;
+        EXPECT_NE(v.output.find("view: 2 frames in "), std::string::npos) << v.output;
+        const CommandResult r = run_zraster("render " + scene + " --size 160x120 -o r.png", dir);
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+        EXPECT_TRUE(same_image(dir / "view.png", dir / "r.png")) << scene;
+    }
+}
+
+TEST(ViewCommand, HudDrawsOnlyItsBandAtTheTop) {
+    const auto dir = temp_dir("view-hud");
+    const CommandResult v =
+        run_viewer("sphere:200 --size 320x120 --frames 1 --screenshot hud.png", dir);
+    VIEWER_OR_SKIP(v);
+    ASSERT_EQ(v.exit_code, 0) << v.output;
+    ASSERT_EQ(run_zraster("render sphere:200 --size 320x120 -o r.png", dir).exit_code, 0);
+    const ImageRGBA8 hud = read_image_rgba8(dir / "hud.png"),
+                     plain = read_image_rgba8(dir / "r.png");
+    ASSERT_EQ(hud.rgba.size(), plain.rgba.size());
+    int differing_in_band = 0, differing_below = 0;
+    for (int y = 0; y < hud.height; ++y)
+        for (int x = 0; x < hud.width; ++x) {
+            const std::size_t i = (std::size_t(y) * std::size_t(hud.width) + std::size_t(x)) * 4;
+            const bool differs =
+                hud.rgba[i] != plain.rgba[i] || hud.rgba[i + 1] != plain.rgba[i + 1];
+            (y < 12 ? differing_in_band : differing_below) += differs;
+        }
+    EXPECT_GT(differing_in_band, 500);  // a dark band with white text
+    EXPECT_EQ(differing_below, 0);
+}
+
+TEST(ViewCommand, ScriptedOrbitAndZoomAreTheOrbitFlag) {
+    const auto dir = temp_dir("view-orbit");
+    // Dragging 40 pixels left turns the eye 10 degrees towards +x; 8 pixels down raises it 2
+    // degrees; one wheel notch in brings it to 0.875 of its distance.
+    write_view_script(dir / "orbit.txt",
+                      "# orbit and zoom\n0 drag left -40 0\n1 drag left 0 8\n1 wheel 1\n");
+    const CommandResult v = run_viewer(
+        "sphere:200 --orbit 30,20,3 --size 160x120 --no-hud --frames 3 --script orbit.txt "
+        "--screenshot view.png",
+        dir);
+    VIEWER_OR_SKIP(v);
+    ASSERT_EQ(v.exit_code, 0) << v.output;
+    EXPECT_NE(v.output.find("view: camera --orbit 40,22,2.625\n"), std::string::npos) << v.output;
+    ASSERT_EQ(
+        run_zraster("render sphere:200 --orbit 40,22,2.625 --size 160x120 -o r.png", dir).exit_code,
+        0);
+    EXPECT_TRUE(same_image(dir / "view.png", dir / "r.png"));
+    ASSERT_EQ(
+        run_zraster("render sphere:200 --orbit 30,20,3 --size 160x120 -o start.png", dir).exit_code,
+        0);
+    EXPECT_FALSE(same_image(dir / "view.png", dir / "start.png"));
+}
+
+TEST(ViewCommand, PanGivesTheEyeAndTargetItPrints) {
+    const auto dir = temp_dir("view-pan");
+    write_view_script(dir / "pan.txt", "0 drag right 12 -5\n");
+    const CommandResult v = run_viewer(
+        "builtin:cube --size 160x120 --no-hud --frames 2 --script pan.txt --screenshot view.png",
+        dir);
+    VIEWER_OR_SKIP(v);
+    ASSERT_EQ(v.exit_code, 0) << v.output;
+    const std::size_t at = v.output.find("view: camera --eye ");
+    ASSERT_NE(at, std::string::npos) << v.output;
+    const std::string flags = v.output.substr(at + 13, v.output.find('\n', at) - (at + 13));
+    ASSERT_EQ(run_zraster("render builtin:cube --size 160x120 -o r.png " + flags, dir).exit_code,
+              0);
+    EXPECT_TRUE(same_image(dir / "view.png", dir / "r.png")) << flags;
+}
+
+TEST(ViewCommand, KeysSwitchAsTheRenderFlagsDo) {
+    const auto dir = temp_dir("view-keys");
+    // Flat shading, no culling, D24, then the visibility cycle to BSP (z-buffer -> painter ->
+    // bsp); the debug-view key is pressed round its whole cycle, back to none.
+    std::string script = "0 key 1\n0 key c\n1 key z\n1 key v\n2 key v\n2 key h\n2 key h\n";
+    for (int i = 0; i < 11; ++i) script += "2 key d\n";
+    write_view_script(dir / "keys.txt", script);
+    const CommandResult v = run_viewer(
+        "sphere:200 --size 160x120 --no-hud --frames 3 --script keys.txt --screenshot view.png",
+        dir);
+    VIEWER_OR_SKIP(v);
+    ASSERT_EQ(v.exit_code, 0) << v.output;
+    ASSERT_EQ(run_zraster("render sphere:200 --size 160x120 --shading flat --cull none "
+                          "--depth-format d24 --visibility bsp -o r.png",
+                          dir)
+                  .exit_code,
+              0);
+    EXPECT_TRUE(same_image(dir / "view.png", dir / "r.png"));
+}
+
+TEST(ViewCommand, ResizingToOnePixelAndQuittingMidFrameAreClean) {
+    const auto dir = temp_dir("view-resize");
+    // Every toggle once, sizes down to 1x1, a screenshot key, then quit while a frame is drawn.
+    write_view_script(dir / "resize.txt",
+                      "0 key a\n1 resize 1 1\n2 key w\n2 key o\n3 resize 97 41\n3 key s\n"
+                      "4 key v\n4 key v\n4 key v\n4 key v\n5 quit\n");
+    const CommandResult v = run_viewer(
+        "sphere:200 --size 160x120 --no-hud --script resize.txt --screenshot last.png", dir);
+    VIEWER_OR_SKIP(v);
+    ASSERT_EQ(v.exit_code, 0) << v.output;
+    EXPECT_NE(v.output.find("view: 5 frames in "), std::string::npos) << v.output;
+    const ImageRGBA8 last = read_image_rgba8(dir / "last.png");
+    EXPECT_EQ(last.width, 97);
+    EXPECT_EQ(last.height, 41);
+    EXPECT_GE(read_image_rgba8(dir / "zraster-view-1.png").width, 1);  // the s key's
+}
+
+TEST(ViewCommand, BadFilesAreExitTwoWithOneLine) {
+    const auto dir = temp_dir("view-bad");
+    const CommandResult missing = run_zraster("view /nonexistent/x.obj --frames 1", dir);
+    EXPECT_EQ(missing.exit_code, 2) << missing.output;
+    EXPECT_TRUE(single_line(missing.output)) << missing.output;
+    EXPECT_TRUE(missing.output.starts_with("zraster: /nonexistent/x.obj: ")) << missing.output;
+
+    write_view_script(dir / "bad.txt", "0 key v\n1 jump 3\n");
+    const CommandResult script = run_zraster("view sphere:20 --script bad.txt", dir);
+    EXPECT_EQ(script.exit_code, 2);
+    EXPECT_EQ(script.output,
+              "zraster: bad.txt: line 2: unknown event 'jump' (key, drag, wheel, resize, quit)\n");
+    write_view_script(dir / "late.txt", "3 key v\n1 key v\n");
+    const CommandResult order = run_zraster("view sphere:20 --script late.txt", dir);
+    EXPECT_EQ(order.exit_code, 2);
+    EXPECT_EQ(order.output,
+              "zraster: late.txt: line 2: frame 1 is negative or before the previous event's\n");
+    const CommandResult no_script = run_zraster("view sphere:20 --script none.txt", dir);
+    EXPECT_EQ(no_script.output, "zraster: none.txt: no such script file\n");
+    const CommandResult shot = run_zraster("view sphere:20 --screenshot x.jpg", dir);
+    EXPECT_EQ(shot.exit_code, 2);
+    EXPECT_EQ(shot.output, "zraster: --screenshot: x.jpg is not a .png file\n");
+    const CommandResult flags = run_zraster("view sphere:20 --visibility bsp --msaa --aa 4", dir);
+    EXPECT_EQ(flags.exit_code, 2);
+    EXPECT_TRUE(single_line(flags.output)) << flags.output;
+}
+
+TEST(ViewCommand, NoDisplayIsAClearErrorNotACrash) {
+    const auto dir = temp_dir("view-no-display");
+    const CommandResult r = run_shell_line(
+        "cd '" + dir.string() + "' && env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER '" +
+        ZRASTER_CLI + "' view sphere:20 --frames 1 2>&1 </dev/null");
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_TRUE(single_line(r.output)) << r.output;
+    EXPECT_TRUE(r.output.starts_with("zraster: view: cannot open a window (")) << r.output;
+    EXPECT_NE(r.output.find("xvfb-run"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace zraster::test

@@ -1,0 +1,46 @@
+// What `zraster explain` writes into its folder: pictures (PNG, SVG, animated PNG) and an
+// index.html naming what each shows. Everything is written together at the end, or nothing
+// (OutputFiles).
+#pragma once
+#include <zraster/output_files.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "figure.hpp"
+#include "rgba_image.hpp"
+
+namespace zraster::cli {
+
+class ExplainOutput {
+  public:
+    // Creates `folder` when missing; throws InputError("-o", ...) when it cannot be one.
+    ExplainOutput(std::filesystem::path folder, std::string title, std::string introduction);
+
+    void still(const std::string& name, const RgbaImage& image, const std::string& caption);
+    // name.svg, and name.png rasterized from the same figure.
+    void figure(const std::string& name, const Figure& figure, const std::string& caption);
+    // name.svg only (diagrams too large for the bitmap font).
+    void svg(const std::string& name, const std::string& text, const std::string& caption);
+    // name.png, an animated PNG of the frames (each shown delay_ms).
+    void animation(const std::string& name, const std::vector<RgbaImage>& frames, int delay_ms,
+                   const std::string& caption);
+    // Writes every file and index.html.
+    void commit();
+    // The files written (or to be written), index.html last.
+    std::vector<std::string> file_names() const;
+
+  private:
+    void add(const std::string& file, std::vector<std::uint8_t> bytes);
+    struct Entry {
+        std::string file, caption;
+    };
+    std::filesystem::path folder_;
+    std::string title_, introduction_;
+    std::vector<Entry> entries_;
+    std::vector<std::string> files_;
+    OutputFiles outputs_;
+};
+
+}  // namespace zraster::cli

@@ -1,0 +1,78 @@
+// `zraster view`: the command's flags, checks and summary around the window.
+#include "view_command.hpp"
+
+#include <zraster/error.hpp>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "command_line.hpp"
+#include "view_script.hpp"
+#include "view_state.hpp"
+#include "view_window.hpp"
+
+namespace zraster::cli {
+namespace {
+
+// The median of the frames' render times (0 when none).
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(values.size() / 2),
+                     values.end());
+    return values[values.size() / 2];
+}
+
+void check_screenshot_path(const std::string& path) {
+    if (path.empty()) return;
+    const std::filesystem::path p(path);
+    if (p.extension() != ".png") throw InputError("--screenshot", path + " is not a .png file");
+    const std::filesystem::path folder = p.parent_path();
+    if (!folder.empty() && !std::filesystem::is_directory(folder))
+        throw InputError("--screenshot", "no folder " + folder.string());
+}
+
+}  // namespace
+
+void add_view_command(CLI::App& app, ViewArguments& a) {
+    CLI::App* cmd = app.add_subcommand(
+        "view", "Show a scene in a window: orbit, zoom and switch algorithms (docs/viewer.md)");
+    a.render.size = "1280x720";
+    add_render_arguments(*cmd, a.render);
+    add_frame_arguments(*cmd, a.render);
+    cmd->add_option("--frames", a.frames, "Exit after this many frames have been shown (0: never)")
+        ->check(CLI::Range(0LL, 1'000'000'000LL))
+        ->capture_default_str();
+    cmd->add_option("--screenshot", a.screenshot, "At exit, write the last frame as shown (PNG)");
+    cmd->add_option("--script", a.script,
+                    "Replay input events from this file (format in docs/viewer.md)");
+    cmd->add_flag("--no-hud", a.no_hud, "Hide the line of timings and settings");
+}
+
+int run_view(const ViewArguments& a) {
+    check_frame_arguments(a.render);
+    check_screenshot_path(a.screenshot);
+    std::vector<ScriptEvent> script;
+    if (!a.script.empty()) script = read_view_script(a.script);
+    const Scene scene = load_scene_or_procedural(a.render.scene);
+    for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
+    const std::vector<glm::vec3> world = scene.world_positions();
+    std::optional<ViewState> state;
+    try {
+        state.emplace(a.render, world);
+    } catch (const InputError& e) {
+        if (!e.file().empty()) throw;
+        throw InputError(scene.source, e.cause());  // (the camera fit: about the scene)
+    }
+    ViewSession session{scene,    world,        *state,    std::move(script),
+                        a.frames, a.screenshot, !a.no_hud, "zraster view " + a.render.scene};
+    const ViewSummary summary = run_view_window(session);
+    const double fps = summary.seconds > 0.0 ? double(summary.frames_shown) / summary.seconds : 0.0;
+    fmt::print("view: {} frames in {:.2f} s ({:.1f} fps), render median {:.2f} ms\n",
+               summary.frames_shown, summary.seconds, fps, median(summary.render_ms));
+    fmt::print("view: camera {}\n", state->camera_flags());
+    return kExitOk;
+}
+
+}  // namespace zraster::cli
