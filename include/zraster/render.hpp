@@ -141,8 +141,8 @@ struct RenderOptions {
     bool cluster_culling = true;
     // A promise that no mesh changes between this Renderer's frames (as static vertex buffers
     // do not): a mesh seen again with the same array sizes is then taken as unchanged, and its
-    // positions and indices are not hashed to check it (all of them, every frame: 18 MB on
-    // sphere:1000000). A mesh changed anyway keeps the culling of its old shape: triangles may
+    // positions and indices are not hashed to check it (all of them, every frame: tens of MB for
+    // a million triangles). A mesh changed anyway keeps the culling of its old shape: triangles may
     // go missing and skipped vertices hold stale positions. Off: every change is noticed.
     bool static_meshes = false;
     InstanceOrder instance_order = InstanceOrder::Submission;
@@ -259,8 +259,8 @@ struct RenderStats {
     std::uint64_t fragments_passed = 0;  // passed the depth test
     std::uint64_t fragments_shaded = 0;
     std::uint64_t fragments_alpha_discarded = 0;  // Mask materials' fragments under the cutoff
-    std::uint64_t fragments_blended = 0;  // Blend materials' fragments composited
-    std::uint64_t pixels_blended = 0;     // pixels with at least one of them
+    std::uint64_t fragments_blended = 0;          // Blend materials' fragments composited
+    std::uint64_t pixels_blended = 0;             // pixels with at least one of them
     bool deferred = false;         // some pixels were shaded deferred (resolved first, then shaded)
     const char* simd_target = "";  // instruction set of the SIMD kernels
     Camera camera;                 // the camera actually used

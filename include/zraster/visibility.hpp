@@ -81,9 +81,14 @@ ZRASTER_API std::vector<ScreenPolygon> project_scene(const Scene& scene,
 // renderer's coverage rule: each polygon is fan-triangulated from its first vertex and every
 // triangle goes through setup_triangle (options.cull, options.front_face) and
 // for_each_covered_pixel. Produces the targets options asks for: color, depth (the drawn
-// polygon's depth), id targets, normal (the flat face normal). Coverage counts are not produced.
+// polygon's depth), id targets, normal. Coverage counts are not produced. Colors and normals:
+// with shade_from (the scene the polygons were projected from) each pixel is shaded as render()
+// shades it (options.shading, lighting, textures, interpolation; the same shading code), so an
+// unsplit polygon's pixels get render()'s colors bit for bit; without, each polygon's flat color
+// and face normal.
 ZRASTER_API RenderTargets paint_polygons(std::span<const ScreenPolygon> back_to_front,
-                                         const RenderOptions& options, const Camera& camera);
+                                         const RenderOptions& options, const Camera& camera,
+                                         const Scene* shade_from = nullptr);
 
 // ---------------------------------------------------------------------------------------------
 // Painter's algorithm (src/visibility/painter.cpp).
@@ -222,7 +227,7 @@ ZRASTER_API std::vector<BspPolygon> bsp_polygons_from_scene(const Scene& scene);
 ZRASTER_API glm::dvec4 bsp_eye(const Camera& camera);
 
 // Draws a frame of `scene` through a prebuilt tree (built from bsp_polygons_from_scene(scene)):
-// the walk's order through paint_polygons.
+// the walk's order through paint_polygons, shaded from the scene.
 ZRASTER_API RenderResult render_bsp(const BspTree& tree, const Scene& scene,
                                     const RenderOptions& options);
 
@@ -281,9 +286,11 @@ struct WarnockResult {
 // warnock_classification_budget(options.limits, ...) throw LimitExceeded
 // ("max_warnock_classifications"); options.progress hears of the area done.
 // `observer` (optional, not owned) hears of every region's outcome.
+// shade_from: as for paint_polygons.
 ZRASTER_API WarnockResult warnock_render(std::span<const ScreenPolygon> polygons,
                                          const RenderOptions& options, const Camera& camera,
-                                         const WarnockObserver* observer = nullptr);
+                                         const WarnockObserver* observer = nullptr,
+                                         const Scene* shade_from = nullptr);
 
 // ---------------------------------------------------------------------------------------------
 // Budgets (RenderLimits): the limit's value when set, else the automatic one for an input of
@@ -308,9 +315,11 @@ struct VisibilityStats {
     std::size_t polygons = 0;  // after projection (painter, Warnock) or in the tree (BSP)
 };
 
-// One frame with the chosen algorithm. ZBuffer is render() with flat shading and no textures, so
-// the colors of all four are directly comparable (instances overriding the shading mode keep it
-// in the ZBuffer image). The other three run on one thread, always keep the nearest surface
+// One frame with the chosen algorithm. ZBuffer is render(); the other three decide visibility
+// their own way and shade the visible pixels as render() does (the same options and shading
+// code), so the four images differ only where the visible surface does (ties at shared edges,
+// pixel centers within rounding of a split line). The other three run on one thread, always
+// keep the nearest surface
 // (options.depth_compare, depth_test and depth_write do not apply) and produce no coverage
 // counts; Bsp builds its tree for this frame (use render_bsp to reuse one). Stats: camera,
 // triangles_in and the total time are filled in.

@@ -1,17 +1,13 @@
 // PNG output: our own chunk writer (signature, IHDR, IDAT, IEND, each with its CRC-32) around
 // libdeflate's zlib compressor.
 //
-// Speed matters here: a 1080p colour image is written at the end of every `zraster render`, and
-// stb_image_write (per-row filter search, a simple zlib at level 8) took about 0.18 s for one,
-// as long as the rendering itself. Every row uses filter "Up" (the difference from the row
-// above): renders and depth maps are smooth vertically, so it compresses them well (the 1080p
-// bunny render: 0.29 MB, against 0.49 MB unfiltered and 0.30 MB with the usual per-row
-// minimum-sum heuristic, which costs five passes), and it is one subtraction per byte.
-// libdeflate runs at level 1: on a 1080p render of bunny-small.obj it executes 45% fewer
-// instructions than level 2 for a 2.6% larger file (207 KB against 201 KB), and on a 256x256
-// thumbnail it takes 0.8-1.0 ms against 1.0-1.5 ms (3% larger), which matters when `zraster batch`
-// writes hundreds of them per second. Level 6 is 9% smaller than level 1 and executes 2.3 times the
-// instructions, level 9 14% smaller for 6 times. The stream is compressed on one thread:
+// Speed matters here: an image is written at the end of every `zraster render`, and
+// `zraster batch` writes hundreds per second; a general-purpose PNG writer (per-row filter
+// search, zlib at level 8) takes as long as the rendering. Every row uses filter "Up" (the
+// difference from the row above): renders and depth maps are smooth vertically, so it compresses
+// them about as well as the usual per-row heuristic, which costs five passes, for one
+// subtraction per byte. libdeflate runs at level 1: files a few percent larger than level 2's
+// for about half the instructions (BENCHMARKS.md, batch). The stream is compressed on one thread:
 // deflate output that libdeflate produces for separate bands cannot be concatenated (each ends
 // with a final block at a bit position it does not report).
 #include <zraster/error.hpp>

@@ -1,8 +1,8 @@
 // Large buffers on transparent huge pages. A 1080p frame's color and depth targets are 4096
-// small pages; each first touch is a page fault, and in a virtual machine (this project's
-// benchmark machine) the faults of one `zraster render` of the bunny cost more than rendering
-// it: about 90 of its 230 ms. With THP in "madvise" mode (Debian's default) the kernel backs a
-// range with 2 MiB pages only when asked, before the range is first touched.
+// small pages; each first touch is a page fault, and in a virtual machine the faults of a
+// one-shot render of a small mesh cost more than rendering it. With THP in "madvise" mode
+// (Debian's default) the kernel backs a range with 2 MiB pages only when asked, before the
+// range is first touched.
 #pragma once
 #include <cstddef>
 #include <cstdint>

@@ -281,7 +281,7 @@ int VisibilityRowGroups(D16 d, const BlockJob& job, TileBuffers& tile) {
         const auto pass = hn::And(hn::RebindMask(d, covered), depth_passes(d, z, stored, compare));
         // Depth only, the rows go through without a branch: whether a group has pixels
         // covered or passing is data the branch predictor cannot guess, and a mispredicted
-        // branch costs more than the loads and stores it saves (city:20000 raster -25%). With
+        // branch costs more than the loads and stores it saves. With
         // attributes, the work a failing group skips is worth that branch, not the coverage one.
         if (attributes && hn::AllFalse(d, pass)) continue;
         passed += static_cast<int>(hn::CountTrue(d, pass));

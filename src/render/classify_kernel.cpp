@@ -46,12 +46,10 @@ void ClassifyTriangles(const ClassifyInput& in, std::size_t first, std::size_t c
     const auto total = hn::Set(du, in.vertex_total);
     const auto base = hn::Set(du, in.first_vertex);
     out.count = 0;
-    // The gathers wait on memory when the frame's screen vertices do not fit in the caches
-    // (3M vertices, 72 MB, on soup:1000000: 72% of the kernel's samples sat on the first
-    // gather): each vector of triangles prefetches the first vertex of each triangle
-    // kPrefetchAhead triangles further on (prefetching all three was slower on sphere:1000000,
-    // whose vertices are mostly cached, and no faster on the soup, whose triangles' vertices are
-    // consecutive).
+    // The gathers wait on memory when the frame's screen vertices do not fit in the caches (a
+    // soup of a million triangles): each vector of triangles prefetches the first vertex of each
+    // triangle kPrefetchAhead triangles further on. Only the first: a triangle's other vertices
+    // are either cached already (dense meshes) or next to it (soups).
     const std::size_t prefetch_end =
         in.triangle_total >= kPrefetchAhead ? in.triangle_total - kPrefetchAhead : 0;
     const std::uint32_t last_vertex = in.vertex_total == 0 ? 0 : in.vertex_total - 1;
@@ -141,7 +139,7 @@ void ClassifyTriangles(const ClassifyInput& in, std::size_t first, std::size_t c
         const std::size_t n = out.count;
         // Compressed in registers and stored whole (the arrays have room past the last entry):
         // Highway's CompressStore is AVX-512's compress-to-memory instruction, slower than a
-        // compress and a store on AMD processors (BM_ClassifyTriangles -6% here).
+        // compress and a store on AMD processors.
         const auto append = [&](auto v, auto* to) {
             hn::StoreU(CompressLanes(di, v, keep), di, to + n);
         };

@@ -188,9 +188,8 @@ void TransformVertices(const VertexJob& job) {
     std::size_t k = 0;
     // Where the double lanes hold half the vertices of 8 float lanes (AVX2: 4), 8 vertices a
     // step: the clip positions, outcodes and attributes in the float lanes, the snap in two
-    // halves. (AVX2, soup:1000000's vertex stage: 11.6 ms with 4 a step, 10.6 with the
-    // attributes 8 a step, 8.8 with this.) Elsewhere the attributes go with the step: between
-    // its operations, they overlap them (AVX-512, attributes in a loop of their own: +0.5 ms).
+    // halves, so the float lanes are never half empty. Elsewhere the attributes go with the
+    // step: between its operations, they overlap them (docs/architecture.md).
 #if HWY_TARGET == HWY_AVX2 || HWY_TARGET == HWY_SSE4 || HWY_TARGET == HWY_SSSE3
     {
         const hn::CappedTag<float, 8> da;

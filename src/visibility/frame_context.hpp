@@ -100,6 +100,24 @@ struct TriangleSource {
     std::array<glm::vec3, 3> weights{glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, 0, 1)};
 };
 
+// One instance's transforms, as the renderer's vertex stage computes with them, and the
+// sources of its triangles.
+struct InstanceProjection {
+    glm::mat4 mvp{1.0f}, model{1.0f};
+    glm::dmat4 model_d{1.0};
+    InstanceProjection() = default;
+    InstanceProjection(const FrameContext& frame, const Instance& instance);
+    // Triangle t (vertex indices `index`, valid) of `mesh`, instance number `instance`. Its plane
+    // is zero for a triangle of no area.
+    TriangleSource source(const Mesh& mesh, std::size_t instance, std::size_t t,
+                          const std::array<std::uint32_t, 3>& index) const;
+};
+
+// Scene triangle (instance, primitive) projected as project_scene projects it (false: nothing
+// of it is left, or its indices are bad).
+bool project_scene_triangle(const FrameContext& frame, std::int32_t instance,
+                            std::int32_t primitive, ScreenPolygon& out);
+
 // The three vertex indices of triangle t of `mesh`; false when one is past its positions.
 bool triangle_indices(const Mesh& mesh, std::size_t t, std::array<std::uint32_t, 3>& out);
 
@@ -190,28 +208,5 @@ DepthPlane depth_plane(const ScreenPolygon& polygon);
 // fn(piece) for each piece that is left, back to front.
 void for_each_bsp_piece(const BspTree& tree, const FrameContext& frame,
                         const std::function<void(const ScreenPolygon&)>& fn);
-
-// Render targets filled polygon by polygon without a depth test.
-class Canvas {
-  public:
-    Canvas(const RenderOptions& options, const Camera& camera);
-
-    // The fan triangles (from vertex 0) of a polygon that setup_triangle accepts.
-    void prepare(const ScreenPolygon& polygon, std::vector<TriangleSetup>& fans) const;
-    // Draws the prepared fans of `polygon` over the pixels of [x0, x1) x [y0, y1).
-    void draw(const ScreenPolygon& polygon, std::span<const TriangleSetup> fans, int x0, int y0,
-              int x1, int y1);
-    void draw(const ScreenPolygon& polygon);  // whole viewport
-
-    RenderTargets take();
-    std::uint64_t fragments() const { return fragments_; }
-
-  private:
-    const RenderOptions& options_;
-    SetupSettings setup_;
-    RenderTargets targets_;
-    std::vector<TriangleSetup> scratch_;
-    std::uint64_t fragments_ = 0;
-};
 
 }  // namespace zraster::visibility_detail

@@ -1,5 +1,4 @@
-// Filling polygons in a given order with no depth test: the output stage of the list-priority
-// algorithms (painter's, BSP) and of Warnock's leaves.
+// Filling polygons in a given order with no depth test (canvas.hpp), and paint_polygons.
 //
 // Coverage is the renderer's own: each convex polygon is fan-triangulated from its first vertex
 // (as the renderer triangulates a clipped polygon) and each triangle goes through setup_triangle
@@ -8,15 +7,32 @@
 // and no double coverage; only where a new vertex lies on the polygon's outline can its snapping
 // move the outline by up to half a subpixel.
 //
-// Cost: O(covered pixels) per polygon (overdraw included: every polygon is filled, hidden or not).
-#include <algorithm>
-#include <cmath>
+// Shading, given the scene, is the renderer's too (SurfaceShader: the shading core at the pixel
+// center, from the source triangle's attributes), so an unsplit polygon's pixels get render()'s
+// colors bit for bit whichever algorithm decided they are visible.
+//
+// Cost: O(covered pixels) per polygon (overdraw included: every polygon is filled, hidden or not),
+// and with shading one shading evaluation per filled pixel.
+#include "visibility/canvas.hpp"
 
-#include "visibility/frame_context.hpp"
+#include <algorithm>
 
 namespace zraster {
 namespace visibility_detail {
-Canvas::Canvas(const RenderOptions& options, const Camera& camera) : options_(options) {
+
+// The scene's shading for the canvas, and the polygons prepared for it.
+struct Canvas::Shading {
+    FrameContext frame;
+    SurfaceShader shader;
+    SurfaceShader::Prepared scratch;  // draw(polygon): prepared anew each time
+    std::unordered_map<const ScreenPolygon*, SurfaceShader::Prepared> kept;  // by address
+
+    Shading(const Scene& scene, const RenderOptions& options)
+        : frame(make_frame_context(scene, options)), shader(frame) {}
+};
+
+Canvas::Canvas(const RenderOptions& options, const Camera& camera, const Scene* shade_from)
+    : options_(options) {
     setup_.viewport = {options.width, options.height};
     setup_.depth_range = camera.clip_depth_range();
     setup_.cull = options.cull;
@@ -27,7 +43,11 @@ Canvas::Canvas(const RenderOptions& options, const Camera& camera) : options_(op
                                 to_unorm8(options.background.z), 255};
     for (std::size_t i = 0; i < targets_.color.size(); i += 4)
         std::copy(bg, bg + 4, &targets_.color[i]);
+    if (shade_from != nullptr && (options.color_target || options.normal_target))
+        shading_ = std::make_unique<Shading>(*shade_from, options);
 }
+
+Canvas::~Canvas() = default;
 
 void Canvas::prepare(const ScreenPolygon& polygon, std::vector<TriangleSetup>& fans) const {
     fans.clear();
@@ -40,8 +60,8 @@ void Canvas::prepare(const ScreenPolygon& polygon, std::vector<TriangleSetup>& f
     }
 }
 
-void Canvas::draw(const ScreenPolygon& polygon, std::span<const TriangleSetup> fans, int x0, int y0,
-                  int x1, int y1) {
+void Canvas::fill(const ScreenPolygon& polygon, std::span<const TriangleSetup> fans,
+                  const SurfaceShader::Prepared* shading, int x0, int y0, int x1, int y1) {
     const int width = options_.width;
     std::uint8_t rgba[4] = {0, 0, 0, 255};
     if (options_.color_target)
@@ -51,19 +71,42 @@ void Canvas::draw(const ScreenPolygon& polygon, std::span<const TriangleSetup> f
             const std::size_t p = std::size_t(py) * std::size_t(width) + std::size_t(px);
             ++fragments_;
             targets_.depth[p] = depth_at(t, px, py);
+            glm::vec3 normal = polygon.normal;
+            if (shading != nullptr) {
+                const Shaded shaded = shading_->shader.shade(*shading, px, py, true, 0.0, 0.0,
+                                                             options_.normal_target);
+                for (int c = 0; c < 3; ++c) rgba[c] = to_unorm8(shaded.color[c]);
+                normal = shaded.normal;
+            }
             if (options_.color_target) std::copy(rgba, rgba + 4, &targets_.color[p * 4]);
             if (options_.id_targets) {
                 targets_.instance_id[p] = polygon.instance;
                 targets_.primitive_id[p] = polygon.primitive;
             }
-            if (options_.normal_target) targets_.normal[p] = polygon.normal;
+            if (options_.normal_target) targets_.normal[p] = normal;
         });
     }
 }
 
+void Canvas::draw(const ScreenPolygon& polygon, std::span<const TriangleSetup> fans, int x0, int y0,
+                  int x1, int y1) {
+    const SurfaceShader::Prepared* prepared = nullptr;
+    if (shading_) {
+        auto [at, added] = shading_->kept.try_emplace(&polygon);
+        if (added) shading_->shader.prepare(polygon, at->second);
+        prepared = &at->second;
+    }
+    fill(polygon, fans, prepared, x0, y0, x1, y1);
+}
+
 void Canvas::draw(const ScreenPolygon& polygon) {
     prepare(polygon, scratch_);
-    draw(polygon, scratch_, 0, 0, options_.width, options_.height);
+    const SurfaceShader::Prepared* prepared = nullptr;
+    if (shading_) {
+        shading_->shader.prepare(polygon, shading_->scratch);
+        prepared = &shading_->scratch;
+    }
+    fill(polygon, scratch_, prepared, 0, 0, options_.width, options_.height);
 }
 
 RenderTargets Canvas::take() {
@@ -73,8 +116,9 @@ RenderTargets Canvas::take() {
 }  // namespace visibility_detail
 
 RenderTargets paint_polygons(std::span<const ScreenPolygon> back_to_front,
-                             const RenderOptions& options, const Camera& camera) {
-    visibility_detail::Canvas canvas(options, camera);
+                             const RenderOptions& options, const Camera& camera,
+                             const Scene* shade_from) {
+    visibility_detail::Canvas canvas(options, camera, shade_from);
     for (const ScreenPolygon& polygon : back_to_front) canvas.draw(polygon);
     return canvas.take();
 }

@@ -303,6 +303,40 @@ DepthPlane depth_plane(const ScreenPolygon& polygon) {
     return plane;
 }
 
+InstanceProjection::InstanceProjection(const FrameContext& frame, const Instance& instance)
+    : mvp(frame.view_projection * instance.transform),
+      model(instance.transform),
+      model_d(glm::dmat4(instance.transform)) {}
+
+TriangleSource InstanceProjection::source(const Mesh& mesh, std::size_t instance, std::size_t t,
+                                          const std::array<std::uint32_t, 3>& index) const {
+    // As the renderer's vertex stage computes them (float), plus double world positions.
+    TriangleSource source;
+    source.instance = static_cast<std::int32_t>(instance);
+    source.primitive = static_cast<std::int32_t>(t);
+    for (std::size_t k = 0; k < 3; ++k) {
+        const glm::vec4 p(mesh.positions[index[k]], 1.0f);
+        source.clip[k] = mvp * p;
+        source.world_f[k] = glm::vec3(model * p);
+        source.world[k] = glm::dvec3(model_d * glm::dvec4(p));
+    }
+    source.plane = plane_through(source.world[0], source.world[1], source.world[2]);
+    return source;
+}
+
+bool project_scene_triangle(const FrameContext& frame, std::int32_t instance,
+                            std::int32_t primitive, ScreenPolygon& out) {
+    const Scene& scene = *frame.scene;
+    const Instance& inst = scene.instances.at(static_cast<std::size_t>(instance));
+    const Mesh& mesh = scene.meshes.at(inst.mesh);
+    std::array<std::uint32_t, 3> index;
+    if (!triangle_indices(mesh, static_cast<std::size_t>(primitive), index)) return false;
+    const TriangleSource source = InstanceProjection(frame, inst)
+                                      .source(mesh, static_cast<std::size_t>(instance),
+                                              static_cast<std::size_t>(primitive), index);
+    return source.plane != glm::dvec4(0.0) && project_triangle(frame, source, out);
+}
+
 }  // namespace visibility_detail
 
 std::vector<ScreenPolygon> project_scene(const Scene& scene, const RenderOptions& options,
@@ -313,26 +347,14 @@ std::vector<ScreenPolygon> project_scene(const Scene& scene, const RenderOptions
     std::vector<ScreenPolygon> out;
     ScreenPolygon polygon;
     std::size_t current = scene.instances.size();
-    glm::mat4 mvp(1.0f);
-    glm::dmat4 model_d(1.0);
+    InstanceProjection projection;
     for_each_scene_triangle(scene, [&](std::size_t i, const Instance& instance, const Mesh& mesh,
                                        std::size_t t, const std::array<std::uint32_t, 3>& index) {
-        // As the renderer's vertex stage computes them (float), plus double world positions.
         if (i != current) {
             current = i;
-            mvp = frame.view_projection * instance.transform;
-            model_d = glm::dmat4(instance.transform);
+            projection = InstanceProjection(frame, instance);
         }
-        TriangleSource source;
-        source.instance = static_cast<std::int32_t>(i);
-        source.primitive = static_cast<std::int32_t>(t);
-        for (std::size_t k = 0; k < 3; ++k) {
-            const glm::vec4 p(mesh.positions[index[k]], 1.0f);
-            source.clip[k] = mvp * p;
-            source.world_f[k] = glm::vec3(instance.transform * p);
-            source.world[k] = glm::dvec3(model_d * glm::dvec4(p));
-        }
-        source.plane = plane_through(source.world[0], source.world[1], source.world[2]);
+        const TriangleSource source = projection.source(mesh, i, t, index);
         if (source.plane == glm::dvec4(0.0)) return;  // no area: nothing to see
         if (project_triangle(frame, source, polygon)) out.push_back(polygon);
     });

@@ -6,6 +6,7 @@
 // Cost: that of the chosen algorithm plus projection (O(triangles)) and filling (O(fragments)).
 #include <chrono>
 
+#include "visibility/canvas.hpp"
 #include "visibility/frame_context.hpp"
 
 namespace zraster {
@@ -51,7 +52,7 @@ RenderResult render_bsp(const BspTree& tree, const Scene& scene, const RenderOpt
     using namespace visibility_detail;
     const auto start = std::chrono::steady_clock::now();
     const FrameContext frame = make_frame_context(scene, options);
-    Canvas canvas(options, frame.camera);
+    Canvas canvas(options, frame.camera, &scene);
     for_each_bsp_piece(tree, frame, [&](const ScreenPolygon& piece) { canvas.draw(piece); });
     RenderResult result;
     result.targets = canvas.take();
@@ -70,12 +71,8 @@ RenderResult render_frame(const Scene& scene, const RenderOptions& options,
     out = VisibilityStats{};
     RenderResult result;
     switch (algorithm) {
-        case VisibilityAlgorithm::ZBuffer: {
-            RenderOptions flat = options;
-            flat.shading = ShadingMode::Flat;
-            flat.textures = false;
-            return render(scene, flat);
-        }
+        case VisibilityAlgorithm::ZBuffer:
+            return render(scene, options);
         case VisibilityAlgorithm::Painter: {
             const Camera camera = effective_camera(scene, options);
             std::vector<ScreenPolygon> polygons = project_scene(scene, options);
@@ -85,7 +82,7 @@ RenderResult render_frame(const Scene& scene, const RenderOptions& options,
             PainterResult sorted =
                 painter_sort(std::move(polygons), Viewport{options.width, options.height}, painter);
             out.painter = sorted.stats;
-            result.targets = paint_polygons(sorted.order, options, camera);
+            result.targets = paint_polygons(sorted.order, options, camera, &scene);
             result.stats.camera = camera;
             break;
         }
@@ -102,7 +99,7 @@ RenderResult render_frame(const Scene& scene, const RenderOptions& options,
             const Camera camera = effective_camera(scene, options);
             const std::vector<ScreenPolygon> polygons = project_scene(scene, options);
             out.polygons = polygons.size();
-            WarnockResult w = warnock_render(polygons, options, camera);
+            WarnockResult w = warnock_render(polygons, options, camera, nullptr, &scene);
             out.warnock = std::move(w.stats);
             result.targets = std::move(w.targets);
             result.stats.camera = camera;

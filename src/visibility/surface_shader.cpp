@@ -56,8 +56,29 @@ SurfaceShader::SurfaceShader(const FrameContext& frame)
     }
 }
 
-void SurfaceShader::prepare(const ScreenPolygon& polygon, Prepared& out) const {
+namespace {
+
+// Whether a polygon may be less than its whole scene triangle: a corner that is not one of the
+// triangle's (a split or a clip made it). Clipped by the frustum only, the source projected
+// again is the same polygon.
+bool is_piece(const ScreenPolygon& polygon) {
+    for (const PolygonVertex& v : polygon.vertices) {
+        const glm::vec3& w = v.weights;
+        const bool corner = (w.x == 1.0f && w.y == 0.0f && w.z == 0.0f) ||
+                            (w.x == 0.0f && w.y == 1.0f && w.z == 0.0f) ||
+                            (w.x == 0.0f && w.y == 0.0f && w.z == 1.0f);
+        if (!corner) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+void SurfaceShader::prepare(const ScreenPolygon& piece, Prepared& out) const {
     const Scene& scene = *frame_.scene;
+    const bool whole = !is_piece(piece) ||
+                       !project_scene_triangle(frame_, piece.instance, piece.primitive, out.source);
+    const ScreenPolygon& polygon = whole ? piece : out.source;
     out.polygon = &polygon;
     out.instance = static_cast<std::uint32_t>(polygon.instance);
     const InstanceInfo& info = instances_[out.instance];

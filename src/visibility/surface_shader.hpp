@@ -29,7 +29,11 @@ class SurfaceShader {
   public:
     // What shading needs about one polygon, computed once.
     struct Prepared {
+        // The polygon shaded from: the one given, or for a piece of a scene triangle (split by
+        // the painter's algorithm or the BSP tree) the whole triangle as project_scene projects
+        // it (`source`), so that its pixels get the barycentrics render() computes for them.
         const ScreenPolygon* polygon = nullptr;
+        ScreenPolygon source;
         std::vector<ScreenVertex> screen;     // the polygon's vertices through to_screen
         std::vector<TriangleSetup> fans;      // setup_triangle of fan (0, k, k + 1), with planes
         std::vector<std::uint32_t> fan_k;     // k of each entry of fans

@@ -30,6 +30,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "visibility/canvas.hpp"
 #include "visibility/frame_context.hpp"
 
 namespace zraster {
@@ -108,11 +109,12 @@ RegionRelation classify_polygon(const ScreenPolygon& polygon, const PixelRegion&
 }
 
 WarnockResult warnock_render(std::span<const ScreenPolygon> polygons, const RenderOptions& options,
-                             const Camera& camera, const WarnockObserver* observer) {
+                             const Camera& camera, const WarnockObserver* observer,
+                             const Scene* shade_from) {
     auto observe = [observer](const PixelRegion& r, std::size_t level, WarnockRegionOutcome o) {
         if (observer != nullptr && observer->region) observer->region(r, level, o);
     };
-    visibility_detail::Canvas canvas(options, camera);
+    visibility_detail::Canvas canvas(options, camera, shade_from);
     const std::size_t n = polygons.size();
     std::vector<Edges> edges(n);
     std::vector<DepthPlane> planes(n);

@@ -27,8 +27,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "support/test_support.hpp"
@@ -80,15 +82,25 @@ void expect_agreement(const Scene& scene, const RenderOptions& options, double m
         EXPECT_LE(agreement.fraction(), max_fraction) << label << " " << name_of(a);
         EXPECT_EQ(agreement.interior_blocks, 0u) << label << " " << name_of(a);
 
-        // Same surface, same color: the flat shading is the z-buffer's, operation for operation.
+        // Same surface, same color: the shading is the z-buffer's, operation for operation. A
+        // split piece's barycentrics come from its own fan (the split vertices' weights, rounded),
+        // which may move a channel by one step; unsplit surfaces match bit for bit.
+        const bool split = stats.painter.splits > 0 || stats.bsp.splits > 0;
         std::size_t color_mismatches = 0;
+        int largest_step = 0;
         for (std::size_t p = 0; p < r.targets.primitive_id.size(); ++p)
             if (r.targets.primitive_id[p] == reference.targets.primitive_id[p] &&
                 r.targets.instance_id[p] == reference.targets.instance_id[p])
-                for (std::size_t c = 0; c < 4; ++c)
-                    color_mismatches +=
-                        r.targets.color[4 * p + c] != reference.targets.color[4 * p + c];
-        EXPECT_EQ(color_mismatches, 0u) << label << " " << name_of(a);
+                for (std::size_t c = 0; c < 4; ++c) {
+                    const int step = std::abs(int(r.targets.color[4 * p + c]) -
+                                              int(reference.targets.color[4 * p + c]));
+                    color_mismatches += step != 0;
+                    largest_step = std::max(largest_step, step);
+                }
+        if (!split) {
+            EXPECT_EQ(color_mismatches, 0u) << label << " " << name_of(a);
+        }
+        EXPECT_LE(largest_step, 1) << label << " " << name_of(a);
     }
 }
 

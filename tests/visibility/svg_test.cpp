@@ -227,7 +227,7 @@ TEST(Svg, PolygonsPaintTheVisibilityFrames) {
               std::pair{SvgOptions::Order::Painter, VisibilityAlgorithm::Painter}}) {
             const std::vector<ScreenPolygon> polygons = svg_polygons(*scene, options, order);
             EXPECT_GT(polygons.size(), 200u);
-            const RenderTargets painted = paint_polygons(polygons, options, camera);
+            const RenderTargets painted = paint_polygons(polygons, options, camera, scene);
             const RenderResult frame = render_with_visibility(*scene, options, algorithm);
             EXPECT_EQ(painted.color, frame.targets.color) << int(order);
             SvgOptions svg_options;

@@ -60,8 +60,8 @@ void explain_warnock(const ExplainInput& in, ExplainOutput& out) {
     observer.region = [&](const PixelRegion& r, std::size_t level, WarnockRegionOutcome o) {
         records.push_back({r, level, o});
     };
-    const WarnockResult result =
-        warnock_render(polygons, in.options, effective_camera(in.scene, in.options), &observer);
+    const WarnockResult result = warnock_render(
+        polygons, in.options, effective_camera(in.scene, in.options), &observer, &in.scene);
     const RgbaImage base = color_image(result.targets);
     const std::size_t levels = result.stats.regions_per_level.size();
     std::vector<RgbaImage> frames;

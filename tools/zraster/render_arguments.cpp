@@ -45,9 +45,9 @@ glm::dvec3 parse_position(const std::string& option, const std::string& text) {
 void add_frame_arguments(CLI::App& cmd, RenderArguments& a) {
     cmd.add_option("--visibility", a.visibility,
                    "Visible-surface algorithm: zbuffer (the pipeline), painter (Newell's "
-                   "painter's algorithm), bsp (BSP tree), warnock (area subdivision): these four "
-                   "draw every surface opaque (material opacity is ignored) and painter, bsp, "
-                   "warnock flat-shade; abuffer (Carpenter's A-buffer): shaded as zbuffer, "
+                   "painter's algorithm), bsp (BSP tree), warnock (area subdivision), all shaded "
+                   "as zbuffer (--shading, lights, textures) and painter, bsp, warnock drawing "
+                   "every surface opaque; abuffer (Carpenter's A-buffer): shaded as zbuffer, "
                    "antialiased, transparent materials blended in any submission order")
         ->check(CLI::IsMember({"zbuffer", "painter", "bsp", "warnock", "abuffer"}))
         ->capture_default_str();
