@@ -18,6 +18,7 @@
 #include "bench_command.hpp"
 #include "command_line.hpp"
 #include "info_command.hpp"
+#include "pvs_command.hpp"
 #include "render_command.hpp"
 #include "svg_command.hpp"
 
@@ -36,6 +37,8 @@ int run_zraster(std::vector<std::string> args) {
     add_svg_command(app, svg_args);
     BatchArguments batch_args;
     add_batch_command(app, batch_args);
+    PvsArguments pvs_args;
+    add_pvs_command(app, pvs_args);
     // Loading: Assimp (every format but the OBJ files zraster reads itself) runs in a worker
     // process, so that a crash in it is a refused file (RELIABILITY.md). Accepted after the
     // subcommand too.
@@ -118,6 +121,7 @@ int run_zraster(std::vector<std::string> args) {
         if (app.got_subcommand("bench")) return run_bench(bench_args);
         if (app.got_subcommand("svg")) return run_svg(svg_args);
         if (app.got_subcommand("batch")) return run_batch(batch_args);
+        if (app.got_subcommand("pvs")) return run_pvs(pvs_args);
         // No subcommand at all: render the built-in default scene to zraster.png.
         return run_render(render_args);
     } catch (const zraster::LimitExceeded& e) {
