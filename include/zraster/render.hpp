@@ -83,6 +83,9 @@ enum class PortalOutcome {
     CameraOutside,  // the eye is in no cell: nothing culled
     OverBound,      // the walk passed CellGraphLimits::max_walk_visits or max_walk_depth
     NotExact,       // the frame's settings could let hidden instances show: nothing culled
+    // The near plane could cut open a wall of the camera's cell (the eye is closer to it than
+    // the near plane's corners are), or the camera is orthographic: nothing culled.
+    NearWall,
 };
 
 // Requests past these are refused by render() with an InputError before anything is allocated:

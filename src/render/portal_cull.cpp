@@ -41,6 +41,36 @@ double distance_to_polygon(const glm::dvec3& p, const std::vector<glm::dvec3>& c
     return d;
 }
 
+// The farthest the near plane's clipped corners are from the eye: geometry closer than this may
+// be cut away by the near plane.
+double near_reach(const glm::mat4& view_projection, const glm::dvec2& margin,
+                  const glm::dvec3& eye) {
+    const glm::dmat4 inverse = glm::inverse(glm::dmat4(view_projection));
+    double reach = 0.0;
+    for (const glm::dvec2 corner :
+         {glm::dvec2(-1, -1), glm::dvec2(1, -1), glm::dvec2(1, 1), glm::dvec2(-1, 1)}) {
+        const glm::dvec4 p = inverse * glm::dvec4(corner * (1.0 + margin), -1.0, 1.0);
+        reach = std::max(reach, glm::length(glm::dvec3(p) / p.w - eye));
+    }
+    return std::isfinite(reach) ? reach * (1.0 + 1e-6) : HUGE_VAL;
+}
+
+// Whether the portal lies in `plane` and holds the disc of `radius` around `foot` in it.
+bool portal_covers(const Portal& portal, const glm::dvec4& plane, const glm::dvec3& foot,
+                   double radius) {
+    const std::vector<glm::dvec3>& c = portal.corners;
+    constexpr double kInPlane = 1e-6;
+    for (const glm::dvec3& corner : c)
+        if (std::abs(glm::dot(glm::dvec3(plane), corner) + plane.w) > kInPlane) return false;
+    const glm::dvec3 normal = polygon_normal(c);
+    for (std::size_t i = 0; i < c.size(); ++i) {
+        const glm::dvec3 edge = glm::normalize(c[(i + 1) % c.size()] - c[i]);
+        const double inside = glm::dot(glm::cross(normal, edge), foot - c[i]);
+        if (inside < radius) return false;
+    }
+    return true;
+}
+
 class Walker {
   public:
     Walker(const PortalWalkInput& in, PortalWalk& walk)
@@ -55,10 +85,48 @@ class Walker {
         const auto frustum = frustum_planes(in.view_projection, in.camera.clip_depth_range());
         near_far_[0] = frustum[4];
         near_far_[1] = frustum[5];
-        near_ = std::isfinite(in.camera.near) ? std::max(in.camera.near, tolerance_) : tolerance_;
+        near_ = near_reach(in.view_projection, margin_, eye_);
     }
 
-    // False when a bound was passed.
+    // Whether every part of the camera cell's boundary within the near reach of the eye is a
+    // portal: elsewhere the near plane could cut open a wall and show what lies behind it.
+    bool clear_of_walls(std::uint32_t cell) const {
+        for (const glm::dvec4& plane : graph_.cells[cell].volume.planes) {
+            const glm::dvec3 n(plane);
+            const double distance = glm::dot(n, eye_) + plane.w;
+            if (distance > near_) continue;
+            // An eye in the plane of the cell's faces sees the walls there edge on: their
+            // triangles project to lines, and rounding can still give them a pixel of any depth.
+            if (distance <= tolerance_) return false;
+            const glm::dvec3 foot = eye_ - distance * n;
+            const double radius = std::sqrt(std::max(near_ * near_ - distance * distance, 0.0));
+            bool covered = false;
+            for (const std::uint32_t p : graph_.cell_portals[cell])
+                covered = covered || portal_covers(graph_.portals[p], plane, foot, radius);
+            if (!covered) return false;
+        }
+        return true;
+    }
+
+    bool near_wall() const { return near_wall_; }
+
+    // Whether the cells the near plane can reach from the eye's cell (through portals within
+    // its reach) are clear of walls there (clear_of_walls); marks them in walk.on_path.
+    bool near_cells_clear(std::uint32_t cell) {
+        if (!clear_of_walls(cell)) return false;
+        walk_.on_path[cell] = 1;
+        for (const std::uint32_t p : graph_.cell_portals[cell]) {
+            const Portal& portal = graph_.portals[p];
+            const std::uint32_t next = portal.cells[0] == cell ? portal.cells[1] : portal.cells[0];
+            if (walk_.on_path[next] ||
+                distance_to_polygon(eye_, portal.corners, polygon_normal(portal.corners)) > near_)
+                continue;
+            if (!near_cells_clear(next)) return false;
+        }
+        return true;
+    }
+
+    // False when a bound was passed or the near plane cuts into a wall (near_wall).
     bool run(std::uint32_t cell) {
         const glm::dvec2 half(1.0 + margin_.x, 1.0 + margin_.y);
         screen_ = {{-half.x, -half.y}, {half.x, -half.y}, {half.x, half.y}, {-half.x, half.y}};
@@ -80,7 +148,12 @@ class Walker {
             const Portal& portal = graph_.portals[p];
             const std::uint32_t next = portal.cells[0] == cell ? portal.cells[1] : portal.cells[0];
             if (walk_.on_path[next] || !walk_.allowed[next]) continue;
-            if (!narrow(portal, next, walk_.regions[depth], walk_.regions[depth + 1])) continue;
+            const bool seen = narrow(portal, next, walk_.regions[depth], walk_.regions[depth + 1]);
+            if (near_wall_) {
+                complete = false;
+                break;
+            }
+            if (!seen) continue;
             if (!visit(next, depth + 1)) {
                 complete = false;
                 break;
@@ -95,7 +168,13 @@ class Walker {
                 std::vector<glm::dvec2>& out) {
         const glm::dvec3 normal = polygon_normal(portal.corners);
         if (distance_to_polygon(eye_, portal.corners, normal) <= near_) {
-            out = region;  // standing in the doorway: the portal is open
+            // Standing in the doorway: the portal is open, and the near plane may cut into the
+            // next cell's walls too.
+            if (!clear_of_walls(next)) {
+                near_wall_ = true;
+                return false;
+            }
+            out = region;
             return true;
         }
         if (perspective_ && !eye_faces(portal, normal, next)) return false;
@@ -179,6 +258,7 @@ class Walker {
     bool perspective_;
     glm::dvec2 margin_;
     double tolerance_, near_ = 0.0;
+    bool near_wall_ = false;
     glm::vec4 near_far_[2];
     std::vector<glm::dvec2> screen_;
 };
@@ -219,17 +299,22 @@ void walk_portals(const PortalWalkInput& in, PortalWalk& walk) {
     }
     walk.kept.assign(instances, 0);
     walk.outcome = PortalOutcome::Culled;
-    if (in.mode == PortalCull::Off) {  // the PVS alone
+    walk.on_path.assign(graph.cells.size(), 0);
+    walk.reached.assign(graph.cells.size(), 0);
+    Walker walker(in, walk);
+    if (in.camera.projection == Camera::Projection::Orthographic ||
+        !walker.near_cells_clear(cell)) {
+        walk.outcome = PortalOutcome::NearWall;
+        keep_all(walk, instances);
+    } else if (in.mode == PortalCull::Off) {  // the PVS alone
         for (std::size_t i = 0; i < instances; ++i)
             for (const std::uint32_t c : graph.instance_cells[i]) walk.kept[i] |= walk.allowed[c];
     } else {
         walk.on_path.assign(graph.cells.size(), 0);
-        walk.reached.assign(graph.cells.size(), 0);
-        Walker walker(in, walk);
         if (walker.run(cell)) {
             keep_reached(graph, in.world_boxes, walk);
         } else {
-            walk.outcome = PortalOutcome::OverBound;
+            walk.outcome = walker.near_wall() ? PortalOutcome::NearWall : PortalOutcome::OverBound;
             keep_all(walk, instances);
         }
         walk.visits = walk.visit_list.size();
