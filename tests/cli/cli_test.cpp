@@ -97,9 +97,10 @@ TEST(Cli, LoadingFlagsComeBeforeOrAfterTheSubcommand) {
     // A file where the subcommand goes: what to type instead, not CLI11's reversed leftovers.
     const CommandResult file_first = run("--load-in-process tri.obj -o c.png", dir);
     EXPECT_EQ(file_first.exit_code, 2);
-    EXPECT_EQ(file_first.output,
-              "zraster: 'tri.obj' is not a subcommand (render, info, bench, svg, batch): to render "
-              "it, zraster --load-in-process render tri.obj -o c.png\n");
+    EXPECT_EQ(
+        file_first.output,
+        "zraster: 'tri.obj' is not a subcommand (render, info, bench, svg, batch, pvs): to render "
+        "it, zraster --load-in-process render tri.obj -o c.png\n");
     EXPECT_FALSE(std::filesystem::exists(dir / "c.png"));
 }
 

@@ -82,7 +82,8 @@ TEST(PortalCommand, SceneWithoutCellsIsRefused) {
     EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
 }
 
-// Two rooms of one unit along x with a floor each and a crate, a doorway between them.
+// Two rooms of one unit along x with a floor each and a crate, a doorway between them. The
+// floors meet at x = 1, so each touches both cells and is listed in both.
 void write_cells_file(const std::filesystem::path& dir, const std::string& second_cell) {
     std::ofstream(dir / "floor.obj") << "v 0 0 0\nv 0 0 1\nv 1 0 1\nv 1 0 0\nf 1 2 3 4\n";
     std::ofstream(dir / "crate.obj")
@@ -99,8 +100,8 @@ void write_cells_file(const std::filesystem::path& dir, const std::string& secon
     {"name": "crate_b", "mesh": "crate", "translate": [1.4, 0, 0.4]}
   ],
   "cells": [
-    {"name": "a", "box": [[0, 0, 0], [1, 1, 1]], "instances": ["floor_a"]},
-    {"name": "b", "box": [[1, 0, 0], [2, 1, 1]], "instances": ["floor_b", "crate_b"]}
+    {"name": "a", "box": [[0, 0, 0], [1, 1, 1]], "instances": ["floor_a", "floor_b"]},
+    {"name": "b", "box": [[1, 0, 0], [2, 1, 1]], "instances": ["floor_a", "floor_b", "crate_b"]}
   ],
   "portals": [
     {"cells": ["a", ")" +

@@ -112,9 +112,6 @@ void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
                  "off; same image")
         ->check(CLI::IsMember({"off", "rectangles", "frustum"}))
         ->capture_default_str();
-    cmd.add_option("--pvs", a.pvs,
-                   "Potentially visible sets from `zraster pvs` for the scene: instances outside "
-                   "the camera cell's set are skipped (same image)");
     cmd.add_flag("--front-to-back", a.front_to_back,
                  "Draw instances nearest first (hierarchical z then skips more; the image "
                  "changes only where instances meet at exactly equal depth)");

@@ -31,6 +31,9 @@ void add_render_command(CLI::App& app, RenderArguments& a) {
                     "Instance/primitive ids: .npy (int32 primitive id, -1 empty) or .png "
                     "(false color by instance and primitive)");
     cmd->add_flag("--stats", a.print_stats, "Print pipeline statistics");
+    cmd->add_option("--pvs", a.pvs,
+                    "Potentially visible sets from `zraster pvs` for the scene: instances outside "
+                    "the camera cell's set are skipped (same image)");
     add_frame_arguments(*cmd, a);
     add_depth_camera_options(*cmd, a.depth_camera);
 }
