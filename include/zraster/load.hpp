@@ -2,6 +2,7 @@
 // formats Assimp reads).
 #pragma once
 #include <zraster/export.hpp>
+#include <zraster/portals.hpp>
 #include <zraster/scene.hpp>
 
 #include <cstddef>
@@ -65,6 +66,10 @@ struct LoadOptions {
     std::size_t worker_memory_bytes = std::size_t{8} << 30;
 };
 
+// A file whose name ends in ".cells.json" is a cell graph file (docs/portals.md): the mesh
+// files it names placed as instances, with its cells and portals (Scene::cells, validated). Its
+// mistakes are InputErrors naming the file, the JSON element and the cause.
+//
 // Loads every mesh with its material (base color, specular, shininess, alpha: opacity, alpha
 // mode and cutoff, base-color and opacity textures; docs/materials.md says what each format
 // gives) and the node hierarchy as instances (node transforms applied). Computes
@@ -75,6 +80,16 @@ struct LoadOptions {
 // with LoadIsolation::WorkerProcess when the importer process crashes, times out or runs out of
 // memory.
 ZRASTER_API Scene load_scene(const std::filesystem::path& path, const LoadOptions& options = {});
+
+// Potentially visible sets as `zraster pvs` writes them (docs/portals.md): {"zraster_pvs": 1,
+// "scene", "method", "slack", "cells", "steps", "sets": [{"cell": name, "bounded": bool,
+// "visible": [cell indices]}, ...]}.
+ZRASTER_API std::string pvs_to_json(const PotentiallyVisibleSets& sets, const CellGraph& graph,
+                                    const std::string& scene, const PvsOptions& options);
+// Reads such a file for `graph` (one set per cell, names matching, indices in range, each set
+// holding its own cell); throws InputError naming the file and the element otherwise.
+ZRASTER_API std::vector<std::vector<std::uint32_t>> load_pvs(const std::filesystem::path& path,
+                                                             const CellGraph& graph);
 
 // The file name endings load_scene reads a format from, lower case with the dot (".obj", ".glb",
 // ".mesh.xml", ...): zraster's OBJ reader's and every Assimp importer's, as this build's Assimp

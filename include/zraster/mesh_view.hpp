@@ -13,6 +13,7 @@
 #include <zraster/export.hpp>
 #include <zraster/lighting.hpp>
 #include <zraster/material.hpp>
+#include <zraster/portals.hpp>
 #include <zraster/scene.hpp>
 
 #include <glm/glm.hpp>
@@ -73,6 +74,9 @@ struct SceneView {
     std::span<const MeshView> meshes;
     std::span<const Material> materials;  // must be non-empty; index 0 the default
     std::span<const InstanceView> instances;
+    // The scene's cells and portals (portals.hpp), for RenderOptions::portal_cull and a PVS;
+    // null: none. Its instance indices are into `instances`. Not owned.
+    const CellGraph* cells = nullptr;
 };
 
 // A view of an owning mesh: its arrays tightly packed (stride 12 and 8), 32-bit indices, and its

@@ -63,6 +63,31 @@ enum class InstanceOrder {
     FrontToBack,
 };
 
+// Portal culling (RenderOptions::portal_cull), after Luebke & Georges 1995: the portals of the
+// camera's cell are walked depth first, the view narrowed at each one, and instances outside
+// every narrowed view of their cells are skipped (docs/portals.md).
+enum class PortalCull {
+    Off,
+    // Luebke & Georges' cull boxes: the view narrowed to screen rectangles, the intersection of
+    // the last one with each portal's projected bounding rectangle.
+    Rectangles,
+    // The exact variant: each portal polygon clipped against the current view and the view
+    // narrowed to the clipped polygon (planes from the eye through its edges).
+    Frustum,
+};
+
+// What a frame's portal culling did (RenderStats::portal_outcome).
+enum class PortalOutcome {
+    NotRun,         // portal_cull Off and no PVS, or no cell graph
+    Culled,         // the walk (or the PVS) decided which instances are drawn
+    CameraOutside,  // the eye is in no cell: nothing culled
+    OverBound,      // the walk passed CellGraphLimits::max_walk_visits or max_walk_depth
+    NotExact,       // the frame's settings could let hidden instances show: nothing culled
+    // The near plane could cut open a wall of the camera's cell (the eye is closer to it than
+    // the near plane's corners are), or the camera is orthographic: nothing culled.
+    NearWall,
+};
+
 // Requests past these are refused by render() with an InputError before anything is allocated:
 // they are mistakes or hostile input, not frames (see RELIABILITY.md). Raise them deliberately.
 struct RenderLimits {
@@ -164,6 +189,14 @@ struct RenderOptions {
     // standard depth range, no user clip planes, no edges. RenderStats counts what it skipped.
     bool occlusion_cull = false;
 
+    // Portal culling through the scene's cell graph (SceneView::cells, Scene::cells): instances
+    // that no ray from the eye can reach through the portals are skipped. Exact (the same image
+    // and ids) when the graph keeps its contract (portals.hpp: cell boundaries opaque outside
+    // the portals); it runs only where occlusion culling would (same conditions), and draws
+    // everything when the eye is in no cell. A graph's PVS (CellGraph::pvs) filters first, also
+    // with Off. RenderStats counts what was skipped and the cells reached.
+    PortalCull portal_cull = PortalCull::Off;
+
     // World-space planes (n.x, n.y, n.z, d): points with dot(n, p) + d >= 0 are kept.
     std::vector<glm::vec4> clip_planes;
 
@@ -244,6 +277,15 @@ ZRASTER_API TargetViews view_of(RenderTargets& targets);
 struct RenderStats {
     std::uint64_t instances = 0, instances_frustum_culled = 0;
     std::uint64_t instances_occlusion_culled = 0;  // with RenderOptions::occlusion_cull
+    // With RenderOptions::portal_cull or a PVS: instances inside the view frustum skipped
+    // because no portal sequence (or the PVS) reaches them.
+    std::uint64_t instances_portal_culled = 0;
+    PortalOutcome portal_outcome = PortalOutcome::NotRun;
+    std::int64_t portal_camera_cell = -1;    // the eye's cell, -1: none or not looked for
+    std::uint64_t portal_cells_visited = 0;  // distinct cells the walk reached
+    std::uint64_t portal_visits = 0;     // cell entries (one per portal sequence reaching a cell)
+    std::uint64_t portal_pvs_cells = 0;  // cells in the camera cell's PVS (0: no PVS)
+    double portal_ms = 0;                // the walk and the instance tests
     std::uint64_t triangles_in = 0;
     std::uint64_t triangles_trivially_rejected = 0;  // all vertices outside one plane
     std::uint64_t triangles_non_finite = 0;          // NaN/Inf vertex: dropped

@@ -3,6 +3,9 @@
 #include <zraster/export.hpp>
 #include <zraster/lighting.hpp>
 #include <zraster/mesh.hpp>
+#include <zraster/portals.hpp>
+
+#include <memory>
 
 #include <optional>
 #include <string>
@@ -23,6 +26,9 @@ struct ZRASTER_API Scene {
     std::vector<Instance> instances;
     std::vector<std::string> warnings;  // non-fatal problems found while loading
     std::string source;                 // file name or builtin name, for messages
+    // Cells and portals (portals.hpp, validated for these instances), for portal culling; null:
+    // none. Shared: copies of a scene share one graph.
+    std::shared_ptr<const CellGraph> cells;
 
     // World-space bounds of all instances (each mesh box transformed).
     Bounds3f bounds() const;

@@ -42,16 +42,23 @@ ZRASTER_API Mesh make_torus(float major_radius, float minor_radius, int rings, i
 // A square in the xz plane facing +y, side `size`, UVs repeated `uv_repeat` times.
 ZRASTER_API Mesh make_ground_plane(float size, float uv_repeat);
 
-// True if spec names a procedural scene: "sphere:N", "city:N[:SEED]", "soup:N[:SEED]" or
-// "builtin:NAME".
+// The building of docs/portals.md, "building:RxC[:SEED]": rows x columns rooms of 4 x 4 units
+// (room (i, j) spans x in [4i, 4i+4], z in [4j, 4j+4]), walls 3 units high with doorways along
+// a seeded spanning tree of the rooms plus some more, furniture in every room, and its cell
+// graph (Scene::cells: rooms and doorway tunnels, joined by portals).
+ZRASTER_API Scene make_building(int rows, int columns, std::uint64_t seed = 1);
+
+// True if spec names a procedural scene: "sphere:N", "city:N[:SEED]", "soup:N[:SEED]",
+// "building:RxC[:SEED]" or "builtin:NAME".
 ZRASTER_API bool is_procedural_spec(std::string_view spec);
 // Builds the scene for such a spec; throws InputError for a malformed spec or absurd N.
 // builtin names: "default" (the showcase scene), "sphere", "cube".
 ZRASTER_API Scene make_procedural_scene(std::string_view spec);
 
 // The recommended camera for a builtin scene, framed for a 16:9 image: for "builtin:default" a
-// low eye looking slightly down, the ground receding to the horizon. nullopt for other specs
-// (frame those with fit_camera).
+// low eye looking slightly down, the ground receding to the horizon; for "building:RxC[:SEED]"
+// in room (0, 0) at (2, 1.6, 2) looking at (4C, 1.6, 4R). nullopt for other specs (frame those
+// with fit_camera).
 ZRASTER_API std::optional<Camera> builtin_camera(std::string_view spec);
 
 }  // namespace zraster

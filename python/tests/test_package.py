@@ -25,7 +25,9 @@ def test_every_render_flag_of_the_command_is_a_keyword():
                     "allow-outside-references", "max-instances", "version",
                     # The depth camera's files and flags: the outputs argument, Camera.from_intrinsics
                     # and the sensor are the module's own ways to them.
-                    "z-out", "range-out", "points-out", "camera-json", "intrinsics"}
+                    "z-out", "range-out", "points-out", "camera-json", "intrinsics",
+                    # A file for the scene's cell graph, which the module does not bind.
+                    "pvs"}
     flags = {f for f in flags if not f.startswith("sensor")}
     expected = {f.replace("-", "_") for f in flags - not_keywords}
     assert expected == set(zraster.RENDER_OPTIONS)

@@ -217,6 +217,7 @@ class Renderer:
         cull: Literal["back", "front", "none"] = ...,
         no_cull: bool = ...,
         occlusion_cull: bool = ...,
+        portal_cull: Literal["off", "rectangles", "frustum"] = ...,
         front_to_back: bool = ...,
         shading_strategy: Literal["auto", "forward", "deferred"] = ...,
         alpha_mode: Literal["auto", "opaque"] = ...,

@@ -36,7 +36,7 @@ SceneView view_of(const Scene& scene, std::vector<MeshView>& meshes,
         const Instance& instance = scene.instances[i];
         instances[i] = {instance.mesh, instance.transform, instance.shading};
     }
-    return {meshes, scene.materials, instances};
+    return {meshes, scene.materials, instances, scene.cells.get()};
 }
 
 }  // namespace zraster

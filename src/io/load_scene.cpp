@@ -7,6 +7,7 @@
 #include "io/assimp_mesh.hpp"
 #include "io/assimp_nodes.hpp"
 #include "io/assimp_warnings.hpp"
+#include "io/cells_file.hpp"
 #include "io/confined_io_system.hpp"
 #include "io/declared_counts_check.hpp"
 #include "io/input_file_check.hpp"
@@ -133,6 +134,7 @@ class MaterialTable {
 }  // namespace
 
 Scene load_scene(const std::filesystem::path& path, const LoadOptions& options) {
+    if (io::is_cells_file(path)) return io::load_cells_file(path, options);
     if (!is_obj(path)) return io::load_scene_with_assimp(path, options);
     io::check_input_file(path, options.max_file_bytes);
     std::variant<Scene, io::ObjFallback> fast = io::read_obj(path, options);

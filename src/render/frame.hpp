@@ -18,6 +18,7 @@
 #include "render/classify_kernel.hpp"
 #include "render/cluster_cache.hpp"
 #include "render/mesh_access.hpp"
+#include "render/portal_cull.hpp"
 #include "render/shade_kernel.hpp"
 #include "render/stream_lines.hpp"
 #include "shade/surface_shading.hpp"
@@ -194,6 +195,7 @@ struct SlotScratch {
 // Instance culling's working memory (occlusion_cull.cpp), kept from frame to frame.
 struct InstanceCulling {
     std::vector<std::uint8_t> verdicts;  // InstanceCull per scene instance
+    PortalWalk portal;                   // RenderOptions::portal_cull, a cell graph's PVS
     std::vector<Bounds3f> world_boxes;
     InstanceBvh bvh;
     std::vector<std::uint32_t> inside;

@@ -190,6 +190,11 @@ void validate_scene(Frame& frame, const SceneView& scene, std::string_view sourc
         throw InputError(std::string(source), cause);
     };
     if (scene.materials.empty()) refuse("the scene has no materials");
+    if (scene.cells != nullptr && (scene.cells->instance_cells.size() != scene.instances.size() ||
+                                   scene.cells->cell_portals.size() != scene.cells->cells.size()))
+        refuse("the cell graph is for " + std::to_string(scene.cells->instance_cells.size()) +
+               " instances (validated: validate_cell_graph), the scene has " +
+               std::to_string(scene.instances.size()));
     frame.mesh_flags.assign(scene.meshes.size(), 0);
     std::uint64_t triangles = 0, vertices = 0;
     for (std::size_t i = 0; i < scene.instances.size(); ++i) {

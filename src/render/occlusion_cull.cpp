@@ -25,7 +25,9 @@ constexpr std::size_t kLateOccluderTriangles = 4096;
 // Occluder triangles per frame: about 1 ms of occlusion rendering on one core.
 constexpr std::size_t kOccluderTriangleBudget = 40'000;
 
-bool occlusion_applies(const Frame& frame) {
+}  // namespace
+
+bool culling_keeps_image(const Frame& frame) {
     const RenderOptions& o = *frame.options;
     const CompareFunc compare = effective_depth_compare(o);
     return o.depth_test && o.depth_write &&
@@ -34,6 +36,8 @@ bool occlusion_applies(const Frame& frame) {
            frame.camera.clip_depth_range() == ClipDepthRange::NegativeOneToOne &&
            o.clip_planes.empty() && o.edges == RenderOptions::Edges::None;
 }
+
+namespace {
 
 using Candidate = InstanceCulling::Candidate;
 
@@ -90,6 +94,41 @@ void draw_occluder(InstanceCulling& culling, const FrameMesh& mesh, const Candid
                             std::span<const std::uint32_t>(indices), c.mvp, options);
 }
 
+// Portal culling asked for (a walk or a PVS) and a cell graph to do it with.
+bool wants_portal_culling(const Frame& frame) {
+    const CellGraph* graph = frame.scene->cells;
+    return graph != nullptr &&
+           (frame.options->portal_cull != PortalCull::Off || !graph->pvs.empty());
+}
+
+// Marks the instances of `inside` that the walk does not reach, and drops them from it.
+void cull_by_portals(Frame& frame, const glm::mat4& view_projection) {
+    InstanceCulling& culling = frame.culling;
+    PortalWalk& walk = culling.portal;
+    if (!culling_keeps_image(frame)) {
+        walk.outcome = PortalOutcome::NotExact;
+        return;
+    }
+    PortalWalkInput input;
+    input.graph = frame.scene->cells;
+    input.mode = frame.options->portal_cull;
+    input.camera = frame.camera;
+    input.view_projection = view_projection;
+    input.width = frame.options->width;
+    input.height = frame.options->height;
+    input.world_boxes = culling.world_boxes;
+    walk_portals(input, walk);
+    if (walk.outcome != PortalOutcome::Culled) return;
+    std::size_t kept = 0;
+    for (const std::uint32_t i : culling.inside) {
+        if (walk.kept[i])
+            culling.inside[kept++] = i;
+        else
+            culling.verdicts[i] = std::uint8_t(InstanceCull::Portal);
+    }
+    culling.inside.resize(kept);
+}
+
 }  // namespace
 
 void cull_instances(Frame& frame, const glm::mat4& view_projection) {
@@ -97,20 +136,28 @@ void cull_instances(Frame& frame, const glm::mat4& view_projection) {
     const RenderOptions& options = *frame.options;
     InstanceCulling& culling = frame.culling;
     const std::size_t n = scene.instances.size();
-    const bool occlusion = options.occlusion_cull && occlusion_applies(frame);
+    const bool occlusion = options.occlusion_cull && culling_keeps_image(frame);
+    const bool portals = wants_portal_culling(frame);
     std::vector<std::uint8_t>& verdict = culling.verdicts;
     verdict.assign(n, std::uint8_t(InstanceCull::Keep));
-    if (n < kBvhMinInstances && !occlusion) return;
+    PortalWalk& walk = culling.portal;
+    walk.outcome = PortalOutcome::NotRun;
+    walk.camera_cell = -1;
+    walk.cells_visited = walk.visits = walk.pvs_cells = 0;
+    walk.ms = 0.0;
+    if (n < kBvhMinInstances && !occlusion && !portals) return;
 
     std::vector<std::uint32_t>& inside = culling.inside;
     inside.clear();
-    if (n >= kBvhMinInstances) {
+    if (n >= kBvhMinInstances || portals) {
         culling.world_boxes.resize(n);
         for (std::size_t i = 0; i < n; ++i) {
             const InstanceView& instance = scene.instances[i];
             culling.world_boxes[i] =
                 frame.meshes[instance.mesh].bounds.transformed(instance.transform);
         }
+    }
+    if (n >= kBvhMinInstances) {
         culling.bvh.build(culling.world_boxes);
         culling.bvh.query(frustum_planes(view_projection, frame.camera.clip_depth_range()), inside);
         std::fill(verdict.begin(), verdict.end(), std::uint8_t(InstanceCull::Frustum));
@@ -119,6 +166,7 @@ void cull_instances(Frame& frame, const glm::mat4& view_projection) {
         inside.resize(n);
         std::iota(inside.begin(), inside.end(), 0u);
     }
+    if (portals) cull_by_portals(frame, view_projection);
     if (!occlusion) return;
 
     std::vector<Candidate>& candidates = culling.candidates;

@@ -13,6 +13,7 @@ enum class InstanceCull : std::uint8_t {
     Keep,      // still goes through the vertex stage's own frustum test
     Frustum,   // outside the view frustum (found by the instance BVH)
     Occluded,  // hidden behind occluders that are drawn this frame
+    Portal,    // reached by no portal sequence from the eye's cell (or outside its PVS)
 };
 
 // Scenes with at least this many instances use the BVH for frustum culling.
@@ -24,6 +25,12 @@ inline constexpr std::size_t kBvhMinInstances = 64;
 // wireframe or hidden-line edges. Occluders (the largest instances on screen, then visible ones
 // tested front to back) are rendered at the frame's resolution with its face culling, and are
 // never culled themselves, so an Occluded instance has no pixel in the image.
+// With RenderOptions::portal_cull or a cell graph's PVS, under the same conditions, instances no
+// portal sequence reaches are marked Portal (portal_cull.hpp) before occlusion culling.
 void cull_instances(Frame& frame, const glm::mat4& view_projection);
+
+// Whether skipping instances that have no visible pixel leaves the image as it is: what
+// occlusion and portal culling require.
+bool culling_keeps_image(const Frame& frame);
 
 }  // namespace zraster::detail

@@ -126,6 +126,15 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
 
     cull_instances(frame, view_projection);
     const std::vector<std::uint8_t>& culled = frame.culling.verdicts;
+    const PortalWalk& walk = frame.culling.portal;
+    stats.portal_outcome = walk.outcome;
+    if (walk.outcome != PortalOutcome::NotRun) {
+        stats.portal_camera_cell = walk.camera_cell;
+        stats.portal_cells_visited = walk.cells_visited;
+        stats.portal_visits = walk.visits;
+        stats.portal_pvs_cells = walk.pvs_cells;
+        stats.portal_ms = walk.ms;
+    }
     std::uint32_t vertex_count = 0;
     frame.alpha_instances = false;
     for (std::uint32_t i = 0; i < scene.instances.size(); ++i) {
@@ -136,6 +145,10 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
         if (culled[i] == std::uint8_t(InstanceCull::Frustum) ||
             outside_frustum(mesh.bounds, mvp, frame.camera.clip_depth_range())) {
             ++stats.instances_frustum_culled;
+            continue;
+        }
+        if (culled[i] == std::uint8_t(InstanceCull::Portal)) {
+            ++stats.instances_portal_culled;
             continue;
         }
         if (culled[i] == std::uint8_t(InstanceCull::Occluded)) {

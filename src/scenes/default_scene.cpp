@@ -7,6 +7,8 @@
 //    smooth color with a smeared highlight, then a crisp per-pixel highlight.
 #include "scenes/default_scene.hpp"
 
+#include "scenes/building.hpp"
+
 #include <zraster/scenes.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -96,6 +98,8 @@ Scene make_default_scene() {
 }
 
 std::optional<Camera> builtin_camera(std::string_view spec) {
+    if (const auto building = detail::parse_building_spec(spec))
+        return detail::building_camera(*building);
     if (spec != "builtin:default") return std::nullopt;
     // Low and looking slightly down: the ground recedes to the horizon in the upper part of a
     // 16:9 frame, with all objects in view.

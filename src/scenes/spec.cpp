@@ -1,5 +1,6 @@
 // Scene specs naming procedural scenes: "sphere:N", "city:N[:SEED]", "soup:N[:SEED]",
 // "builtin:NAME".
+#include "scenes/building.hpp"
 #include "scenes/default_scene.hpp"
 
 #include <zraster/error.hpp>
@@ -74,11 +75,16 @@ Scene make_builtin_scene(std::string_view spec) {
 // A prefix is enough: "sphere:abc" is a malformed spec to report as such, not a file to look for.
 bool is_procedural_spec(std::string_view spec) {
     return has_prefix(spec, "sphere:") || has_prefix(spec, "city:") || has_prefix(spec, "soup:") ||
-           has_prefix(spec, "builtin:");
+           has_prefix(spec, "builtin:") || has_prefix(spec, "building:");
 }
 
 Scene make_procedural_scene(std::string_view spec) {
     if (has_prefix(spec, "builtin:")) return make_builtin_scene(spec);
+    if (const auto building = detail::parse_building_spec(spec)) {
+        Scene scene = make_building(building->rows, building->columns, building->seed);
+        scene.source = std::string(spec);
+        return scene;
+    }
 
     const std::string file(spec);
     const auto parts = split(spec, ':');

@@ -99,7 +99,7 @@ TEST(Cli, LoadingFlagsComeBeforeOrAfterTheSubcommand) {
     EXPECT_EQ(file_first.exit_code, 2);
     EXPECT_EQ(file_first.output,
               "zraster: 'tri.obj' is not a subcommand (render, info, bench, svg, batch, explain, "
-              "view): to render it, zraster --load-in-process render tri.obj -o c.png\n");
+              "view, pvs): to render it, zraster --load-in-process render tri.obj -o c.png\n");
     EXPECT_FALSE(std::filesystem::exists(dir / "c.png"));
 }
 

@@ -106,6 +106,12 @@ void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
     cmd.add_flag("--no-cull", a.no_cull, "Same as --cull none");
     cmd.add_flag("--occlusion-cull", a.occlusion_cull,
                  "Skip instances hidden behind the largest ones (occlusion buffer; same image)");
+    cmd.add_flag("--portal-cull{frustum}", a.portal_cull,
+                 "Portal culling through the scene's cells (building:RxC, .cells.json): frustum "
+                 "(the flag alone: portals clipped exactly), rectangles (screen cull boxes) or "
+                 "off; same image")
+        ->check(CLI::IsMember({"off", "rectangles", "frustum"}))
+        ->capture_default_str();
     cmd.add_flag("--front-to-back", a.front_to_back,
                  "Draw instances nearest first (hierarchical z then skips more; the image "
                  "changes only where instances meet at exactly equal depth)");
@@ -216,6 +222,9 @@ Camera default_camera(const std::string& spec, std::span<const glm::vec3> world_
 }
 
 RenderOptions make_render_options(const RenderArguments& a, const Scene& scene) {
+    if (a.portal_cull != "off" && !scene.cells)
+        throw InputError("--portal-cull",
+                         "the scene has no cells (building:RxC or a .cells.json file)");
     const std::vector<glm::vec3> world = scene.world_positions();
     try {
         return make_render_options(a, world, std::nullopt);
@@ -280,6 +289,9 @@ RenderOptions make_render_options(const RenderArguments& a,
                                            : CullMode::Back;
     o.front_face = a.front_face == "cw" ? FrontFace::Clockwise : FrontFace::CounterClockwise;
     o.occlusion_cull = a.occlusion_cull;
+    o.portal_cull = a.portal_cull == "frustum"      ? PortalCull::Frustum
+                    : a.portal_cull == "rectangles" ? PortalCull::Rectangles
+                                                    : PortalCull::Off;
     if (a.front_to_back) o.instance_order = InstanceOrder::FrontToBack;
     o.strategy = shading_strategy(a.strategy);
     o.alpha_mode = a.alpha_mode == "opaque" ? MaterialAlpha::Opaque : MaterialAlpha::Auto;

@@ -41,6 +41,8 @@ struct RenderArguments {
     std::string cull = "back";
     bool no_cull = false;
     bool occlusion_cull = false;
+    std::string portal_cull = "off";  // off | rectangles | frustum (the flag alone: frustum)
+    std::string pvs;                  // --pvs FILE (`render` attaches it: attach_pvs)
     bool front_to_back = false;
     std::string strategy = "auto";
     std::string alpha_mode = "auto";

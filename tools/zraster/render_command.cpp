@@ -13,6 +13,7 @@
 
 #include "command_line.hpp"
 #include "progress.hpp"
+#include "pvs_command.hpp"
 #include "render_outputs.hpp"
 
 namespace zraster::cli {
@@ -30,9 +31,46 @@ void add_render_command(CLI::App& app, RenderArguments& a) {
                     "Instance/primitive ids: .npy (int32 primitive id, -1 empty) or .png "
                     "(false color by instance and primitive)");
     cmd->add_flag("--stats", a.print_stats, "Print pipeline statistics");
+    cmd->add_option("--pvs", a.pvs,
+                    "Potentially visible sets from `zraster pvs` for the scene: instances outside "
+                    "the camera cell's set are skipped (same image)");
     add_frame_arguments(*cmd, a);
     add_depth_camera_options(*cmd, a.depth_camera);
 }
+
+namespace {
+
+// The portal walk's line of --stats (none when there was no walk and no PVS).
+void print_portal_stats(const RenderStats& s, const Scene& scene) {
+    if (s.portal_outcome == PortalOutcome::NotRun || !scene.cells) return;
+    const CellGraph& graph = *scene.cells;
+    const std::string cell = s.portal_camera_cell >= 0
+                                 ? fmt::format("cell {} '{}'", s.portal_camera_cell,
+                                               graph.cells[std::size_t(s.portal_camera_cell)].name)
+                                 : std::string("no cell");
+    const std::string pvs =
+        graph.pvs.empty() ? std::string() : fmt::format(", PVS {} cells", s.portal_pvs_cells);
+    switch (s.portal_outcome) {
+        case PortalOutcome::Culled:
+            fmt::print("  portals: camera in {}, {} of {} cells visited ({} visits){}, {:.3f} ms\n",
+                       cell, s.portal_cells_visited, graph.cells.size(), s.portal_visits, pvs,
+                       s.portal_ms);
+            break;
+        case PortalOutcome::CameraOutside:
+            fmt::print("  portals: camera outside every cell: not culled\n");
+            break;
+        case PortalOutcome::OverBound:
+            fmt::print("  portals: camera in {}, walk past its bound ({} visits): not culled\n",
+                       cell, s.portal_visits);
+            break;
+        default:
+            fmt::print(
+                "  portals: not culled (needs D32F less/lequal depth with writes, no clip "
+                "planes, no edges)\n");
+    }
+}
+
+}  // namespace
 
 int run_render(const RenderArguments& a) {
     OutputFiles outputs;  // written together at the end, or not at all
@@ -43,7 +81,8 @@ int run_render(const RenderArguments& a) {
         return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     };
     const Clock::time_point load_start = Clock::now();
-    const Scene scene = load_scene_or_procedural(a.scene);
+    Scene scene = load_scene_or_procedural(a.scene);
+    if (!a.pvs.empty()) attach_pvs(a.pvs, scene);
     const double load_ms = since(load_start);
     for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
     const RenderedFrame frame = render_outputs(a, scene, outputs, stderr_progress(), stderr);
@@ -82,10 +121,11 @@ int run_render(const RenderArguments& a) {
     if (a.print_stats) {
         const RenderStats& s = frame.stats;
         fmt::print(
-            "scene {}: {} instances ({} frustum-culled, {} occlusion-culled), {} triangles "
-            "in\n",
+            "scene {}: {} instances ({} frustum-culled, {} occlusion-culled, {} portal-culled), "
+            "{} triangles in\n",
             a.scene, s.instances, s.instances_frustum_culled, s.instances_occlusion_culled,
-            s.triangles_in);
+            s.instances_portal_culled, s.triangles_in);
+        print_portal_stats(s, scene);
         fmt::print(
             "  trivially rejected {}, clipped {}, back-face culled {}, degenerate {}, "
             "no pixel covered {}, non-finite {}, rasterized {}\n",

@@ -19,6 +19,7 @@
 #include "command_line.hpp"
 #include "explain_command.hpp"
 #include "info_command.hpp"
+#include "pvs_command.hpp"
 #include "render_command.hpp"
 #include "svg_command.hpp"
 #include "view_command.hpp"
@@ -42,6 +43,8 @@ int run_zraster(std::vector<std::string> args) {
     add_explain_command(app, explain_args);
     ViewArguments view_args;
     add_view_command(app, view_args);
+    PvsArguments pvs_args;
+    add_pvs_command(app, pvs_args);
     // Loading: Assimp (every format but the OBJ files zraster reads itself) runs in a worker
     // process, so that a crash in it is a refused file (RELIABILITY.md). Accepted after the
     // subcommand too.
@@ -126,6 +129,7 @@ int run_zraster(std::vector<std::string> args) {
         if (app.got_subcommand("batch")) return run_batch(batch_args);
         if (app.got_subcommand("view")) return run_view(view_args);
         if (app.got_subcommand("explain")) return run_explain(explain_args);
+        if (app.got_subcommand("pvs")) return run_pvs(pvs_args);
         // No subcommand at all: render the built-in default scene to zraster.png.
         return run_render(render_args);
     } catch (const zraster::LimitExceeded& e) {
