@@ -5,7 +5,7 @@
 
 namespace zraster::cli {
 
-ViewSummary run_view_window(ViewSession&) {
+ViewSummary run_view_window(ViewSetup&) {
     throw InputError("view",
                      "this zraster was built without SDL2 (install libsdl2-dev and "
                      "configure again)");

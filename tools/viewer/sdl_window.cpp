@@ -131,7 +131,7 @@ std::filesystem::path free_screenshot_name() {
 
 class ViewerWindow {
   public:
-    explicit ViewerWindow(ViewSession& session);
+    explicit ViewerWindow(ViewSetup& setup);
     ViewSummary run();
 
   private:
@@ -144,7 +144,7 @@ class ViewerWindow {
     void present(bool read_back);
     void write_screenshot(const std::filesystem::path& path);
 
-    ViewSession& s_;
+    ViewSetup& s_;
     SdlVideo video_;
     SdlPointer<SDL_Window> window_;
     SdlPointer<SDL_Renderer> renderer_;
@@ -162,8 +162,7 @@ class ViewerWindow {
     ViewSummary summary_;
 };
 
-ViewerWindow::ViewerWindow(ViewSession& session)
-    : s_(session), worker_(session.scene, session.world) {
+ViewerWindow::ViewerWindow(ViewSetup& setup) : s_(setup), worker_(setup.scene, setup.world) {
     open_window();
 }
 
@@ -292,8 +291,8 @@ ViewSummary ViewerWindow::run() {
 
 }  // namespace
 
-ViewSummary run_view_window(ViewSession& session) {
-    ViewerWindow window(session);
+ViewSummary run_view_window(ViewSetup& setup) {
+    ViewerWindow window(setup);
     return window.run();
 }
 

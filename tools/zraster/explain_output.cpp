@@ -13,21 +13,6 @@
 namespace zraster::cli {
 namespace {
 
-std::string html_escape(const std::string& text) {
-    std::string s;
-    for (const char c : text) {
-        if (c == '<')
-            s += "&lt;";
-        else if (c == '>')
-            s += "&gt;";
-        else if (c == '&')
-            s += "&amp;";
-        else
-            s += c;
-    }
-    return s;
-}
-
 std::vector<std::uint8_t> png_of(const RgbaImage& image) {
     return encode_png8(image.width, image.height, 3, rgb_bytes(image));
 }
@@ -102,12 +87,12 @@ void ExplainOutput::commit() {
         "<style>body{{font-family:sans-serif;max-width:60em;margin:2em auto}}"
         "figure{{margin:2em 0}}img{{max-width:100%;border:1px solid #ccc}}</style></head>\n"
         "<body>\n<h1>{0}</h1>\n<p>{1}</p>\n",
-        html_escape(title_), html_escape(introduction_));
+        xml_escape(title_), xml_escape(introduction_));
     for (const Entry& e : entries_)
         html += fmt::format(
             "<figure><img src=\"{0}\" alt=\"{0}\"><figcaption><code>{0}</code>: "
             "{1}</figcaption></figure>\n",
-            e.file, html_escape(e.caption));
+            e.file, xml_escape(e.caption));
     html += "</body></html>\n";
     add("index.html", std::vector<std::uint8_t>(html.begin(), html.end()));
     files_.pop_back();  // index.html is listed last by file_names()

@@ -28,7 +28,18 @@ std::string svg_points(const std::vector<glm::dvec2>& points) {
     return s;
 }
 
-std::string svg_escape(const std::string& text) {
+// Every other 6-pixel piece of the segment, for dashed lines in the PNG.
+void draw_dashed(RgbaImage& image, glm::dvec2 a, glm::dvec2 b, Rgba color, int width) {
+    const double length = glm::length(b - a);
+    const int pieces = std::max(1, int(length / 6.0));
+    for (int i = 0; i < pieces; i += 2)
+        draw_line(image, a + (b - a) * (double(i) / pieces), a + (b - a) * (double(i + 1) / pieces),
+                  color, width);
+}
+
+}  // namespace
+
+std::string xml_escape(const std::string& text) {
     std::string s;
     for (const char c : text) {
         if (c == '<')
@@ -42,17 +53,6 @@ std::string svg_escape(const std::string& text) {
     }
     return s;
 }
-
-// Every other 6-pixel piece of the segment, for dashed lines in the PNG.
-void draw_dashed(RgbaImage& image, glm::dvec2 a, glm::dvec2 b, Rgba color, int width) {
-    const double length = glm::length(b - a);
-    const int pieces = std::max(1, int(length / 6.0));
-    for (int i = 0; i < pieces; i += 2)
-        draw_line(image, a + (b - a) * (double(i) / pieces), a + (b - a) * (double(i + 1) / pieces),
-                  color, width);
-}
-
-}  // namespace
 
 Figure::Shape Figure::make_shape(Shape::Kind kind, std::vector<glm::dvec2> points,
                                  FigureStyle style) {
@@ -131,7 +131,7 @@ std::string Figure::svg() const {
                         "<text x=\"{:.6g}\" y=\"{:.6g}\" font-family=\"monospace\" "
                         "font-size=\"{}\"{}>{}</text>\n",
                         shape.points[0].x, y, 10 * shape.scale, svg_paint("fill", st.fill),
-                        svg_escape(shape.text.substr(start, end - start)));
+                        xml_escape(shape.text.substr(start, end - start)));
                     y += kTextLineHeight * shape.scale;
                     start = end + 1;
                 }

@@ -10,6 +10,9 @@
 
 namespace zraster::cli {
 
+// Text with <, > and & escaped, for SVG and HTML.
+std::string xml_escape(const std::string& text);
+
 struct FigureStyle {
     Rgba fill{0, 0, 0, 0};  // alpha 0: not filled
     Rgba stroke{0, 0, 0, 0};

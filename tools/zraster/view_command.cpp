@@ -65,9 +65,9 @@ int run_view(const ViewArguments& a) {
         if (!e.file().empty()) throw;
         throw InputError(scene.source, e.cause());  // (the camera fit: about the scene)
     }
-    ViewSession session{scene,    world,        *state,    std::move(script),
-                        a.frames, a.screenshot, !a.no_hud, "zraster view " + a.render.scene};
-    const ViewSummary summary = run_view_window(session);
+    ViewSetup setup{scene,    world,        *state,    std::move(script),
+                    a.frames, a.screenshot, !a.no_hud, "zraster view " + a.render.scene};
+    const ViewSummary summary = run_view_window(setup);
     const double fps = summary.seconds > 0.0 ? double(summary.frames_shown) / summary.seconds : 0.0;
     fmt::print("view: {} frames in {:.2f} s ({:.1f} fps), render median {:.2f} ms\n",
                summary.frames_shown, summary.seconds, fps, median(summary.render_ms));

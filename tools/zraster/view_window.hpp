@@ -14,7 +14,7 @@
 
 namespace zraster::cli {
 
-struct ViewSession {
+struct ViewSetup {
     const Scene& scene;
     std::span<const glm::vec3> world;  // the scene's world-space vertices
     ViewState& state;
@@ -33,6 +33,6 @@ struct ViewSummary {
 
 // Opens the window and runs until the user quits (or the frames or the script end). Throws
 // InputError("view", ...) with a one-line cause when no window can be opened (no display).
-ViewSummary run_view_window(ViewSession& session);
+ViewSummary run_view_window(ViewSetup& setup);
 
 }  // namespace zraster::cli
