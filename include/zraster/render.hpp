@@ -259,8 +259,8 @@ struct RenderStats {
     std::uint64_t fragments_passed = 0;  // passed the depth test
     std::uint64_t fragments_shaded = 0;
     std::uint64_t fragments_alpha_discarded = 0;  // Mask materials' fragments under the cutoff
-    std::uint64_t fragments_blended = 0;  // Blend materials' fragments composited
-    std::uint64_t pixels_blended = 0;     // pixels with at least one of them
+    std::uint64_t fragments_blended = 0;          // Blend materials' fragments composited
+    std::uint64_t pixels_blended = 0;             // pixels with at least one of them
     bool deferred = false;         // some pixels were shaded deferred (resolved first, then shaded)
     const char* simd_target = "";  // instruction set of the SIMD kernels
     Camera camera;                 // the camera actually used
@@ -268,6 +268,8 @@ struct RenderStats {
     // setup_ms in its parts: the vertex stage, primitive assembly (culling, clipping, coverage
     // tests) and binning.
     double vertex_ms = 0, assembly_ms = 0, binning_ms = 0;
+    // With RenderOptions::view: the ends of the picture's color scale (debug_view_legend).
+    DebugViewScale view_scale;
 };
 
 struct RenderResult {

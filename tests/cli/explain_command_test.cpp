@@ -63,6 +63,7 @@ TEST(ExplainCommand, EveryAlgorithmWritesItsPicturesAndAnIndexNamingThem) {
         {"frustum-culling", "sphere:200", {"frustum-culling.png"}},
         {"backface-culling", "sphere:200", {"backface-culling.png"}},
         {"occlusion-culling", "city:40", {"occlusion-culling.png"}},
+        {"hiz", "city:40", {"hiz.png", "hiz-front-to-back.png"}},
     };
     for (const ExplainCase& c : cases) {
         const auto dir = temp_dir(std::string("explain-") + c.algorithm);
