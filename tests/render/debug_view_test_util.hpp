@@ -48,17 +48,17 @@ inline ViewRgb expected_count_color(std::uint64_t count, std::uint64_t largest) 
     return debug_view_scale_color(t);
 }
 
-// Where on the color scale a color lies (the nearest of 4097 samples).
+// Where on the color scale a color lies (the nearest of 1025 samples).
 inline double scale_position(ViewRgb c) {
     double best = 0.0;
     int best_distance = 1 << 30;
-    for (int i = 0; i <= 4096; ++i) {
-        const ViewRgb s = debug_view_scale_color(i / 4096.0);
+    for (int i = 0; i <= 1024; ++i) {
+        const ViewRgb s = debug_view_scale_color(i / 1024.0);
         int d = 0;
         for (std::size_t k = 0; k < 3; ++k) d += (int(s[k]) - c[k]) * (int(s[k]) - c[k]);
         if (d < best_distance) {
             best_distance = d;
-            best = i / 4096.0;
+            best = i / 1024.0;
         }
     }
     return best;
