@@ -310,6 +310,8 @@ struct RenderStats {
     // setup_ms in its parts: the vertex stage, primitive assembly (culling, clipping, coverage
     // tests) and binning.
     double vertex_ms = 0, assembly_ms = 0, binning_ms = 0;
+    // With RenderOptions::view: the ends of the picture's color scale (debug_view_legend).
+    DebugViewScale view_scale;
 };
 
 struct RenderResult {

@@ -239,6 +239,10 @@ class Renderer:
         max_warnock_classifications: int = ...,
         max_abuffer_fragments: int = ...,
         visibility: Literal["zbuffer", "painter", "bsp", "warnock", "abuffer"] = ...,
+        view: Literal[
+            "none", "depth", "normals", "overdraw", "hiz", "tiles", "ids", "backfaces", "clipped",
+            "zfight", "mip", "lod"
+        ] = ...,
         aa: int = ...,
         msaa: bool = ...,
     ) -> dict[str, npt.NDArray[np.generic]]: ...

@@ -17,6 +17,7 @@
 #include "render/blend_scratch.hpp"
 #include "render/classify_kernel.hpp"
 #include "render/cluster_cache.hpp"
+#include "render/debug_view_scratch.hpp"
 #include "render/mesh_access.hpp"
 #include "render/portal_cull.hpp"
 #include "render/shade_kernel.hpp"
@@ -309,6 +310,11 @@ struct Frame {
     // frame to the next: rasterize_tiles then writes the targets with non-temporal stores
     // (RendererConfig::streaming_threshold_bytes, resolved).
     std::size_t streaming_threshold = std::size_t{32} << 20;
+    // Debug views (RenderOptions::view): their auxiliary frames' targets and tables, and, for
+    // the hiz view's frame only, the per-block counts of hierarchical-z skips (null otherwise:
+    // the tiles count nothing more).
+    DebugViewScratch debug_view;
+    std::uint32_t* hiz_block_counts = nullptr;
 
     // The slot of the calling thread in the frame's arena.
     SlotScratch& slot();
@@ -321,6 +327,17 @@ struct Frame {
                    : chunk.extra_vertices[chunk.pieces[ref.piece].screen[k]];
     }
 };
+
+// One frame through every stage (below) into `targets` (pitches resolved; `kept`: as
+// FrameTargets::kept), the options and scene already validated (renderer.cpp).
+void draw_frame(Frame& frame, const SceneView& scene, std::string_view source,
+                const RenderOptions& options, const TargetViews& targets, bool kept,
+                RenderStats& stats);
+// The same with RenderOptions::view set: the frame as without the view, then its color target
+// replaced by the view's picture (debug_view_frame.cpp).
+void draw_debug_view(Frame& frame, const SceneView& scene, std::string_view source,
+                     const RenderOptions& options, const TargetViews& targets, bool kept,
+                     RenderStats& stats);
 
 // Stages, in order.
 void run_vertex_stage(Frame& frame, RenderStats& stats);

@@ -146,14 +146,28 @@ void render_frame_in_arena(detail::Frame& frame, const SceneView& scene, std::st
     } else {
         targets = own_targets(*destination.own, options);
     }
+    const bool kept = destination.caller == nullptr || targets.unchanged_since_last_frame;
+    // A view without a color target to show it in changes nothing.
+    if (options.view != DebugView::None && targets.color != nullptr)
+        detail::draw_debug_view(frame, scene, source, options, targets, kept, stats);
+    else
+        detail::draw_frame(frame, scene, source, options, targets, kept, stats);
+}
+
+}  // namespace
+
+namespace detail {
+
+void draw_frame(Frame& frame, const SceneView& scene, std::string_view source,
+                const RenderOptions& options, const TargetViews& targets, bool kept,
+                RenderStats& stats) {
     const auto start = std::chrono::steady_clock::now();
     stats = RenderStats{};
     reset(frame);
     frame.scene = &scene;
     frame.source = source;
     frame.options = &options;
-    frame.targets = detail::FrameTargets(
-        targets, destination.caller == nullptr || targets.unchanged_since_last_frame);
+    frame.targets = detail::FrameTargets(targets, kept);
     if (options.camera) {
         frame.camera = *options.camera;
     } else {
@@ -200,7 +214,7 @@ void render_frame_in_arena(detail::Frame& frame, const SceneView& scene, std::st
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-}  // namespace
+}  // namespace detail
 
 int render_thread_count(int requested) {
     const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));

@@ -57,6 +57,8 @@ struct TilePlan {
     HierarchicalZ hiz;     // per-block depth bounds in use (block traversal, depth writes on)
     bool stream_targets;   // rows go to the targets with non-temporal stores
     bool alpha_instances;  // some instance is alpha-tested or blended (Frame::alpha_instances)
+    // The hiz debug view's per-block counts (Frame::hiz_block_counts); null in other frames.
+    std::uint32_t* hiz_block_counts = nullptr;
 
     bool shades() const { return shading != ShadingPath::None; }
     bool tagged() const {

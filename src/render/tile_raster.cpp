@@ -300,7 +300,8 @@ void rasterize_tiles(Frame& frame, RenderStats& stats) {
                         options.simd,
                         hiz,
                         stream_targets(frame, target_bytes),
-                        frame.alpha_instances};
+                        frame.alpha_instances,
+                        frame.hiz_block_counts};
     tbb::parallel_for(std::size_t{0}, tiles, [&](std::size_t tile_number) {
         // Streamed target rows (TilePlan::write_row) are ordered before whatever reads them
         // after the loop.

@@ -28,6 +28,18 @@ std::int64_t edge_at(const TriangleSetup& t, std::size_t k, int px, int py) {
     return t.edge_a[k] * px + t.edge_b[k] * py + t.edge_c[k];
 }
 
+// The hiz view's counts: each 8x8 block of a skipped job, in the image's block grid.
+void count_hidden_blocks(const TileContext& c, int bx0, int by0, int bx1, int by1) {
+    const std::size_t blocks_per_row =
+        std::size_t(c.plan.frame.tiles_x) * std::size_t(kBlocksPerTileRow);
+    const std::size_t first_x = std::size_t(c.x0 / kBlockSize);
+    const std::size_t first_y = std::size_t(c.y0 / kBlockSize);
+    for (int by = by0; by <= by1; ++by)
+        for (int bx = bx0; bx <= bx1; ++bx)
+            ++c.plan.hiz_block_counts[(first_y + std::size_t(by)) * blocks_per_row + first_x +
+                                      std::size_t(bx)];
+}
+
 bool fits_int32(std::int64_t v) {
     return v >= std::numeric_limits<std::int32_t>::min() &&
            v <= std::numeric_limits<std::int32_t>::max();
@@ -136,6 +148,7 @@ std::uint64_t rasterize_blocks(TileContext& c, const TileTriangle& t, TileBuffer
                                       x1 - setup.min_x, y1 - setup.min_y, farthest, plan.compare)) {
                 c.counts.small_jobs.hidden += small;
                 ++c.counts.blocks_hidden;
+                if (plan.hiz_block_counts != nullptr) count_hidden_blocks(c, bx0, by0, bx1, by1);
                 return 0;
             }
         }

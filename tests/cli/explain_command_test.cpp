@@ -63,6 +63,7 @@ TEST(ExplainCommand, EveryAlgorithmWritesItsPicturesAndAnIndexNamingThem) {
         {"frustum-culling", "sphere:200", {"frustum-culling.png"}},
         {"backface-culling", "sphere:200", {"backface-culling.png"}},
         {"occlusion-culling", "city:40", {"occlusion-culling.png"}},
+        {"hiz", "city:40", {"hiz.png", "hiz-front-to-back.png"}},
     };
     for (const ExplainCase& c : cases) {
         const auto dir = temp_dir(std::string("explain-") + c.algorithm);
@@ -130,10 +131,11 @@ TEST(ExplainCommand, WarnockResultIsTheVisibilityFlagsImage) {
 
 TEST(ExplainCommand, BadInputIsExitTwoWithOneLine) {
     const auto dir = temp_dir("explain-bad");
-    const CommandResult unknown = run_zraster("explain hiz sphere:20 -o out", dir);
+    const CommandResult unknown = run_zraster("explain quadtree sphere:20 -o out", dir);
     EXPECT_EQ(unknown.exit_code, 2);
     EXPECT_TRUE(single_line(unknown.output)) << unknown.output;
-    EXPECT_TRUE(unknown.output.starts_with("zraster: explain: unknown algorithm 'hiz' (zbuffer, "))
+    EXPECT_TRUE(
+        unknown.output.starts_with("zraster: explain: unknown algorithm 'quadtree' (zbuffer, "))
         << unknown.output;
     const CommandResult missing = run_zraster("explain zbuffer /nonexistent/x.obj -o out", dir);
     EXPECT_EQ(missing.exit_code, 2);

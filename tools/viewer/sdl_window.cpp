@@ -14,6 +14,7 @@
 #include <string>
 
 #include "command_line.hpp"
+#include "debug_view_legend.hpp"
 #include "rgba_image.hpp"
 #include "view_hud.hpp"
 #include "view_window.hpp"
@@ -243,7 +244,10 @@ void ViewerWindow::present(bool read_back) {
     else
         shown_ = RgbaImage(1, 1);
     if (last_) shown_.pixels = last_->rgba;
-    if (s_.hud) draw_hud(shown_, hud_line(s_.state, latest_, fps_.fps()));
+    if (s_.hud) {
+        draw_debug_view_legend(shown_, latest_.view, latest_.stats.view_scale);
+        draw_hud(shown_, hud_line(s_.state, latest_, fps_.fps()));
+    }
     if (help_shown_) draw_help(shown_);
     if (!texture_ || texture_width_ != shown_.width || texture_height_ != shown_.height) {
         texture_.reset(SDL_CreateTexture(renderer_.get(), SDL_PIXELFORMAT_RGBA32,

@@ -1,6 +1,7 @@
 // The picture makers of `zraster explain`, one file per family: explain_zbuffer.cpp,
 // explain_painter.cpp, explain_bsp.cpp, explain_warnock.cpp, explain_abuffer.cpp,
-// explain_polygon_clip.cpp, explain_line_clip.cpp, explain_lines.cpp, explain_culling.cpp.
+// explain_polygon_clip.cpp, explain_line_clip.cpp, explain_lines.cpp, explain_culling.cpp,
+// explain_hiz.cpp.
 #pragma once
 #include <zraster/render.hpp>
 #include <zraster/scene.hpp>
@@ -31,5 +32,6 @@ void explain_dda(const ExplainInput& in, ExplainOutput& out);
 void explain_frustum_culling(const ExplainInput& in, ExplainOutput& out);
 void explain_backface_culling(const ExplainInput& in, ExplainOutput& out);
 void explain_occlusion_culling(const ExplainInput& in, ExplainOutput& out);
+void explain_hiz(const ExplainInput& in, ExplainOutput& out);
 
 }  // namespace zraster::cli

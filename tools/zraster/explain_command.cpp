@@ -21,7 +21,7 @@ struct ExplainedAlgorithm {
     const char* introduction;
 };
 
-constexpr std::array<ExplainedAlgorithm, 14> kExplained = {{
+constexpr std::array<ExplainedAlgorithm, 15> kExplained = {{
     {"zbuffer", "The z-buffer", true, explain_zbuffer,
      "Triangles are drawn in submission order; each pixel keeps the nearest depth seen so far. "
      "Left: the color buffer, right: the depth buffer (near bright, far dark, empty black)."},
@@ -71,6 +71,10 @@ constexpr std::array<ExplainedAlgorithm, 14> kExplained = {{
      "Whole instances hidden behind others are skipped before their triangles are read. The "
      "pictures show which instances the final image does not show at all: what an exact "
      "occlusion culler could skip."},
+    {"hiz", "Hierarchical z", true, explain_hiz,
+     "The rasterizer keeps, per 8x8 block of a tile, the farthest depth stored there, and skips "
+     "a triangle's part in a block when its nearest depth cannot pass against that bound. The "
+     "pictures are the renderer's debug views (docs/debug-views.md)."},
 }};
 
 const ExplainedAlgorithm& find_algorithm(const std::string& name) {

@@ -51,6 +51,11 @@ void add_frame_arguments(CLI::App& cmd, RenderArguments& a) {
                    "antialiased, transparent materials blended in any submission order")
         ->check(CLI::IsMember({"zbuffer", "painter", "bsp", "warnock", "abuffer"}))
         ->capture_default_str();
+    cmd.add_option("--view", a.view,
+                   "Debug view in place of the shaded color (docs/debug-views.md): none, depth, "
+                   "normals, overdraw, hiz, tiles, ids, backfaces, clipped, zfight, mip (or lod); "
+                   "with --visibility zbuffer, no --aa or --msaa")
+        ->capture_default_str();
     cmd.add_option("--aa", a.aa,
                    "Antialiasing: N x N supersampling of the z-buffer path (every sample "
                    "shaded), or with --msaa N x N multisampling (N = 1, 2, 4, 8; one shading per "
@@ -332,6 +337,10 @@ RenderOptions make_render_options(const RenderArguments& a,
         glm::any(glm::greaterThan(ec, glm::dvec3(255.0))))
         throw InputError("--edge-color", "components must be in 0..255");
     o.edge_color = glm::vec3(ec / 255.0);
+    const std::optional<DebugView> view = parse_debug_view(a.view);
+    if (!view)
+        throw InputError("--view", "unknown view '" + a.view + "': one of " + debug_view_names());
+    o.view = *view;
     return o;
 }
 
@@ -346,6 +355,8 @@ void check_frame_arguments(const RenderArguments& a) {
         throw InputError("--aa", "with --msaa must be 1, 2, 4 or 8");
     if (a.aa > 1 && a.visibility != "zbuffer" && a.visibility != "abuffer")
         throw InputError("--aa", "works with --visibility zbuffer or abuffer");
+    if (a.view != "none" && !renders_with_pipeline(a))
+        throw InputError("--view", "works with --visibility zbuffer, without --aa or --msaa");
 }
 
 bool renders_with_pipeline(const RenderArguments& a) {

@@ -60,6 +60,7 @@ struct RenderArguments {
     bool msaa = false;
     bool wireframe = false, hidden_line = false;
     std::string edge_color = "0,0,0";
+    std::string view = "none";          // --view: a debug view's name (debug_view.hpp)
     DepthCameraArguments depth_camera;  // `render` only (add_depth_camera_options)
 };
 

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "debug_view_legend.hpp"
 #include "depth_camera_outputs.hpp"
 #include "output_maps.hpp"
 #include "render/material_alpha.hpp"
@@ -92,7 +93,17 @@ RenderedFrame render_outputs(const RenderArguments& a, const Scene& scene, Outpu
     // RGBA -> RGB: the alpha channel is always opaque. Byte by byte: a 3-byte copy_n per pixel
     // was a memmove call each, 5% of a batch of small images.
     std::vector<std::uint8_t> rgb(std::size_t(t.width) * std::size_t(t.height) * 3);
+    RgbaImage legend_image;
     const std::uint8_t* in = t.color.data();
+    if (options.view != DebugView::None) {
+        if (notes != nullptr)
+            fmt::print(notes, "{}\n", debug_view_legend(options.view, frame.stats.view_scale));
+        legend_image.width = t.width;
+        legend_image.height = t.height;
+        legend_image.pixels = t.color;
+        draw_debug_view_legend(legend_image, options.view, frame.stats.view_scale);
+        in = legend_image.pixels.data();
+    }
     std::uint8_t* out = rgb.data();
     for (std::size_t i = 0, n = rgb.size() / 3; i < n; ++i, in += 4, out += 3) {
         out[0] = in[0];

@@ -51,6 +51,9 @@ ViewState::ViewState(const RenderArguments& initial, std::span<const glm::vec3> 
     start_camera_ = orbit_of(initial, *options.camera, sphere_, sphere_.radius);
     camera_ = start_camera_;
     antialias_ = initial.aa > 1;
+    // --view starts the d key's cycle there (the requests carry the view, not the flag).
+    view_ = options.view;
+    args_.view = "none";
 }
 
 void ViewState::apply(const InputEvent& event) {
@@ -151,6 +154,7 @@ void ViewState::apply_key(char key) {
             const std::string size = args_.size;
             args_ = initial_;
             args_.size = size;
+            args_.view = "none";
             camera_ = start_camera_;
             view_ = DebugView::None;
             antialias_ = initial_.aa > 1;

@@ -27,6 +27,7 @@ FrameResult FrameDrawer::draw(const FrameRequest& request) {
             const RenderResult& frame = renderer_.render(scene_, options);
             result.rgba = frame.targets.color;
             result.stats = frame.stats;
+            result.view = options.view;
         } else {
             VisibilityStats visibility;
             ABufferStats abuffer;

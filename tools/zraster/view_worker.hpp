@@ -31,9 +31,10 @@ struct FrameResult {
     int width = 0, height = 0;
     std::vector<std::uint8_t> rgba;  // empty when the frame failed
     RenderStats stats;
-    std::size_t polygons = 0;  // painter's, BSP, Warnock: after projection or in the tree
-    double render_ms = 0.0;    // wall time of the whole frame, options included
-    std::string error;         // why the frame failed (a limit, a refused option)
+    DebugView view = DebugView::None;  // the debug view drawn (the pipeline's frames only)
+    std::size_t polygons = 0;          // painter's, BSP, Warnock: after projection or in the tree
+    double render_ms = 0.0;            // wall time of the whole frame, options included
+    std::string error;                 // why the frame failed (a limit, a refused option)
 };
 
 // The options of one viewer frame, and the frame drawn as `zraster render` draws it (the
