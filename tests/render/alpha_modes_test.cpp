@@ -90,7 +90,7 @@ int unorm8(double v) {
     return int(std::clamp(float(v), 0.0f, 1.0f) * 255.0f + 0.5f);
 }
 
-glm::ivec3 pixel(const RenderResult& r, int px, int py) {
+glm::ivec3 rgb_at(const RenderResult& r, int px, int py) {
     const std::uint8_t* p = &r.targets.color[(std::size_t(py) * kImage + std::size_t(px)) * 4];
     return {p[0], p[1], p[2]};
 }
@@ -122,7 +122,7 @@ TEST(AlphaModes, BlendIsIndependentOfSubmissionOrderAndMatchesOver) {
     for (const auto& [px, py, expected] :
          {std::tuple{32, 32, inner}, std::tuple{26, 38, inner}, std::tuple{20, 20, middle},
           std::tuple{14, 14, glm::dvec3(kLayers[0].color)}}) {
-        const glm::ivec3 got = pixel(first, px, py);
+        const glm::ivec3 got = rgb_at(first, px, py);
         for (int c = 0; c < 3; ++c)
             EXPECT_LE(std::abs(got[c] - unorm8(expected[c])), 1)
                 << "pixel " << px << "," << py << " channel " << c;
@@ -187,7 +187,7 @@ TEST(AlphaModes, MaskDiscardsFragmentsUnderTheCutoffBeforeTheyWriteDepth) {
             // The cell's center pixel: texel alpha 0 at the top left cell, alternating.
             const int px = 16 + 8 * cx + 4, py = 16 + 8 * cy + 4;
             const bool transparent = ((cx + cy) & 1) == 0;
-            const glm::ivec3 got = pixel(r, px, py);
+            const glm::ivec3 got = rgb_at(r, px, py);
             const float depth = r.targets.depth[std::size_t(py) * kImage + std::size_t(px)];
             if (transparent) {
                 EXPECT_EQ(got, glm::ivec3(unorm8(0.9), unorm8(0.2), unorm8(0.1)))
@@ -275,7 +275,7 @@ TEST(AlphaModes, CutOutsAndBlendedSurfacesDoNotOcclude) {
         EXPECT_EQ(culled.targets.color, plain.targets.color);
         EXPECT_TRUE(same_bits(culled.targets.depth, plain.targets.depth));
         // The opaque square shows through the holes.
-        EXPECT_EQ(pixel(plain, 27, 27), glm::ivec3(unorm8(0.9), unorm8(0.2), unorm8(0.1)));
+        EXPECT_EQ(rgb_at(plain, 27, 27), glm::ivec3(unorm8(0.9), unorm8(0.2), unorm8(0.1)));
     }
 }
 
