@@ -183,8 +183,10 @@ std::unique_ptr<BenchScene> load_bench_scene(const std::string& spec) {
     auto s = std::make_unique<BenchScene>();
     s->spec = spec;
     const std::string path = resolve_scene_path(spec);
-    s->scene = is_procedural_spec(path) ? make_procedural_scene(path) : load_scene(path);
-    for (const std::string& w : s->scene.warnings) fmt::print("warning: {}\n", w);
+    std::vector<std::string> warnings;
+    s->scene =
+        is_procedural_spec(path) ? make_procedural_scene(path) : load_scene(path, {}, &warnings);
+    for (const std::string& w : warnings) fmt::print("warning: {}\n", w);
     // The same framing render() does for an unset camera, computed once outside the timing.
     s->camera = fit_camera(s->scene.world_positions());
     const FlatMesh flat = flatten_scene(s->scene);

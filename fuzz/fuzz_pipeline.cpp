@@ -244,7 +244,7 @@ RenderOptions make_options(FuzzedDataProvider& in) {
 
 Scene make_scene(FuzzedDataProvider& in) {
     Scene scene;
-    scene.source = "fuzz";
+    scene.name = "fuzz";
     const int meshes = in.ConsumeIntegralInRange(1, 3);
     for (int m = 0; m < meshes; ++m) scene.meshes.push_back(make_mesh(in));
     const int materials = in.ConsumeIntegralInRange(0, 3);

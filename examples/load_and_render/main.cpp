@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <exception>
 #include <string>
+#include <vector>
 
 int main(int argc, char** argv) {
     if (argc != 3) {
@@ -22,9 +23,11 @@ int main(int argc, char** argv) {
         const std::string spec = argv[1];
         zraster::LoadOptions load;
         load.isolation = zraster::LoadIsolation::WorkerProcess;  // a crashing importer is an error
+        std::vector<std::string> warnings;  // a missing texture, ...: the scene is still drawn
         const zraster::Scene scene = zraster::is_procedural_spec(spec)
                                          ? zraster::make_procedural_scene(spec)
-                                         : zraster::load_scene(spec, load);
+                                         : zraster::load_scene(spec, load, &warnings);
+        for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
 
         zraster::RenderOptions options;  // no camera: the scene is framed as `zraster` does
         options.width = 640;

@@ -74,12 +74,15 @@ struct LoadOptions {
 // mode and cutoff, base-color and opacity textures; docs/materials.md says what each format
 // gives) and the node hierarchy as instances (node transforms applied). Computes
 // angle-weighted normals when the file has none, and bounds.
-// Missing material libraries or textures become Scene::warnings (default material used).
+// Non-fatal problems (a missing material library or texture: the default material or the
+// material's color is used; a texture reduced to fit the limits; an unknown glTF alpha mode) are
+// appended to *warnings when it is given, one line each, starting with the file name.
 // Throws InputError (one line naming the file and the cause) for a missing or unreadable file,
 // an unknown format, malformed or truncated content, no triangles, or NaN/Inf coordinates, and
 // with LoadIsolation::WorkerProcess when the importer process crashes, times out or runs out of
 // memory.
-ZRASTER_API Scene load_scene(const std::filesystem::path& path, const LoadOptions& options = {});
+ZRASTER_API Scene load_scene(const std::filesystem::path& path, const LoadOptions& options = {},
+                             std::vector<std::string>* warnings = nullptr);
 
 // Potentially visible sets as `zraster pvs` writes them (docs/portals.md): {"zraster_pvs": 1,
 // "scene", "method", "slack", "cells", "steps", "sets": [{"cell": name, "bounded": bool,
@@ -102,8 +105,9 @@ ZRASTER_API bool has_mesh_file_extension(const std::filesystem::path& path);
 // A human-readable summary (for `zraster info`), one item per line, each line ending in '\n':
 // source, meshes (name, triangles, vertices, material, mesh-space bounds), instances, totals
 // over instances, exact world bounds, materials (name, base color, texture sizes, alpha mode and
-// whether alpha can be below 1, from what) and warnings.
+// whether alpha can be below 1, from what) and the loader's warnings, when given.
 // Long lists are cut after 50 entries with a count of the rest.
-ZRASTER_API std::string describe_scene(const Scene& scene);
+ZRASTER_API std::string describe_scene(const Scene& scene,
+                                       const std::vector<std::string>& warnings = {});
 
 }  // namespace zraster

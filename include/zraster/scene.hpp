@@ -24,8 +24,9 @@ struct ZRASTER_API Scene {
     std::vector<Mesh> meshes;
     std::vector<Material> materials{Material{}};  // index 0 is the default material
     std::vector<Instance> instances;
-    std::vector<std::string> warnings;  // non-fatal problems found while loading
-    std::string source;                 // file name or builtin name, for messages
+    // What error messages call this scene: the file it was loaded from, the procedural scene's
+    // specification ("city:100"), or the caller's label.
+    std::string name;
     // Cells and portals (portals.hpp, validated for these instances), for portal culling; null:
     // none. Shared: copies of a scene share one graph.
     std::shared_ptr<const CellGraph> cells;

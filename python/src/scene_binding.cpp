@@ -56,11 +56,12 @@ std::shared_ptr<PyScene> scene_from_items(const py::iterable& items) {
     return scene;
 }
 
-std::shared_ptr<PyScene> scene_from_owned(std::shared_ptr<const Scene> owned, std::string spec) {
+std::shared_ptr<PyScene> scene_from_owned(std::shared_ptr<const Scene> owned, std::string spec,
+                                          std::vector<std::string> warnings) {
     auto scene = std::make_shared<PyScene>();
     view_of(*owned, scene->meshes, scene->instances);
     scene->materials = owned->materials;
-    scene->warnings = owned->warnings;
+    scene->warnings = std::move(warnings);
     scene->spec = std::move(spec);
     scene->owned = std::move(owned);
     return scene;
@@ -91,14 +92,16 @@ std::shared_ptr<PyScene> load(const py::object& path_object, const std::string& 
     options.max_texture_side = max_texture_side;
     options.max_texture_bytes = max_texture_bytes;
     std::shared_ptr<const Scene> owned;
+    std::vector<std::string> warnings;
     {
         py::gil_scoped_release release;
-        owned = std::make_shared<const Scene>(is_procedural_spec(spec) ? make_procedural_scene(spec)
-                                                                       : load_scene(spec, options));
+        owned = std::make_shared<const Scene>(is_procedural_spec(spec)
+                                                  ? make_procedural_scene(spec)
+                                                  : load_scene(spec, options, &warnings));
     }
-    for (const std::string& warning : owned->warnings)  // each names the file
+    for (const std::string& warning : warnings)  // each names the file
         warn_load(warning.starts_with(spec) ? warning : spec + ": " + warning);
-    return scene_from_owned(std::move(owned), spec);
+    return scene_from_owned(std::move(owned), spec, std::move(warnings));
 }
 
 }  // namespace
@@ -130,7 +133,7 @@ const Scene& PyScene::owning() const {
     if (owning_copy_) return *owning_copy_;
     auto scene = std::make_shared<Scene>();
     scene->materials = materials;
-    scene->source = spec;
+    scene->name = spec;
     for (const MeshView& view : meshes) {
         Mesh mesh;
         mesh.name = std::string(view.name);

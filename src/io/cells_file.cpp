@@ -30,7 +30,7 @@ class CellsReader {
           options_(options),
           policy_(path, options.allow_outside_references) {}
 
-    Scene read() {
+    LoadedScene read() {
         check_input_file(path_, options_.max_file_bytes);
         const std::vector<std::uint8_t> bytes = read_file_bytes(path_);
         json document;
@@ -42,7 +42,7 @@ class CellsReader {
         if (!document.is_object()) fail("", "expected a JSON object");
         if (!document.contains("zraster_cells") || document["zraster_cells"] != 1)
             fail("zraster_cells", "expected 1 (the format's version)");
-        scene_.source = file_;
+        scene_.name = file_;
         read_meshes(member(document, "meshes", "", json::value_t::object));
         read_instances(member(document, "instances", "", json::value_t::array));
         read_cells(member(document, "cells", "", json::value_t::array));
@@ -56,7 +56,7 @@ class CellsReader {
         }
         validate_cell_graph(graph_, boxes, names, file_);
         scene_.cells = std::make_shared<const CellGraph>(std::move(graph_));
-        return std::move(scene_);
+        return {std::move(scene_), std::move(warnings_)};
     }
 
   private:
@@ -117,7 +117,8 @@ class CellsReader {
             if (check.verdict == ReferencePolicy::Verdict::Refused)
                 fail(at, check.reason + ": refused (" + ReferencePolicy::how_to_allow() + ")");
             if (is_cells_file(file)) fail(at, "a cells file cannot place another cells file");
-            meshes_[name] = load_scene(file, options_);
+            LoadedScene& loaded = meshes_[name];
+            loaded.scene = load_scene(file, options_, &loaded.warnings);
         }
     }
 
@@ -171,8 +172,8 @@ class CellsReader {
             const auto found = meshes_.find(mesh);
             if (found == meshes_.end())
                 fail(at + ".mesh", "no mesh named '" + mesh + "' in \"meshes\"");
-            const Scene& source = found->second;
-            if (!mesh_base.contains(mesh)) mesh_base[mesh] = append_meshes(source);
+            const Scene& source = found->second.scene;
+            if (!mesh_base.contains(mesh)) mesh_base[mesh] = append_meshes(found->second);
             const glm::mat4 placement = transform(instance, at);
             const auto first = std::uint32_t(scene_.instances.size());
             for (const Instance& placed : source.instances) {
@@ -189,7 +190,8 @@ class CellsReader {
         }
     }
 
-    std::uint32_t append_meshes(const Scene& source) {
+    std::uint32_t append_meshes(const LoadedScene& loaded) {
+        const Scene& source = loaded.scene;
         const auto material_base = std::uint32_t(scene_.materials.size());
         scene_.materials.insert(scene_.materials.end(), source.materials.begin(),
                                 source.materials.end());
@@ -198,7 +200,7 @@ class CellsReader {
             mesh.material += material_base;
             scene_.meshes.push_back(std::move(mesh));
         }
-        for (const std::string& w : source.warnings) scene_.warnings.push_back(w);
+        warnings_.insert(warnings_.end(), loaded.warnings.begin(), loaded.warnings.end());
         return mesh_base;
     }
 
@@ -294,8 +296,9 @@ class CellsReader {
     const LoadOptions& options_;
     const ReferencePolicy policy_;
     Scene scene_;
+    std::vector<std::string> warnings_;  // of the meshes placed
     CellGraph graph_;
-    std::map<std::string, Scene> meshes_;
+    std::map<std::string, LoadedScene> meshes_;
     std::map<std::string, std::pair<std::uint32_t, std::uint32_t>> instance_ranges_;
     std::map<std::string, std::uint32_t> cell_index_;
 };
@@ -308,7 +311,7 @@ bool is_cells_file(const std::filesystem::path& path) {
     return name.size() > 11 && name.ends_with(".cells.json");
 }
 
-Scene load_cells_file(const std::filesystem::path& path, const LoadOptions& options) {
+LoadedScene load_cells_file(const std::filesystem::path& path, const LoadOptions& options) {
     return CellsReader(path, options).read();
 }
 

@@ -3,6 +3,8 @@
 #include <zraster/load.hpp>
 #include <zraster/scene.hpp>
 
+#include "io/loaded_scene.hpp"
+
 #include <filesystem>
 
 namespace zraster::io {
@@ -13,6 +15,6 @@ bool is_cells_file(const std::filesystem::path& path);
 // The scene a cells.json file describes, its cell graph validated (validate_cell_graph). Every
 // mistake is an InputError naming this file, the JSON element ("cells[2].instances[0]") and the
 // cause; the mesh files are loaded with `options` (a mesh file's own errors name it).
-Scene load_cells_file(const std::filesystem::path& path, const LoadOptions& options);
+LoadedScene load_cells_file(const std::filesystem::path& path, const LoadOptions& options);
 
 }  // namespace zraster::io

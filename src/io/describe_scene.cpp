@@ -99,8 +99,8 @@ void list(std::string& out, const char* title, const std::vector<Item>& items, a
 
 }  // namespace
 
-std::string describe_scene(const Scene& scene) {
-    std::string out = "source: " + scene.source + "\n";
+std::string describe_scene(const Scene& scene, const std::vector<std::string>& warnings) {
+    std::string out = "source: " + scene.name + "\n";
     list(out, "meshes", scene.meshes, [&](std::size_t i, const Mesh& m) {
         std::string material = std::to_string(m.material);
         if (m.material < scene.materials.size())
@@ -125,8 +125,8 @@ std::string describe_scene(const Scene& scene) {
         return "material " + std::to_string(i) + " " + quoted(m.name) + ": base color " +
                vec(m.base_color) + ", texture " + texture + opacity_texture + ", " + alpha_text(m);
     });
-    if (!scene.warnings.empty())
-        list(out, "warnings", scene.warnings, [](std::size_t, const std::string& w) { return w; });
+    if (!warnings.empty())
+        list(out, "warnings", warnings, [](std::size_t, const std::string& w) { return w; });
     return out;
 }
 

@@ -131,14 +131,12 @@ class MaterialTable {
     bool obj_missing_library_ = false;
 };
 
-}  // namespace
-
-Scene load_scene(const std::filesystem::path& path, const LoadOptions& options) {
+io::LoadedScene load_any(const std::filesystem::path& path, const LoadOptions& options) {
     if (io::is_cells_file(path)) return io::load_cells_file(path, options);
     if (!is_obj(path)) return io::load_scene_with_assimp(path, options);
     io::check_input_file(path, options.max_file_bytes);
-    std::variant<Scene, io::ObjFallback> fast = io::read_obj(path, options);
-    if (Scene* scene = std::get_if<Scene>(&fast)) return std::move(*scene);
+    std::variant<io::LoadedScene, io::ObjFallback> fast = io::read_obj(path, options);
+    if (io::LoadedScene* loaded = std::get_if<io::LoadedScene>(&fast)) return std::move(*loaded);
 
     // A file the fast reader leaves to Assimp. If Assimp cannot read it either, the line that
     // looked wrong comes first: Assimp's messages name neither the line nor, often, the cause
@@ -155,7 +153,18 @@ Scene load_scene(const std::filesystem::path& path, const LoadOptions& options) 
     }
 }
 
-Scene io::load_scene_with_assimp(const std::filesystem::path& path, const LoadOptions& options) {
+}  // namespace
+
+Scene load_scene(const std::filesystem::path& path, const LoadOptions& options,
+                 std::vector<std::string>* warnings) {
+    io::LoadedScene loaded = load_any(path, options);
+    if (warnings != nullptr)
+        warnings->insert(warnings->end(), loaded.warnings.begin(), loaded.warnings.end());
+    return std::move(loaded.scene);
+}
+
+io::LoadedScene io::load_scene_with_assimp(const std::filesystem::path& path,
+                                           const LoadOptions& options) {
     if (options.isolation == LoadIsolation::WorkerProcess) return io::load_in_worker(path, options);
     return io::import_with_assimp(path, options, false);
 }
@@ -167,8 +176,8 @@ std::uintmax_t io::precheck_assimp_input(const std::filesystem::path& path,
     return size;
 }
 
-Scene io::import_with_assimp(const std::filesystem::path& path, const LoadOptions& options,
-                             bool prechecked) {
+io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
+                                       const LoadOptions& options, bool prechecked) {
     const std::string file = path.string();
     if (!prechecked) io::precheck_assimp_input(path, options);
 
@@ -220,8 +229,9 @@ Scene io::import_with_assimp(const std::filesystem::path& path, const LoadOption
         throw InputError(file, "too many triangles (" + std::to_string(triangles) + ", limit " +
                                    std::to_string(options.max_triangles) + ")");
 
-    Scene scene;
-    scene.source = file;
+    LoadedScene loaded;
+    Scene& scene = loaded.scene;
+    scene.name = file;
     std::vector<std::string> warnings;
     // (An OBJ's refused material libraries are warned about by the library scan instead.)
     if (!is_obj(path))
@@ -253,8 +263,8 @@ Scene io::import_with_assimp(const std::filesystem::path& path, const LoadOption
         scene.instances.push_back(std::move(instance));
     }
     // One line each: they quote names and paths from the file.
-    for (const std::string& w : warnings) scene.warnings.push_back(file + ": " + io::one_line(w));
-    return scene;
+    for (const std::string& w : warnings) loaded.warnings.push_back(file + ": " + io::one_line(w));
+    return loaded;
 }
 
 }  // namespace zraster

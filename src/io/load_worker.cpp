@@ -215,7 +215,7 @@ void set_worker_test_hook(WorkerTestHook hook) {
     g_test_hook = hook;
 }
 
-Scene load_in_worker(const std::filesystem::path& path, const LoadOptions& options) {
+LoadedScene load_in_worker(const std::filesystem::path& path, const LoadOptions& options) {
     const std::string file = path.string();
     // Our own checks (fuzzed, in this process): the common refusals need no child.
     precheck_assimp_input(path, options);

@@ -4,6 +4,8 @@
 #include <zraster/load.hpp>
 #include <zraster/scene.hpp>
 
+#include "io/loaded_scene.hpp"
+
 #include <filesystem>
 
 namespace zraster::io {
@@ -11,7 +13,7 @@ namespace zraster::io {
 // Runs import_with_assimp(path, options) in a forked child under the limits of `options` and
 // returns the validated scene it sends back. Throws InputError naming the file for a bad file
 // and for a child that crashed, was killed, timed out or ran out of memory.
-Scene load_in_worker(const std::filesystem::path& path, const LoadOptions& options);
+LoadedScene load_in_worker(const std::filesystem::path& path, const LoadOptions& options);
 
 // Tests only: a function the child calls before importing (to make it crash, hang or allocate
 // without bound); null (the default) for none. Not thread-safe; set it before loading.

@@ -180,15 +180,16 @@ void check_finite_positions(const std::vector<MeshOutcome>& built, const std::ve
 }
 
 // The scene: the built meshes with their materials, one instance each, named after its object.
-std::variant<Scene, ObjFallback> assemble_scene(const std::filesystem::path& path,
-                                                std::vector<MeshOutcome>& built,
-                                                const Structure& structure,
-                                                const std::vector<std::uint32_t>& output,
-                                                const Statements& statements,
-                                                const LoadOptions& options) {
+std::variant<LoadedScene, ObjFallback> assemble_scene(const std::filesystem::path& path,
+                                                      std::vector<MeshOutcome>& built,
+                                                      const Structure& structure,
+                                                      const std::vector<std::uint32_t>& output,
+                                                      const Statements& statements,
+                                                      const LoadOptions& options) {
     const std::string file = path.string();
-    Scene scene;
-    scene.source = file;
+    LoadedScene loaded;
+    Scene& scene = loaded.scene;
+    scene.name = file;
     std::vector<std::string> warnings;
     Materials materials(path, statements, options, scene, warnings);
     for (std::size_t i = 0; i < built.size(); ++i) {
@@ -205,15 +206,15 @@ std::variant<Scene, ObjFallback> assemble_scene(const std::filesystem::path& pat
         scene.instances.push_back(std::move(instance));
     }
     // One line each, as load_scene_with_assimp makes them.
-    for (const std::string& w : warnings) scene.warnings.push_back(file + ": " + one_line(w));
-    return scene;
+    for (const std::string& w : warnings) loaded.warnings.push_back(file + ": " + one_line(w));
+    return loaded;
 }
 
 }  // namespace
 }  // namespace obj
 
-std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
-                                          const LoadOptions& options) {
+std::variant<LoadedScene, ObjFallback> read_obj(const std::filesystem::path& path,
+                                                const LoadOptions& options) {
     const std::string file = path.string();
     const obj::FileBytes bytes(path);
     if (bytes.size() == 0) throw InputError(file, "empty file");

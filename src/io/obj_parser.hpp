@@ -19,6 +19,8 @@
 #include <zraster/load.hpp>
 #include <zraster/scene.hpp>
 
+#include "io/loaded_scene.hpp"
+
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -35,13 +37,13 @@ struct ObjFallback {
 // Reads an OBJ file that check_input_file has accepted. Throws InputError ("FILE: line N:
 // cause" where a line is to blame) for out-of-range or zero face indices, non-finite vertex
 // coordinates, no triangles, too many triangles, or an unreadable file.
-std::variant<Scene, ObjFallback> read_obj(const std::filesystem::path& path,
-                                          const LoadOptions& options);
+std::variant<LoadedScene, ObjFallback> read_obj(const std::filesystem::path& path,
+                                                const LoadOptions& options);
 
 // load_scene through Assimp for any format (defined in load_scene.cpp): what read_obj falls back
 // to, and what the tests compare it with. In this process or in a worker process, as
 // options.isolation says.
-Scene load_scene_with_assimp(const std::filesystem::path& path, const LoadOptions& options);
+LoadedScene load_scene_with_assimp(const std::filesystem::path& path, const LoadOptions& options);
 
 // The checks made before Assimp sees a file (input_file_check, declared_counts_check with the
 // glTF byte ranges). Returns the file size. Throws InputError.
@@ -49,7 +51,7 @@ std::uintmax_t precheck_assimp_input(const std::filesystem::path& path, const Lo
 
 // The import and conversion proper, always in this process; the pre-checks too unless
 // `prechecked` (the worker's parent made them).
-Scene import_with_assimp(const std::filesystem::path& path, const LoadOptions& options,
-                         bool prechecked);
+LoadedScene import_with_assimp(const std::filesystem::path& path, const LoadOptions& options,
+                               bool prechecked);
 
 }  // namespace zraster::io

@@ -133,13 +133,14 @@ void check(bool ok, const std::string& what) {
     if (!ok) throw Malformed{what};
 }
 
-Scene decode_scene(Reader& in, const LoadOptions& options) {
-    Scene scene;
+LoadedScene decode_scene(Reader& in, const LoadOptions& options) {
+    LoadedScene loaded;
+    Scene& scene = loaded.scene;
     scene.materials.clear();
-    scene.source = in.get_string("the source name");
+    scene.name = in.get_string("the source name");
     const std::uint32_t warnings = in.get_count(4, "warnings");
     for (std::uint32_t i = 0; i < warnings; ++i)
-        scene.warnings.push_back(InputError("", in.get_string("a warning")).cause());
+        loaded.warnings.push_back(InputError("", in.get_string("a warning")).cause());
 
     const std::uint32_t texture_count = in.get_count(8, "textures");
     std::vector<std::shared_ptr<const Texture>> textures;
@@ -244,16 +245,17 @@ Scene decode_scene(Reader& in, const LoadOptions& options) {
         scene.instances.push_back(std::move(instance));
     }
     check(in.remaining() == 0, std::to_string(in.remaining()) + " bytes after the scene");
-    return scene;
+    return loaded;
 }
 
 }  // namespace
 
-std::string encode_scene_message(const Scene& scene) {
+std::string encode_scene_message(const LoadedScene& loaded) {
+    const Scene& scene = loaded.scene;
     Writer out;
-    out.put_string(scene.source);
-    out.put(static_cast<std::uint32_t>(scene.warnings.size()));
-    for (const std::string& w : scene.warnings) out.put_string(w);
+    out.put_string(scene.name);
+    out.put(static_cast<std::uint32_t>(loaded.warnings.size()));
+    for (const std::string& w : loaded.warnings) out.put_string(w);
 
     std::map<const Texture*, std::uint32_t> texture_index;
     std::vector<const Texture*> textures;
@@ -326,8 +328,8 @@ std::uint64_t worker_payload_bytes(std::span<const std::uint8_t> header, const s
     return in.get<std::uint64_t>();
 }
 
-Scene decode_worker_message(std::span<const std::uint8_t> message, const std::string& file,
-                            const LoadOptions& options) {
+LoadedScene decode_worker_message(std::span<const std::uint8_t> message, const std::string& file,
+                                  const LoadOptions& options) {
     const std::uint64_t payload = worker_payload_bytes(message, file);
     const auto invalid = [&](const std::string& why) {
         return InputError(file, "the importer process sent an invalid result: " + why);
@@ -341,8 +343,7 @@ Scene decode_worker_message(std::span<const std::uint8_t> message, const std::st
     try {
         switch (static_cast<WorkerMessageKind>(kind)) {
             case WorkerMessageKind::Scene: {
-                Scene scene = decode_scene(in, options);
-                return scene;
+                return decode_scene(in, options);
             }
             case WorkerMessageKind::InputError: {
                 std::string cause = in.get_string("the error message");

@@ -30,6 +30,8 @@
 #include <zraster/load.hpp>
 #include <zraster/scene.hpp>
 
+#include "io/loaded_scene.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -50,7 +52,7 @@ enum class WorkerMessageKind : std::uint32_t {
 };
 
 // The child's side. Strings longer than kMaxWorkerString are cut (names and warnings only).
-std::string encode_scene_message(const Scene& scene);
+std::string encode_scene_message(const LoadedScene& loaded);
 std::string encode_error_message(WorkerMessageKind kind, const std::string& text);
 
 // The payload length a header announces, or throws InputError(file, ...) if the header is not a
@@ -60,7 +62,7 @@ std::uint64_t worker_payload_bytes(std::span<const std::uint8_t> header, const s
 // The parent's side: the scene, or throws InputError(file, cause) for an error message, a
 // malformed message ("the importer process sent an invalid result: ...") or an out-of-memory
 // message; std::runtime_error for an internal error of the child. Mesh bounds are recomputed.
-Scene decode_worker_message(std::span<const std::uint8_t> message, const std::string& file,
-                            const LoadOptions& options);
+LoadedScene decode_worker_message(std::span<const std::uint8_t> message, const std::string& file,
+                                  const LoadOptions& options);
 
 }  // namespace zraster::io

@@ -279,7 +279,7 @@ const RenderResult& Renderer::render(const Scene& scene, const RenderOptions& op
     const SceneView view = view_of(scene, s.mesh_views, s.instance_views);
     Destination destination;
     destination.own = &s.result.targets;
-    render_frame(s.arena_for(options), s.frame, view, scene.source, options, destination,
+    render_frame(s.arena_for(options), s.frame, view, scene.name, options, destination,
                  s.result.stats);
     return s.result;
 }
@@ -304,7 +304,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     Destination destination;
     destination.own = &result.targets;
     tbb::task_arena arena(thread_count(options));
-    render_frame(arena, frame, view, scene.source, options, destination, result.stats);
+    render_frame(arena, frame, view, scene.name, options, destination, result.stats);
     return result;
 }
 

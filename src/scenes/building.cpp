@@ -67,8 +67,8 @@ class BuildingMaker {
     explicit BuildingMaker(const BuildingSpec& spec) : spec_(spec), rng_(spec.seed) {}
 
     Scene make() {
-        scene_.source = "building:" + std::to_string(spec_.rows) + "x" +
-                        std::to_string(spec_.columns) + ":" + std::to_string(spec_.seed);
+        scene_.name = "building:" + std::to_string(spec_.rows) + "x" +
+                      std::to_string(spec_.columns) + ":" + std::to_string(spec_.seed);
         add_materials();
         add_rooms();
         choose_doorways();
@@ -293,7 +293,7 @@ class BuildingMaker {
             boxes.push_back(scene_.meshes[instance.mesh].bounds.transformed(instance.transform));
             names.push_back(instance.name);
         }
-        validate_cell_graph(graph_, boxes, names, scene_.source);
+        validate_cell_graph(graph_, boxes, names, scene_.name);
         scene_.cells = std::make_shared<const CellGraph>(std::move(graph_));
     }
 

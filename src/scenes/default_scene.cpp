@@ -53,7 +53,7 @@ glm::mat4 translation(float x, float y, float z) {
 
 Scene make_default_scene() {
     Scene scene;
-    scene.source = "builtin:default";
+    scene.name = "builtin:default";
     scene.materials = {Material{}};
 
     // Ground: 8x8 squares of 32 texels per texture, repeated 20 times: 0.5-unit squares. Large

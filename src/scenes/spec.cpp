@@ -52,7 +52,7 @@ Scene single_mesh_scene(Mesh mesh, std::string_view spec) {
     std::vector<Mesh> meshes;
     meshes.push_back(std::move(mesh));
     Scene scene = scene_from_meshes(std::move(meshes));
-    scene.source = std::string(spec);
+    scene.name = std::string(spec);
     return scene;
 }
 
@@ -60,7 +60,7 @@ Scene make_builtin_scene(std::string_view spec) {
     const std::string_view name = spec.substr(std::string_view("builtin:").size());
     if (name == "default") {
         Scene scene = make_default_scene();
-        scene.source = std::string(spec);
+        scene.name = std::string(spec);
         return scene;
     }
     if (name == "sphere") return single_mesh_scene(make_uv_sphere(1.0f, 64, 128), spec);
@@ -82,7 +82,7 @@ Scene make_procedural_scene(std::string_view spec) {
     if (has_prefix(spec, "builtin:")) return make_builtin_scene(spec);
     if (const auto building = detail::parse_building_spec(spec)) {
         Scene scene = make_building(building->rows, building->columns, building->seed);
-        scene.source = std::string(spec);
+        scene.name = std::string(spec);
         return scene;
     }
 

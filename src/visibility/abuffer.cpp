@@ -228,7 +228,7 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
         const DepthPlane& plane = planes[i];
         for_each_mask(polygons[i], viewport, n, [&](int px, int py, std::uint64_t mask) {
             if (pool.size() >= limit)
-                throw LimitExceeded(scene.source, "max_abuffer_fragments",
+                throw LimitExceeded(scene.name, "max_abuffer_fragments",
                                     "A-buffer: more than " + std::to_string(limit) +
                                         " fragments (polygon-pixel pairs, the limit): render "
                                         "fewer pixels or polygons, or raise the limit");

@@ -53,8 +53,8 @@ auto naming_the_scene(const Scene& scene, const F& f) -> decltype(f()) {
     try {
         return f();
     } catch (const LimitExceeded& e) {
-        if (!e.file().empty() || scene.source.empty()) throw;
-        throw LimitExceeded(scene.source, e.limit(), e.cause());
+        if (!e.file().empty() || scene.name.empty()) throw;
+        throw LimitExceeded(scene.name, e.limit(), e.cause());
     }
 }
 

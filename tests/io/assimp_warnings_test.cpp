@@ -40,7 +40,9 @@ std::string triangle_3ds(std::uint16_t a, std::uint16_t b, std::uint16_t c) {
 std::vector<std::string> warnings_of(const std::filesystem::path& path, LoadIsolation isolation) {
     LoadOptions options;
     options.isolation = isolation;
-    return load_scene(path, options).warnings;
+    std::vector<std::string> warnings;
+    load_scene(path, options, &warnings);
+    return warnings;
 }
 
 TEST(AssimpWarnings, ThreeDsFaceIndexPastTheVerticesIsAWarningNotSilence) {

@@ -43,15 +43,14 @@ TEST(DescribeScene, ExactWorldBoundsWarningsAndLongLists) {
     mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     mesh.indices = {0, 1, 2};
     Scene scene = scene_from_meshes({mesh});
-    scene.source = "generated";
+    scene.name = "generated";
     for (int i = 1; i < 60; ++i) {
         Instance instance = scene.instances[0];
         instance.transform[3] = glm::vec4(static_cast<float>(i), 0, 0, 1);
         instance.name = "copy";
         scene.instances.push_back(instance);
     }
-    scene.warnings.push_back("generated: something odd");
-    const std::string text = describe_scene(scene);
+    const std::string text = describe_scene(scene, {"generated: something odd"});
     EXPECT_TRUE(has_line(text, "instances: 60")) << text;
     EXPECT_TRUE(has_line(text, "  instance 0 'tri': mesh 0, identity")) << text;
     EXPECT_TRUE(has_line(text, "  instance 1 'copy': mesh 0, translation (1, 0, 0)")) << text;

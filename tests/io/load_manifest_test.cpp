@@ -203,7 +203,7 @@ TEST_P(ManifestMesh, MatchesTheManifest) {
     const auto path = test::shared_data(std::string("meshes/") + c.file);
 
     const Scene scene = load_scene(path);
-    EXPECT_EQ(scene.source, path.string());
+    EXPECT_EQ(scene.name, path.string());
     EXPECT_EQ(scene.triangle_count(), row.triangles);
 
     const auto printed = parse_bounds(row.bounds);

@@ -39,8 +39,9 @@ TEST(LoadMaterials, MtlValuesAndASharedTexture) {
     test::write_bytes(dir / "scene.obj", std::string("mtllib scene.mtl\n") + kQuadObj +
                                              "o a\nusemtl red\nf 1/1 2/2 3/3\n"
                                              "o b\nusemtl blue\nf 1/1 3/3 4/4\n");
-    const Scene scene = load_scene(dir / "scene.obj");
-    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    std::vector<std::string> warnings;
+    const Scene scene = load_scene(dir / "scene.obj", {}, &warnings);
+    EXPECT_TRUE(warnings.empty()) << warnings.front();
     ASSERT_EQ(scene.materials.size(), 3u);  // the default, red, blue
     const Material& red = material_of(scene, "a");
     const Material& blue = material_of(scene, "b");
@@ -68,10 +69,11 @@ TEST(LoadMaterials, MissingTextureIsAWarning) {
     test::write_bytes(dir / "m.mtl", "newmtl skin\nKd 0.3 0.6 0.9\nmap_Kd nothere.png\n");
     test::write_bytes(dir / "m.obj",
                       std::string("mtllib m.mtl\n") + kQuadObj + "usemtl skin\nf 1/1 2/2 3/3\n");
-    const Scene scene = load_scene(dir / "m.obj");
-    ASSERT_EQ(scene.warnings.size(), 1u);
-    EXPECT_EQ(scene.warnings[0], (dir / "m.obj").string() +
-                                     ": texture 'nothere.png' not found, using the material color");
+    std::vector<std::string> warnings;
+    const Scene scene = load_scene(dir / "m.obj", {}, &warnings);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0], (dir / "m.obj").string() +
+                               ": texture 'nothere.png' not found, using the material color");
     ASSERT_EQ(scene.materials.size(), 2u);
     EXPECT_EQ(scene.materials[1].base_color, glm::vec3(0.3f, 0.6f, 0.9f));
     EXPECT_FALSE(scene.materials[1].base_color_texture);
@@ -83,11 +85,12 @@ TEST(LoadMaterials, UnreadableTextureIsAWarning) {
     test::write_bytes(dir / "m.mtl", "newmtl skin\nmap_Kd broken.png\n");
     test::write_bytes(dir / "m.obj",
                       std::string("mtllib m.mtl\n") + kQuadObj + "usemtl skin\nf 1/1 2/2 3/3\n");
-    const Scene scene = load_scene(dir / "m.obj");
-    ASSERT_EQ(scene.warnings.size(), 1u);
-    EXPECT_NE(scene.warnings[0].find("texture 'broken.png' cannot be read (cannot decode image"),
+    std::vector<std::string> warnings;
+    const Scene scene = load_scene(dir / "m.obj", {}, &warnings);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("texture 'broken.png' cannot be read (cannot decode image"),
               std::string::npos)
-        << scene.warnings[0];
+        << warnings[0];
     EXPECT_FALSE(scene.materials.at(1).base_color_texture);
 }
 
@@ -95,11 +98,12 @@ TEST(LoadMaterials, MissingMaterialLibraryIsAWarningAndTheDefaultMaterial) {
     const auto dir = test::temp_dir("io-materials-missing-mtl");
     test::write_bytes(dir / "m.obj",
                       std::string("mtllib gone.mtl\n") + kQuadObj + "usemtl skin\nf 1/1 2/2 3/3\n");
-    const Scene scene = load_scene(dir / "m.obj");
-    ASSERT_EQ(scene.warnings.size(), 1u);
-    EXPECT_EQ(scene.warnings[0], (dir / "m.obj").string() +
-                                     ": material library 'gone.mtl' not found, using the default "
-                                     "material");
+    std::vector<std::string> warnings;
+    const Scene scene = load_scene(dir / "m.obj", {}, &warnings);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0], (dir / "m.obj").string() +
+                               ": material library 'gone.mtl' not found, using the default "
+                               "material");
     EXPECT_EQ(scene.materials.size(), 1u);
     EXPECT_EQ(scene.meshes.at(0).material, 0u);
     EXPECT_EQ(scene.materials[0].base_color, Material{}.base_color);
@@ -111,9 +115,10 @@ TEST(LoadMaterials, UndefinedMaterialNameIsAWarning) {
     test::write_bytes(dir / "m.obj",
                       std::string("mtllib m.mtl\n") + kQuadObj +
                           "o a\nusemtl ghost\nf 1 2 3\no b\nusemtl known\nf 1 3 4\n");
-    const Scene scene = load_scene(dir / "m.obj");
-    ASSERT_EQ(scene.warnings.size(), 1u);
-    EXPECT_NE(scene.warnings[0].find("material 'ghost' is not defined, using the default material"),
+    std::vector<std::string> warnings;
+    const Scene scene = load_scene(dir / "m.obj", {}, &warnings);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("material 'ghost' is not defined, using the default material"),
               std::string::npos);
     EXPECT_EQ(material_of(scene, "a").name, Material{}.name);
     EXPECT_EQ(material_of(scene, "b").base_color, glm::vec3(1, 0, 0));
@@ -121,8 +126,10 @@ TEST(LoadMaterials, UndefinedMaterialNameIsAWarning) {
 
 TEST(LoadMaterials, SpiderFindsItsWindowsPathTextures) {
     ZRASTER_REQUIRE_SHARED_DATA();
-    const Scene scene = load_scene(test::shared_data("meshes/obj/spider/spider.obj"));
-    EXPECT_TRUE(scene.warnings.empty()) << scene.warnings.front();
+    std::vector<std::string> warnings;
+    const Scene scene =
+        load_scene(test::shared_data("meshes/obj/spider/spider.obj"), {}, &warnings);
+    EXPECT_TRUE(warnings.empty()) << warnings.front();
     // spider.mtl defines five materials (map_Kd .\X.jpg); its meshes use four of them
     // (Brusttex is unused, so it is not loaded). Sizes are those of the JPEG files.
     const std::map<std::string, std::pair<int, int>> expected = {{"HLeibTex", {249, 250}},
@@ -145,8 +152,10 @@ TEST(LoadMaterials, SpiderFindsItsWindowsPathTextures) {
 
 TEST(LoadMaterials, SpotHasUvsButNoMaterialLibrary) {
     ZRASTER_REQUIRE_SHARED_DATA();
-    const Scene scene = load_scene(test::shared_data("meshes/obj/spot/spot_triangulated.obj"));
-    EXPECT_TRUE(scene.warnings.empty());
+    std::vector<std::string> warnings;
+    const Scene scene =
+        load_scene(test::shared_data("meshes/obj/spot/spot_triangulated.obj"), {}, &warnings);
+    EXPECT_TRUE(warnings.empty());
     EXPECT_EQ(scene.materials.size(), 1u);
     EXPECT_FALSE(scene.materials[0].base_color_texture);
     EXPECT_EQ(scene.meshes.at(0).uvs.size(), scene.meshes.at(0).positions.size());
@@ -164,10 +173,11 @@ TEST(LoadMaterials, EmbeddedAndExternalGltfTextures) {
           Expectation{"meshes/gltf/BoxTextured.glb", "meshes/gltf/BoxTextured/BoxTextured.gltf",
                       211}}) {
         SCOPED_TRACE(e.embedded);
-        const Scene glb = load_scene(test::shared_data(e.embedded));
-        const Scene gltf = load_scene(test::shared_data(e.external));
+        std::vector<std::string> warnings;
+        const Scene glb = load_scene(test::shared_data(e.embedded), {}, &warnings);
+        const Scene gltf = load_scene(test::shared_data(e.external), {}, &warnings);
+        EXPECT_TRUE(warnings.empty());
         for (const Scene* s : {&glb, &gltf}) {
-            EXPECT_TRUE(s->warnings.empty());
             ASSERT_EQ(s->meshes.size(), 1u);
             const Material& m = s->materials.at(s->meshes[0].material);
             ASSERT_TRUE(m.base_color_texture);
@@ -186,9 +196,10 @@ TEST(LoadMaterials, EmbeddedAndExternalGltfTextures) {
 TEST(LoadMaterials, PlyHeaderTextureThatIsNotShippedIsAWarning) {
     ZRASTER_REQUIRE_SHARED_DATA();
     const auto path = test::shared_data("meshes/ply/fuze.ply");
-    const Scene scene = load_scene(path);
-    ASSERT_EQ(scene.warnings.size(), 1u);
-    EXPECT_EQ(scene.warnings[0],
+    std::vector<std::string> warnings;
+    const Scene scene = load_scene(path, {}, &warnings);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0],
               path.string() + ": texture 'fuze uv.jpg' not found, using the material color");
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "io/io_test_util.hpp"
+#include "io/load_with_warnings.hpp"
 #include "io/obj_parser.hpp"
 #include "support/test_support.hpp"
 
@@ -102,22 +103,23 @@ TEST(LoadReferences, ObjLibrariesAndTexturesOutsideAreNotReadWithAWarning) {
     const auto model = dir / "model" / "m.obj";
     test::write_bytes(model,
                       "mtllib ../outside.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n");
-    const Scene fast = load_scene(model, in_process());
-    const Scene assimp = io::load_scene_with_assimp(model, in_process());
-    for (const Scene* scene : {&fast, &assimp}) {
-        ASSERT_FALSE(scene->warnings.empty());
-        EXPECT_NE(scene->warnings[0].find("material library '../outside.mtl' not read"),
+    const io::LoadedScene fast = test::load_with_warnings(model, in_process());
+    const io::LoadedScene assimp = io::load_scene_with_assimp(model, in_process());
+    for (const io::LoadedScene* loaded : {&fast, &assimp}) {
+        ASSERT_FALSE(loaded->warnings.empty());
+        EXPECT_NE(loaded->warnings[0].find("material library '../outside.mtl' not read"),
                   std::string::npos)
-            << scene->warnings[0];
-        EXPECT_NE(scene->warnings[0].find("is outside the model's folder"), std::string::npos)
-            << scene->warnings[0];
-        EXPECT_EQ(scene->materials.size(), 1u);  // the default material only
+            << loaded->warnings[0];
+        EXPECT_NE(loaded->warnings[0].find("is outside the model's folder"), std::string::npos)
+            << loaded->warnings[0];
+        EXPECT_EQ(loaded->scene.materials.size(), 1u);  // the default material only
     }
     EXPECT_EQ(fast.warnings, assimp.warnings);
     // Allowed: the library's red material is read.
-    const Scene allowed = load_scene(model, in_process(true));
+    std::vector<std::string> allowed_warnings;
+    const Scene allowed = load_scene(model, in_process(true), &allowed_warnings);
     EXPECT_EQ(allowed.materials.size(), 2u);
-    EXPECT_TRUE(allowed.warnings.empty()) << allowed.warnings[0];
+    EXPECT_TRUE(allowed_warnings.empty()) << allowed_warnings[0];
 
     // A texture outside: the material keeps its color, with a warning naming the file.
     test::write_bytes(dir / "model" / "tex.mtl", "newmtl t\nKd 1 1 1\nmap_Kd ../outside.png\n");
@@ -125,10 +127,11 @@ TEST(LoadReferences, ObjLibrariesAndTexturesOutsideAreNotReadWithAWarning) {
     const auto textured = dir / "model" / "t.obj";
     test::write_bytes(
         textured, "mtllib tex.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nusemtl t\nf 1/1 2/1 3/1\n");
-    const Scene t = load_scene(textured, in_process());
-    ASSERT_EQ(t.warnings.size(), 1u);
-    EXPECT_NE(t.warnings[0].find("texture '../outside.png' not read"), std::string::npos)
-        << t.warnings[0];
+    std::vector<std::string> t_warnings;
+    const Scene t = load_scene(textured, in_process(), &t_warnings);
+    ASSERT_EQ(t_warnings.size(), 1u);
+    EXPECT_NE(t_warnings[0].find("texture '../outside.png' not read"), std::string::npos)
+        << t_warnings[0];
     EXPECT_EQ(t.materials.at(1).base_color_texture, nullptr);
 }
 

@@ -238,14 +238,15 @@ TEST(LoadStructure, MultipleObjectsBecomeMeshesWithIdentityInstances) {
     const auto path = write_fixture(dir, "two.obj",
                                     "o first\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"
                                     "o second\nv 0 0 5\nv 1 0 5\nv 0 1 5\nf 4 5 6\n");
-    const Scene scene = load_scene(path);
+    std::vector<std::string> warnings;
+    const Scene scene = load_scene(path, {}, &warnings);
     ASSERT_EQ(scene.meshes.size(), 2u);
     ASSERT_EQ(scene.instances.size(), 2u);
     EXPECT_EQ(scene.meshes[0].name, "first");
     EXPECT_EQ(scene.meshes[1].name, "second");
     EXPECT_EQ(scene.meshes[1].bounds.lo.z, 5.0f);
     for (const Instance& i : scene.instances) EXPECT_EQ(i.transform, glm::mat4(1.0f));
-    EXPECT_TRUE(scene.warnings.empty());
+    EXPECT_TRUE(warnings.empty());
 }
 
 }  // namespace

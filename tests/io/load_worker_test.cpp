@@ -5,6 +5,7 @@
 #include <zraster/load.hpp>
 
 #include "io/io_test_util.hpp"
+#include "io/load_with_warnings.hpp"
 #include "io/load_worker.hpp"
 #include "io/worker_message.hpp"
 #include "support/test_support.hpp"
@@ -73,9 +74,12 @@ void expect_same_texture(const Texture* a, const Texture* b, const std::string& 
 }
 
 // Bit for bit: every array, name, material, texture, instance and warning.
-void expect_same_scene(const Scene& a, const Scene& b, const std::string& what) {
-    EXPECT_EQ(a.source, b.source) << what;
-    EXPECT_EQ(a.warnings, b.warnings) << what;
+void expect_same_scene(const io::LoadedScene& a_loaded, const io::LoadedScene& b_loaded,
+                       const std::string& what) {
+    const Scene& a = a_loaded.scene;
+    const Scene& b = b_loaded.scene;
+    EXPECT_EQ(a.name, b.name) << what;
+    EXPECT_EQ(a_loaded.warnings, b_loaded.warnings) << what;
     ASSERT_EQ(a.materials.size(), b.materials.size()) << what;
     for (std::size_t i = 0; i < a.materials.size(); ++i) {
         const Material &x = a.materials[i], &y = b.materials[i];
@@ -118,8 +122,8 @@ void expect_same_scene(const Scene& a, const Scene& b, const std::string& what) 
 }
 
 void expect_same_load(const std::filesystem::path& path) {
-    const Scene in_process = load_scene(path);
-    const Scene worker = load_scene(path, worker_options());
+    const io::LoadedScene in_process = test::load_with_warnings(path);
+    const io::LoadedScene worker = test::load_with_warnings(path, worker_options());
     expect_same_scene(in_process, worker, path.string());
 }
 
@@ -292,9 +296,9 @@ TEST(LoadWorker, SharedMeshesLoadTheSame) {
         if (ext != ".ply" && ext != ".stl" && ext != ".gltf" && ext != ".glb" && ext != ".off" &&
             ext != ".3ds")
             continue;
-        Scene in_process;
+        io::LoadedScene in_process;
         try {
-            in_process = load_scene(entry.path());
+            in_process = test::load_with_warnings(entry.path());
         } catch (const InputError& e) {
             // A file zraster refuses (BoxWithInfinites.glb) is refused the same way.
             test::expect_input_error([&] { load_scene(entry.path(), worker_options()); },
@@ -302,7 +306,7 @@ TEST(LoadWorker, SharedMeshesLoadTheSame) {
             ++compared;
             continue;
         }
-        expect_same_scene(in_process, load_scene(entry.path(), worker_options()),
+        expect_same_scene(in_process, test::load_with_warnings(entry.path(), worker_options()),
                           entry.path().string());
         ++compared;
     }
@@ -324,7 +328,7 @@ std::string quad_message() {
     update_bounds(quad);
     Scene scene = scene_from_meshes({quad});
     scene.instances[0].name.clear();
-    return io::encode_scene_message(scene);
+    return io::encode_scene_message({scene, {}});
 }
 
 template <typename T>
@@ -365,9 +369,9 @@ void expect_invalid(const std::string& message, std::string_view cause) {
 }
 
 TEST(WorkerMessage, RoundTrip) {
-    const Scene scene = load_scene(ply_fixture("roundtrip"));
-    const std::string message = io::encode_scene_message(scene);
-    expect_same_scene(scene, io::decode_worker_message(byte_span(message), "m.ply", {}), "quad");
+    const io::LoadedScene loaded = test::load_with_warnings(ply_fixture("roundtrip"));
+    const std::string message = io::encode_scene_message(loaded);
+    expect_same_scene(loaded, io::decode_worker_message(byte_span(message), "m.ply", {}), "quad");
 }
 
 TEST(WorkerMessage, RefusesMalformedMessages) {
@@ -390,7 +394,7 @@ TEST(WorkerMessage, RefusesMalformedMessages) {
     bare.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     bare.indices = {0, 1, 2};
     update_bounds(bare);
-    expect_invalid(io::encode_scene_message(scene_from_meshes({bare})),
+    expect_invalid(io::encode_scene_message({scene_from_meshes({bare}), {}}),
                    "mesh 0: normals not one per position");
     // A count of 2^60 positions is refused before anything is allocated.
     expect_invalid(huge_count_message(), "positions: 1152921504606846976 elements do not fit");
@@ -428,9 +432,11 @@ TEST(WorkerMessage, RoundTripKeepsMaterialAlpha) {
     blend.base_color_texture = shared;
     blend.opacity_texture = shared;
     scene.materials.insert(scene.materials.end(), {opaque, mask, blend});
-    const std::string message = io::encode_scene_message(scene);
-    const Scene decoded = io::decode_worker_message(byte_span(message), "m.ply", {});
-    expect_same_scene(scene, decoded, "alpha");
+    const io::LoadedScene sent{scene, {"m.ply: a warning"}};
+    const std::string message = io::encode_scene_message(sent);
+    const io::LoadedScene received = io::decode_worker_message(byte_span(message), "m.ply", {});
+    expect_same_scene(sent, received, "alpha");
+    const Scene& decoded = received.scene;
     ASSERT_EQ(decoded.materials.size(), scene.materials.size());
     const std::size_t n = decoded.materials.size();
     EXPECT_EQ(decoded.materials[n - 1].base_color_texture,
@@ -453,7 +459,7 @@ TEST(WorkerMessage, RefusesBadMaterialAlpha) {
     const auto message_with = [&](auto change) {
         Scene scene = scene_from_meshes({tri});
         change(scene.materials.at(0));
-        return io::encode_scene_message(scene);
+        return io::encode_scene_message({scene, {}});
     };
     expect_invalid(message_with([](Material& m) { m.alpha_mode = static_cast<AlphaMode>(3); }),
                    "material 0: unknown alpha mode 3");

@@ -29,12 +29,17 @@ void expect_same_texels(const Texture* a, const Texture* b) {
 }
 
 // The file loaded in process and through the worker: the materials' alpha must agree field by
-// field. Returns the in-process scene.
-Scene load_alpha_both_ways(const std::filesystem::path& path) {
+// field, and so must the warnings. Returns the in-process scene and its warnings.
+Scene load_alpha_both_ways(const std::filesystem::path& path,
+                           std::vector<std::string>* warnings = nullptr) {
     SCOPED_TRACE(path.string());
-    Scene in_process = load_scene(path, alpha_load_options(LoadIsolation::InProcess));
-    const Scene worker = load_scene(path, alpha_load_options(LoadIsolation::WorkerProcess));
-    EXPECT_EQ(in_process.warnings, worker.warnings);
+    std::vector<std::string> in_process_warnings;
+    Scene in_process =
+        load_scene(path, alpha_load_options(LoadIsolation::InProcess), &in_process_warnings);
+    std::vector<std::string> worker_warnings;
+    const Scene worker =
+        load_scene(path, alpha_load_options(LoadIsolation::WorkerProcess), &worker_warnings);
+    EXPECT_EQ(in_process_warnings, worker_warnings);
     EXPECT_EQ(in_process.materials.size(), worker.materials.size());
     for (std::size_t i = 0; i < std::min(in_process.materials.size(), worker.materials.size());
          ++i) {
@@ -46,6 +51,7 @@ Scene load_alpha_both_ways(const std::filesystem::path& path) {
         expect_same_texels(a.base_color_texture.get(), b.base_color_texture.get());
         expect_same_texels(a.opacity_texture.get(), b.opacity_texture.get());
     }
+    if (warnings != nullptr) *warnings = in_process_warnings;
     return in_process;
 }
 
@@ -78,10 +84,12 @@ std::filesystem::path write_alpha_gltf(const std::string& test, const std::strin
 }
 
 TEST(MaterialAlpha, GltfMaskKeepsItsCutoff) {
+    std::vector<std::string> warnings;
     const Scene scene = load_alpha_both_ways(
         write_alpha_gltf("mask", R"({"name":"leaf","alphaMode":"MASK","alphaCutoff":0.3,)"
-                                 R"("pbrMetallicRoughness":{"baseColorFactor":[1,1,1,0.8]}})"));
-    EXPECT_TRUE(scene.warnings.empty());
+                                 R"("pbrMetallicRoughness":{"baseColorFactor":[1,1,1,0.8]}})"),
+        &warnings);
+    EXPECT_TRUE(warnings.empty());
     const Material& m = only_material(scene);
     EXPECT_EQ(m.name, "leaf");
     EXPECT_EQ(m.alpha_mode, AlphaMode::Mask);
@@ -137,28 +145,31 @@ TEST(MaterialAlpha, GltfCutoffOutsideZeroToOneIsClampedWithAWarning) {
         const auto path = write_alpha_gltf(
             "cutoff",
             std::string(R"({"name":"m","alphaMode":"MASK","alphaCutoff":)") + c.cutoff + "}");
-        const Scene scene = load_alpha_both_ways(path);
+        std::vector<std::string> warnings;
+        const Scene scene = load_alpha_both_ways(path, &warnings);
         EXPECT_EQ(only_material(scene).alpha_mode, AlphaMode::Mask);
         EXPECT_EQ(only_material(scene).alpha_cutoff, c.kept);
-        ASSERT_EQ(scene.warnings.size(), 1u);
-        EXPECT_EQ(scene.warnings[0], path.string() + ": material 'm': " + c.warning);
+        ASSERT_EQ(warnings.size(), 1u);
+        EXPECT_EQ(warnings[0], path.string() + ": material 'm': " + c.warning);
     }
     // Outside MASK the cutoff means nothing: clamped without a warning.
+    std::vector<std::string> blend_warnings;
     const Scene blend = load_alpha_both_ways(
-        write_alpha_gltf("cutoff-blend", R"({"alphaMode":"BLEND","alphaCutoff":-1})"));
-    EXPECT_TRUE(blend.warnings.empty());
+        write_alpha_gltf("cutoff-blend", R"({"alphaMode":"BLEND","alphaCutoff":-1})"),
+        &blend_warnings);
+    EXPECT_TRUE(blend_warnings.empty());
     EXPECT_EQ(only_material(blend).alpha_cutoff, 0.0f);
 }
 
 TEST(MaterialAlpha, GltfUnknownAlphaModeIsOpaqueWithAWarning) {
     const auto path = write_alpha_gltf("mode", R"({"name":"odd","alphaMode":"blend"})");
-    const Scene scene = load_alpha_both_ways(path);
+    std::vector<std::string> warnings;
+    const Scene scene = load_alpha_both_ways(path, &warnings);
     EXPECT_EQ(only_material(scene).alpha_mode, AlphaMode::Opaque);
-    ASSERT_EQ(scene.warnings.size(), 1u);
-    EXPECT_EQ(scene.warnings[0],
-              path.string() +
-                  ": material 'odd': alphaMode 'blend' is not OPAQUE, MASK or BLEND, "
-                  "drawn opaque (glTF's default)");
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0], path.string() +
+                               ": material 'odd': alphaMode 'blend' is not OPAQUE, MASK or BLEND, "
+                               "drawn opaque (glTF's default)");
 }
 
 // A 2 x 2 image of color 200: RGBA (`channels` 4) with alpha 255 but 64 at texel (1, 1), or RGB.
@@ -229,8 +240,9 @@ TEST(MaterialAlpha, MtlDissolveAndTransparency) {
                         "newmtl both_opaque\nd 1\nTr 1\n"
                         "newmtl plain\nKd 1 0 0\n",
                         {"half", "tr", "d_then_tr", "tr_then_d", "both_opaque", "plain"});
-    const Scene scene = load_alpha_both_ways(path);
-    EXPECT_TRUE(scene.warnings.empty());
+    std::vector<std::string> warnings;
+    const Scene scene = load_alpha_both_ways(path, &warnings);
+    EXPECT_TRUE(warnings.empty());
     EXPECT_EQ(alpha_material_of(scene, "half").opacity, 0.5f);
     EXPECT_EQ(alpha_material_of(scene, "tr").opacity, 0.75f);
     // d wins over Tr in either order (Assimp alone keeps the last of the two).
@@ -257,8 +269,9 @@ TEST(MaterialAlpha, MtlOpacityTextures) {
                                       "newmtl cutout\nmap_d -imfchan m leaf.png\n"
                                       "newmtl leaf\nmap_Kd leaf.png\nmap_d leaf.png\n",
                                       {"grey", "cutout", "leaf"});
-    const Scene scene = load_alpha_both_ways(path);
-    EXPECT_TRUE(scene.warnings.empty());
+    std::vector<std::string> warnings;
+    const Scene scene = load_alpha_both_ways(path, &warnings);
+    EXPECT_TRUE(warnings.empty());
 
     const Material& g = alpha_material_of(scene, "grey");
     EXPECT_EQ(g.opacity, 0.5f);
@@ -290,20 +303,22 @@ TEST(MaterialAlpha, MtlOpacityTextureBudgets) {
     const auto path = write_alpha_obj(dir, "newmtl m\nmap_d big.png\n", {"m"});
     LoadOptions small_side;
     small_side.max_texture_side = 16;
-    const Scene reduced = load_scene(path, small_side);
+    std::vector<std::string> reduced_warnings;
+    const Scene reduced = load_scene(path, small_side, &reduced_warnings);
     ASSERT_TRUE(alpha_material_of(reduced, "m").opacity_texture);
     EXPECT_EQ(alpha_material_of(reduced, "m").opacity_texture->width(), 16);
-    ASSERT_EQ(reduced.warnings.size(), 1u);
-    EXPECT_NE(reduced.warnings[0].find("texture 'big.png' is 64x64, reduced to 16x16"),
+    ASSERT_EQ(reduced_warnings.size(), 1u);
+    EXPECT_NE(reduced_warnings[0].find("texture 'big.png' is 64x64, reduced to 16x16"),
               std::string::npos)
-        << reduced.warnings[0];
+        << reduced_warnings[0];
     LoadOptions small_budget;
     small_budget.max_texture_bytes = 1000;
-    const Scene refused = load_scene(path, small_budget);
+    std::vector<std::string> refused_warnings;
+    const Scene refused = load_scene(path, small_budget, &refused_warnings);
     EXPECT_FALSE(alpha_material_of(refused, "m").opacity_texture);
-    ASSERT_EQ(refused.warnings.size(), 1u);
-    EXPECT_NE(refused.warnings[0].find("more than the textures' budget"), std::string::npos)
-        << refused.warnings[0];
+    ASSERT_EQ(refused_warnings.size(), 1u);
+    EXPECT_NE(refused_warnings[0].find("more than the textures' budget"), std::string::npos)
+        << refused_warnings[0];
 }
 
 // A DirectX .x material: Assimp gives its diffuse color's alpha (0.4), no opacity of its own.

@@ -4,6 +4,7 @@
 #include <zraster/load.hpp>
 
 #include "io/io_test_util.hpp"
+#include "io/load_with_warnings.hpp"
 #include "io/obj_parser.hpp"
 #include "support/test_support.hpp"
 
@@ -43,9 +44,11 @@ void expect_same_vec3(const std::vector<glm::vec3>& fast, const std::vector<glm:
 // (normalised or computed from those coordinates) to 1e-4: on the shared meshes, where up to 7%
 // of the coordinates differ by one ulp, computed normals differ by up to 1.7e-5 (teapot.obj).
 // (With Assimp's own number parser in place of std::from_chars, every float is identical.)
-void expect_same_scene(const Scene& fast, const Scene& assimp) {
-    EXPECT_EQ(fast.source, assimp.source);
-    EXPECT_EQ(fast.warnings, assimp.warnings);
+void expect_same_scene(const io::LoadedScene& fast_loaded, const io::LoadedScene& assimp_loaded) {
+    const Scene& fast = fast_loaded.scene;
+    const Scene& assimp = assimp_loaded.scene;
+    EXPECT_EQ(fast.name, assimp.name);
+    EXPECT_EQ(fast_loaded.warnings, assimp_loaded.warnings);
     ASSERT_EQ(fast.meshes.size(), assimp.meshes.size());
     for (std::size_t m = 0; m < fast.meshes.size(); ++m) {
         const Mesh& a = fast.meshes[m];
@@ -105,26 +108,26 @@ void expect_same_scene(const Scene& fast, const Scene& assimp) {
 }
 
 // The fast reader must read the file itself (no fallback) and agree with the Assimp path.
-Scene expect_parity(const std::filesystem::path& path) {
+io::LoadedScene expect_parity(const std::filesystem::path& path) {
     SCOPED_TRACE(path.string());
-    std::variant<Scene, ObjFallback> fast = io::read_obj(path, {});
+    std::variant<io::LoadedScene, ObjFallback> fast = io::read_obj(path, {});
     if (const auto* fallback = std::get_if<ObjFallback>(&fast)) {
         ADD_FAILURE() << "left to Assimp: line " << fallback->line << ": " << fallback->reason;
         return {};
     }
-    expect_same_scene(std::get<Scene>(fast), io::load_scene_with_assimp(path, {}));
+    expect_same_scene(std::get<io::LoadedScene>(fast), io::load_scene_with_assimp(path, {}));
     // load_scene takes the fast path and gives the same.
-    expect_same_scene(load_scene(path), std::get<Scene>(fast));
-    return std::get<Scene>(std::move(fast));
+    expect_same_scene(test::load_with_warnings(path), std::get<io::LoadedScene>(fast));
+    return std::get<io::LoadedScene>(std::move(fast));
 }
 
 // The fast reader leaves the file to Assimp, and load_scene then gives Assimp's scene.
 void expect_fallback(const std::filesystem::path& path, std::size_t line) {
     SCOPED_TRACE(path.string());
-    std::variant<Scene, ObjFallback> fast = io::read_obj(path, {});
+    std::variant<io::LoadedScene, ObjFallback> fast = io::read_obj(path, {});
     ASSERT_TRUE(std::holds_alternative<ObjFallback>(fast)) << "read by the fast reader";
     EXPECT_EQ(std::get<ObjFallback>(fast).line, line) << std::get<ObjFallback>(fast).reason;
-    expect_same_scene(load_scene(path), io::load_scene_with_assimp(path, {}));
+    expect_same_scene(test::load_with_warnings(path), io::load_scene_with_assimp(path, {}));
 }
 
 std::filesystem::path write_obj(const std::string& test, std::string_view content,
@@ -142,7 +145,7 @@ TEST(ObjParser, SharedMeshesMatchTheAssimpPath) {
     for (const auto& entry :
          std::filesystem::recursive_directory_iterator(test::shared_data("meshes/obj"))) {
         if (entry.path().extension() != ".obj") continue;
-        const Scene scene = expect_parity(entry.path());
+        const Scene scene = expect_parity(entry.path()).scene;
         EXPECT_GT(scene.triangle_count(), 0u);
         ++files;
     }
@@ -152,12 +155,12 @@ TEST(ObjParser, SharedMeshesMatchTheAssimpPath) {
 TEST(ObjParser, SharedMeshCountsAndWelding) {
     ZRASTER_REQUIRE_SHARED_DATA();
     // bunny.obj: one vertex per `v` line, triangles only, no normals (computed).
-    const Scene bunny = expect_parity(test::shared_data("meshes/obj/bunny.obj"));
+    const Scene bunny = expect_parity(test::shared_data("meshes/obj/bunny.obj")).scene;
     ASSERT_EQ(bunny.meshes.size(), 1u);
     EXPECT_EQ(bunny.meshes[0].triangle_count(), 69666u);
     EXPECT_EQ(bunny.meshes[0].vertex_count(), 34835u);
     // suzanne.obj: 468 quads and 32 triangles with v//vn.
-    const Scene suzanne = expect_parity(test::shared_data("meshes/obj/suzanne.obj"));
+    const Scene suzanne = expect_parity(test::shared_data("meshes/obj/suzanne.obj")).scene;
     EXPECT_EQ(suzanne.triangle_count(), 2u * 468 + 32);
 }
 
@@ -172,25 +175,33 @@ TEST(ObjParser, CornerFormsAndNegativeIndices) {
     expect_parity(write_obj("forms-vtvn", std::string(kSquare) + uvs + normals +
                                               "f 1/1/1 2/2/1 3/3/1\nf 1/1/2 3/3/2 4/4/2\n"));
     // Relative indices count back from the line; vertices may also come after the faces.
-    const Scene negative = expect_parity(
-        write_obj("negative", std::string(kSquare) + "f -4 -3 -2\nv 5 5 5\nf -1 -2 -3\n" + uvs +
-                                  normals + "f 1/-4/-2 2/-3/-2 -1/-1/-1\n"));
+    const Scene negative =
+        expect_parity(write_obj("negative", std::string(kSquare) +
+                                                "f -4 -3 -2\nv 5 5 5\nf -1 -2 -3\n" + uvs +
+                                                normals + "f 1/-4/-2 2/-3/-2 -1/-1/-1\n"))
+            .scene;
     EXPECT_EQ(negative.triangle_count(), 3u);
     expect_parity(write_obj("forward", "f 1 2 3\n" + std::string(kSquare)));
 }
 
 TEST(ObjParser, QuadsSplitLikeAssimp) {
     // A convex quad is split from its first corner; a concave one from its reflex corner.
-    const Scene convex = expect_parity(write_obj("quad", std::string(kSquare) + "f 1 2 3 4\n"));
+    const Scene convex =
+        expect_parity(write_obj("quad", std::string(kSquare) + "f 1 2 3 4\n")).scene;
     EXPECT_EQ(convex.meshes.at(0).indices, (std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3}));
-    const Scene concave = expect_parity(write_obj(
-        "concave", "v 0 0 0\nv 2 0 0\nv 0.5 0.5 0\nv 0 2 0\nf 1 2 3 4\nf 2 3 4 1\nf 4 1 2 3\n"));
+    const Scene concave =
+        expect_parity(
+            write_obj("concave",
+                      "v 0 0 0\nv 2 0 0\nv 0.5 0.5 0\nv 0 2 0\nf 1 2 3 4\nf 2 3 4 1\nf 4 1 2 3\n"))
+            .scene;
     EXPECT_EQ(concave.meshes.at(0).indices,
               (std::vector<std::uint32_t>{2, 3, 0, 2, 0, 1, 2, 3, 0, 2, 0, 1, 2, 3, 0, 2, 0, 1}));
     // With a line or point element in the mesh, Assimp moves the triangles to a mesh of their
     // own corner by corner, so the vertices come in fan order (here from the reflex corner 3).
-    const Scene mixed = expect_parity(
-        write_obj("mixed-quad", "v 0 0 0\nv 1 2 3\nv 1 0 0\nv 1 1 0\nf 1 2 3 4\nl 1 2\n"));
+    const Scene mixed =
+        expect_parity(
+            write_obj("mixed-quad", "v 0 0 0\nv 1 2 3\nv 1 0 0\nv 1 1 0\nf 1 2 3 4\nl 1 2\n"))
+            .scene;
     EXPECT_EQ(mixed.meshes.at(0).positions.at(0), glm::vec3(1, 1, 0));
     EXPECT_EQ(mixed.meshes.at(0).indices, (std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3}));
     // Degenerate quads (repeated corners, collinear) decide the same way too.
@@ -201,11 +212,14 @@ TEST(ObjParser, QuadsSplitLikeAssimp) {
 TEST(ObjParser, WeldsEqualValuesLikeTheAssimpPath) {
     // Duplicate `v` lines, per-corner duplicate normals, -0 and +0, and uvs that differ only
     // before the v flip rounds them together: one vertex per distinct value, as welding gives.
-    const Scene scene = expect_parity(
-        write_obj("weld", std::string(kSquare) +
-                              "v 0 0 0\nv -0 1 0\nvn 0 0 1\nvn 0 0 1\nvn 0 0 2\nvn 0 0 1\n"
-                              "vt 0 0.1\nvt 0 0.10000000001\nvt 0 0.1\n"
-                              "f 1/1/1 2/2/2 3/3/3\nf 5/2/4 3/3/1 6/1/2\nf 1/1/1 2/2/1 4/3/3\n"));
+    const Scene scene =
+        expect_parity(
+            write_obj("weld",
+                      std::string(kSquare) +
+                          "v 0 0 0\nv -0 1 0\nvn 0 0 1\nvn 0 0 1\nvn 0 0 2\nvn 0 0 1\n"
+                          "vt 0 0.1\nvt 0 0.10000000001\nvt 0 0.1\n"
+                          "f 1/1/1 2/2/2 3/3/3\nf 5/2/4 3/3/1 6/1/2\nf 1/1/1 2/2/1 4/3/3\n"))
+            .scene;
     EXPECT_EQ(scene.meshes.at(0).vertex_count(), 4u);
 }
 
@@ -276,13 +290,13 @@ TEST(ObjParser, MaterialLibrariesAndTexturesLikeTheAssimpPath) {
     test::write_bytes(dir / "b.mtl", "newmtl skin\nKd 1 1 0\n");
     test::write_bytes(dir / "c.obj",
                       "mtllib none.mtl\nmtllib none.mtl\n" + body + "usemtl skin\nf 1/1 2/2 3/3\n");
-    const Scene a = expect_parity(dir / "a.obj");
+    const io::LoadedScene a = expect_parity(dir / "a.obj");
     EXPECT_EQ(a.warnings.size(), 2u);  // nothere.png, ghost
-    const Scene b = expect_parity(dir / "b.obj");
+    const io::LoadedScene b = expect_parity(dir / "b.obj");
     ASSERT_EQ(b.warnings.size(), 1u);
     EXPECT_EQ(b.warnings[0],
               (dir / "b.obj").string() + ": material library 'other.mtl' not found, using 'b.mtl'");
-    const Scene c = expect_parity(dir / "c.obj");
+    const io::LoadedScene c = expect_parity(dir / "c.obj");
     ASSERT_EQ(c.warnings.size(), 1u);
     EXPECT_NE(c.warnings[0].find("material library 'none.mtl' not found, using the default"),
               std::string::npos);
@@ -306,21 +320,21 @@ TEST(ObjParser, MaterialAlphaLikeTheAssimpPath) {
         faces += std::string("usemtl ") + name + "\nf 1/1 2/2 3/1\n";
     test::write_bytes(dir / "fast.obj", body + faces);
     test::write_bytes(dir / "left.obj", body + "f 1 2 3 4 1\n" + faces);  // a degenerate n-gon
-    const Scene fast = expect_parity(dir / "fast.obj");
-    ASSERT_EQ(fast.materials.size(), 6u);
-    EXPECT_EQ(fast.materials[1].opacity, 0.5f);
-    EXPECT_EQ(fast.materials[2].opacity, 0.75f);
-    EXPECT_EQ(fast.materials[3].opacity, 0.5f);  // d over Tr
-    EXPECT_TRUE(fast.materials[4].opacity_texture);
-    ASSERT_TRUE(fast.materials[5].opacity_texture);
-    EXPECT_EQ(fast.materials[5].opacity_texture->level_rgba(0)[4], 0);  // cut.png's alpha
+    const io::LoadedScene fast = expect_parity(dir / "fast.obj");
+    ASSERT_EQ(fast.scene.materials.size(), 6u);
+    EXPECT_EQ(fast.scene.materials[1].opacity, 0.5f);
+    EXPECT_EQ(fast.scene.materials[2].opacity, 0.75f);
+    EXPECT_EQ(fast.scene.materials[3].opacity, 0.5f);  // d over Tr
+    EXPECT_TRUE(fast.scene.materials[4].opacity_texture);
+    ASSERT_TRUE(fast.scene.materials[5].opacity_texture);
+    EXPECT_EQ(fast.scene.materials[5].opacity_texture->level_rgba(0)[4], 0);  // cut.png's alpha
     LoadOptions worker;
     worker.isolation = LoadIsolation::WorkerProcess;
     expect_same_scene(fast, io::load_scene_with_assimp(dir / "fast.obj", worker));
     expect_fallback(dir / "left.obj", 8);
     const Scene left = load_scene(dir / "left.obj");
-    ASSERT_EQ(left.materials.size(), fast.materials.size());
-    for (const Material& a : fast.materials) {
+    ASSERT_EQ(left.materials.size(), fast.scene.materials.size());
+    for (const Material& a : fast.scene.materials) {
         const auto b = std::find_if(left.materials.begin(), left.materials.end(),
                                     [&](const Material& m) { return m.name == a.name; });
         ASSERT_NE(b, left.materials.end()) << a.name;
@@ -341,9 +355,9 @@ TEST(ObjParser, MissingAndUnusableAttributesLikeTheAssimpPath) {
         write_obj("bad-normals", v + "vn 0 0 0\nvn nan 0 1\nvn 1e30 1e30 0\nvn 0 0 1\n"
                                      "f 1//1 2//2 3//3\nf 1//4 3//2 4//1\nf 1//1 4//4 5//4\n"));
     // Assimp reads a non-finite texture coordinate as 0.
-    const Scene uvs = expect_parity(write_obj(
+    const io::LoadedScene uvs = expect_parity(write_obj(
         "bad-uvs", "o quad\n" + v + "vt nan 0\nvt 0 inf\nvt 0 1\nf 1/1 2/2 3/3\nf 1/3 3/1 4/2\n"));
-    EXPECT_EQ(uvs.meshes.at(0).vertex_count(), 6u);
+    EXPECT_EQ(uvs.scene.meshes.at(0).vertex_count(), 6u);
     EXPECT_TRUE(uvs.warnings.empty());
 }
 
@@ -420,7 +434,7 @@ TEST(ObjParser, ChunkBoundariesDoNotMatter) {
                    std::to_string(19 - k) + " " + std::to_string(a + 20) + "\n";
         }
     }
-    const Scene scene = expect_parity(write_obj("chunks", obj));
+    const Scene scene = expect_parity(write_obj("chunks", obj)).scene;
     EXPECT_EQ(scene.meshes.size(), 5u);
     EXPECT_EQ(scene.triangle_count(), 3000u * 38);
     EXPECT_EQ(scene.vertex_count(), 3000u * 40);

@@ -424,7 +424,7 @@ void expect_same_frame(const RenderResult& a, const RenderResult& b, const std::
 // Fine enough that a cluster (consecutive triangles of a ring) spans a narrow normal cone.
 Scene sphere_scene() {
     Scene scene = scene_from_meshes({make_bench_sphere(200000)});
-    scene.source = "sphere";
+    scene.name = "sphere";
     return scene;
 }
 

@@ -46,7 +46,7 @@ void expect_deterministic(const Scene& scene, RenderOptions o, Renderer& reused)
 // screen edges, in a few instances with different transforms.
 Scene random_scene(SplitMix64& rng) {
     Scene scene;
-    scene.source = "random";
+    scene.name = "random";
     const int meshes = 1 + int(rng.next() % 3);
     for (int m = 0; m < meshes; ++m) {
         Mesh mesh;

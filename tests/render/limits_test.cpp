@@ -22,7 +22,7 @@ Scene triangle_scene() {
     std::vector<Mesh> meshes;
     meshes.push_back(mesh);
     Scene scene = scene_from_meshes(std::move(meshes));
-    scene.source = "triangle";
+    scene.name = "triangle";
     return scene;
 }
 
@@ -157,7 +157,7 @@ TEST(Limits, BadIndicesAreRefusedWhateverTheCameraSees) {
         meshes.push_back(make_uv_sphere(1.0f, 24, 48));
         meshes.push_back(make_uv_sphere(1.0f, 24, 48));
         Scene scene = scene_from_meshes(std::move(meshes));
-        scene.source = "spheres";
+        scene.name = "spheres";
         scene.instances[0].transform = glm::translate(glm::mat4(1.0f), glm::vec3(-2, 0, 0));
         scene.instances[1].transform = glm::translate(glm::mat4(1.0f), glm::vec3(2, 0, 0));
         return scene;

@@ -17,7 +17,7 @@ bool overlap(const Bounds3f& a, const Bounds3f& b) {
 
 TEST(DefaultScene, Contents) {
     const Scene s = make_procedural_scene("builtin:default");
-    EXPECT_EQ(s.source, "builtin:default");
+    EXPECT_EQ(s.name, "builtin:default");
     EXPECT_GE(s.instances.size(), 5u);
 
     std::set<ShadingMode> modes;

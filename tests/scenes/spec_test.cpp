@@ -42,7 +42,7 @@ TEST(ProceduralSpec, BenchScenesAreOneMeshOneIdentityInstanceDefaultMaterial) {
     EXPECT_EQ(s.materials[0].base_color, reference.base_color);
     EXPECT_EQ(s.materials[0].shininess, 32.0f);
     EXPECT_EQ(s.meshes[0].material, 0u);
-    EXPECT_EQ(s.source, "city:50:3");
+    EXPECT_EQ(s.name, "city:50:3");
     EXPECT_EQ(geometry_hash(s.meshes[0]), geometry_hash(make_bench_city(50, 3)));
     EXPECT_EQ(s.triangle_count(), 502u);
 
@@ -88,7 +88,7 @@ TEST(ProceduralSpec, BuiltinSphereAndCube) {
     ASSERT_EQ(sphere.instances.size(), 1u);
     EXPECT_EQ(sphere.meshes[0].vertex_count(), 65u * 129u);
     EXPECT_EQ(sphere.meshes[0].normals.size(), sphere.meshes[0].vertex_count());
-    EXPECT_EQ(sphere.source, "builtin:sphere");
+    EXPECT_EQ(sphere.name, "builtin:sphere");
 
     const Scene cube = make_procedural_scene("builtin:cube");
     ASSERT_EQ(cube.meshes.size(), 1u);

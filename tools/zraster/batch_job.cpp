@@ -43,9 +43,10 @@ std::string error_line(const std::string& input, const std::string& what) {
 
 // The loader refuses a file over LoadOptions::max_triangles before reading its geometry; that
 // limit is the batch's --max-triangles, or what --max-memory leaves room for.
-Scene load_within_limits(const BatchInput& input, const LoadOptions& options) {
+Scene load_within_limits(const BatchInput& input, const LoadOptions& options,
+                         std::vector<std::string>& warnings) {
     try {
-        return load_scene(input.source, options);
+        return load_scene(input.source, options, &warnings);
     } catch (const LimitExceeded&) {
         throw;
     } catch (const InputError& e) {
@@ -141,14 +142,13 @@ BatchRecord run_batch_job(const BatchInput& input, const BatchSettings& settings
         const Clock::time_point load_start = Clock::now();
         Scene scene;
         try {
-            scene = load_within_limits(input, settings.load);
+            scene = load_within_limits(input, settings.load, record.warnings);
         } catch (...) {
             record.load_ms = ms_since(load_start);
             throw;
         }
         record.load_ms = ms_since(load_start);
         record.triangles = scene.triangle_count();
-        record.warnings = scene.warnings;
         check_batch_limits(scene, views, settings.limits);
 
         double encode_ms = 0.0;

@@ -111,13 +111,13 @@ void check_batch_limits(const Scene& scene, const std::vector<RenderArguments>& 
                         const BatchLimits& limits) {
     const std::uint64_t triangles = scene.triangle_count();
     if (triangles > limits.max_triangles)
-        throw LimitExceeded(scene.source, "max_triangles",
+        throw LimitExceeded(scene.name, "max_triangles",
                             fmt::format("{} triangles (over its instances), more than "
                                         "--max-triangles {}",
                                         triangles, limits.max_triangles));
     const std::uint64_t bytes = estimated_memory(scene, views);
     if (bytes > limits.max_memory)
-        throw LimitExceeded(scene.source, "max_memory",
+        throw LimitExceeded(scene.name, "max_memory",
                             fmt::format("rendering it needs about {}, more than --max-memory {}",
                                         mebibytes(bytes), mebibytes(limits.max_memory)));
 }

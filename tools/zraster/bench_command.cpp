@@ -106,7 +106,6 @@ int run_bench(const BenchArguments& a) {
 
     // Loading, shading setup and framing stay outside the timed loop, as in glbench.
     Scene scene = load_scene_or_procedural(a.scene);
-    for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
     apply_bench_shading(scene, mode);
     RenderOptions options = bench_render_options(mode, size.x, size.y, threads, !a.no_cull);
     options.hierarchical_z = !a.no_hierarchical_z;

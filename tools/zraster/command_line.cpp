@@ -143,9 +143,13 @@ LoadOptions command_load_options() {
     return options;
 }
 
-Scene load_scene_or_procedural(const std::string& spec) {
+Scene load_scene_or_procedural(const std::string& spec, std::vector<std::string>* warnings) {
     if (is_procedural_spec(spec)) return make_procedural_scene(spec);
-    return load_scene(spec, command_load_options());
+    std::vector<std::string> found;
+    Scene scene = load_scene(spec, command_load_options(), &found);
+    for (const std::string& w : found) fmt::print(stderr, "warning: {}\n", w);
+    if (warnings != nullptr) *warnings = std::move(found);
+    return scene;
 }
 
 }  // namespace zraster::cli

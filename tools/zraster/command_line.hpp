@@ -41,8 +41,10 @@ ShadingStrategy shading_strategy(const std::string& name);
 
 // A mesh file path, or a procedural spec (builtin:NAME, sphere:N, city:N[:SEED], soup:N[:SEED]).
 // Assimp runs in a worker process (LoadIsolation::WorkerProcess) unless set_load_in_process(true)
-// (the --load-in-process flag; run_zraster sets it for every run).
-Scene load_scene_or_procedural(const std::string& spec);
+// (the --load-in-process flag; run_zraster sets it for every run). The loader's warnings are
+// printed to stderr ("warning: ..."), and kept in *warnings when it is given.
+Scene load_scene_or_procedural(const std::string& spec,
+                               std::vector<std::string>* warnings = nullptr);
 void set_load_in_process(bool in_process);
 // The --allow-outside-references flag: a model's external files may be read from anywhere
 // (LoadOptions::allow_outside_references).

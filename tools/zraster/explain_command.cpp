@@ -117,7 +117,6 @@ int run_explain(const ExplainArguments& a) {
     RenderOptions options;
     if (algorithm.uses_scene) {
         scene = load_scene_or_procedural(a.render.scene);
-        for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
         options = make_render_options(a.render, scene);
     }
     ExplainOutput out(a.output, algorithm.title, algorithm.introduction);

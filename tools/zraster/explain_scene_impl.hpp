@@ -7,7 +7,7 @@ namespace zraster::cli {
 template <typename ClassOf>
 Scene recolored_scene(const Scene& scene, const std::vector<glm::vec3>& colors, ClassOf class_of) {
     Scene out;
-    out.source = scene.source;
+    out.name = scene.name;
     out.materials.clear();
     for (const glm::vec3& c : colors) {
         Material m;

@@ -16,9 +16,9 @@ void add_info_command(CLI::App& app, InfoArguments& a) {
 }
 
 int run_info(const InfoArguments& a) {
-    const Scene scene = load_scene_or_procedural(a.scene);
-    for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
-    fmt::print("{}", describe_scene(scene));
+    std::vector<std::string> warnings;
+    const Scene scene = load_scene_or_procedural(a.scene, &warnings);
+    fmt::print("{}", describe_scene(scene, warnings));
     return kExitOk;
 }
 

@@ -235,7 +235,7 @@ RenderOptions make_render_options(const RenderArguments& a, const Scene& scene) 
         return make_render_options(a, world, std::nullopt);
     } catch (const InputError& e) {
         if (!e.file().empty()) throw;
-        throw InputError(scene.source, e.cause());  // (the camera fit: about the scene)
+        throw InputError(scene.name, e.cause());  // (the camera fit: about the scene)
     }
 }
 

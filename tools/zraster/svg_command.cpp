@@ -59,7 +59,6 @@ int run_svg(const SvgArguments& a) {
                          "not available for svg (use --edges)");
 
     const Scene scene = load_scene_or_procedural(a.render.scene);
-    for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
     RenderOptions options = make_render_options(a.render, scene);
     options.progress = stderr_progress();
     if (options.alpha_mode == MaterialAlpha::Auto)

@@ -56,14 +56,13 @@ int run_view(const ViewArguments& a) {
     std::vector<ScriptEvent> script;
     if (!a.script.empty()) script = read_view_script(a.script);
     const Scene scene = load_scene_or_procedural(a.render.scene);
-    for (const std::string& w : scene.warnings) fmt::print(stderr, "warning: {}\n", w);
     const std::vector<glm::vec3> world = scene.world_positions();
     std::optional<ViewState> state;
     try {
         state.emplace(a.render, world);
     } catch (const InputError& e) {
         if (!e.file().empty()) throw;
-        throw InputError(scene.source, e.cause());  // (the camera fit: about the scene)
+        throw InputError(scene.name, e.cause());  // (the camera fit: about the scene)
     }
     ViewSetup setup{scene,    world,        *state,    std::move(script),
                     a.frames, a.screenshot, !a.no_hud, "zraster view " + a.render.scene};
