@@ -10,7 +10,7 @@ packages=(
   libhwy-dev libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev
   libegl-dev libgles-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-distributed
-  libsdl2-dev xvfb xauth
+  libsdl2-dev xvfb xauth xdotool
 )
 
 missing=()

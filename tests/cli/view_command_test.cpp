@@ -193,5 +193,33 @@ TEST(ViewCommand, NoDisplayIsAClearErrorNotACrash) {
     EXPECT_NE(r.output.find("xvfb-run"), std::string::npos) << r.output;
 }
 
+// Real X11 keyboard and mouse events (xdotool, tests/cli/view_x11_input.sh) reach the viewer
+// through SDL: key 1 gives flat shading, a right drag pans and the wheel zooms; the last frame is
+// `zraster render` with the camera the viewer prints and --shading flat.
+TEST(ViewCommand, RealX11KeysMouseAndWheelReachTheViewer) {
+    const auto dir = temp_dir("view-x11");
+    const CommandResult v = run_shell_line(
+        "cd '" + dir.string() +
+        "' && bash '" ZRASTER_SOURCE_DIR "/tests/cli/with_xvfb.sh' bash '" ZRASTER_SOURCE_DIR
+        "/tests/cli/view_x11_input.sh' '" ZRASTER_CLI "' builtin:cube 160x120 2>&1 </dev/null");
+    VIEWER_OR_SKIP(v);
+    ASSERT_EQ(v.exit_code, 0) << v.output;
+    const std::size_t at = v.output.find("view: camera --eye ");
+    ASSERT_NE(at, std::string::npos) << v.output;
+    const std::string flags = v.output.substr(at + 13, v.output.find('\n', at) - (at + 13));
+    ASSERT_EQ(
+        run_zraster("render builtin:cube --size 160x120 --shading flat -o moved.png " + flags, dir)
+            .exit_code,
+        0);
+    EXPECT_TRUE(same_image(dir / "view.png", dir / "moved.png")) << flags;
+    ASSERT_EQ(run_zraster("render builtin:cube --size 160x120 --shading flat -o still.png", dir)
+                  .exit_code,
+              0);
+    EXPECT_FALSE(same_image(dir / "view.png", dir / "still.png")) << "the camera did not move";
+    ASSERT_EQ(
+        run_zraster("render builtin:cube --size 160x120 -o phong.png " + flags, dir).exit_code, 0);
+    EXPECT_FALSE(same_image(dir / "view.png", dir / "phong.png")) << "key 1 did not arrive";
+}
+
 }  // namespace
 }  // namespace zraster::test
