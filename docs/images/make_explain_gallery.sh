@@ -28,6 +28,6 @@ liang-barsky - liang-barsky.png liang-barsky.png
 bresenham - bresenham.png bresenham.png
 frustum-culling builtin:default frustum-culling.png frustum-culling.png
 backface-culling sphere:200 backface-culling.png backface-culling.png
-occlusion-culling city:300 occlusion-culling.png occlusion-culling.png
+occlusion-culling building:6x6 occlusion-culling.png occlusion-culling.png
 LIST
 ls "$out"

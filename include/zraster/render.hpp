@@ -215,6 +215,9 @@ struct RenderOptions {
     bool color_target = true;
     bool normal_target = false;
     bool id_targets = false;
+    // RenderResult::instance_outcomes: what the frame did with each scene instance (the owning
+    // entry points only). Off: nothing is recorded or allocated.
+    bool report_instance_outcomes = false;
     // Per-pixel counts of front- and back-facing fragments that passed the depth test
     // (with depth_test = false: every fragment): the watertightness check.
     bool coverage_counts = false;
@@ -314,9 +317,21 @@ struct RenderStats {
     DebugViewScale view_scale;
 };
 
+// What a frame did with a scene instance: drawn, or skipped by which culling. An instance the
+// vertex stage draws may still have no pixel (hidden, or every triangle culled or clipped).
+enum class InstanceOutcome : std::uint8_t {
+    Drawn,
+    FrustumCulled,    // outside the view frustum
+    PortalCulled,     // reached by no portal sequence from the eye's cell, or outside its PVS
+    OcclusionCulled,  // hidden behind the occluders drawn this frame
+};
+
 struct RenderResult {
     RenderTargets targets;
     RenderStats stats;
+    // One per scene instance, in scene order, with RenderOptions::report_instance_outcomes;
+    // empty otherwise.
+    std::vector<InstanceOutcome> instance_outcomes;
 };
 
 // Renders one frame. Throws InputError for unusable options (size out of range, more user clip

@@ -253,6 +253,9 @@ struct ClearedTiles {
 struct Frame {
     const SceneView* scene = nullptr;
     std::string_view source;  // the scene's file or builtin name, for messages
+    // RenderOptions::report_instance_outcomes: where the vertex stage records them; null: not
+    // asked for.
+    std::vector<InstanceOutcome>* instance_outcomes = nullptr;
     const RenderOptions* options = nullptr;
     // One per scene mesh, set for the meshes instances use (the others: view null).
     std::vector<FrameMesh> meshes;

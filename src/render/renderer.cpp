@@ -74,6 +74,7 @@ struct Destination {
     RenderTargets* own = nullptr;
     // Depth rows for caller targets without depth when the edges need them.
     std::vector<float>* depth_rows = nullptr;
+    std::vector<InstanceOutcome>* instance_outcomes = nullptr;  // the owning entry points'
 };
 
 void render_frame_in_arena(detail::Frame& frame, const SceneView& scene, std::string_view source,
@@ -134,6 +135,12 @@ void render_frame_in_arena(detail::Frame& frame, const SceneView& scene, std::st
                            const RenderOptions& options, const Destination& destination,
                            RenderStats& stats) {
     validate(frame, scene, source, options);
+    frame.instance_outcomes = nullptr;
+    if (destination.instance_outcomes != nullptr) {
+        destination.instance_outcomes->clear();
+        if (options.report_instance_outcomes)
+            frame.instance_outcomes = destination.instance_outcomes;
+    }
     TargetViews targets;
     if (destination.caller != nullptr) {
         targets = detail::resolve_targets(*destination.caller, options);
@@ -279,6 +286,7 @@ const RenderResult& Renderer::render(const Scene& scene, const RenderOptions& op
     const SceneView view = view_of(scene, s.mesh_views, s.instance_views);
     Destination destination;
     destination.own = &s.result.targets;
+    destination.instance_outcomes = &s.result.instance_outcomes;
     render_frame(s.arena_for(options), s.frame, view, scene.name, options, destination,
                  s.result.stats);
     return s.result;
@@ -303,6 +311,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     RenderResult result;
     Destination destination;
     destination.own = &result.targets;
+    destination.instance_outcomes = &result.instance_outcomes;
     tbb::task_arena arena(thread_count(options));
     render_frame(arena, frame, view, scene.name, options, destination, result.stats);
     return result;

@@ -137,6 +137,11 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
     }
     std::uint32_t vertex_count = 0;
     frame.alpha_instances = false;
+    std::vector<InstanceOutcome>* outcomes = frame.instance_outcomes;
+    if (outcomes != nullptr) outcomes->assign(scene.instances.size(), InstanceOutcome::Drawn);
+    const auto skipped = [&](std::uint32_t i, InstanceOutcome why) {
+        if (outcomes != nullptr) (*outcomes)[i] = why;
+    };
     for (std::uint32_t i = 0; i < scene.instances.size(); ++i) {
         const InstanceView& instance = scene.instances[i];
         ++stats.instances;
@@ -145,14 +150,17 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
         if (culled[i] == std::uint8_t(InstanceCull::Frustum) ||
             outside_frustum(mesh.bounds, mvp, frame.camera.clip_depth_range())) {
             ++stats.instances_frustum_culled;
+            skipped(i, InstanceOutcome::FrustumCulled);
             continue;
         }
         if (culled[i] == std::uint8_t(InstanceCull::Portal)) {
             ++stats.instances_portal_culled;
+            skipped(i, InstanceOutcome::PortalCulled);
             continue;
         }
         if (culled[i] == std::uint8_t(InstanceCull::Occluded)) {
             ++stats.instances_occlusion_culled;
+            skipped(i, InstanceOutcome::OcclusionCulled);
             continue;
         }
         FrameInstance fi;

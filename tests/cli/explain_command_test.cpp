@@ -62,7 +62,7 @@ TEST(ExplainCommand, EveryAlgorithmWritesItsPicturesAndAnIndexNamingThem) {
         {"dda", "", {"dda.svg", "dda.png"}},
         {"frustum-culling", "sphere:200", {"frustum-culling.png"}},
         {"backface-culling", "sphere:200", {"backface-culling.png"}},
-        {"occlusion-culling", "city:40", {"occlusion-culling.png"}},
+        {"occlusion-culling", "building:4x4", {"occlusion-culling.png"}},
         {"hiz", "city:40", {"hiz.png", "hiz-front-to-back.png"}},
     };
     for (const ExplainCase& c : cases) {

@@ -66,6 +66,43 @@ TEST(OcclusionCull, WallHidesInstancesAndTheImageIsUnchanged) {
     EXPECT_EQ(scalar.stats.instances_occlusion_culled, culled.stats.instances_occlusion_culled);
 }
 
+// RenderResult::instance_outcomes names each instance's fate, agreeing with the counts: every
+// occlusion-culled instance has no pixel in the unculled image, every visible one was drawn, and
+// nothing is recorded unless asked for.
+TEST(OcclusionCull, InstanceOutcomesNameWhatWasSkipped) {
+    const Scene scene = wall_scene();
+    RenderOptions options = wall_options();
+    options.id_targets = true;
+    const RenderResult plain = render(scene, options);
+    options.occlusion_cull = true;
+    EXPECT_TRUE(render(scene, options).instance_outcomes.empty());
+    options.report_instance_outcomes = true;
+    Renderer renderer;
+    const RenderResult& culled = renderer.render(scene, options);
+    ASSERT_EQ(culled.instance_outcomes.size(), scene.instances.size());
+    const std::set<std::int32_t> seen(plain.targets.instance_id.begin(),
+                                      plain.targets.instance_id.end());
+    std::size_t counts[4] = {};
+    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+        const InstanceOutcome outcome = culled.instance_outcomes[i];
+        ++counts[std::size_t(outcome)];
+        if (outcome == InstanceOutcome::OcclusionCulled) {
+            EXPECT_FALSE(seen.count(std::int32_t(i))) << i;
+        }
+        if (seen.count(std::int32_t(i))) {
+            EXPECT_EQ(outcome, InstanceOutcome::Drawn) << i;
+        }
+    }
+    EXPECT_EQ(counts[std::size_t(InstanceOutcome::OcclusionCulled)],
+              culled.stats.instances_occlusion_culled);
+    EXPECT_EQ(counts[std::size_t(InstanceOutcome::FrustumCulled)],
+              culled.stats.instances_frustum_culled);
+    EXPECT_GT(culled.stats.instances_occlusion_culled, 50u);
+    // The Renderer's next frame without the request records nothing.
+    options.report_instance_outcomes = false;
+    EXPECT_TRUE(renderer.render(scene, options).instance_outcomes.empty());
+}
+
 TEST(OcclusionCull, CityScenesAreUnchanged) {
     for (int seed = 1; seed <= 3; ++seed) {
         const test::OcclusionScene s = test::city_scene(seed, 300);

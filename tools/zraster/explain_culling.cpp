@@ -143,39 +143,44 @@ void explain_backface_culling(const ExplainInput& in, ExplainOutput& out) {
               "beside it");
 }
 
+// Instances as the renderer's frame left them: visible (a pixel in the image), drawn but hidden
+// (the conservative test could not prove them hidden), skipped by occlusion culling, and outside
+// the view (or skipped by another culling).
 void explain_occlusion_culling(const ExplainInput& in, ExplainOutput& out) {
     RenderOptions options = in.options;
     options.id_targets = true;
     options.occlusion_cull = true;
+    options.report_instance_outcomes = true;
     const RenderResult frame = render(in.scene, options);
-    std::set<std::int32_t> visible(frame.targets.instance_id.begin(),
-                                   frame.targets.instance_id.end());
-    const Camera camera = effective_camera(in.scene, in.options);
-    const glm::mat4 view_projection =
-        camera.view_projection(double(options.width) / double(options.height));
-    std::vector<int> class_of_instance(in.scene.instances.size(), 2);
-    std::size_t counts[3] = {};
+    const std::set<std::int32_t> visible(frame.targets.instance_id.begin(),
+                                         frame.targets.instance_id.end());
+    enum Class { kVisible, kHiddenDrawn, kOcclusionCulled, kOutside };
+    std::vector<int> class_of_instance(in.scene.instances.size(), kOutside);
+    std::size_t counts[4] = {};
     for (std::size_t i = 0; i < in.scene.instances.size(); ++i) {
-        const Instance& instance = in.scene.instances[i];
-        const Mesh& mesh = in.scene.meshes[instance.mesh];
-        bool inside = false;
-        for (std::size_t t = 0; t < mesh.triangle_count() && !inside; ++t) {
-            const auto codes = triangle_outcodes(view_projection * instance.transform, mesh, t);
-            inside = (codes[0] & codes[1] & codes[2]) == 0;
-        }
-        class_of_instance[i] = visible.count(std::int32_t(i)) ? 0 : inside ? 1 : 2;
-        ++counts[class_of_instance[i]];
+        const InstanceOutcome outcome = frame.instance_outcomes.at(i);
+        int c = kOutside;
+        if (visible.count(std::int32_t(i)))
+            c = kVisible;
+        else if (outcome == InstanceOutcome::Drawn)
+            c = kHiddenDrawn;
+        else if (outcome == InstanceOutcome::OcclusionCulled)
+            c = kOcclusionCulled;
+        class_of_instance[i] = c;
+        ++counts[c];
     }
     const Scene colored =
-        recolored_scene(in.scene, {kKeptColor, kRemovedColor, kOutsideColor},
+        recolored_scene(in.scene, {kKeptColor, kClippedColor, kRemovedColor, kOutsideColor},
                         [&](std::size_t i, std::size_t) { return class_of_instance[i]; });
-    two_views(out, "occlusion-culling", colored, in.options, camera, in.options.cull,
-              fmt::format("instances: green visible ({}), red in view but hidden ({}), gray "
-                          "outside the view ({});\nthe renderer's occlusion culling skipped {} "
-                          "of the red ones",
-                          counts[0], counts[1], counts[2], frame.stats.instances_occlusion_culled),
-              "the instances hidden behind others (red): what occlusion culling may skip, and "
-              "how many the renderer's conservative test did skip");
+    two_views(out, "occlusion-culling", colored, in.options, effective_camera(in.scene, in.options),
+              in.options.cull,
+              fmt::format("instances: green visible ({}), orange hidden but drawn ({}), red "
+                          "skipped by occlusion culling ({}),\ngray outside the view ({})",
+                          counts[kVisible], counts[kHiddenDrawn], counts[kOcclusionCulled],
+                          counts[kOutside]),
+              "what occlusion culling removed (red): instances hidden behind the occluders, never "
+              "sent through the vertex stage; orange ones are hidden too, but the conservative "
+              "test kept them");
 }
 
 }  // namespace zraster::cli
