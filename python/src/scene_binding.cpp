@@ -209,6 +209,11 @@ zraster.load() returns a Scene too (its meshes owned by zraster).)")
             "source", [](const PyScene& s) { return s.spec; },
             "The path or procedural spec load() was given ('' for a Scene of Meshes).")
         .def_property_readonly(
+            "materials", [](const PyScene& s) { return s.materials; },
+            "The scene's materials (copies, zraster.Material), index 0 the default: a loaded "
+            "scene's as the loader made them (docs/materials.md), a Scene of Meshes' in item "
+            "order (each Mesh's own).")
+        .def_property_readonly(
             "warnings", [](const PyScene& s) { return s.warnings; },
             "Problems the loader found and worked around (a missing texture, ...).")
         .def("__repr__", [](const PyScene& s) {
