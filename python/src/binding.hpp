@@ -36,12 +36,12 @@ struct PyMesh {
     bool normals_computed = false;
 };
 
-// A scene: an owning zraster::Scene (load()), or instances of Meshes (kept referenced), both
-// seen through the same views. Immutable once made, so its views stay valid while
+// A scene: an owning zraster::Scene (load()), or instances of Meshes and of other Scenes (kept
+// referenced), all seen through the same views. Immutable once made, so its views stay valid while
 // a frame renders without the GIL.
 struct PyScene {
     std::shared_ptr<const Scene> owned;  // load(): the loaded scene; null for Mesh scenes
-    std::vector<py::object> keep;        // the Mesh objects the views point into
+    std::vector<py::object> keep;        // the Mesh and Scene objects the views point into
     std::vector<MeshView> meshes;
     std::vector<Material> materials{Material{}};
     std::vector<InstanceView> instances;
