@@ -86,6 +86,9 @@ def test_a_blended_mesh_over_an_opaque_one_draws_as_the_obj_file(tmp_path):
     # The default alpha mode is blend: the same picture without saying so.
     implicit = zraster.Mesh(front, faces, normals, color=(0, 0.25, 1, 0.5))
     assert_same_frame(frame(zraster.Scene([opaque, implicit])), got)
+    # So do the frames drawn through an owning copy of the scene.
+    for options in ({"aa": 2}, {"visibility": "abuffer"}):
+        assert_same_frame(frame(scene, **options), frame(loaded, **options))
 
 
 def test_a_masked_textured_mesh_draws_as_the_gltf_file(tmp_path):

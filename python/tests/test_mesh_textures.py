@@ -71,6 +71,9 @@ def test_a_texture_with_a_base_color_and_filters(tmp_path):
     for texture_filter in ("nearest", "bilinear", "trilinear"):
         assert_same_frames(frames(zraster.Scene([mesh]), texture_filter=texture_filter),
                            frames(loaded, texture_filter=texture_filter))
+    # Frames drawn through an owning copy of the scene (antialiasing, the A-buffer).
+    for options in ({"aa": 2}, {"visibility": "abuffer"}):
+        assert_same_frames(frames(zraster.Scene([mesh]), **options), frames(loaded, **options))
 
 
 def test_float_texels_are_scaled_to_bytes():
