@@ -5,11 +5,16 @@
 
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 #include "errors.hpp"
 
 namespace zraster::python {
 namespace {
+
+// A texture side past which an image array is refused rather than copied (the loaders' images
+// are bounded by their decoder; 65536 keeps width * height * 4 well inside 64 bits).
+constexpr py::ssize_t kMaxTextureSide = 65536;
 
 using namespace pybind11::literals;
 
@@ -122,6 +127,45 @@ Indices triangle_indices(py::handle object, std::size_t vertex_count, const std:
     indices.array = a;
     indices.view = {a.size() > 0 ? a.data() : nullptr, std::size_t(a.size()), type};
     return indices;
+}
+
+std::shared_ptr<const Texture> texture_image(py::handle object, const std::string& argument,
+                                             int max_side) {
+    const std::string expected = "an image array of shape (H, W, 3) or (H, W, 4), uint8 or float";
+    py::array a = as_array(object, argument, expected);
+    require_kind(a, "uf", argument, expected);
+    if (a.ndim() != 3 || (a.shape(2) != 3 && a.shape(2) != 4))
+        input_error(argument, "expected shape (H, W, 3) or (H, W, 4), got " + shape_text(a));
+    if (a.shape(0) < 1 || a.shape(1) < 1)
+        input_error(argument, "the image is empty, shape " + shape_text(a));
+    if (a.shape(0) > kMaxTextureSide || a.shape(1) > kMaxTextureSide)
+        input_error(argument, "the image is " + std::to_string(a.shape(1)) + "x" +
+                                  std::to_string(a.shape(0)) + ", more than " +
+                                  std::to_string(kMaxTextureSide) + " texels a side");
+    const bool bytes = a.dtype().kind() == 'u';
+    if (bytes && a.itemsize() != 1)
+        throw py::type_error(argument + ": expected " + expected + ", got an array of dtype " +
+                             py::str(a.dtype()).cast<std::string>());
+    const auto height = std::size_t(a.shape(0)), width = std::size_t(a.shape(1));
+    const auto channels = std::size_t(a.shape(2));
+    std::vector<std::uint8_t> rgba(width * height * 4, 255);
+    if (bytes) {
+        auto c = py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>::ensure(a);
+        const std::uint8_t* in = c.data();
+        for (std::size_t i = 0; i < width * height; ++i)
+            for (std::size_t k = 0; k < channels; ++k) rgba[i * 4 + k] = in[i * channels + k];
+    } else {
+        auto c = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+        const double* in = c.data();
+        for (std::size_t i = 0; i < width * height * channels; ++i) {
+            const double v = in[i];
+            if (!(v >= 0.0 && v <= 1.0))
+                input_error(argument, "float texels must be in [0, 1], got " + std::to_string(v) +
+                                          " at element " + std::to_string(i));
+            rgba[i / channels * 4 + i % channels] = std::uint8_t(std::lround(v * 255.0));
+        }
+    }
+    return std::make_shared<const Texture>(int(width), int(height), rgba, max_side);
 }
 
 int image_side(py::handle object, const std::string& argument) {

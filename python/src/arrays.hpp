@@ -2,11 +2,13 @@
 // when their layout is one zraster reads directly, else copied once into one it does.
 #pragma once
 #include <zraster/mesh_view.hpp>
+#include <zraster/texture.hpp>
 
 #include <pybind11/numpy.h>
 #include <glm/glm.hpp>
 
 #include <cstddef>
+#include <memory>
 #include <string>
 
 namespace zraster::python {
@@ -32,6 +34,14 @@ struct Indices {
     bool copied = false;
 };
 Indices triangle_indices(py::handle object, std::size_t vertex_count, const std::string& argument);
+
+// An image as a texture: shape (H, W, 3) or (H, W, 4), uint8, or floats in [0, 1] (scaled by 255
+// and rounded to the nearest byte); rows top to bottom, as an image file's. RGB gets alpha 255.
+// Copied into a zraster::Texture with its mip chain, reduced as the loaders reduce an image to
+// max_side. A wrong dtype is a TypeError, a wrong shape or a float out of [0, 1] an InputError,
+// both naming the argument.
+std::shared_ptr<const Texture> texture_image(py::handle object, const std::string& argument,
+                                             int max_side);
 
 // A 4x4 matrix (row-major as numpy shows it, acting on column vectors) as glm's column-major.
 glm::dmat4 matrix4(py::handle object, const std::string& argument);

@@ -27,19 +27,21 @@ namespace py = pybind11;
 struct PyMesh {
     py::array positions, normals, uvs, indices;  // normals and uvs: None when absent
     MeshView view;                               // into the arrays above
-    std::optional<Material> material;            // from `color`; else the scene's default
+    // From `color`, `texture`, `alpha_mode` or `alpha_cutoff` (the texture is the material's own
+    // copy of the image); none of them: the scene's default material.
+    std::optional<Material> material;
     std::string name;
     bool positions_copied = false, normals_copied = false, uvs_copied = false,
          indices_copied = false;
     bool normals_computed = false;
 };
 
-// A scene: an owning zraster::Scene (load()), or instances of Meshes (kept referenced), both
-// seen through the same views. Immutable once made, so its views stay valid while a frame renders
-// without the GIL.
+// A scene: an owning zraster::Scene (load()), or instances of Meshes and of other Scenes (kept
+// referenced), all seen through the same views. Immutable once made, so its views stay valid while
+// a frame renders without the GIL.
 struct PyScene {
     std::shared_ptr<const Scene> owned;  // load(): the loaded scene; null for Mesh scenes
-    std::vector<py::object> keep;        // the Mesh objects the views point into
+    std::vector<py::object> keep;        // the Mesh and Scene objects the views point into
     std::vector<MeshView> meshes;
     std::vector<Material> materials{Material{}};
     std::vector<InstanceView> instances;
@@ -62,7 +64,13 @@ struct PyScene {
 // The scene a render call draws: a Scene, or a Mesh as a one-instance scene.
 std::shared_ptr<const PyScene> scene_argument(py::handle object, const char* argument);
 
+// Material::alpha_mode as Python names it: "opaque", "mask", "blend".
+const char* alpha_mode_name(AlphaMode mode);
+// One of those names, else TypeError / InputError naming the argument.
+AlphaMode alpha_mode_argument(py::handle object, const std::string& argument);
+
 void bind_errors(py::module_& m);
+void bind_material(py::module_& m);
 void bind_mesh(py::module_& m);
 void bind_scene(py::module_& m);
 void bind_camera(py::module_& m);

@@ -1,4 +1,5 @@
 // zraster.Mesh: a triangle mesh over the caller's numpy arrays.
+#include <zraster/load.hpp>
 #include <zraster/mesh.hpp>
 #include <zraster/scenes.hpp>
 
@@ -46,9 +47,56 @@ FloatRows per_vertex(const py::object& rows, std::size_t columns, const char* ar
     return r;
 }
 
+// The base color from `color`: RGB and an optional alpha, each in 0..1.
+void set_color(Material& material, const py::object& color) {
+    const std::size_t n =
+        py::isinstance<py::sequence>(color) && !py::isinstance<py::str>(color) ? py::len(color) : 0;
+    if (n != 3 && n != 4) type_error("color", "3 or 4 numbers (RGB or RGBA in 0..1)", color);
+    const glm::dvec4 c = vector_n(color, int(n), "color");
+    for (std::size_t k = 0; k < n; ++k)
+        if (c[int(k)] < 0.0 || c[int(k)] > 1.0)
+            input_error("color",
+                        "components must be in 0..1, got " + py::str(color).cast<std::string>());
+    material.base_color = glm::vec3(c);
+    if (n == 4) material.opacity = float(c.w);
+}
+
+// The mesh's own material, when any of its keywords is given: zraster's default Material with
+// what they set. A texture without a color multiplies white, as a glTF baseColorTexture does.
+std::optional<Material> mesh_material(const std::string& name, bool has_uvs,
+                                      const py::object& color, const py::object& texture,
+                                      const py::object& alpha_mode,
+                                      const py::object& alpha_cutoff) {
+    if (color.is_none() && texture.is_none() && alpha_mode.is_none() && alpha_cutoff.is_none())
+        return std::nullopt;
+    Material material;
+    material.name = name;
+    if (!texture.is_none()) {
+        material.base_color_texture =
+            texture_image(texture, "texture", LoadOptions{}.max_texture_side);
+        if (!has_uvs)
+            input_error("texture", "a texture needs uvs: give uvs= (one (u, v) per position)");
+        material.base_color = glm::vec3(1.0f);
+    }
+    if (!color.is_none()) set_color(material, color);
+    if (!alpha_mode.is_none()) material.alpha_mode = alpha_mode_argument(alpha_mode, "alpha_mode");
+    // As the glTF loader makes an OPAQUE material: opacity 1, so that a reader of Material that
+    // does not look at alpha_mode (the A-buffer) draws it opaque too.
+    if (material.alpha_mode == AlphaMode::Opaque) material.opacity = 1.0f;
+    if (!alpha_cutoff.is_none()) {
+        const double cutoff = finite_number(alpha_cutoff, "alpha_cutoff");
+        if (cutoff < 0.0 || cutoff > 1.0)
+            input_error("alpha_cutoff", "must be in 0..1, got " + std::to_string(cutoff));
+        material.alpha_cutoff = float(cutoff);
+    }
+    return material;
+}
+
 std::shared_ptr<PyMesh> make_mesh(const py::object& positions, const py::object& indices,
                                   const py::object& normals, const py::object& uvs,
-                                  const py::object& color, std::string name) {
+                                  const py::object& color, std::string name,
+                                  const py::object& texture, const py::object& alpha_mode,
+                                  const py::object& alpha_cutoff) {
     auto mesh = std::make_shared<PyMesh>();
     FloatRows p = float_rows(positions, 3, "positions");
     mesh->positions = p.array;
@@ -74,22 +122,7 @@ std::shared_ptr<PyMesh> make_mesh(const py::object& positions, const py::object&
         mesh->uvs_copied = t.copied;
         mesh->view.uvs = t.view;
     }
-    if (!color.is_none()) {
-        const std::size_t n = py::isinstance<py::sequence>(color) && !py::isinstance<py::str>(color)
-                                  ? py::len(color)
-                                  : 0;
-        if (n != 3 && n != 4) type_error("color", "3 or 4 numbers (RGB or RGBA in 0..1)", color);
-        const glm::dvec4 c = vector_n(color, int(n), "color");
-        for (std::size_t k = 0; k < n; ++k)
-            if (c[int(k)] < 0.0 || c[int(k)] > 1.0)
-                input_error("color", "components must be in 0..1, got " +
-                                         py::str(color).cast<std::string>());
-        Material material;
-        material.name = name;
-        material.base_color = glm::vec3(c);
-        if (n == 4) material.opacity = float(c.w);
-        mesh->material = material;
-    }
+    mesh->material = mesh_material(name, !uvs.is_none(), color, texture, alpha_mode, alpha_cutoff);
     mesh->name = std::move(name);
     return mesh;
 }
@@ -109,7 +142,7 @@ std::shared_ptr<PyMesh> mesh_from(const Mesh& m, const py::object& color) {
     return make_mesh(positions, indices,
                      m.normals.size() == m.positions.size() ? py::object(normals) : py::none(),
                      m.uvs.size() == m.positions.size() ? py::object(uvs) : py::none(), color,
-                     m.name);
+                     m.name, py::none(), py::none(), py::none());
 }
 
 py::object optional_array(const py::array& a) {
@@ -121,7 +154,8 @@ py::object optional_array(const py::array& a) {
 void bind_mesh(py::module_& m) {
     py::class_<PyMesh, std::shared_ptr<PyMesh>>(m, "Mesh", R"(A triangle mesh over numpy arrays.
 
-Mesh(positions, indices, normals=None, uvs=None, color=None, name="")
+Mesh(positions, indices, normals=None, uvs=None, color=None, name="", texture=None,
+     alpha_mode=None, alpha_cutoff=None)
 
 positions: (N, 3) real numbers, object space.
 indices:   (M, 3) or flat (3M,) integers in 0..N-1; counter-clockwise triangles face the viewer.
@@ -129,20 +163,37 @@ normals:   optional (N, 3), one unit normal per position. Absent: angle-weighted
            are computed here, as the file loaders do (`computed_normals` is then True).
 uvs:       optional (N, 2) texture coordinates, v = 0 at the image's top row.
 color:     optional base color (R, G, B) or (R, G, B, A), components in 0..1, of the mesh's
-           own material (absent: zraster's default material; A < 1 is drawn transparent only
-           with visibility="abuffer").
+           own material. A is the material's opacity.
+texture:   optional base-color image, (H, W, 3) or (H, W, 4) uint8, or floats in [0, 1]
+           (scaled by 255, rounded); row 0 is the image's top row, as in an image file. Needs
+           uvs. Copied into a zraster texture with its mip levels, as a loaded model's texture
+           (reduced past 8192 texels a side as load() reduces it); its alpha counts. Without
+           `color` the base color is white (the texture's colors as they are).
+alpha_mode: optional "blend" (the default: composited over what is behind it where alpha is
+           below 1, opaque where alpha is 1 everywhere), "mask" (fragments with alpha below
+           alpha_cutoff are discarded, the rest opaque) or "opaque" (alpha ignored; the
+           material's opacity is 1 then, as the glTF loader makes an OPAQUE material).
+alpha_cutoff: optional, in 0..1 (default 0.5): the "mask" threshold.
+
+Alpha = A x the texture's alpha. With none of color, texture, alpha_mode, alpha_cutoff the mesh
+has no material of its own and is drawn with zraster's default material. `material` returns
+the mesh's material (a zraster.Material) or None.
 
 Nothing is copied when the arrays already have a layout zraster reads: float32 rows of
 adjacent floats (C order, or any row stride, e.g. a column slice of an interleaved array) and
 C-contiguous uint32, int32 or uint16 indices. Anything else (float64, int64, Fortran order,
 lists) is copied once, here, into float32 / uint32. The Mesh keeps the arrays referenced;
 `copied` says which were copied. A referenced array's later changes show in later renders (the
-checks - shapes, finite values, indices in range - are made here, once).
+checks - shapes, finite values, indices in range - are made here, once). The texture is always
+copied.
 
 Raises InputError (naming the argument) for wrong shapes, non-finite values, indices out of
-range or a color out of 0..1, and TypeError for arguments that are no arrays of numbers.)")
+range, a color or alpha_cutoff out of 0..1, an unknown alpha_mode, float texels out of [0, 1]
+or a texture without uvs, and TypeError for arguments of the wrong type (a texture of a dtype
+other than uint8 or float).)")
         .def(py::init(&make_mesh), "positions"_a, "indices"_a, "normals"_a = py::none(),
-             "uvs"_a = py::none(), "color"_a = py::none(), "name"_a = "")
+             "uvs"_a = py::none(), "color"_a = py::none(), "name"_a = "", "texture"_a = py::none(),
+             "alpha_mode"_a = py::none(), "alpha_cutoff"_a = py::none())
         .def_static(
             "uv_sphere",
             [](float radius, int stacks, int slices, const py::object& color) {
@@ -185,6 +236,25 @@ range or a color out of 0..1, and TypeError for arguments that are no arrays of 
                                       mat.opacity);
             },
             "The base color (R, G, B, A) of the mesh's material, or None (the default).")
+        .def_property_readonly(
+            "material",
+            [](const PyMesh& mesh) -> py::object {
+                if (!mesh.material) return py::none();
+                return py::cast(*mesh.material);
+            },
+            "The mesh's own material (a zraster.Material), or None (the scene's default).")
+        .def_property_readonly(
+            "texture",
+            [](const PyMesh& mesh) -> py::object {
+                if (!mesh.material || !mesh.material->base_color_texture) return py::none();
+                const Texture& t = *mesh.material->base_color_texture;
+                py::array_t<std::uint8_t> image(
+                    {py::ssize_t(t.height()), py::ssize_t(t.width()), py::ssize_t(4)});
+                const std::span<const std::uint8_t> rgba = t.level_rgba(0);
+                std::memcpy(image.mutable_data(), rgba.data(), rgba.size());
+                return image;
+            },
+            "The texture's first level as an (H, W, 4) uint8 RGBA copy, or None.")
         .def_property_readonly("name", [](const PyMesh& mesh) { return mesh.name; })
         .def_property_readonly(
             "copied",

@@ -12,6 +12,7 @@ PYBIND11_MODULE(_zraster, m) {
         "into numpy arrays (color, depth, normals, ids).";
     m.attr("__version__") = zraster::kVersionString;
     bind_errors(m);
+    bind_material(m);
     bind_mesh(m);
     bind_scene(m);
     bind_camera(m);

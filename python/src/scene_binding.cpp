@@ -4,6 +4,11 @@
 
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <utility>
+
 #include "arrays.hpp"
 #include "binding.hpp"
 #include "errors.hpp"
@@ -17,29 +22,79 @@ const char* float_bytes(const AttributeView& view, std::size_t i, std::size_t si
     return reinterpret_cast<const char*>(view.data) + i * (view.stride ? view.stride : size);
 }
 
+constexpr const char* kItemExpected = "a Mesh, a Scene, or a (Mesh or Scene, 4x4 transform) pair";
+
+// A transform that places an item: finite (matrix4) and invertible, since normals are
+// transformed by its inverse transpose.
+glm::dmat4 item_transform(py::handle object, const std::string& argument) {
+    const glm::dmat4 transform = matrix4(object, argument);
+    const double determinant = glm::determinant(transform);
+    if (!(determinant != 0.0 && std::isfinite(determinant)))
+        input_error(argument, "the matrix is singular (determinant " + std::to_string(determinant) +
+                                  "): it has no inverse");
+    return transform;
+}
+
+// A Scene's instances placed by `transform` on top of their own transforms (transform applied
+// last), in the Scene's order; its meshes and materials are added once however often it is
+// given (`first_mesh`: where its meshes start, or npos the first time).
+void add_scene(PyScene& scene, const PyScene& item, const glm::dmat4* transform,
+               std::size_t& first_mesh) {
+    if (first_mesh == std::size_t(-1)) {
+        first_mesh = scene.meshes.size();
+        const auto first_material = std::uint32_t(scene.materials.size());
+        scene.materials.insert(scene.materials.end(), item.materials.begin(), item.materials.end());
+        for (MeshView view : item.meshes) {
+            view.material += first_material;
+            scene.meshes.push_back(view);
+        }
+    }
+    for (InstanceView instance : item.instances) {
+        instance.mesh += std::uint32_t(first_mesh);
+        if (transform != nullptr)
+            instance.transform = glm::mat4(*transform * glm::dmat4(instance.transform));
+        scene.instances.push_back(instance);
+    }
+}
+
 std::shared_ptr<PyScene> scene_from_items(const py::iterable& items) {
     auto scene = std::make_shared<PyScene>();
-    std::vector<const PyMesh*> seen;  // the mesh index of each distinct Mesh
+    // Each distinct Mesh's mesh index, and where each distinct Scene's meshes start.
+    std::vector<std::pair<const PyMesh*, std::size_t>> meshes_seen;
+    std::vector<std::pair<const PyScene*, std::size_t>> scenes_seen;
     std::size_t position = 0;
     for (py::handle item : items) {
         const std::string argument = "items[" + std::to_string(position++) + "]";
-        py::handle mesh_object = item;
-        glm::dmat4 transform(1.0);
+        py::handle object = item;
+        std::optional<glm::dmat4> transform;
         if (py::isinstance<py::tuple>(item) || py::isinstance<py::list>(item)) {
             const auto pair = py::reinterpret_borrow<py::sequence>(item);
-            if (py::len(pair) != 2)
-                type_error(argument, "a Mesh or a (Mesh, 4x4 transform) pair", item);
-            mesh_object = pair[0];
-            transform = matrix4(pair[1], argument + " transform");
+            if (py::len(pair) != 2) type_error(argument, kItemExpected, item);
+            object = pair[0];
+            if (!py::isinstance<PyMesh>(object) && !py::isinstance<PyScene>(object))
+                type_error(argument, kItemExpected, object);
+            transform = item_transform(pair[1], argument + " transform");
         }
-        if (!py::isinstance<PyMesh>(mesh_object))
-            type_error(argument, "a Mesh or a (Mesh, 4x4 transform) pair", mesh_object);
-        const auto& mesh = mesh_object.cast<const PyMesh&>();
-        std::size_t index = 0;
-        while (index < seen.size() && seen[index] != &mesh) ++index;
-        if (index == seen.size()) {
-            seen.push_back(&mesh);
-            scene->keep.push_back(py::reinterpret_borrow<py::object>(mesh_object));
+        if (py::isinstance<PyScene>(object)) {
+            const auto& item_scene = object.cast<const PyScene&>();
+            auto found = std::find_if(scenes_seen.begin(), scenes_seen.end(),
+                                      [&](const auto& s) { return s.first == &item_scene; });
+            if (found == scenes_seen.end()) {
+                scene->keep.push_back(py::reinterpret_borrow<py::object>(object));
+                scenes_seen.emplace_back(&item_scene, std::size_t(-1));
+                found = scenes_seen.end() - 1;
+            }
+            add_scene(*scene, item_scene, transform ? &*transform : nullptr, found->second);
+            continue;
+        }
+        if (!py::isinstance<PyMesh>(object)) type_error(argument, kItemExpected, object);
+        const auto& mesh = object.cast<const PyMesh&>();
+        auto found = std::find_if(meshes_seen.begin(), meshes_seen.end(),
+                                  [&](const auto& s) { return s.first == &mesh; });
+        if (found == meshes_seen.end()) {
+            meshes_seen.emplace_back(&mesh, scene->meshes.size());
+            found = meshes_seen.end() - 1;
+            scene->keep.push_back(py::reinterpret_borrow<py::object>(object));
             MeshView view = mesh.view;
             view.name = mesh.name;
             if (mesh.material) {
@@ -49,8 +104,8 @@ std::shared_ptr<PyScene> scene_from_items(const py::iterable& items) {
             scene->meshes.push_back(view);
         }
         InstanceView instance;
-        instance.mesh = std::uint32_t(index);
-        instance.transform = glm::mat4(transform);
+        instance.mesh = std::uint32_t(found->second);
+        instance.transform = glm::mat4(transform.value_or(glm::dmat4(1.0)));
         scene->instances.push_back(instance);
     }
     return scene;
@@ -175,10 +230,17 @@ std::shared_ptr<const PyScene> scene_argument(py::handle object, const char* arg
 void bind_scene(py::module_& m) {
     py::class_<PyScene, std::shared_ptr<PyScene>>(m, "Scene", R"(Meshes placed in the world.
 
-Scene(items): items are Meshes (placed as they are) or (Mesh, transform) pairs, transform a
-4x4 object-to-world matrix acting on column vectors (p_world = transform @ [x, y, z, 1]). A Mesh
-given more than once is one mesh drawn several times (instances). The Scene keeps the Meshes
-referenced (their arrays are not copied) and cannot be changed once made.
+Scene(items): each item is a Mesh or a Scene (a loaded one, or another Scene of items), alone
+or as an (item, transform) pair, transform a 4x4 object-to-world matrix acting on column vectors
+(p_world = transform @ [x, y, z, 1]). A Scene item brings its instances, in its order, each
+placed by `transform @ its own transform`, and its meshes and materials (textures included) as
+they are. Instance ids (the instance_id output) follow the items' order: a Scene item's
+instances take the next len(scene) ids. A Mesh or Scene given more than once is one mesh (or set
+of meshes) drawn several times (instances). The Scene keeps its items referenced (their arrays
+are not copied) and cannot be changed once made.
+
+Raises TypeError naming the item (items[i]) for anything else, and InputError naming
+"items[i] transform" for a transform that is not 4x4, not finite or singular.
 
 zraster.load() returns a Scene too (its meshes owned by zraster).)")
         .def(py::init(&scene_from_items), "items"_a)
@@ -208,6 +270,11 @@ zraster.load() returns a Scene too (its meshes owned by zraster).)")
         .def_property_readonly(
             "source", [](const PyScene& s) { return s.spec; },
             "The path or procedural spec load() was given ('' for a Scene of Meshes).")
+        .def_property_readonly(
+            "materials", [](const PyScene& s) { return s.materials; },
+            "The scene's materials (copies, zraster.Material), index 0 the default: a loaded "
+            "scene's as the loader made them (docs/materials.md), a Scene of items' in item "
+            "order (each Mesh's own, each Scene item's list whole).")
         .def_property_readonly(
             "warnings", [](const PyScene& s) { return s.warnings; },
             "Problems the loader found and worked around (a missing texture, ...).")

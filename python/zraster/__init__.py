@@ -1,7 +1,8 @@
 """zraster: an exact, fast CPU rasterizer for Python.
 
-Scenes come from files or procedural specs (``load``) or from numpy arrays (``Mesh``,
-``Scene``); a ``Renderer`` draws them into numpy arrays: color, depth, normals and ids.
+Scenes come from files or procedural specs (``load``) or from numpy arrays (``Mesh``, with
+an optional texture and alpha), mixed in a ``Scene``; a ``Renderer`` draws them into numpy
+arrays: color, depth, normals and ids.
 
     import zraster
     scene = zraster.load("bunny.obj")
@@ -24,6 +25,7 @@ from ._zraster import (
     Camera,
     InputError,
     LoadWarning,
+    Material,
     Mesh,
     Renderer,
     Scene,
@@ -37,6 +39,7 @@ __all__ = [
     "Camera",
     "InputError",
     "LoadWarning",
+    "Material",
     "Mesh",
     "RENDER_OPTIONS",
     "Renderer",
