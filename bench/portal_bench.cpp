@@ -1,17 +1,23 @@
 // Portal culling on building:32x32 (docs/portals.md): whole frames at 1920x1080 on 2 threads
-// from 32 cameras inside rooms (a fixed, seeded set; each iteration draws the next), with
-// frustum culling only (always on: it cannot be switched off), with occlusion culling, with
-// portal culling (cull rectangles, exact frustums), and with a PVS and the exact walk; and the
-// cost of the walk itself. Counters: instances drawn per frame and the stage times.
+// from 32 cameras inside rooms (a fixed, seeded set; each iteration draws the next), with no
+// culling (the building flattened into one instance: instance frustum culling cannot be switched
+// off, so every triangle then goes through the pipeline, left to clipping and per-triangle
+// rejection), with frustum culling only, with occlusion culling, with portal culling (cull
+// rectangles, exact frustums), and with a PVS and the exact walk; and the cost of the walk
+// itself. Counters: instances drawn and triangles entering the pipeline (after instance culling)
+// per frame, and the stage times.
 // Run: build/portal_bench [--benchmark_filter=...].
 #include <benchmark/benchmark.h>
 
+#include <zraster/mesh.hpp>
 #include <zraster/portals.hpp>
 #include <zraster/render.hpp>
 #include <zraster/scenes.hpp>
 
 #include <memory>
 #include <vector>
+
+#include <glm/gtc/matrix_inverse.hpp>
 
 #include "benchmark_main.hpp"
 #include "render/portal_cull.hpp"
@@ -44,6 +50,42 @@ const Scene& building_without_pvs() {
     return scene;
 }
 
+// The same triangles as one mesh in world space, one instance, no cells: nothing for instance
+// culling to skip. One material (the first mesh's): Phong's cost per pixel does not depend on
+// the material's values.
+const Scene& building_flattened() {
+    static const Scene scene = [] {
+        const Scene& source = building_without_pvs();
+        Mesh all;
+        all.name = "building";
+        all.material = source.meshes.front().material;
+        for (const Instance& instance : source.instances) {
+            const Mesh& mesh = source.meshes[instance.mesh];
+            const glm::mat3 normal_matrix = glm::inverseTranspose(glm::mat3(instance.transform));
+            const auto base = std::uint32_t(all.positions.size());
+            for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+                all.positions.push_back(
+                    glm::vec3(instance.transform * glm::vec4(mesh.positions[v], 1.0f)));
+                if (v < mesh.normals.size())
+                    all.normals.push_back(glm::normalize(normal_matrix * mesh.normals[v]));
+            }
+            for (std::uint32_t index : mesh.indices) all.indices.push_back(base + index);
+        }
+        if (all.normals.size() != all.positions.size()) {
+            all.normals.clear();
+            compute_angle_weighted_normals(all);
+        }
+        update_bounds(all);
+        Scene s;
+        s.name = "building:32x32 flattened";
+        s.materials = source.materials;
+        s.meshes.push_back(std::move(all));
+        s.instances.push_back(Instance{0, glm::mat4(1.0f), std::nullopt, "building"});
+        return s;
+    }();
+    return scene;
+}
+
 // Eyes at 1.6 in random rooms, away from the walls, looking level in a random direction.
 std::vector<Camera> cameras() {
     SplitMix64 rng(7);
@@ -63,20 +105,25 @@ std::vector<Camera> cameras() {
     return out;
 }
 
-enum Variant { kFrustumOnly, kOcclusion, kRectangles, kPortals, kPvsPortals };
-const char* const kVariantNames[] = {"frustum culling only", "occlusion culling",
-                                     "portals (cull rectangles)", "portals (exact frustums)",
-                                     "PVS + portals (exact)"};
+enum Variant { kNoCulling, kFrustumOnly, kOcclusion, kRectangles, kPortals, kPvsPortals };
+const char* const kVariantNames[] = {"no culling (one instance)", "frustum culling only",
+                                     "occlusion culling",         "portals (cull rectangles)",
+                                     "portals (exact frustums)",  "PVS + portals (exact)"};
 
 void BM_BuildingFrame(benchmark::State& state) {
     const auto variant = Variant(state.range(0));
-    const Scene& scene = variant == kPvsPortals ? building() : building_without_pvs();
+    const Scene& scene = variant == kPvsPortals  ? building()
+                         : variant == kNoCulling ? building_flattened()
+                                                 : building_without_pvs();
     const std::vector<Camera> views = cameras();
     RenderOptions o;
     o.width = 1920;
     o.height = 1080;
     o.threads = 2;
     o.occlusion_cull = variant == kOcclusion;
+    // No culling: every triangle through the vertex stage and assembly (clusters' bounds would
+    // back-face cull 64 triangles at a time before their vertices are read).
+    o.cluster_culling = variant != kNoCulling;
     o.portal_cull = variant == kRectangles ? PortalCull::Rectangles
                     : variant >= kPortals  ? PortalCull::Frustum
                                            : PortalCull::Off;
@@ -85,26 +132,28 @@ void BM_BuildingFrame(benchmark::State& state) {
         o.camera = c;
         renderer.render(scene, o);
     }
-    double drawn = 0, walk = 0, vertex = 0, raster = 0;
+    double drawn = 0, triangles = 0, walk = 0, vertex = 0, raster = 0;
     std::size_t k = 0;
     for (auto _ : state) {
         o.camera = views[k++ % views.size()];
         const RenderStats& s = renderer.render(scene, o).stats;
         drawn += double(s.instances - s.instances_frustum_culled - s.instances_occlusion_culled -
                         s.instances_portal_culled);
+        triangles += double(s.triangles_in);
         walk += s.portal_ms;
         vertex += s.vertex_ms;
         raster += s.raster_ms;
     }
     const double frames = std::max(1.0, double(state.iterations()));
     state.counters["instances_drawn"] = drawn / frames;
+    state.counters["triangles_in"] = triangles / frames;
     state.counters["walk_ms"] = walk / frames;
     state.counters["vertex_ms"] = vertex / frames;
     state.counters["raster_ms"] = raster / frames;
     state.SetLabel(std::string(kVariantNames[variant]) + ", " +
                    std::to_string(scene.instances.size()) + " instances");
 }
-BENCHMARK(BM_BuildingFrame)->DenseRange(0, 4)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_BuildingFrame)->DenseRange(0, 5)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The walk alone (find the cell, walk, test the reached cells' instances), per camera.
 void BM_PortalWalk(benchmark::State& state) {

@@ -97,8 +97,9 @@ inline bool finite(const glm::vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-// What load_scene promises about a scene it returns (include/zraster/load.hpp, mesh.hpp).
-inline void check_loaded_scene(const Scene& scene) {
+// What load_scene promises about a scene it returns (include/zraster/load.hpp, mesh.hpp) and
+// the warnings it gave with it.
+inline void check_loaded_scene(const Scene& scene, const std::vector<std::string>& warnings = {}) {
     if (scene.materials.empty()) fail("no default material");
     if (scene.instances.empty()) fail("a loaded scene without instances");
     for (const Mesh& mesh : scene.meshes) {
@@ -126,7 +127,7 @@ inline void check_loaded_scene(const Scene& scene) {
             fail("alpha cutoff outside [0, 1]: " + m.name);
         if (m.alpha_mode > AlphaMode::Blend) fail("unknown alpha mode: " + m.name);
     }
-    for (const std::string& w : scene.warnings)
+    for (const std::string& w : warnings)
         if (w.find('\n') != std::string::npos) fail("multi-line warning: " + w);
 }
 
@@ -190,14 +191,15 @@ inline void fuzz_load(const std::uint8_t* data, std::size_t size, const std::str
     options.worker_timeout_seconds = 15;  // under libFuzzer's -timeout=20
     options.worker_memory_bytes = std::size_t{1} << 30;
     Scene scene;
+    std::vector<std::string> warnings;
     try {
-        scene = load_scene(path, options);
+        scene = load_scene(path, options, &warnings);
     } catch (const InputError& e) {
         check_input_error(e, path.string());
         return;
     }
-    check_loaded_scene(scene);
-    (void)describe_scene(scene);
+    check_loaded_scene(scene, warnings);
+    (void)describe_scene(scene, warnings);
     check_renders(scene, "a loaded scene");
 }
 

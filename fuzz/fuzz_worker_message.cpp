@@ -15,9 +15,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string file = "input.ply";
     LoadOptions options;
     options.max_triangles = 200'000;
-    Scene scene;
+    io::LoadedScene loaded;
     try {
-        scene = io::decode_worker_message(std::span(data, size), file, options);
+        loaded = io::decode_worker_message(std::span(data, size), file, options);
     } catch (const InputError& e) {
         fuzz::check_input_error(e, file);
         return 0;
@@ -27,12 +27,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (std::string_view(e.what()).starts_with("in the importer process: ")) return 0;
         throw;
     }
-    fuzz::check_loaded_scene(scene);
-    const std::string encoded = io::encode_scene_message(scene);
-    const Scene again = io::decode_worker_message(
+    fuzz::check_loaded_scene(loaded.scene, loaded.warnings);
+    const std::string encoded = io::encode_scene_message(loaded);
+    const io::LoadedScene again = io::decode_worker_message(
         std::span(reinterpret_cast<const std::uint8_t*>(encoded.data()), encoded.size()), file,
         options);
     if (io::encode_scene_message(again) != encoded) fuzz::fail("encode/decode round trip differs");
-    fuzz::check_renders(scene, "a decoded scene");
+    fuzz::check_renders(loaded.scene, "a decoded scene");
     return 0;
 }

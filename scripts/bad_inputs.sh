@@ -77,6 +77,32 @@ printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"%s"}],"buf
 if [ -f "$shared/gltf/BoxWithInfinites.glb" ]; then
     cp "$shared/gltf/BoxWithInfinites.glb" infinites.glb
 fi
+# Cells files (docs/portals.md): two rooms of one unit along x with a doorway, each variant
+# breaking one rule. cells_file NAME PORTAL_CELL PORTAL_CORNERS [EXTRA_INSTANCE] [FLOOR_FILE]
+mkdir -p cells
+printf 'v 0 0 0\nv 0 0 1\nv 1 0 1\nv 1 0 0\nf 1 2 3 4\n' >cells/floor.obj
+printf 'v 0 0 0\nv 0 0 1\nv 1 0 1\nv 1 0 0\nf 1 2 3 4\n' >floor-outside.obj
+door='[1, 0, 0.3], [1, 0, 0.7], [1, 0.8, 0.7], [1, 0.8, 0.3]'
+cells_file() {
+    printf '{"zraster_cells": 1, "meshes": {"floor": "%s"},
+ "instances": [{"name": "floor_a", "mesh": "floor"},
+               {"name": "floor_b", "mesh": "floor", "translate": [1, 0, 0]}%s],
+ "cells": [{"name": "a", "box": [[0, 0, 0], [1, 1, 1]], "instances": ["floor_a", "floor_b"]},
+           {"name": "b", "box": [[1, 0, 0], [2, 1, 1]], "instances": ["floor_a", "floor_b"]}],
+ "portals": [{"cells": ["a", "%s"], "corners": [%s]}]}\n' "${5:-floor.obj}" "${4:-}" "$2" "$3" \
+        >"cells/$1.cells.json"
+}
+cells_file two b "$door"
+cells_file missing-cell kitchn "$door"
+cells_file not-planar b '[1, 0, 0.3], [1, 0, 0.7], [1.02, 0.8, 0.7], [1, 0.8, 0.3]'
+cells_file not-convex b '[1, 0, 0.3], [1, 0, 0.7], [1, 0.2, 0.5], [1, 0.8, 0.7], [1, 0.8, 0.3]'
+cells_file no-cell b "$door" ', {"name": "lamp", "mesh": "floor", "translate": [5, 5, 5]}'
+cells_file outside b "$door" "" ../floor-outside.obj
+cells_file nested b "$door" "" two.cells.json
+sed 's/"zraster_cells": 1/"zraster_cells": 2/' cells/two.cells.json >cells/version.cells.json
+head -c 120 cells/two.cells.json >cells/broken.cells.json
+printf '{"zraster_pvs": 1, "sets": [{"cell": "a", "visible": [0, 1]}, {"cell": "b", "visible": [0, 1]}]}\n' >two.pvs.json
+printf '{"zraster_pvs": 1, "sets": [{"cell": "a", "visible": [0, 7]}, {"cell": "b", "visible": [1]}]}\n' >range.pvs.json
 
 failures=0
 echo "| # | Input | Command | Exit | Message (stderr) | Output left |"
@@ -187,6 +213,27 @@ row "triangle at 3e38 (beyond a camera's range)" render far.ply -o out.png
 row "eye at 1e39" render builtin:cube --eye 1e39,0,0 -o out.png
 row "thread count 2^31 - 1 (clamped with a warning: renders)" render builtin:cube --size 8x8 --threads 2147483647 -o out.png
 rm -f out.png
+# cells_row DESCRIPTION FILE ELEMENT ARGUMENTS...: a row whose one-line message must also name
+# the file and the JSON element.
+cells_row() {
+    local what=$1 file=$2 element=$3
+    shift 3
+    row "$what" "$@"
+    if ! grep -qF "$file: $element" stderr.txt; then
+        echo "(row $n: the message does not name '$file: $element')" >&2
+        failures=$((failures + 1))
+    fi
+}
+cells_row "cells file: malformed JSON" cells/broken.cells.json "malformed JSON" render cells/broken.cells.json -o out.png
+cells_row "cells file: wrong version" cells/version.cells.json "zraster_cells" render cells/version.cells.json -o out.png
+cells_row "cells file: a portal naming a missing cell" cells/missing-cell.cells.json "portals[0].cells[1]" render cells/missing-cell.cells.json -o out.png
+cells_row "cells file: a portal not planar" cells/not-planar.cells.json "portals[0]" render cells/not-planar.cells.json -o out.png
+cells_row "cells file: a portal not convex" cells/not-convex.cells.json "portals[0]" render cells/not-convex.cells.json -o out.png
+cells_row "cells file: an instance in no cell" cells/no-cell.cells.json "instances[2]" render cells/no-cell.cells.json -o out.png
+cells_row "cells file: a mesh file outside its folder" cells/outside.cells.json "meshes.floor" render cells/outside.cells.json -o out.png
+cells_row "cells file naming another cells file" cells/nested.cells.json "meshes.floor" render cells/nested.cells.json -o out.png
+cells_row "--pvs file for another scene" two.pvs.json "sets" render building:2x2 --pvs two.pvs.json -o out.png
+cells_row "--pvs file with a cell index out of range" range.pvs.json "sets[0].visible" render cells/two.cells.json --pvs range.pvs.json -o out.png
 echo
 echo "$n inputs; $failures broke the contract (exit 2, one line, nothing left)."
 [ "$failures" -eq 0 ]

@@ -19,7 +19,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${ZRASTER_FUZZ_BUILD_DIR:-$root/build-asan}
 seconds=${1:-10}
 all_targets="fuzz_load_obj fuzz_load_ply fuzz_load_stl fuzz_load_gltf fuzz_load_off fuzz_load_3ds
-             fuzz_pipeline fuzz_cluster_cull fuzz_cli fuzz_worker_message fuzz_mesh_view"
+             fuzz_cells fuzz_pipeline fuzz_cluster_cull fuzz_cli fuzz_worker_message fuzz_mesh_view"
 targets=${ZRASTER_FUZZ_TARGETS:-$all_targets}
 shared=$root/../shared/data/meshes
 
@@ -51,6 +51,7 @@ dictionary() {
         fuzz_load_stl) echo stl ;;
         fuzz_load_gltf) echo gltf ;;
         fuzz_load_off) echo off ;;
+        fuzz_cells) echo cells ;;
         fuzz_cli) echo cli ;;
     esac
 }

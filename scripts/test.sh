@@ -6,7 +6,7 @@
 #      asan, build-asan/),
 #   2. the multithreaded paths under ThreadSanitizer (scripts/sanitize.sh tsan, build-tsan/,
 #      with an instrumented oneTBB built from Debian's source package),
-#   3. a short run of every libFuzzer target, about 77 s in all (scripts/fuzz.sh, in the
+#   3. a short run of every libFuzzer target, about 72 s in all (scripts/fuzz.sh, in the
 #      build-asan/ build), with the loaders in the command's worker-process configuration,
 #   4. zraster as a subproject of another CMake project, built as shared libraries
 #      (scripts/consumer_check.sh subproject; the installed-package check is a ctest test).
@@ -36,7 +36,7 @@ if [ "${ZRASTER_QUICK:-0}" != 1 ]; then
     step "asan+ubsan suite" bash "$root/scripts/sanitize.sh" asan
     step "tsan multithreaded tests" bash "$root/scripts/sanitize.sh" tsan
     step "short fuzz runs" env ZRASTER_FUZZ_LOAD_ISOLATION=worker \
-        bash "$root/scripts/fuzz.sh" "${ZRASTER_FUZZ_SECONDS:-7}"
+        bash "$root/scripts/fuzz.sh" "${ZRASTER_FUZZ_SECONDS:-6}"
     step "shared-library subproject check" bash "$root/scripts/consumer_check.sh" subproject
     if [ -n "$failed" ]; then echo "test.sh: FAILED:$failed"; fi
 else

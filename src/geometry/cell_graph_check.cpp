@@ -115,6 +115,34 @@ void check_portal(const CellGraph& graph, std::size_t index, double tolerance,
         for (std::size_t k = 0; k < portal.corners.size(); ++k)
             if (!inside(graph.cells[c].volume, portal.corners[k], tolerance))
                 fail("corner " + std::to_string(k) + " lies outside " + cell_label(graph, c));
+    // On the boundary of both cells: in the plane of a face of each, the two cells on opposite
+    // sides of it. Corners inside a cell are not enough: a portal through a cell's interior, or
+    // between cells that overlap, lets a ray pass from one cell to the other without crossing it,
+    // which the walk (and the PVS) cannot follow.
+    glm::dvec3 inward[2];
+    for (int side = 0; side < 2; ++side) {
+        const std::uint32_t c = portal.cells[side];
+        const glm::dvec3* face = nullptr;
+        for (const glm::dvec4& plane : graph.cells[c].volume.planes) {
+            const double length = glm::length(glm::dvec3(plane));
+            const bool holds_all =
+                std::all_of(portal.corners.begin(), portal.corners.end(), [&](const glm::dvec3& p) {
+                    return std::abs(glm::dot(glm::dvec3(plane), p) + plane.w) <= tolerance * length;
+                });
+            if (holds_all) {
+                inward[side] = glm::dvec3(plane) / length;
+                face = &inward[side];
+                break;
+            }
+        }
+        if (face == nullptr)
+            fail("does not lie in a face of " + cell_label(graph, c) +
+                 " (a portal is on the boundary of both its cells)");
+    }
+    if (glm::dot(inward[0], inward[1]) >= 0.0)
+        fail("has " + cell_label(graph, portal.cells[0]) + " and " +
+             cell_label(graph, portal.cells[1]) +
+             " on the same side (a portal joins cells on either side of it)");
 }
 
 // Whether the box (grown by the tolerance) meets the cell: separated along a box axis or a cell

@@ -48,6 +48,7 @@ class CellsReader {
         read_cells(member(document, "cells", "", json::value_t::array));
         if (document.contains("portals"))
             read_portals(member(document, "portals", "", json::value_t::array));
+        check_every_instance_in_a_cell();
         std::vector<Bounds3f> boxes;
         std::vector<std::string> names;
         for (const Instance& instance : scene_.instances) {
@@ -182,12 +183,27 @@ class CellsReader {
                 out.transform = placement * placed.transform;
                 out.name = source.instances.size() == 1 ? name : name + "/" + placed.name;
                 scene_.instances.push_back(std::move(out));
+                placed_by_.push_back(k);
             }
             if (scene_.instances.size() > options_.max_instances)
                 fail(at, "the scene places more than " + std::to_string(options_.max_instances) +
                              " instances");
             instance_ranges_[name] = {first, std::uint32_t(scene_.instances.size())};
         }
+    }
+
+    // validate_cell_graph refuses this too, naming the scene's instance; here the message names
+    // the JSON element that placed it.
+    void check_every_instance_in_a_cell() const {
+        if (graph_.cells.empty()) return;  // validate_cell_graph says there are none
+        std::vector<std::uint8_t> listed(scene_.instances.size(), 0);
+        for (const Cell& cell : graph_.cells)
+            for (const std::uint32_t i : cell.instances) listed[i] = 1;
+        for (std::size_t i = 0; i < listed.size(); ++i)
+            if (listed[i] == 0)
+                fail("instances[" + std::to_string(placed_by_[i]) + "]",
+                     "'" + scene_.instances[i].name +
+                         "' is in no cell (list an instance in every cell its bounds touch)");
     }
 
     std::uint32_t append_meshes(const LoadedScene& loaded) {
@@ -299,6 +315,7 @@ class CellsReader {
     std::vector<std::string> warnings_;  // of the meshes placed
     CellGraph graph_;
     std::map<std::string, LoadedScene> meshes_;
+    std::vector<std::size_t> placed_by_;  // per scene instance: its element of "instances"
     std::map<std::string, std::pair<std::uint32_t, std::uint32_t>> instance_ranges_;
     std::map<std::string, std::uint32_t> cell_index_;
 };

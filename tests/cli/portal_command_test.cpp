@@ -136,5 +136,23 @@ TEST(PortalCommand, CellsFileErrorsNameTheElement) {
         << r.output;
 }
 
+TEST(PortalCommand, InstanceInNoCellNamesItsElement) {
+    const auto dir = temp_dir("portal_cells_no_cell");
+    write_cells_file(dir, "b");
+    std::string text = read_bytes(dir / "two.cells.json");
+    const std::string crate = R"({"name": "crate_b", "mesh": "crate", "translate": [1.4, 0, 0.4]})";
+    ASSERT_NE(text.find(crate), std::string::npos);
+    text.replace(text.find(crate), crate.size(),
+                 crate + R"(, {"name": "lamp", "mesh": "crate", "translate": [5, 5, 5]})");
+    std::ofstream(dir / "two.cells.json") << text;
+    const CommandResult r = run_zraster("render two.cells.json -o x.png", dir);
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_TRUE(single_line(r.output)) << r.output;
+    EXPECT_NE(r.output.find("two.cells.json: instances[3]: 'lamp' is in no cell"),
+              std::string::npos)
+        << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+}
+
 }  // namespace
 }  // namespace zraster::test

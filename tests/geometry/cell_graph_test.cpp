@@ -70,6 +70,24 @@ TEST(CellGraph, RefusesAPortalOffItsCells) {
     EXPECT_EQ(t.error(), "x.cells.json: portals[0]: corner 0 lies outside cells[1] 'b'");
 }
 
+// fuzz_cells: a portal whose corners lie inside cell b but on none of its faces (b reached past
+// x = 1 into a) let a ray go from a into b without crossing it; the walk culled what it saw.
+TEST(CellGraph, RefusesAPortalThroughACellsInterior) {
+    TwoRooms t;
+    t.graph.cells[1].volume = box_volume({0.9, 0, 0}, {2, 1, 1});
+    EXPECT_EQ(t.error(),
+              "x.cells.json: portals[0]: does not lie in a face of cells[1] 'b' (a portal is on "
+              "the boundary of both its cells)");
+}
+
+TEST(CellGraph, RefusesAPortalWithBothCellsOnOneSide) {
+    TwoRooms t;
+    t.graph.cells[1].volume = box_volume({0.9, 0, 0}, {1, 1, 1});
+    EXPECT_EQ(t.error(),
+              "x.cells.json: portals[0]: has cells[0] 'a' and cells[1] 'b' on the same side (a "
+              "portal joins cells on either side of it)");
+}
+
 TEST(CellGraph, RefusesAnInstanceInNoCell) {
     TwoRooms t;
     t.graph.cells[1].instances.clear();

@@ -206,5 +206,29 @@ TEST(FuzzRegressions, InputErrorIsOneLine) {
     EXPECT_EQ(e.cause(), "bad name 'a b ?' here");
 }
 
+// fuzz_cells: cell b's first plane (x + 20 y >= 1) reaches into cell a, so the doorway at x = 1
+// lies inside b instead of on its boundary; validation took corners inside both cells for a
+// portal between them, and portal culling then skipped a crate seen through the doorway.
+TEST(FuzzRegressions, CellsPortalInsideACell) {
+    const auto dir = test::temp_dir("io-fuzz-cells-interior-portal");
+    test::write_bytes(dir / "a.obj",
+                      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                      "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 3 4 8 7\nf 2 3 7 6\nf 1 5 8 4\n");
+    test::write_bytes(dir / "floor.obj", "v 0 0 0\nv 0 0 1\nv 1 0 1\nv 1 0 0\nf 1 2 3 4\n");
+    test::write_bytes(dir / "x.cells.json", R"({"zraster_cells": 1,
+ "meshes": {"floor": "floor.obj", "crate": "a.obj"},
+ "instances": [{"name": "floor_a", "mesh": "floor"},
+               {"name": "floor_b", "mesh": "floor", "translate": [1, 0, 0]},
+               {"name": "crate_b", "mesh": "crate", "translate": [1.4, 0, 0.4], "scale": 0.2}],
+ "cells": [{"name": "a", "box": [[0, 0, 0], [1, 1, 1]], "instances": ["floor_a", "floor_b"]},
+           {"name": "b", "planes": [[1, 20, 0, -1], [-1, 0, 0, 2], [0, 1, 0, 0], [0, -1, 0, 1],
+                                    [0, 0, 1, 0], [0, 0, -1, 1]],
+            "instances": ["floor_a", "floor_b", "crate_b"]}],
+ "portals": [{"cells": ["a", "b"], "corners": [[1, 0, 0.3], [1, 0, 0.7], [1, 0.8, 0.7],
+                                               [1, 0.8, 0.3]]}]})");
+    test::expect_input_error([&] { load_scene(dir / "x.cells.json"); }, dir / "x.cells.json",
+                             "portals[0]: does not lie in a face of cells[1] 'b'");
+}
+
 }  // namespace
 }  // namespace zraster
