@@ -3,8 +3,10 @@
 // (src/visibility/svg_writer.cpp).
 //
 // The polygons are exactly those the BSP / painter's frames fill (render_with_visibility with
-// VisibilityAlgorithm::Bsp or Painter): same camera, clipping, culling and snapping, flat shaded
-// per face (options.shading Unlit: the material's base color). Coordinates are window pixels,
+// VisibilityAlgorithm::Bsp or Painter): same camera, clipping, culling and snapping. A fill holds
+// one color: a flat-shaded face has render()'s flat color (options.shading Unlit: the material's
+// base color); a Gouraud, Phong or textured one is shaded by the renderer's shading core at the
+// piece's centroid, with the same lights, interpolation and texture filtering. Coordinates are window pixels,
 // y down, as SVG's user space; width, height and viewBox are the image size.
 //
 // Cracks: anti-aliased SVG renderers leave hairline seams between adjacent filled polygons. Each
@@ -65,7 +67,8 @@ struct SvgStats {
 // The polygons in paint order (back to front), before merging: for the BSP order, the tree's
 // walk for the frame's eye with each stored polygon projected fan triangle by fan triangle as
 // render_bsp draws it; for the painter's order, painter_sort over project_scene. Filled with
-// paint_polygons they give render_with_visibility's image for that algorithm.
+// paint_polygons they give render_with_visibility's image for that algorithm. ScreenPolygon::color
+// is the fill (above).
 ZRASTER_API std::vector<ScreenPolygon> svg_polygons(const Scene& scene,
                                                     const RenderOptions& options,
                                                     SvgOptions::Order order);

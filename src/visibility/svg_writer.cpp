@@ -17,6 +17,7 @@
 #include <iterator>
 
 #include "visibility/frame_context.hpp"
+#include "visibility/surface_shader.hpp"
 
 namespace zraster {
 
@@ -303,16 +304,60 @@ std::vector<ScreenPolygon> bsp_order(const Scene& scene, const RenderOptions& op
     return out;
 }
 
+// Whether an instance's fill needs the shading core: smooth shading or a texture. Flat and unlit
+// faces keep project_scene's color, which is render()'s flat color bit for bit.
+bool shaded_fill(const Scene& scene, const RenderOptions& options, std::int32_t instance) {
+    const Instance& placed = scene.instances.at(std::size_t(instance));
+    const ShadingMode mode = placed.shading.value_or(options.shading);
+    if (mode == ShadingMode::Gouraud || mode == ShadingMode::Phong) return true;
+    if (mode == ShadingMode::Unlit || !options.textures) return false;
+    const Mesh& mesh = scene.meshes.at(placed.mesh);
+    const Material& material =
+        scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
+    return material.base_color_texture != nullptr && !mesh.uvs.empty();
+}
+
+// A fill holds one color: a smooth or textured face is shaded by the renderer's shading core
+// (SurfaceShader, as the painter's and BSP frames shade their pixels) at the piece's centroid.
+void shade_fills(const Scene& scene, const RenderOptions& options,
+                 std::vector<ScreenPolygon>& polygons) {
+    using visibility_detail::SurfaceShader;
+    bool any = false;
+    for (std::size_t i = 0; i < scene.instances.size() && !any; ++i)
+        any = shaded_fill(scene, options, std::int32_t(i));
+    if (!any) return;
+    const visibility_detail::FrameContext frame =
+        visibility_detail::make_frame_context(scene, options);
+    const SurfaceShader shader(frame);
+    SurfaceShader::Prepared prepared;
+    for (ScreenPolygon& polygon : polygons) {
+        if (!shaded_fill(scene, options, polygon.instance)) continue;
+        glm::dvec2 centroid{0.0};
+        for (const PolygonVertex& v : polygon.vertices) centroid += glm::dvec2(v.window);
+        centroid /= double(polygon.vertices.size());
+        shader.prepare(polygon, prepared);
+        polygon.color = shader.shade(prepared, 0, 0, false, centroid.x, centroid.y, false).color;
+    }
+}
+
 }  // namespace
 
 std::vector<ScreenPolygon> svg_polygons(const Scene& scene, const RenderOptions& options,
                                         SvgOptions::Order order) {
     return visibility_detail::naming_the_scene(scene, [&] {
-        if (order == SvgOptions::Order::Bsp) return bsp_order(scene, options);
-        std::vector<ScreenPolygon> polygons = project_scene(scene, options);
-        const PainterOptions painter = visibility_detail::painter_options(options, polygons.size());
-        return painter_sort(std::move(polygons), Viewport{options.width, options.height}, painter)
-            .order;
+        std::vector<ScreenPolygon> polygons;
+        if (order == SvgOptions::Order::Bsp) {
+            polygons = bsp_order(scene, options);
+        } else {
+            polygons = project_scene(scene, options);
+            const PainterOptions painter =
+                visibility_detail::painter_options(options, polygons.size());
+            polygons =
+                painter_sort(std::move(polygons), Viewport{options.width, options.height}, painter)
+                    .order;
+        }
+        shade_fills(scene, options, polygons);
+        return polygons;
     });
 }
 

@@ -9,11 +9,13 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -431,6 +433,71 @@ TEST(Svg, BunnySmallMergeCounts) {
             out[lookback == 1 ? 0 : 1] = stats.polygons_out;
         }
         EXPECT_LT(out[1], out[0]) << edges;
+    }
+}
+
+// Fills follow --shading: flat faces keep project_scene's flat color bit for bit; smooth (Phong,
+// Gouraud) faces take the renderer's shading at the piece's centroid, so each fill is the
+// z-buffer image's color around that point (not the face's flat color).
+TEST(Svg, FillsAreShadedAsTheZBufferShades) {
+    const Scene scene = scene_from_meshes({make_uv_sphere(1.0f, 48, 64)});
+    RenderOptions options = small_options(320, 240);
+    options.shading = ShadingMode::Flat;
+    const std::vector<ScreenPolygon> flat = svg_polygons(scene, options, SvgOptions::Order::Bsp);
+    std::map<std::int32_t, glm::vec3> flat_color;  // of each triangle, as project_scene shades it
+    for (const ScreenPolygon& p : project_scene(scene, options)) flat_color[p.primitive] = p.color;
+    for (const ScreenPolygon& p : flat) EXPECT_EQ(p.color, flat_color.at(p.primitive));
+    for (const ShadingMode mode : {ShadingMode::Phong, ShadingMode::Gouraud}) {
+        SCOPED_TRACE(int(mode));
+        options.shading = mode;
+        const std::vector<ScreenPolygon> smooth =
+            svg_polygons(scene, options, SvgOptions::Order::Bsp);
+        ASSERT_EQ(smooth.size(), flat.size());
+        const RenderResult frame = render(scene, options);
+        std::size_t compared = 0, unlike_flat = 0;
+        int worst = 0;
+        double total = 0.0;
+        std::string where;
+        for (std::size_t i = 0; i < smooth.size(); ++i) {
+            // Pieces of at least 8 square pixels: on a sliver seen edge on, the pixel under the
+            // centroid may be far from it on the surface.
+            glm::dvec2 c{0.0};
+            double area = 0.0;
+            const std::vector<PolygonVertex>& corners = smooth[i].vertices;
+            for (std::size_t k = 0; k < corners.size(); ++k) {
+                const glm::dvec3 &p = corners[k].window,
+                                 &q = corners[(k + 1) % corners.size()].window;
+                area += 0.5 * (p.x * q.y - q.x * p.y);
+                c += glm::dvec2(p);
+            }
+            c /= double(corners.size());
+            if (std::abs(area) < 8.0) continue;
+            const int x = int(c.x), y = int(c.y);
+            const std::size_t at = (std::size_t(y) * std::size_t(options.width) + std::size_t(x));
+            if (frame.targets.depth[at] >= 1.0f) continue;
+            ++compared;
+            unlike_flat += smooth[i].color != flat[i].color;
+            for (int k = 0; k < 3; ++k) {
+                const int fill = int(std::lround(std::clamp(smooth[i].color[k], 0.0f, 1.0f) * 255));
+                const int d = std::abs(fill - int(frame.targets.color[4 * at + std::size_t(k)]));
+                if (d > worst)
+                    where = "piece " + std::to_string(i) + " (triangle " +
+                            std::to_string(smooth[i].primitive) + ", " +
+                            std::to_string(smooth[i].vertices.size()) + " corners) at (" +
+                            std::to_string(c.x) + ", " + std::to_string(c.y) + "): fill " +
+                            std::to_string(fill) + ", image " +
+                            std::to_string(int(frame.targets.color[4 * at + std::size_t(k)]));
+                worst = std::max(worst, d);
+                total += d;
+            }
+        }
+        ASSERT_GT(compared, 500u);
+        EXPECT_GT(unlike_flat, compared * 9 / 10);
+        std::printf("%s: %zu pieces, worst %d, mean %.3f, unlike flat %zu\n",
+                    mode == ShadingMode::Phong ? "phong" : "gouraud", compared, worst,
+                    total / double(3 * compared), unlike_flat);
+        EXPECT_LE(worst, 4) << where;
+        EXPECT_LE(total / double(3 * compared), 0.5);
     }
 }
 

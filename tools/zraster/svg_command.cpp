@@ -1,4 +1,5 @@
-// `zraster svg`: a scene to an SVG of flat-shaded polygons painted back to front.
+// `zraster svg`: a scene to an SVG of polygons painted back to front, one color each as --shading
+// says.
 #include "svg_command.hpp"
 
 #include <zraster/error.hpp>
@@ -22,8 +23,8 @@ namespace zraster::cli {
 void add_svg_command(CLI::App& app, SvgArguments& a) {
     CLI::App* cmd = app.add_subcommand(
         "svg",
-        "Render a scene to an SVG: hidden-surface-removed, flat-shaded polygons in BSP or "
-        "painter's order");
+        "Render a scene to an SVG: hidden-surface-removed polygons in BSP or painter's order, "
+        "each filled with one color shaded as --shading says");
     add_render_arguments(*cmd, a.render);
     cmd->add_option("-o,--output", a.output, "Output SVG")->capture_default_str();
     cmd->add_option("--order", a.order,
