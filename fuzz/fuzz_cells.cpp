@@ -385,11 +385,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::filesystem::path& dir = fuzz::cells_dir();
     const std::filesystem::path path = dir / "input.cells.json";
     fuzz::write_file(path, bytes.substr(0, separator));
-    LoadOptions options;
-    options.max_triangles = 200'000;
-    options.isolation = fuzz::fuzz_load_isolation();
-    options.worker_timeout_seconds = 15;
-    options.worker_memory_bytes = std::size_t{1} << 30;
+    const LoadOptions options = fuzz::fuzz_load_options();
     Scene scene;
     std::vector<std::string> warnings;
     try {

@@ -182,14 +182,20 @@ inline void check_renders(const Scene& scene, const std::string& what) {
 
 // Loads `bytes` as a file named input<extension> in the work directory, checks the result and
 // draws it small (the loaded geometry through the whole pipeline).
-inline void fuzz_load(const std::uint8_t* data, std::size_t size, const std::string& extension) {
-    const std::filesystem::path path = work_dir() / ("input" + extension);
-    write_file(path, std::string_view(reinterpret_cast<const char*>(data), size));
+// The loaders' options under fuzzing.
+inline LoadOptions fuzz_load_options() {
     LoadOptions options;
     options.max_triangles = 200'000;  // keeps each run short; the limit check itself is tested
     options.isolation = fuzz_load_isolation();
     options.worker_timeout_seconds = 15;  // under libFuzzer's -timeout=20
     options.worker_memory_bytes = std::size_t{1} << 30;
+    return options;
+}
+
+inline void fuzz_load(const std::uint8_t* data, std::size_t size, const std::string& extension) {
+    const std::filesystem::path path = work_dir() / ("input" + extension);
+    write_file(path, std::string_view(reinterpret_cast<const char*>(data), size));
+    const LoadOptions options = fuzz_load_options();
     Scene scene;
     std::vector<std::string> warnings;
     try {
