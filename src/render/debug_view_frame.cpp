@@ -6,33 +6,13 @@
 
 #include <cstddef>
 
-#include "memory/huge_pages.hpp"
 #include "render/debug_view_paint.hpp"
 #include "render/debug_view_triangles.hpp"
 #include "render/frame.hpp"
+#include "render/target_sizing.hpp"
 
 namespace zraster::detail {
 namespace {
-
-struct AuxiliaryTargets {
-    bool depth = true, normal = false, ids = false, coverage = false;
-};
-
-// `targets` sized for the options with the arrays asked for (the others emptied), as views.
-TargetViews size_targets(RenderTargets& targets, const RenderOptions& options,
-                         AuxiliaryTargets wanted) {
-    const std::size_t pixels = std::size_t(options.width) * std::size_t(options.height);
-    targets.width = options.width;
-    targets.height = options.height;
-    targets.color.clear();
-    memory::resize_on_huge_pages(targets.depth, wanted.depth ? pixels : 0);
-    memory::resize_on_huge_pages(targets.normal, wanted.normal ? pixels : 0);
-    memory::resize_on_huge_pages(targets.instance_id, wanted.ids ? pixels : 0);
-    memory::resize_on_huge_pages(targets.primitive_id, wanted.ids ? pixels : 0);
-    targets.front_hits.resize(wanted.coverage ? pixels : 0);
-    targets.back_hits.resize(wanted.coverage ? pixels : 0);
-    return view_of(targets);
-}
 
 // Draws the auxiliary frames `view` is painted from into the scratch targets.
 void draw_auxiliary_frames(Frame& frame, const SceneView& scene, std::string_view source,
@@ -42,18 +22,18 @@ void draw_auxiliary_frames(Frame& frame, const SceneView& scene, std::string_vie
     s.options.view = DebugView::None;
     s.options.edges = RenderOptions::Edges::None;
     RenderStats ignored;
-    const TargetViews visible = size_targets(s.visible, options, {true, true, true, false});
+    const TargetViews visible = size_targets(s.visible, options, {.normal = true, .ids = true});
     draw_frame(frame, scene, source, s.options, visible, false, ignored);
     if (options.view == DebugView::Overdraw) {
         // Every fragment rasterized counts: the depth test off, nothing hidden.
         s.options.depth_test = false;
-        const TargetViews counts = size_targets(s.overdraw, options, {true, false, false, true});
+        const TargetViews counts = size_targets(s.overdraw, options, {.coverage = true});
         draw_frame(frame, scene, source, s.options, counts, false, ignored);
         s.options.depth_test = options.depth_test;
     }
     if (options.view == DebugView::ZFight && options.depth_format != DepthFormat::D32F) {
         s.options.depth_format = DepthFormat::D32F;
-        const TargetViews ids = size_targets(s.reference, options, {true, false, true, false});
+        const TargetViews ids = size_targets(s.reference, options, {.ids = true});
         draw_frame(frame, scene, source, s.options, ids, false, ignored);
     }
 }

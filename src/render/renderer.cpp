@@ -15,6 +15,7 @@
 #include "platform/cache_size.hpp"
 #include "render/frame.hpp"
 #include "render/input_checks.hpp"
+#include "render/target_sizing.hpp"
 
 namespace zraster {
 
@@ -94,23 +95,6 @@ void render_frame(tbb::task_arena& arena, detail::Frame& frame, const SceneView&
         [&] { render_frame_in_arena(frame, scene, source, options, destination, stats); });
 }
 
-// The Renderer's own targets sized for the options (targets the frame does not produce are
-// emptied), as views.
-TargetViews own_targets(RenderTargets& targets, const RenderOptions& options) {
-    const std::size_t pixels = std::size_t(options.width) * std::size_t(options.height);
-    targets.width = options.width;
-    targets.height = options.height;
-    memory::resize_on_huge_pages(targets.depth, pixels);
-    memory::resize_on_huge_pages(targets.color, options.color_target ? pixels * 4 : 0);
-    memory::resize_on_huge_pages(targets.normal, options.normal_target ? pixels : 0);
-    memory::resize_on_huge_pages(targets.instance_id, options.id_targets ? pixels : 0);
-    memory::resize_on_huge_pages(targets.primitive_id, options.id_targets ? pixels : 0);
-    // (The tiles zero the counts.)
-    targets.front_hits.resize(options.coverage_counts ? pixels : 0);
-    targets.back_hits.resize(options.coverage_counts ? pixels : 0);
-    return view_of(targets);
-}
-
 // The world-space positions of every instanced vertex, as Scene::world_positions() makes them
 // (fit_camera's input), into the frame's kept array.
 std::span<const glm::vec3> world_points(detail::Frame& frame) {
@@ -151,7 +135,7 @@ void render_frame_in_arena(detail::Frame& frame, const SceneView& scene, std::st
             targets.depth_pitch = std::size_t(options.width) * sizeof(float);
         }
     } else {
-        targets = own_targets(*destination.own, options);
+        targets = detail::size_targets(*destination.own, options, detail::wanted_targets(options));
     }
     const bool kept = destination.caller == nullptr || targets.unchanged_since_last_frame;
     // A view without a color target to show it in changes nothing.
