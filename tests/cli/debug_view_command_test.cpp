@@ -26,6 +26,29 @@ TEST(DebugViewCommand, OverdrawWritesAnotherPictureAndItsLegend) {
     EXPECT_EQ(lod.exit_code, 0) << lod.output;
 }
 
+// Every view on a shared, textured mesh (the Duck): a picture unlike the shaded one, with its
+// legend.
+TEST(DebugViewCommand, EveryViewOnASharedMesh) {
+    ZRASTER_REQUIRE_SHARED_DATA();
+    const auto dir = temp_dir("debug_view_shared");
+    const std::string common =
+        "render '" + shared_data("meshes/gltf/Duck.glb").string() + "' --size 120x90 --threads 2";
+    const CommandResult plain = run_zraster(common + " -o plain.png", dir);
+    ASSERT_EQ(plain.exit_code, 0) << plain.output;
+    const std::string shaded = read_bytes(dir / "plain.png");
+    for (const std::string view : {"depth", "normals", "overdraw", "hiz", "tiles", "ids",
+                                   "backfaces", "clipped", "zfight", "mip"}) {
+        const CommandResult r = run_zraster(
+            common + " --view " + view + " --depth-format d16 -o " + view + ".png", dir);
+        ASSERT_EQ(r.exit_code, 0) << view << ": " << r.output;
+        EXPECT_NE(r.output.find(view + ": "), std::string::npos)
+            << view << ": no legend in " << r.output;
+        const std::string picture = read_bytes(dir / (view + ".png"));
+        ASSERT_FALSE(picture.empty()) << view;
+        EXPECT_NE(picture, shaded) << view;
+    }
+}
+
 TEST(DebugViewCommand, BadNameExitsTwoListingTheNames) {
     const auto dir = temp_dir("debug_view_bad");
     const CommandResult r =

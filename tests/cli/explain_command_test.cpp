@@ -89,6 +89,31 @@ TEST(ExplainCommand, EveryAlgorithmWritesItsPicturesAndAnIndexNamingThem) {
     }
 }
 
+// Every algorithm that takes a scene, on a shared mesh: its pictures, each named in the index.
+TEST(ExplainCommand, EveryAlgorithmOnASharedMesh) {
+    ZRASTER_REQUIRE_SHARED_DATA();
+    const std::string mesh = "'" + shared_data("meshes/obj/bunny-small.obj").string() + "'";
+    for (const std::string algorithm :
+         {"zbuffer", "painter", "bsp", "warnock", "abuffer", "frustum-culling", "backface-culling",
+          "occlusion-culling", "hiz"}) {
+        const auto dir = temp_dir("explain-shared-" + algorithm);
+        const CommandResult r =
+            run_zraster("explain " + algorithm + " " + mesh + " --size 96x72 -o out", dir);
+        ASSERT_EQ(r.exit_code, 0) << algorithm << ": " << r.output;
+        const std::set<std::string> files = explain_folder_files(dir / "out");
+        ASSERT_TRUE(files.count("index.html")) << algorithm;
+        std::size_t pictures = 0;
+        const std::string index = read_bytes(dir / "out" / "index.html");
+        for (const std::string& name : files) {
+            if (name == "index.html") continue;
+            ++pictures;
+            EXPECT_FALSE(read_bytes(dir / "out" / name).empty()) << algorithm << ": " << name;
+        }
+        EXPECT_GE(pictures, 1u) << algorithm;
+        EXPECT_NE(index.find(".png"), std::string::npos) << algorithm;
+    }
+}
+
 TEST(ExplainCommand, ZbufferFramesEndWithTheRenderersImage) {
     const auto dir = temp_dir("explain-zbuffer-frames");
     const CommandResult r =
