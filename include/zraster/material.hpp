@@ -32,7 +32,11 @@ struct Material {
     // Blend by default: a material whose alpha is 1 everywhere is drawn as opaque, one with
     // opacity or texture alpha below 1 is blended (OBJ's d, a texture with an alpha channel).
     AlphaMode alpha_mode = AlphaMode::Blend;
-    float alpha_cutoff = 0.5f;                          // Mask: glTF alphaCutoff
+    float alpha_cutoff = 0.5f;  // Mask: glTF alphaCutoff
+    // glTF doubleSided: never back-face culled, back faces lit with the flipped normal (where
+    // RenderOptions::material_sides is on, the default). False (glTF's default, and every format
+    // without such a flag: OBJ, PLY, STL): RenderOptions::cull and two_sided_lighting decide.
+    bool double_sided = false;
     std::shared_ptr<const Texture> base_color_texture;  // null: none; its alpha counts
     std::shared_ptr<const Texture> opacity_texture;     // null: none; MTL map_d, red channel
 };

@@ -174,6 +174,12 @@ struct RenderOptions {
 
     CullMode cull = CullMode::Back;
     FrontFace front_face = FrontFace::CounterClockwise;
+    // Materials' sides (Material::double_sided, glTF doubleSided): a double-sided material's
+    // triangles are never culled and its back faces are lit with the flipped normal, whatever
+    // cull and two_sided_lighting say; other materials follow them. Off: every triangle follows
+    // cull and two_sided_lighting. Only double-sided materials (glTF files that say so) are
+    // affected: OBJ, PLY and STL materials are single-sided.
+    bool material_sides = true;
 
     DepthFormat depth_format = DepthFormat::D32F;
     // Unset: LESS, or GREATER with a reversed-Z camera.

@@ -65,6 +65,10 @@ opaque).)")
             "alpha_cutoff", [](const Material& mat) { return mat.alpha_cutoff; },
             "The alpha below which 'mask' discards a fragment.")
         .def_property_readonly(
+            "double_sided", [](const Material& mat) { return mat.double_sided; },
+            "glTF doubleSided: never back-face culled, back faces lit with the flipped normal "
+            "(False for formats without the flag: OBJ, PLY, STL).")
+        .def_property_readonly(
             "has_texture", [](const Material& mat) { return mat.base_color_texture != nullptr; },
             "Whether a base-color texture is bound (its alpha counts).")
         .def_property_readonly(
@@ -97,6 +101,7 @@ opaque).)")
                 s += ", texture " + std::to_string(mat.base_color_texture->width()) + "x" +
                      std::to_string(mat.base_color_texture->height());
             if (mat.opacity_texture) s += ", opacity texture";
+            if (mat.double_sided) s += ", double-sided";
             return s + ">";
         });
 }

@@ -84,7 +84,8 @@ def write_gltf(folder, name, objects):
     """Writes NAME.gltf (buffers and images embedded as data URIs) into `folder`: one mesh,
     node and material per entry of `objects`, a dict with positions, faces, normals, optional
     uvs, and the material: color (RGBA baseColorFactor), alpha_mode ("OPAQUE", "MASK",
-    "BLEND"), alpha_cutoff, texture (an image array, embedded as a PNG). Returns the path."""
+    "BLEND"), alpha_cutoff, double_sided, texture (an image array, embedded as a PNG). Returns
+    the path."""
     blob = bytearray()
     views, accessors, meshes, nodes, materials, images, textures = [], [], [], [], [], [], []
 
@@ -122,6 +123,8 @@ def write_gltf(folder, name, objects):
                     "alphaMode": o.get("alpha_mode", "OPAQUE")}
         if "alpha_cutoff" in o:
             material["alphaCutoff"] = float(o["alpha_cutoff"])
+        if "double_sided" in o:
+            material["doubleSided"] = bool(o["double_sided"])
         materials.append(material)
         meshes.append({"primitives": [{"attributes": attributes, "indices": indices,
                                        "material": k}]})

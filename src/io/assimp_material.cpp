@@ -88,6 +88,10 @@ void convert_gltf_alpha(const aiMaterial& material, const std::string& mode, Mat
         cutoff = kept;
     }
     out.alpha_cutoff = cutoff;
+    // doubleSided (default false): Assimp's glTF2 importer sets AI_MATKEY_TWOSIDED from it. Read
+    // for glTF only: other formats' two-sided flags (3DS, FBX) keep the behaviour they had.
+    int two_sided = 0;
+    out.double_sided = material.Get(AI_MATKEY_TWOSIDED, two_sided) == AI_SUCCESS && two_sided != 0;
 }
 
 }  // namespace

@@ -123,7 +123,8 @@ std::string describe_scene(const Scene& scene, const std::vector<std::string>& w
         const std::string opacity_texture =
             m.opacity_texture ? ", opacity texture " + size_text(*m.opacity_texture) : "";
         return "material " + std::to_string(i) + " " + quoted(m.name) + ": base color " +
-               vec(m.base_color) + ", texture " + texture + opacity_texture + ", " + alpha_text(m);
+               vec(m.base_color) + ", texture " + texture + opacity_texture + ", " + alpha_text(m) +
+               (m.double_sided ? ", double-sided" : "");
     });
     if (!warnings.empty())
         list(out, "warnings", warnings, [](std::size_t, const std::string& w) { return w; });

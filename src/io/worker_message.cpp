@@ -177,6 +177,9 @@ LoadedScene decode_scene(Reader& in, const LoadOptions& options) {
         m.alpha_cutoff = in.get<float>();
         check(m.alpha_cutoff >= 0.0f && m.alpha_cutoff <= 1.0f,  // false for NaN
               label + ": alpha cutoff not in [0, 1]");
+        const auto sides = in.get<std::uint8_t>();
+        check(sides <= 1, label + ": double_sided is " + std::to_string(sides) + ", not 0 or 1");
+        m.double_sided = sides == 1;
         const auto texture = [&](const char* what) -> std::shared_ptr<const Texture> {
             const auto index = in.get<std::uint32_t>();
             if (index == kNoTexture) return nullptr;
@@ -281,6 +284,7 @@ std::string encode_scene_message(const LoadedScene& loaded) {
         out.put(m.opacity);
         out.put(static_cast<std::uint8_t>(m.alpha_mode));
         out.put(m.alpha_cutoff);
+        out.put(static_cast<std::uint8_t>(m.double_sided ? 1 : 0));
         out.put(m.base_color_texture ? texture_index.at(m.base_color_texture.get()) : kNoTexture);
         out.put(m.opacity_texture ? texture_index.at(m.opacity_texture.get()) : kNoTexture);
     }

@@ -5,18 +5,20 @@
 // normal per position, no uvs or one per position, finite values, materials and meshes that
 // exist) before returning.
 //
-// Version 2 added the materials' alpha (alpha_mode, alpha_cutoff, the opacity texture).
+// Version 2 added the materials' alpha (alpha_mode, alpha_cutoff, the opacity texture); version 3
+// their double_sided flag.
 //
 // Layout, all integers and floats little-endian (the host's; parent and child are the same
 // binary), no padding:
 //
-//   header   "ZRWM" | u32 version (2) | u32 kind | u32 0 | u64 payload bytes | payload
+//   header   "ZRWM" | u32 version (3) | u32 kind | u32 0 | u64 payload bytes | payload
 //   kind 1   scene:
 //              string source | u32 n, n strings (warnings)
 //              u32 n, n textures: u32 width | u32 height | width*height*4 bytes (RGBA8, level 0)
 //              u32 n >= 1, n materials: string name | f32 base_color[3] | f32 ambient | f32
 //                diffuse | f32 specular[3] | f32 shininess | f32 opacity (in [0, 1]) |
 //                u8 alpha_mode (AlphaMode) | f32 alpha_cutoff (in [0, 1]) |
+//                u8 double_sided (0 or 1) |
 //                u32 base-color texture | u32 opacity texture (textures: ~0 for none)
 //              u32 n, n meshes: string name | u32 material | u64 n, n f32[3] positions |
 //                u64 n, n f32[3] normals | u64 n, n f32[2] uvs | u64 n, n u32 indices
@@ -39,7 +41,7 @@
 
 namespace zraster::io {
 
-inline constexpr std::uint32_t kWorkerMessageVersion = 2;
+inline constexpr std::uint32_t kWorkerMessageVersion = 3;
 inline constexpr std::size_t kWorkerHeaderBytes = 24;
 inline constexpr std::size_t kMaxWorkerString = 65536;
 inline constexpr int kMaxWorkerTextureSide = 16384;

@@ -27,7 +27,8 @@ namespace {
 void emit(const Frame& frame, TriangleRef ref, const ScreenVertex& v0, const ScreenVertex& v1,
           const ScreenVertex& v2, Chunk& chunk) {
     TriangleBounds setup;
-    switch (classify_triangle(v0, v1, v2, frame.setup_settings, setup)) {
+    switch (classify_triangle(v0, v1, v2, instance_setup(frame, frame.instances[ref.instance]),
+                              setup)) {
         case SetupResult::Visible:
             break;
         case SetupResult::Degenerate:
@@ -205,7 +206,7 @@ void process_instance_range(const Frame& frame, std::uint32_t instance, std::siz
     in.vertex_total = static_cast<std::uint32_t>(mesh.vertex_count());
     in.first_vertex = fi.first_vertex;
     in.screen = vertices.screen.data();
-    in.settings = frame.setup_settings;
+    in.settings = instance_setup(frame, fi);
     out.degenerate = out.culled = out.no_coverage = 0;
     // Whole clusters inside the range that their bounds prove culled are skipped (counted as
     // culled, as the classifier would); the triangles between them are classified.

@@ -53,7 +53,8 @@ void attach_clusters(Frame& frame) {
         // (Bounds found stale by the vertex stage are dropped after the frame.)
         fi.clusters = e.clusters && !e.clusters->stale ? e.clusters.get() : nullptr;
         if (fi.clusters) {
-            fi.cluster_view = make_cluster_view(fi.mvp, frame.clip_settings, frame.setup_settings);
+            fi.cluster_view =
+                make_cluster_view(fi.mvp, frame.clip_settings, instance_setup(frame, fi));
             fi.culled_clusters = verdicts;
             fi.cluster_indices_checked = verdicts != nullptr && indices_checked;
             // The vertex stage's scratch for these bounds, sized with them: the next frame

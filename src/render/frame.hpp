@@ -47,6 +47,10 @@ struct FrameInstance {
     bool textured = false;
     AlphaMode alpha = AlphaMode::Opaque;  // effective_alpha_mode (material_alpha.hpp)
     bool alpha_textured = false;          // alpha from the material's textures (uvs needed)
+    // Materials' sides (material_sides.hpp): the faces the front end culls, and whether back
+    // faces are lit with the flipped normal.
+    CullMode cull = CullMode::Back;
+    bool two_sided_lighting = true;
     int phong_kernel = -1;  // index into Frame::phong_constants when the SIMD shader applies
     float distance = 0.0f;  // eye to the world bounding box (InstanceOrder::FrontToBack)
     // Cluster culling (cluster_cache.hpp): the vertex stage's hash of the mesh's positions
@@ -330,6 +334,14 @@ struct Frame {
                    : chunk.extra_vertices[chunk.pieces[ref.piece].screen[k]];
     }
 };
+
+// The setup settings of one instance's triangles in the front end: the frame's, with the
+// instance's cull mode (material_sides.hpp; the frame's own culls nothing when they differ).
+inline SetupSettings instance_setup(const Frame& frame, const FrameInstance& fi) {
+    SetupSettings s = frame.setup_settings;
+    s.cull = fi.cull;
+    return s;
+}
 
 // One frame through every stage (below) into `targets` (pitches resolved; `kept`: as
 // FrameTargets::kept), the options and scene already validated (renderer.cpp).

@@ -33,10 +33,10 @@ VertexAttributes vertex_attributes(const Frame& frame) {
     return {v.world, v.normal, v.uv, v.gouraud};
 }
 
-ShadingFrame shading_frame(const Frame& frame) {
+ShadingFrame shading_frame(const Frame& frame, const FrameInstance& fi) {
     const RenderOptions& options = *frame.options;
     return {&options.lighting, frame.eye, frame.view_axis, options.texture_filter,
-            options.two_sided_lighting};
+            fi.two_sided_lighting};
 }
 
 void prepare_shading_triangle(const Frame& frame, const Chunk& chunk, const TriangleRef& ref,
@@ -56,7 +56,7 @@ void prepare_shading_triangle(const Frame& frame, const Chunk& chunk, const Tria
     }
     if (fi.shading == ShadingMode::Flat) {
         const std::vector<glm::vec3>& world = frame.vertices.world;
-        out.corners.flat = flat_terms(shading_frame(frame), *fi.material, world[ref.vertex[0]],
+        out.corners.flat = flat_terms(shading_frame(frame, fi), *fi.material, world[ref.vertex[0]],
                                       world[ref.vertex[1]], world[ref.vertex[2]], ref.front_facing);
     }
 }
@@ -65,8 +65,8 @@ ShadedFragment shade_fragment(const Frame& frame, const ShadingTriangle& t, floa
                               int px, int py, bool want_normal) {
     const FrameInstance& fi = frame.instances[t.ref->instance];
     const glm::vec3 b = original_barycentrics(t, {1.0f - b1 - b2, b1, b2});
-    return shade_surface(shading_frame(frame), surface_of(fi), vertex_attributes(frame), t.corners,
-                         b, RendererNeighbours{frame, t, px, py}, want_normal);
+    return shade_surface(shading_frame(frame, fi), surface_of(fi), vertex_attributes(frame),
+                         t.corners, b, RendererNeighbours{frame, t, px, py}, want_normal);
 }
 
 float fragment_alpha(const Frame& frame, const ShadingTriangle& t, float b1, float b2, int px,
@@ -75,7 +75,7 @@ float fragment_alpha(const Frame& frame, const ShadingTriangle& t, float b1, flo
     const Material& material = *fi.material;
     float base_alpha = 1.0f, opacity_red = 1.0f;
     if (fi.alpha_textured) {
-        const ShadingFrame shading = shading_frame(frame);
+        const ShadingFrame shading = shading_frame(frame, fi);
         const glm::vec3 b = original_barycentrics(t, {1.0f - b1 - b2, b1, b2});
         const TextureLookup at = texture_lookup(shading, vertex_attributes(frame), t.corners, b,
                                                 RendererNeighbours{frame, t, px, py});
@@ -93,7 +93,7 @@ void corner_attributes(const Frame& frame, const TriangleRef& ref, CornerAttribu
     const FrameInstance& fi = frame.instances[ref.instance];
     corners.tag = 0;  // the scalar shader's
     if (fi.phong_kernel < 0) return;
-    const bool flip = !ref.front_facing && frame.options->two_sided_lighting;
+    const bool flip = !ref.front_facing && fi.two_sided_lighting;
     corners.tag = std::uint32_t(fi.phong_kernel + 1) | (flip ? kShadeFlip : 0u);
     for (std::size_t k = 0; k < 3; ++k) {
         corners.world[k] = frame.vertices.world[ref.vertex[k]];

@@ -21,7 +21,8 @@ struct ShadingTriangle {
 
 // The frame's vertex attributes and lighting as the shading core takes them.
 VertexAttributes vertex_attributes(const Frame& frame);
-ShadingFrame shading_frame(const Frame& frame);
+// For the triangles of `fi` (two-sided lighting per its material's sides).
+ShadingFrame shading_frame(const Frame& frame, const FrameInstance& fi);
 
 // Barycentric weights of the ORIGINAL triangle's vertices from those of a (clipped) piece.
 inline glm::vec3 original_barycentrics(const ShadingTriangle& t, glm::vec3 b) {

@@ -12,6 +12,7 @@
 #include "memory/huge_pages.hpp"
 #include "render/frame.hpp"
 #include "render/material_alpha.hpp"
+#include "render/material_sides.hpp"
 #include "render/mesh_access.hpp"
 #include "render/occlusion_cull.hpp"
 #include "render/shade_kernel.hpp"
@@ -86,7 +87,8 @@ EarlyClusters cull_clusters_early(const Frame& frame, const FrameInstance& fi,
     const ClusterArrays& arrays = kept.arrays;
     const std::size_t clusters = arrays.count;
     const bool simd = frame.options->simd;
-    const ClusterView view = make_cluster_view(fi.mvp, frame.clip_settings, frame.setup_settings);
+    const ClusterView view =
+        make_cluster_view(fi.mvp, frame.clip_settings, instance_setup(frame, fi));
     culled.resize(clusters);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, clusters, 1024),
                       [&](const tbb::blocked_range<std::size_t>& r) {
@@ -137,6 +139,7 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
     }
     std::uint32_t vertex_count = 0;
     frame.alpha_instances = false;
+    bool per_instance_cull = false;
     std::vector<InstanceOutcome>* outcomes = frame.instance_outcomes;
     if (outcomes != nullptr) outcomes->assign(scene.instances.size(), InstanceOutcome::Drawn);
     const auto skipped = [&](std::uint32_t i, InstanceOutcome why) {
@@ -178,8 +181,13 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
         fi.alpha_textured = fi.alpha != AlphaMode::Opaque && options.textures && mesh.has_uvs() &&
                             (fi.material->base_color_texture || fi.material->opacity_texture);
         frame.alpha_instances |= fi.alpha != AlphaMode::Opaque;
+        fi.cull = instance_cull(*fi.material, options);
+        fi.two_sided_lighting = instance_two_sided_lighting(*fi.material, options);
+        per_instance_cull |= fi.cull != options.cull;
         frame.instances.push_back(fi);
     }
+    // Culling decided per instance by the front end: setup_triangle culls nothing afterwards.
+    frame.setup_settings.cull = per_instance_cull ? CullMode::None : options.cull;
     // Nearest first, ties in submission order (a sort that needs no buffer, unlike stable_sort).
     if (options.instance_order == InstanceOrder::FrontToBack)
         std::sort(frame.instances.begin(), frame.instances.end(),

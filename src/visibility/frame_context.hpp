@@ -75,6 +75,13 @@ inline BspOptions bsp_options(const RenderOptions& options, std::size_t input_po
 // Throws InputError unless n is 1, 2, 4 or 8 (subsamples per pixel side; `what` names the user).
 void check_samples_per_side(int n, const char* what);
 
+// The material of an instance (the default one when its mesh names none that exists).
+const Material& instance_material(const Scene& scene, std::size_t instance);
+
+// The cull mode setup_triangle applies over the frame (render/material_sides.hpp): options.cull,
+// or none when some instance's material is double-sided (projection then culls per instance).
+CullMode scene_cull(const Scene& scene, const RenderOptions& options);
+
 // Throws InputError for an image size out of range or too many user clip planes.
 FrameContext make_frame_context(const Scene& scene, const RenderOptions& options);
 

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <string>
 
+#include "render/material_sides.hpp"
 #include "visibility/frame_context.hpp"
 
 namespace zraster {
@@ -90,9 +91,21 @@ FrameContext make_frame_context(const Scene& scene, const RenderOptions& options
     f.clip_settings.user_plane_count = static_cast<int>(options.clip_planes.size());
     f.setup_settings.viewport = {options.width, options.height};
     f.setup_settings.depth_range = f.camera.clip_depth_range();
-    f.setup_settings.cull = options.cull;
+    f.setup_settings.cull = scene_cull(scene, options);
     f.setup_settings.front_face = options.front_face;
     return f;
+}
+
+const Material& instance_material(const Scene& scene, std::size_t instance) {
+    const Mesh& mesh = scene.meshes.at(scene.instances.at(instance).mesh);
+    return scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
+}
+
+CullMode scene_cull(const Scene& scene, const RenderOptions& options) {
+    for (std::size_t i = 0; i < scene.instances.size(); ++i)
+        if (detail::instance_cull(instance_material(scene, i), options) != options.cull)
+            return CullMode::None;
+    return options.cull;
 }
 
 RenderTargets blank_targets(const RenderOptions& options) {
@@ -190,7 +203,7 @@ FlatShade flat_shade(const FrameContext& frame, std::int32_t instance, std::int3
     glm::vec3 n = glm::cross(w[1] - w[0], w[2] - w[0]);
     const float len = glm::length(n);
     n = len > 0.0f ? n / len : glm::vec3(0, 1, 0);
-    if (!front_facing && options.two_sided_lighting) n = -n;
+    if (!front_facing && detail::instance_two_sided_lighting(material, options)) n = -n;
     FlatShade out;
     out.normal = n;
     if (inst.shading.value_or(options.shading) == ShadingMode::Unlit) {
@@ -258,8 +271,10 @@ bool project_triangle(const FrameContext& frame, const TriangleSource& source, S
     if (area == 0) return false;
     const bool ccw = area < 0;
     out.front_facing = (options.front_face == FrontFace::CounterClockwise) == ccw;
-    if ((options.cull == CullMode::Back && !out.front_facing) ||
-        (options.cull == CullMode::Front && out.front_facing))
+    const CullMode cull = detail::instance_cull(
+        instance_material(*frame.scene, std::size_t(source.instance)), options);
+    if ((cull == CullMode::Back && !out.front_facing) ||
+        (cull == CullMode::Front && out.front_facing))
         return false;
     if (!may_cover_a_pixel(out.vertices, frame.setup_settings.viewport, frame.keep_subpixel))
         return false;

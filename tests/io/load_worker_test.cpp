@@ -15,6 +15,9 @@
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <span>
 #include <thread>
@@ -93,6 +96,7 @@ void expect_same_scene(const io::LoadedScene& a_loaded, const io::LoadedScene& b
         EXPECT_EQ(x.opacity, y.opacity) << where;
         EXPECT_EQ(x.alpha_mode, y.alpha_mode) << where;
         EXPECT_EQ(x.alpha_cutoff, y.alpha_cutoff) << where;
+        EXPECT_EQ(x.double_sided, y.double_sided) << where;
         expect_same_texture(x.base_color_texture.get(), y.base_color_texture.get(), where);
         expect_same_texture(x.opacity_texture.get(), y.opacity_texture.get(),
                             where + " opacity texture");
@@ -347,6 +351,7 @@ std::string huge_count_message() {
     for (int i = 0; i < 10; ++i) append(payload, 0.5f);
     append(payload, std::uint8_t(AlphaMode::Blend));
     append(payload, 0.5f);               // alpha cutoff
+    append(payload, std::uint8_t{0});    // single-sided
     append(payload, ~std::uint32_t{0});  // no texture
     append(payload, ~std::uint32_t{0});  // no opacity texture
     append(payload, std::uint32_t{1});   // meshes
@@ -374,13 +379,34 @@ TEST(WorkerMessage, RoundTrip) {
     expect_same_scene(loaded, io::decode_worker_message(byte_span(message), "m.ply", {}), "quad");
 }
 
+// The fuzzer's seeds follow the current format: each scene seed is decoded past the material
+// fields (a stale seed would be refused for its version or its layout, and fuzz nothing).
+TEST(WorkerMessage, FuzzSeedsAreCurrent) {
+    const std::filesystem::path seeds =
+        std::filesystem::path(ZRASTER_SOURCE_DIR) / "fuzz/seeds/fuzz_worker_message";
+    for (const char* name : {"quad", "textured_instances", "coordinates-beyond-1e30"}) {
+        SCOPED_TRACE(name);
+        std::ifstream in(seeds / name, std::ios::binary);
+        const std::string message((std::istreambuf_iterator<char>(in)), {});
+        ASSERT_FALSE(message.empty());
+        try {
+            const io::LoadedScene scene = io::decode_worker_message(byte_span(message), "m", {});
+            EXPECT_FALSE(scene.scene.meshes.empty());
+        } catch (const InputError& e) {
+            // Only the seed about huge coordinates is refused, for them.
+            EXPECT_EQ(std::string(name), "coordinates-beyond-1e30") << e.what();
+            EXPECT_NE(std::string(e.what()).find("position"), std::string::npos) << e.what();
+        }
+    }
+}
+
 TEST(WorkerMessage, RefusesMalformedMessages) {
     const std::string good = quad_message();
     expect_invalid("", "invalid result: truncated header");
     expect_invalid("XRWM" + good.substr(4), "invalid result: bad magic");
     std::string version = good;
-    version[4] = 1;  // a child of a zraster before the materials' alpha
-    expect_invalid(version, "format version 1, expected 2");
+    version[4] = 2;  // a child of a zraster before the materials' double_sided
+    expect_invalid(version, "format version 2, expected 3");
     expect_invalid(good.substr(0, good.size() - 1), "the header says");
     std::string longer = good + "x";
     expect_invalid(longer, "the header says");
@@ -431,6 +457,7 @@ TEST(WorkerMessage, RoundTripKeepsMaterialAlpha) {
     blend.alpha_cutoff = 1.0f;
     blend.base_color_texture = shared;
     blend.opacity_texture = shared;
+    blend.double_sided = true;
     scene.materials.insert(scene.materials.end(), {opaque, mask, blend});
     const io::LoadedScene sent{scene, {"m.ply: a warning"}};
     const std::string message = io::encode_scene_message(sent);
@@ -472,6 +499,15 @@ TEST(WorkerMessage, RefusesBadMaterialAlpha) {
                    "material 0: opacity outside [0, 1]");
     expect_invalid(message_with([](Material& m) { m.opacity = std::nanf(""); }),
                    "material 0 has non-finite values");
+    // double_sided is a byte of 0 or 1: the one after the cutoff, before the texture indices.
+    std::string sides = message_with([](Material& m) { m.alpha_cutoff = 0.125f; });
+    const float cutoff = 0.125f;
+    const std::size_t cutoff_at =
+        sides.find(std::string(reinterpret_cast<const char*>(&cutoff), 4));
+    ASSERT_NE(cutoff_at, std::string::npos);
+    ASSERT_EQ(sides[cutoff_at + 4], '\0');
+    sides[cutoff_at + 4] = 2;
+    expect_invalid(sides, "material 0: double_sided is 2, not 0 or 1");
     // No texture in the message, and the material's opacity texture index set to 0.
     std::string missing = message_with([](Material&) {});
     const std::string none(8, '\xff');  // the two texture indices, ~0 each

@@ -48,6 +48,7 @@ Scene load_alpha_both_ways(const std::filesystem::path& path,
         EXPECT_EQ(a.opacity, b.opacity);
         EXPECT_EQ(a.alpha_mode, b.alpha_mode);
         EXPECT_EQ(a.alpha_cutoff, b.alpha_cutoff);
+        EXPECT_EQ(a.double_sided, b.double_sided);
         expect_same_texels(a.base_color_texture.get(), b.base_color_texture.get());
         expect_same_texels(a.opacity_texture.get(), b.opacity_texture.get());
     }
@@ -363,6 +364,23 @@ TEST(MaterialAlpha, SharedMeshesAreOpaque) {
         }
     }
     EXPECT_GE(loaded, 20);
+}
+
+// doubleSided (glTF's default: false) reaches Material::double_sided, through the worker too;
+// formats without the flag are single-sided.
+TEST(MaterialAlpha, GltfDoubleSided) {
+    EXPECT_TRUE(only_material(load_alpha_both_ways(write_alpha_gltf(
+                                  "double", R"({"name":"leaf","doubleSided":true})")))
+                    .double_sided);
+    EXPECT_FALSE(only_material(load_alpha_both_ways(write_alpha_gltf(
+                                   "single", R"({"name":"wall","doubleSided":false})")))
+                     .double_sided);
+    EXPECT_FALSE(
+        only_material(load_alpha_both_ways(write_alpha_gltf("unsaid", R"({"name":"plain"})")))
+            .double_sided);
+    const auto dir = test::temp_dir("io-alpha-sides-obj");
+    const Scene obj = load_alpha_both_ways(write_alpha_obj(dir, "newmtl a\nKd 1 0 0\n", {"a"}));
+    for (const Material& m : obj.materials) EXPECT_FALSE(m.double_sided) << m.name;
 }
 
 }  // namespace

@@ -105,8 +105,10 @@ void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
                    "Directional light towards the light X,Y,Z (repeatable; default "
                    "-1/3,2/3,2/3)");
     cmd.add_option("--point-light", a.point_lights, "Point light position X,Y,Z (repeatable)");
-    cmd.add_option("--cull", a.cull, "Face culling back|front|none")
-        ->check(CLI::IsMember({"back", "front", "none"}))
+    cmd.add_option("--cull", a.cull,
+                   "Face culling auto|back|front|none (auto: back faces, except of double-sided "
+                   "materials, glTF doubleSided; back: every back face)")
+        ->check(CLI::IsMember({"auto", "back", "front", "none"}))
         ->capture_default_str();
     cmd.add_flag("--no-cull", a.no_cull, "Same as --cull none");
     cmd.add_flag("--occlusion-cull", a.occlusion_cull,
@@ -292,6 +294,9 @@ RenderOptions make_render_options(const RenderArguments& a,
     o.cull = a.no_cull || a.cull == "none" ? CullMode::None
              : a.cull == "front"           ? CullMode::Front
                                            : CullMode::Back;
+    // auto: materials' sides count (double-sided ones are not culled and are lit two-sided);
+    // an explicit mode applies to every triangle.
+    o.material_sides = !a.no_cull && a.cull == "auto";
     o.front_face = a.front_face == "cw" ? FrontFace::Clockwise : FrontFace::CounterClockwise;
     o.occlusion_cull = a.occlusion_cull;
     o.portal_cull = a.portal_cull == "frustum"      ? PortalCull::Frustum

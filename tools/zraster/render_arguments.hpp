@@ -38,7 +38,7 @@ struct RenderArguments {
     std::string shading = "phong", reflection = "blinn-phong";
     bool infinite_viewer = false;
     std::vector<std::string> light_dirs, point_lights;
-    std::string cull = "back";
+    std::string cull = "auto";  // auto | back | front | none
     bool no_cull = false;
     bool occlusion_cull = false;
     std::string portal_cull = "off";  // off | rectangles | frustum (the flag alone: frustum)
