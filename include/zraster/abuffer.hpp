@@ -17,9 +17,10 @@
 //   fragment, as Carpenter's).
 //
 // Multisampling (src/visibility/multisample.cpp): coverage and depth per subsample (the A-buffer's
-// masks), shading once per pixel and visible surface, samples averaged. Cost: 8 bytes per sample,
-// shading as an aliased frame. Opaque only. When to use: antialiased edges and intersection
-// lines at about the shading cost of an aliased frame.
+// masks), shading once per pixel and visible surface, samples averaged; cut-outs tested once per
+// pixel and surface, blended fragments composited per sample. Cost: 8 bytes per sample, shading
+// as an aliased frame. When to use: antialiased edges and intersection lines at about the
+// shading cost of an aliased frame.
 //
 // Supersampling (src/visibility/supersample.cpp): render() at factor x the resolution with the
 // same options, box-filtered down. Cost: factor^2 times a frame's memory and work (every
@@ -70,9 +71,10 @@ ZRASTER_API std::vector<PixelCoverage> polygon_coverage(const ScreenPolygon& pol
 
 // One frame through the A-buffer. Geometry is project_scene's with keep_subpixel (the renderer's
 // camera, clipping, back-face culling per options.cull; slivers between pixel centers are kept,
-// they may cover subsamples). Fragment alpha = the mesh material's opacity (clamped to [0, 1];
-// with options.alpha_mode Auto, 1 for an Opaque material, and 1 or 0 for a Mask one as its
-// opacity reaches the cutoff or not; textures' alpha is not sampled),
+// they may cover subsamples). Fragment alpha = the material's alpha (opacity x base-color texture
+// alpha x opacity texture red) sampled where the fragment is shaded (below), clamped to [0, 1];
+// with options.alpha_mode Auto, 1 for an Opaque material, and 1 or 0 for a Mask one as it
+// reaches the cutoff or not (a fragment of alpha 0 is dropped); every fragment 1 with Opaque),
 // fragment depth = the polygon's window-space depth plane at the pixel center. Fragment color =
 // the surface shaded as render() shades it (options.shading or the instance's, lighting,
 // textures, options.interpolation): a fragment covering every sample is shaded at the pixel
@@ -84,10 +86,11 @@ ZRASTER_API std::vector<PixelCoverage> polygon_coverage(const ScreenPolygon& pol
 // it), over options.background; samples are averaged and quantized as render() quantizes. The
 // result is bit-identical for any submission order and thread count.
 // Targets: color (alpha 255); depth, ids and normal (render()'s shading normal) of the nearest
-// fragment of each pixel (depth stored as render() stores it; cleared where no fragment); no
-// coverage counts. Stats (optional): fragment counts; RenderStats::fragments_shaded counts the
-// fragments actually shaded. Throws InputError as project_scene does, for a bad samples_per_side,
-// or when the fragment limit is exceeded.
+// fragment of each pixel that is not of a Blend material (blended ones write none, as in render())
+// (depth stored as render() stores it; cleared where no fragment); no coverage counts. Stats
+// (optional): fragment counts; RenderStats::fragments_shaded counts the fragments actually shaded.
+// Throws InputError as project_scene does, for a bad samples_per_side, or when the fragment limit
+// is exceeded.
 RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
                             const ABufferOptions& abuffer = {}, ABufferStats* stats = nullptr);
 
@@ -105,10 +108,15 @@ ZRASTER_API RenderResult render_supersampled(const Scene& scene, RenderOptions o
 // Each pixel then shades every polygon that holds one of its samples once, as the A-buffer shades
 // a fragment (render()'s color at the pixel center when it holds every sample, else at the
 // centroid of its samples), and averages the samples (background where none), quantized as
-// render() quantizes. Material opacity is ignored (opaque). Depth, ids and normal: the polygon of
-// sample (n / 2, n / 2). Throws InputError as project_scene does, for samples_per_side other
-// than 1, 2, 4, 8, or when width x height x samples exceeds options.limits.max_pixels (the sample
-// buffers take 8 bytes per sample). Bit-identical for any thread count.
+// render() quantizes. Materials' alpha (options.alpha_mode Auto): one alpha per polygon and
+// pixel, sampled where the polygon is shaded there (the pixel center when it covers every sample:
+// render()'s alpha; else the centroid of its samples); a Mask polygon failing the test there
+// covers none of the pixel's samples; Blend polygons write no sample depth and are composited per
+// sample, farthest first by their depth at the pixel center, over the sample's opaque color where
+// they lie in front of it. Depth, ids and normal: the opaque polygon of sample (n / 2, n / 2).
+// Throws InputError as project_scene does, for samples_per_side other than 1, 2, 4, 8, or when
+// width x height x samples exceeds options.limits.max_pixels (the sample buffers take 8 bytes per
+// sample). Bit-identical for any thread count.
 ZRASTER_API RenderResult render_multisampled(const Scene& scene, const RenderOptions& options,
                                              int samples_per_side);
 

@@ -65,7 +65,8 @@ ZRASTER_API Camera effective_camera(const Scene& scene, const RenderOptions& opt
 // Runs the renderer's vertex stage math on every triangle of every instance: object -> clip space
 // by Camera::view_projection, trivial reject by clip_outcode, clip_triangle against the near/far,
 // guard-band and user planes, back-face culling per options.cull / options.front_face (decided on
-// the snapped polygon, like setup_triangle). Triangles of zero snapped area or covering no pixel
+// the snapped polygon, like setup_triangle; none for a double-sided material under
+// options.material_sides). Triangles of zero snapped area or covering no pixel
 // center are dropped. Each polygon is flat shaded once (evaluate_lighting at the triangle's
 // centroid with its face normal, the material's base color, no texture): exactly the color
 // render() gives with ShadingMode::Flat and textures off. Result in submission order.
@@ -85,7 +86,10 @@ ZRASTER_API std::vector<ScreenPolygon> project_scene(const Scene& scene,
 // with shade_from (the scene the polygons were projected from) each pixel is shaded as render()
 // shades it (options.shading, lighting, textures, interpolation; the same shading code), so an
 // unsplit polygon's pixels get render()'s colors bit for bit; without, each polygon's flat color
-// and face normal.
+// and face normal. Materials' alpha (with shade_from, options.alpha_mode Auto): a Mask polygon's
+// pixels whose alpha (sampled as render() samples it) is under the cutoff are left alone; a Blend
+// polygon's pixels are composited over what is there as render()'s blend pass composites, and
+// write no depth, ids or normals. In back-to-front order that is render()'s image.
 ZRASTER_API RenderTargets paint_polygons(std::span<const ScreenPolygon> back_to_front,
                                          const RenderOptions& options, const Camera& camera,
                                          const Scene* shade_from = nullptr);
@@ -282,7 +286,10 @@ struct WarnockResult {
 
 // Warnock's algorithm over the whole viewport. Depth comparisons use each polygon's plane in
 // window space evaluated at pixel centers; equal depths go to the earlier polygon (as the
-// z-buffer's LESS test keeps the first one drawn). More classifications than
+// z-buffer's LESS test keeps the first one drawn). Materials' alpha (with shade_from): only an
+// opaque polygon can be a region's surrounding one; at a pixel the polygons covering it are
+// composited in depth order over the nearest one that hides what is behind (opaque, or Mask
+// passing the test there). More classifications than
 // warnock_classification_budget(options.limits, ...) throw LimitExceeded
 // ("max_warnock_classifications"); options.progress hears of the area done.
 // `observer` (optional, not owned) hears of every region's outcome.

@@ -2,8 +2,10 @@
 // SIGGRAPH '84 (Computer Graphics 18(3)).
 //
 // What: every polygon of project_scene (slivers between pixel centers kept) leaves, in every
-// pixel where it covers at least one subsample, a fragment (depth, subsample mask, polygon: its
-// opacity and what shading needs). Fragments are kept in per-pixel linked lists in one pool
+// pixel where it covers at least one subsample, a fragment (depth, subsample mask, polygon: what
+// shading needs). Its alpha (fragment_alphas.hpp: the material's, textures' alpha sampled where
+// the fragment is shaded) is taken when the pixel is resolved; fragments of alpha 0 (cut out, or
+// fully transparent) are dropped there. Fragments are kept in per-pixel linked lists in one pool
 // (Carpenter's fragment lists); resolving a pixel sorts its list by depth and composites, for each
 // subsample, the fragments covering it front to back (an opaque one ends the sample), over the
 // background, then averages the samples. A fragment is shaded (surface_shader.hpp: render()'s
@@ -42,29 +44,12 @@
 #include <string>
 #include <tuple>
 
-#include "render/material_alpha.hpp"
+#include "visibility/fragment_alphas.hpp"
 #include "visibility/frame_context.hpp"
 #include "visibility/surface_shader.hpp"
 
 namespace zraster {
 namespace {
-
-// A polygon's alpha from its material's (material_alpha.hpp), one value per polygon: textures'
-// alpha is not sampled here. Opaque: 1; Blend: the opacity; Mask: 1 where the opacity reaches
-// the cutoff, else 0 (the polygon hides nothing and shows nothing).
-float polygon_alpha(const Material& material, bool textured, const RenderOptions& options) {
-    const float opacity =
-        std::isnan(material.opacity) ? 1.0f : std::clamp(material.opacity, 0.0f, 1.0f);
-    switch (detail::effective_alpha_mode(material, textured, options)) {
-        case AlphaMode::Opaque:
-            return 1.0f;
-        case AlphaMode::Mask:
-            return opacity >= material.alpha_cutoff ? 1.0f : 0.0f;
-        case AlphaMode::Blend:
-            break;
-    }
-    return opacity;
-}
 
 std::int64_t floor_div(std::int64_t a, std::int64_t b) {
     std::int64_t q = a / b;
@@ -168,11 +153,6 @@ struct Fragment {
     std::uint32_t next;  // next fragment of the same pixel, kEnd at the end
 };
 
-// Subsample (i, j) of an n x n grid, in pixels from the pixel's corner.
-double sample_offset(int i, int n) {
-    return (i + 0.5) / n;
-}
-
 }  // namespace
 
 std::vector<PixelCoverage> polygon_coverage(const ScreenPolygon& polygon, const Viewport& viewport,
@@ -201,22 +181,17 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
     const int samples = n * n;
     tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
 
-    // Per polygon: opacity (the mesh material's), depth plane, and what shading needs.
+    // Per polygon: depth plane and what shading needs; alpha (fragment_alphas.hpp) per fragment.
     const SurfaceShader shader(frame);
-    std::vector<float> alphas(polygons.size());
     std::vector<DepthPlane> planes(polygons.size());
     std::vector<SurfaceShader::Prepared> prepared(polygons.size());
     arena.execute([&] {
         tbb::parallel_for(std::size_t{0}, polygons.size(), [&](std::size_t i) {
-            const ScreenPolygon& p = polygons[i];
-            const Mesh& mesh = scene.meshes.at(scene.instances.at(std::size_t(p.instance)).mesh);
-            alphas[i] = polygon_alpha(
-                scene.materials[mesh.material < scene.materials.size() ? mesh.material : 0],
-                options.textures && !mesh.uvs.empty(), options);
-            planes[i] = depth_plane(p);
-            shader.prepare(p, prepared[i]);
+            planes[i] = depth_plane(polygons[i]);
+            shader.prepare(polygons[i], prepared[i]);
         });
     });
+    const visibility_detail::FragmentAlphas alphas(shader, polygons, n);
 
     // Build the fragment lists. Fragment indices are 32-bit (kEnd marks the end of a list).
     const std::size_t limit = std::min<std::size_t>(abuffer.max_fragments, std::size_t{kEnd} - 1);
@@ -259,6 +234,7 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
     // A fragment of the pixel being resolved, shaded on first use (hidden ones never are).
     struct Entry {
         const Fragment* fragment;
+        float alpha;  // in [0, 1]: 1 for an opaque fragment and a Mask one that passed
         bool shaded;
         visibility_detail::Shaded shading;
     };
@@ -267,29 +243,18 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
         const Fragment& f = *e.fragment;
         // A full fragment is shaded at the pixel center, as render() shades the pixel; a partial
         // one at the centroid of the samples it covers (always inside the convex polygon).
-        double x = 0.0, y = 0.0;
-        if (f.mask != full) {
-            int count = 0;
-            for (int s = 0; s < samples; ++s)
-                if (f.mask >> s & 1) {
-                    x += sample_offset(s % n, n);
-                    y += sample_offset(s / n, n);
-                    ++count;
-                }
-            x = px + x / count;
-            y = py + y / count;
-        }
-        e.shading =
-            shader.shade(prepared[f.polygon], px, py, f.mask == full, x, y, options.normal_target);
+        const glm::dvec2 at = visibility_detail::mask_centroid(f.mask, n, px, py);
+        e.shading = shader.shade(prepared[f.polygon], px, py, f.mask == full, at.x, at.y,
+                                 options.normal_target);
         e.shading.color = glm::clamp(e.shading.color, glm::vec3(0.0f), glm::vec3(1.0f));
         e.shaded = true;
     };
-    // Nearest first; equal depths by content (opacity, mask, then the shaded color), ids last.
+    // Nearest first; equal depths by content (alpha, mask, then the shaded color), ids last.
     auto before = [&](const Entry& a, const Entry& b) {
         const Fragment& f = *a.fragment;
         const Fragment& g = *b.fragment;
-        return std::make_tuple(f.depth, alphas[f.polygon], f.mask) <
-               std::make_tuple(g.depth, alphas[g.polygon], g.mask);
+        return std::make_tuple(f.depth, a.alpha, f.mask) <
+               std::make_tuple(g.depth, b.alpha, g.mask);
     };
     auto ids = [&](const Entry& e) {
         const ScreenPolygon& p = polygons[e.fragment->polygon];
@@ -304,8 +269,13 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
             for (int px = 0; px < width; ++px) {
                 const std::size_t p = std::size_t(py) * std::size_t(width) + std::size_t(px);
                 list.clear();
-                for (std::uint32_t f = head[p]; f != kEnd; f = pool[f].next)
-                    list.push_back({&pool[f], false, {}});
+                // Fragments whose alpha is 0 (cut out by the alpha test, or fully transparent)
+                // are dropped: they show nothing and hide nothing.
+                for (std::uint32_t f = head[p]; f != kEnd; f = pool[f].next) {
+                    const float alpha =
+                        alphas.at(prepared[pool[f].polygon], pool[f].polygon, pool[f].mask, px, py);
+                    if (alpha > 0.0f) list.push_back({&pool[f], alpha, false, {}});
+                }
                 std::sort(list.begin(), list.end(), before);
                 // Ties: order by the shaded color, so submission order never decides.
                 for (std::size_t i = 0; i < list.size();) {
@@ -328,7 +298,7 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
                         for (Entry& e : list) {
                             if (!(e.fragment->mask & bit)) continue;
                             shade(e, px, py);
-                            const double alpha = alphas[e.fragment->polygon];
+                            const double alpha = e.alpha;
                             color += transmittance * alpha * glm::dvec3(e.shading.color);
                             if (alpha >= 1.0) {
                                 transmittance = 0.0;
@@ -343,8 +313,13 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
                         t.color[p * 4 + std::size_t(c)] =
                             visibility_detail::to_unorm8(float(sum[c]));
                 }
-                if (!list.empty()) {
-                    Entry& nearest = list.front();
+                // Depth, ids and normal: the nearest fragment that is not blended (blended ones
+                // write none of them, as in render()).
+                auto nearest_it = std::find_if(list.begin(), list.end(), [&](const Entry& e) {
+                    return !alphas.blended(e.fragment->polygon);
+                });
+                if (nearest_it != list.end()) {
+                    Entry& nearest = *nearest_it;
                     const ScreenPolygon& polygon = polygons[nearest.fragment->polygon];
                     const double z = nearest.fragment->depth;
                     t.depth[p] = float(camera.reversed_z ? 1.0 - z : z);

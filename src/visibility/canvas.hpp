@@ -1,5 +1,12 @@
 // Render targets filled polygon by polygon without a depth test: the output stage of the
 // list-priority algorithms (painter's, BSP) and of Warnock's leaves.
+//
+// Materials' alpha (with shade_from, RenderOptions::alpha_mode Auto), as the z-buffer path treats
+// it: a Mask polygon's pixels whose alpha (sampled as render() samples it) is under the cutoff are
+// left as they are; a Blend polygon's pixels are composited over what the canvas holds,
+// c = color x alpha + c x (1 - alpha) on the 8-bit color as render()'s blend pass does, the
+// running value kept in float between layers so that back-to-front drawing gives the z-buffer's
+// composite; blended pixels write neither depth nor ids nor normals.
 #pragma once
 #include <zraster/visibility.hpp>
 
@@ -29,11 +36,20 @@ class Canvas {
     // Draws a polygon over the whole viewport (it may change or go after the call).
     void draw(const ScreenPolygon& polygon);
 
+    // What the polygon's material alpha does this frame (Opaque without shade_from).
+    AlphaMode alpha_mode(const ScreenPolygon& polygon) const;
+    // Whether the polygon, drawn with draw(polygon, fans, ...), hides what is behind it at the
+    // center of pixel (px, py) that it covers: Opaque, or Mask with alpha passing the test there.
+    bool hides_at(const ScreenPolygon& polygon, int px, int py);
+
     RenderTargets take();
     std::uint64_t fragments() const { return fragments_; }
+    std::uint64_t alpha_discarded() const { return alpha_discarded_; }
+    std::uint64_t blended() const { return blended_; }
 
   private:
     struct Shading;
+    const SurfaceShader::Prepared& kept(const ScreenPolygon& polygon);
     void fill(const ScreenPolygon& polygon, std::span<const TriangleSetup> fans,
               const SurfaceShader::Prepared* shading, int x0, int y0, int x1, int y1);
 
@@ -41,8 +57,11 @@ class Canvas {
     SetupSettings setup_;
     RenderTargets targets_;
     std::vector<TriangleSetup> scratch_;
-    std::unique_ptr<Shading> shading_;  // null: flat polygon colors
-    std::uint64_t fragments_ = 0;
+    std::unique_ptr<Shading> shading_;  // null: flat polygon colors, everything opaque
+    // The composite so far of each pixel, in float (as render()'s blend pass keeps it between
+    // layers): only when a Blend polygon may be drawn into the color target.
+    std::vector<glm::vec3> over_;
+    std::uint64_t fragments_ = 0, alpha_discarded_ = 0, blended_ = 0;
 };
 
 }  // namespace zraster::visibility_detail

@@ -11,11 +11,18 @@
 // center, from the source triangle's attributes), so an unsplit polygon's pixels get render()'s
 // colors bit for bit whichever algorithm decided they are visible.
 //
+// Alpha (canvas.hpp): Mask pixels tested and Blend pixels composited as render() does, with the
+// alpha sampled by SurfaceShader::alpha (render()'s alpha bit for bit at an unsplit polygon's
+// pixels). Drawn back to front, "over" in drawing order is the z-buffer's sorted composite.
+//
 // Cost: O(covered pixels) per polygon (overdraw included: every polygon is filled, hidden or not),
-// and with shading one shading evaluation per filled pixel.
+// and with shading one shading evaluation per filled pixel (and one alpha evaluation for a
+// textured Mask or Blend material).
 #include "visibility/canvas.hpp"
 
 #include <algorithm>
+
+#include "render/material_alpha.hpp"
 
 namespace zraster {
 namespace visibility_detail {
@@ -31,11 +38,33 @@ struct Canvas::Shading {
         : frame(make_frame_context(scene, options)), shader(frame) {}
 };
 
+namespace {
+
+// Whether any instance's material alpha counts this frame (as SurfaceShader decides it).
+bool any_alpha(const Scene& scene, const RenderOptions& options) {
+    for (const Instance& instance : scene.instances) {
+        const Mesh& mesh = scene.meshes.at(instance.mesh);
+        const Material& material =
+            scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
+        if (detail::effective_alpha_mode(material, options.textures && !mesh.uvs.empty(),
+                                         options) != AlphaMode::Opaque)
+            return true;
+    }
+    return false;
+}
+
+float unit_clamp_alpha(float v) {
+    return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;  // (NaN: 0), as render()'s blend pass
+}
+
+}  // namespace
+
 Canvas::Canvas(const RenderOptions& options, const Camera& camera, const Scene* shade_from)
     : options_(options) {
     setup_.viewport = {options.width, options.height};
     setup_.depth_range = camera.clip_depth_range();
-    setup_.cull = options.cull;
+    // (Polygons come culled from projection, per instance; see scene_cull.)
+    setup_.cull = shade_from != nullptr ? scene_cull(*shade_from, options) : options.cull;
     setup_.front_face = options.front_face;
 
     targets_ = blank_targets(options);
@@ -43,8 +72,14 @@ Canvas::Canvas(const RenderOptions& options, const Camera& camera, const Scene* 
                                 to_unorm8(options.background.z), 255};
     for (std::size_t i = 0; i < targets_.color.size(); i += 4)
         std::copy(bg, bg + 4, &targets_.color[i]);
-    if (shade_from != nullptr && (options.color_target || options.normal_target))
+    const bool alpha = shade_from != nullptr && any_alpha(*shade_from, options);
+    if (shade_from != nullptr && (options.color_target || options.normal_target || alpha))
         shading_ = std::make_unique<Shading>(*shade_from, options);
+    if (alpha && options.color_target) {
+        over_.resize(targets_.color.size() / 4);
+        for (std::size_t p = 0; p < over_.size(); ++p)
+            for (int c = 0; c < 3; ++c) over_[p][c] = float(bg[c]) / 255.0f;
+    }
 }
 
 Canvas::~Canvas() = default;
@@ -66,19 +101,55 @@ void Canvas::fill(const ScreenPolygon& polygon, std::span<const TriangleSetup> f
     std::uint8_t rgba[4] = {0, 0, 0, 255};
     if (options_.color_target)
         for (int c = 0; c < 3; ++c) rgba[c] = to_unorm8(polygon.color[c]);
+    // The material's alpha: constant over the polygon, or sampled per pixel.
+    const AlphaMode mode = alpha_mode(polygon);
+    const SurfaceShader* shader = shading_ ? &shading_->shader : nullptr;
+    const bool varies =
+        mode != AlphaMode::Opaque && shading != nullptr && shader->alpha_varies(polygon.instance);
+    float constant = 1.0f;
+    if (mode != AlphaMode::Opaque && !varies) {
+        constant = shader->constant_alpha(polygon.instance);
+        if (mode == AlphaMode::Blend) constant = unit_clamp_alpha(constant);
+    }
     for (const TriangleSetup& t : fans) {
         for_each_covered_pixel(t, x0, y0, x1, y1, [&](int px, int py) {
             const std::size_t p = std::size_t(py) * std::size_t(width) + std::size_t(px);
+            float alpha = constant;
+            if (varies) alpha = shader->alpha(*shading, px, py, true, 0.0, 0.0);
+            if (mode == AlphaMode::Mask && !shader->passes_alpha_test(polygon.instance, alpha)) {
+                ++alpha_discarded_;
+                return;
+            }
+            if (mode == AlphaMode::Blend) {
+                alpha = unit_clamp_alpha(alpha);
+                if (alpha == 0.0f) return;
+                ++fragments_;
+                ++blended_;
+                if (!options_.color_target || shading == nullptr) return;
+                // render()'s blend pass: the shaded color quantized, composited in float.
+                const Shaded shaded = shader->shade(*shading, px, py, true, 0.0, 0.0, false);
+                glm::vec3& c = over_[p];
+                for (int k = 0; k < 3; ++k) {
+                    const float color = float(to_unorm8(shaded.color[k])) / 255.0f;
+                    c[k] = color * alpha + c[k] * (1.0f - alpha);
+                    targets_.color[p * 4 + std::size_t(k)] = to_unorm8(c[k]);
+                }
+                return;
+            }
             ++fragments_;
             targets_.depth[p] = depth_at(t, px, py);
             glm::vec3 normal = polygon.normal;
             if (shading != nullptr) {
-                const Shaded shaded = shading_->shader.shade(*shading, px, py, true, 0.0, 0.0,
-                                                             options_.normal_target);
+                const Shaded shaded =
+                    shader->shade(*shading, px, py, true, 0.0, 0.0, options_.normal_target);
                 for (int c = 0; c < 3; ++c) rgba[c] = to_unorm8(shaded.color[c]);
                 normal = shaded.normal;
             }
-            if (options_.color_target) std::copy(rgba, rgba + 4, &targets_.color[p * 4]);
+            if (options_.color_target) {
+                std::copy(rgba, rgba + 4, &targets_.color[p * 4]);
+                if (!over_.empty())
+                    for (int c = 0; c < 3; ++c) over_[p][c] = float(rgba[c]) / 255.0f;
+            }
             if (options_.id_targets) {
                 targets_.instance_id[p] = polygon.instance;
                 targets_.primitive_id[p] = polygon.primitive;
@@ -88,15 +159,15 @@ void Canvas::fill(const ScreenPolygon& polygon, std::span<const TriangleSetup> f
     }
 }
 
+const SurfaceShader::Prepared& Canvas::kept(const ScreenPolygon& polygon) {
+    auto [at, added] = shading_->kept.try_emplace(&polygon);
+    if (added) shading_->shader.prepare(polygon, at->second);
+    return at->second;
+}
+
 void Canvas::draw(const ScreenPolygon& polygon, std::span<const TriangleSetup> fans, int x0, int y0,
                   int x1, int y1) {
-    const SurfaceShader::Prepared* prepared = nullptr;
-    if (shading_) {
-        auto [at, added] = shading_->kept.try_emplace(&polygon);
-        if (added) shading_->shader.prepare(polygon, at->second);
-        prepared = &at->second;
-    }
-    fill(polygon, fans, prepared, x0, y0, x1, y1);
+    fill(polygon, fans, shading_ ? &kept(polygon) : nullptr, x0, y0, x1, y1);
 }
 
 void Canvas::draw(const ScreenPolygon& polygon) {
@@ -107,6 +178,26 @@ void Canvas::draw(const ScreenPolygon& polygon) {
         prepared = &shading_->scratch;
     }
     fill(polygon, scratch_, prepared, 0, 0, options_.width, options_.height);
+}
+
+AlphaMode Canvas::alpha_mode(const ScreenPolygon& polygon) const {
+    return shading_ ? shading_->shader.alpha_mode(polygon.instance) : AlphaMode::Opaque;
+}
+
+bool Canvas::hides_at(const ScreenPolygon& polygon, int px, int py) {
+    switch (alpha_mode(polygon)) {
+        case AlphaMode::Opaque:
+            return true;
+        case AlphaMode::Blend:
+            return false;
+        case AlphaMode::Mask:
+            break;
+    }
+    const SurfaceShader& shader = shading_->shader;
+    const float alpha = shader.alpha_varies(polygon.instance)
+                            ? shader.alpha(kept(polygon), px, py, true, 0.0, 0.0)
+                            : shader.constant_alpha(polygon.instance);
+    return shader.passes_alpha_test(polygon.instance, alpha);
 }
 
 RenderTargets Canvas::take() {

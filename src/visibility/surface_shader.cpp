@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/material_alpha.hpp"
+#include "render/material_sides.hpp"
+
 namespace zraster::visibility_detail {
 namespace {
 
@@ -29,6 +32,12 @@ SurfaceShader::SurfaceShader(const FrameContext& frame)
             &scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
         info.shading = instance.shading.value_or(options.shading);
         info.textured = options.textures && info.material->base_color_texture && !mesh.uvs.empty();
+        // As the renderer's vertex stage decides them (src/render/vertex_stage.cpp).
+        const bool uvs = options.textures && !mesh.uvs.empty();
+        info.alpha = detail::effective_alpha_mode(*info.material, uvs, options);
+        info.alpha_textured = info.alpha != AlphaMode::Opaque && uvs &&
+                              (info.material->base_color_texture || info.material->opacity_texture);
+        info.two_sided_lighting = detail::instance_two_sided_lighting(*info.material, options);
         info.first_vertex = total;
         instances_.push_back(info);
         total += static_cast<std::uint32_t>(mesh.positions.size());
@@ -90,8 +99,8 @@ void SurfaceShader::prepare(const ScreenPolygon& piece, Prepared& out) const {
     out.corners.front_facing = polygon.front_facing;
     out.corners.flat =
         info.shading == ShadingMode::Flat
-            ? detail::flat_terms(shading_, *info.material, world_[vertex[0]], world_[vertex[1]],
-                                 world_[vertex[2]], polygon.front_facing)
+            ? detail::flat_terms(shading_of(info), *info.material, world_[vertex[0]],
+                                 world_[vertex[1]], world_[vertex[2]], polygon.front_facing)
             : LightTerms{};
     const auto& v = polygon.vertices;
     out.screen.resize(v.size());
@@ -138,13 +147,9 @@ glm::vec3 SurfaceShader::fan_barycentrics(const Prepared& p, std::size_t fan, do
     return {float(b[0]), float(b[1]), float(b[2])};
 }
 
-Shaded SurfaceShader::shade(const Prepared& p, int px, int py, bool center, double x, double y,
-                            bool want_normal) const {
-    const RenderOptions& options = *frame_.options;
-    const InstanceInfo& info = instances_[p.instance];
-    const Material& material = *info.material;
-    const Interpolation interpolation = options.interpolation;
-
+bool SurfaceShader::weights_at(const Prepared& p, int px, int py, bool center, double x, double y,
+                               glm::vec3& b, detail::NeighbourWeights& over) const {
+    const Interpolation interpolation = frame_.options->interpolation;
     // Which fan, and the barycentrics of the source triangle there and one pixel over.
     std::size_t fan = p.fans.size();
     if (center) {
@@ -159,34 +164,70 @@ Shaded SurfaceShader::shade(const Prepared& p, int px, int py, bool center, doub
         x = px + 0.5;
         y = py + 0.5;
     }
-    glm::vec3 b, b_dx, b_dy;
     if (fan < p.fans.size()) {
         const TriangleSetup& t = p.fans[fan];
         b = original_weights(p, fan, barycentrics(t, px, py, interpolation));
-        b_dx = original_weights(p, fan, barycentrics(t, px + 1, py, interpolation));
-        b_dy = original_weights(p, fan, barycentrics(t, px, py + 1, interpolation));
-    } else {
-        // The fan holding (x, y), else the one it is least outside of.
-        double best = -1e300;
-        for (std::size_t f = 0; f < p.fans.size(); ++f) {
-            const glm::vec3 l = fan_barycentrics(p, f, x, y);
-            const double worst = std::min({l.x, l.y, l.z});
-            if (worst > best) {
-                best = worst;
-                fan = f;
-            }
-        }
-        if (fan == p.fans.size()) return {p.polygon->color, p.polygon->normal};
-        b = original_weights(p, fan, fan_barycentrics(p, fan, x, y));
-        b_dx = original_weights(p, fan, fan_barycentrics(p, fan, x + 1.0, y));
-        b_dy = original_weights(p, fan, fan_barycentrics(p, fan, x, y + 1.0));
+        over.dx = original_weights(p, fan, barycentrics(t, px + 1, py, interpolation));
+        over.dy = original_weights(p, fan, barycentrics(t, px, py + 1, interpolation));
+        return true;
     }
+    // The fan holding (x, y), else the one it is least outside of.
+    double best = -1e300;
+    for (std::size_t f = 0; f < p.fans.size(); ++f) {
+        const glm::vec3 l = fan_barycentrics(p, f, x, y);
+        const double worst = std::min({l.x, l.y, l.z});
+        if (worst > best) {
+            best = worst;
+            fan = f;
+        }
+    }
+    if (fan == p.fans.size()) return false;
+    b = original_weights(p, fan, fan_barycentrics(p, fan, x, y));
+    over.dx = original_weights(p, fan, fan_barycentrics(p, fan, x + 1.0, y));
+    over.dy = original_weights(p, fan, fan_barycentrics(p, fan, x, y + 1.0));
+    return true;
+}
 
-    const detail::SurfaceMaterial surface{&material, info.shading, info.textured};
+Shaded SurfaceShader::shade(const Prepared& p, int px, int py, bool center, double x, double y,
+                            bool want_normal) const {
+    const InstanceInfo& info = instances_[p.instance];
+    glm::vec3 b;
+    detail::NeighbourWeights over;
+    if (!weights_at(p, px, py, center, x, y, b, over)) return {p.polygon->color, p.polygon->normal};
+    const detail::SurfaceMaterial surface{info.material, info.shading, info.textured};
     const detail::VertexAttributes attributes{world_, normal_, uv_, gouraud_};
-    return detail::shade_surface(shading_, surface, attributes, p.corners, b,
-                                 KnownNeighbours{detail::NeighbourWeights{b_dx, b_dy}},
-                                 want_normal);
+    return detail::shade_surface(shading_of(info), surface, attributes, p.corners, b,
+                                 KnownNeighbours{over}, want_normal);
+}
+
+float SurfaceShader::constant_alpha(std::int32_t instance) const {
+    return detail::material_alpha(*instances_[std::size_t(instance)].material, 1.0f, 1.0f);
+}
+
+float SurfaceShader::alpha(const Prepared& p, int px, int py, bool center, double x,
+                           double y) const {
+    const InstanceInfo& info = instances_[p.instance];
+    const Material& material = *info.material;
+    if (!info.alpha_textured) return detail::material_alpha(material, 1.0f, 1.0f);
+    glm::vec3 b;
+    detail::NeighbourWeights over;
+    if (!weights_at(p, px, py, center, x, y, b, over))
+        return detail::material_alpha(material, 1.0f, 1.0f);
+    // As the renderer's fragment_alpha (src/render/shade_fragment.cpp).
+    const detail::VertexAttributes attributes{world_, normal_, uv_, gouraud_};
+    const detail::TextureLookup at =
+        detail::texture_lookup(shading_, attributes, p.corners, b, KnownNeighbours{over});
+    float base_alpha = 1.0f, opacity_red = 1.0f;
+    if (material.base_color_texture)
+        base_alpha = detail::sample(shading_, *material.base_color_texture, at).w;
+    if (material.opacity_texture)
+        opacity_red = detail::sample(shading_, *material.opacity_texture, at).x;
+    return detail::material_alpha(material, base_alpha, opacity_red);
+}
+
+bool SurfaceShader::passes_alpha_test(std::int32_t instance, float a) const {
+    const InstanceInfo& info = instances_[std::size_t(instance)];
+    return info.alpha != AlphaMode::Mask || a >= info.material->alpha_cutoff;
 }
 
 }  // namespace zraster::visibility_detail

@@ -53,14 +53,47 @@ class SurfaceShader {
     Shaded shade(const Prepared& p, int px, int py, bool center, double x, double y,
                  bool want_normal) const;
 
+    // What the instance's material alpha does this frame (effective_alpha_mode: Opaque unless
+    // its alpha can fall below 1, or below the cutoff for Mask).
+    AlphaMode alpha_mode(std::int32_t instance) const {
+        return instances_[std::size_t(instance)].alpha;
+    }
+    // Whether its alpha varies over the surface (textures' alpha), else it is constant_alpha().
+    bool alpha_varies(std::int32_t instance) const {
+        return instances_[std::size_t(instance)].alpha_textured;
+    }
+    // The alpha of an instance whose alpha does not vary: the material's opacity.
+    float constant_alpha(std::int32_t instance) const;
+    // The fragment's alpha (render/material_alpha.hpp: opacity x base-color texture alpha x
+    // opacity texture red, unclamped) at the point shade() would shade: its textures sampled as
+    // the base color is, with the same coordinates and derivatives, so at a pixel center the
+    // z-buffer draws it is render()'s alpha there bit for bit.
+    float alpha(const Prepared& p, int px, int py, bool center, double x, double y) const;
+    // Whether a fragment of alpha `a` of this instance survives the alpha test (Mask: a >= the
+    // cutoff, NaN fails, as the z-buffer tests; other modes: always).
+    bool passes_alpha_test(std::int32_t instance, float a) const;
+
   private:
     struct InstanceInfo {
         const Material* material = nullptr;
         ShadingMode shading = ShadingMode::Phong;
         bool textured = false;
+        AlphaMode alpha = AlphaMode::Opaque;
+        bool alpha_textured = false;     // alpha from the material's textures (uvs, textures on)
+        bool two_sided_lighting = true;  // render/material_sides.hpp
         std::uint32_t first_vertex = 0;
     };
+    // The source triangle's weights at the point shade() takes and one pixel over; false when
+    // the polygon has no fan to take them from.
+    bool weights_at(const Prepared& p, int px, int py, bool center, double x, double y,
+                    glm::vec3& b, detail::NeighbourWeights& over) const;
     glm::vec3 original_weights(const Prepared& p, std::size_t fan, const glm::vec3& b) const;
+    // The frame's shading with the instance's two-sided lighting.
+    detail::ShadingFrame shading_of(const InstanceInfo& info) const {
+        detail::ShadingFrame s = shading_;
+        s.two_sided_lighting = info.two_sided_lighting;
+        return s;
+    }
     // Barycentrics (of the fan's corners) at window point (x, y) from the window positions.
     glm::vec3 fan_barycentrics(const Prepared& p, std::size_t fan, double x, double y) const;
 

@@ -10,6 +10,13 @@
 //   - it is a single pixel (take the nearest polygon covering the pixel center).
 // Otherwise it is cut into four quadrants, each inheriting only the polygons that met the parent.
 //
+// Materials' alpha (canvas.hpp): only an opaque polygon can decide a region as the surrounder (a
+// Mask one may have holes, a Blend one shows what is behind it), so regions where cut-out or
+// blended polygons lie in front are subdivided down to pixels. At a pixel the polygons covering
+// its center are sorted nearest first down to the first that hides what is behind it there (an
+// opaque one, or a Mask one whose alpha passes the test at the pixel), then drawn farthest first:
+// blended fragments composited in depth order over it, as the z-buffer's blend pass does.
+//
 // Classification (classify_polygon) is exact: integer edge functions on the snapped vertices with
 // the rasterizer's top-left rule, evaluated at the corner pixel centers of the region, so
 // "surrounding" means "covers every pixel center" and "disjoint" means "covers none".
@@ -144,7 +151,7 @@ WarnockResult warnock_render(std::span<const ScreenPolygon> polygons, const Rend
         for (std::uint32_t i = 0; i < n; ++i) root.active[i] = i;
         tasks.push_back(std::move(root));
     }
-    std::vector<std::uint32_t> kept;
+    std::vector<std::uint32_t> kept, covering;
     std::vector<RegionRelation> relation;
     const std::uint64_t budget =
         warnock_classification_budget(options.limits, n, options.width, options.height);
@@ -208,6 +215,10 @@ WarnockResult warnock_render(std::span<const ScreenPolygon> polygons, const Rend
             if (relation[k] == RegionRelation::Surrounding &&
                 (front < 0 || nearer(kept[k], static_cast<std::uint32_t>(front), xc, yc)))
                 front = kept[k];
+        // (A cut-out or blended polygon does not hide the region behind it.)
+        if (front >= 0 &&
+            canvas.alpha_mode(polygons[static_cast<std::size_t>(front)]) != AlphaMode::Opaque)
+            front = -1;
         if (front >= 0) {
             const auto s = static_cast<std::uint32_t>(front);
             bool in_front = true;
@@ -229,13 +240,19 @@ WarnockResult warnock_render(std::span<const ScreenPolygon> polygons, const Rend
         }
 
         if (r.x1 - r.x0 == 1 && r.y1 - r.y0 == 1) {
-            // A pixel: the polygons surrounding it are those covering its center.
-            std::int64_t best = -1;
+            // A pixel: the polygons surrounding it are those covering its center. Nearest first
+            // down to the first that hides the rest there, then drawn farthest first.
+            covering.clear();
             for (std::size_t k = 0; k < kept.size(); ++k)
-                if (relation[k] == RegionRelation::Surrounding &&
-                    (best < 0 || nearer(kept[k], static_cast<std::uint32_t>(best), xc, yc)))
-                    best = kept[k];
-            if (best >= 0) draw(static_cast<std::uint32_t>(best), r);
+                if (relation[k] == RegionRelation::Surrounding) covering.push_back(kept[k]);
+            std::sort(covering.begin(), covering.end(),
+                      [&](std::uint32_t i, std::uint32_t j) { return nearer(i, j, xc, yc); });
+            std::size_t shown = 0;
+            while (shown < covering.size() &&
+                   !canvas.hides_at(polygons[covering[shown]], r.x0, r.y0))
+                ++shown;
+            if (shown < covering.size()) ++shown;
+            for (std::size_t k = shown; k-- > 0;) draw(covering[k], r);
             ++stats.pixel_leaves;
             observe(r, task.level, WarnockRegionOutcome::Pixel);
             area_done += region_area;
