@@ -6,8 +6,14 @@
 // VisibilityAlgorithm::Bsp or Painter): same camera, clipping, culling and snapping. A fill holds
 // one color: a flat-shaded face has render()'s flat color (options.shading Unlit: the material's
 // base color); a Gouraud, Phong or textured one is shaded by the renderer's shading core at the
-// piece's centroid, with the same lights, interpolation and texture filtering. Coordinates are window pixels,
-// y down, as SVG's user space; width, height and viewBox are the image size.
+// piece's centroid, with the same lights, interpolation and texture filtering. Coordinates are
+// window pixels, y down, as SVG's user space; width, height and viewBox are the image size.
+//
+// Materials' alpha (options.alpha_mode Auto; src/visibility/svg_alpha.hpp): a blended polygon
+// is painted with fill-opacity (its material's opacity, or with alpha textures the mean alpha at
+// the pixel centers it covers) and no seam stroke; a Mask polygon is kept whole, left out, or
+// with alpha textures clipped (clip-path) to the pixel squares whose centers pass the test.
+// Such polygons are never merged or grouped with others.
 //
 // Cracks: anti-aliased SVG renderers leave hairline seams between adjacent filled polygons. Each
 // polygon is therefore also stroked with its own fill color (SvgOptions::seam_width, round

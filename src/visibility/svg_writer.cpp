@@ -18,6 +18,7 @@
 
 #include "visibility/frame_context.hpp"
 #include "visibility/surface_shader.hpp"
+#include "visibility/svg_alpha.hpp"
 
 namespace zraster {
 
@@ -57,6 +58,11 @@ struct Outline {
     // painter's split line, a fan diagonal or a clipping line).
     std::vector<std::uint8_t> mesh_edge;
     std::uint32_t color = 0;
+    // Materials' alpha (svg_alpha.hpp): fill-opacity, and the clip path of a cut-out (-1: none).
+    // Only plain outlines (opaque, not clipped) merge or share an element.
+    float opacity = 1.0f;
+    int clip = -1;
+    bool plain() const { return opacity == 1.0f && clip < 0; }
     glm::dvec4 plane{0.0};
     std::size_t pieces = 1;
     // The convex polygons it was made of, and their boxes: what overlap tests look at.
@@ -374,6 +380,9 @@ std::string render_svg(const Scene& scene, const RenderOptions& options,
         throw InputError("", "SVG edge color must be finite");
 
     const std::vector<ScreenPolygon> polygons = svg_polygons(scene, options, o.order);
+    std::vector<visibility_detail::SvgPolygonAlpha> alphas = visibility_detail::naming_the_scene(
+        scene, [&] { return visibility_detail::svg_polygon_alphas(scene, options, polygons); });
+    std::vector<std::vector<std::array<int, 3>>> clips;  // cut-outs' kept pixel runs
 
     // Merge. A polygon may join an outline up to merge_lookback places back in the paint order
     // when no outline painted in between overlaps it: moving it back then changes nothing that is
@@ -381,14 +390,22 @@ std::string render_svg(const Scene& scene, const RenderOptions& options,
     std::vector<Outline> outlines;
     outlines.reserve(polygons.size());
     const std::size_t lookback = std::max<std::size_t>(1, o.merge_lookback);
-    for (const ScreenPolygon& polygon : polygons) {
+    for (std::size_t index = 0; index < polygons.size(); ++index) {
+        const ScreenPolygon& polygon = polygons[index];
+        visibility_detail::SvgPolygonAlpha& alpha = alphas[index];
+        if (!alpha.shown) continue;
         Outline next = outline_of(polygon);
+        next.opacity = alpha.opacity;
+        if (!alpha.kept_runs.empty()) {
+            next.clip = int(clips.size());
+            clips.push_back(std::move(alpha.kept_runs));
+        }
         bool merged = false;
-        if (o.merge_coplanar) {
+        if (o.merge_coplanar && next.plain()) {
             for (std::size_t back = 0; back < lookback && back < outlines.size(); ++back) {
                 Outline& candidate = outlines[outlines.size() - 1 - back];
                 // Without edges outlines are invisible: any same-color neighbour can join.
-                if (candidate.color == next.color &&
+                if (candidate.plain() && candidate.color == next.color &&
                     (!o.edges || in_plane(polygon, candidate.plane)) &&
                     try_merge(candidate, next)) {
                     merged = true;
@@ -412,6 +429,19 @@ std::string render_svg(const Scene& scene, const RenderOptions& options,
            (o.order == SvgOptions::Order::Bsp ? "BSP" : "painter's") + " order -->\n";
     out += "<rect width=\"" + ws + "\" height=\"" + hs + "\" fill=\"" + hex(options.background) +
            "\"/>\n";
+    if (!clips.empty()) {
+        // Cut-outs: the pixel squares whose centers pass the alpha test, row by row.
+        out += "<defs>\n";
+        for (std::size_t k = 0; k < clips.size(); ++k) {
+            out += "<clipPath id=\"zraster-cut-" + std::to_string(k) + "\"><path d=\"";
+            for (const auto& run : clips[k])
+                out += "M" + std::to_string(run[1]) + " " + std::to_string(run[0]) + "h" +
+                       std::to_string(run[2] - run[1]) + "v1h-" + std::to_string(run[2] - run[1]) +
+                       "z";
+            out += "\"/></clipPath>\n";
+        }
+        out += "</defs>\n";
+    }
     // With edges the group's style is the edges' (an edge path is then just its d); fills carry
     // their own fill and seam stroke.
     const bool seams = o.seam_width > 0.0f;
@@ -433,39 +463,53 @@ std::string render_svg(const Scene& scene, const RenderOptions& options,
         // loops: their union); with edges each outline is its own element followed by its edges,
         // so that nearer fills cover farther edges.
         std::size_t end = i + 1;
-        if (!o.edges)
-            while (end < outlines.size() && outlines[end].color == outlines[i].color) ++end;
+        if (!o.edges && outlines[i].plain())
+            while (end < outlines.size() && outlines[end].plain() &&
+                   outlines[end].color == outlines[i].color)
+                ++end;
         out += "<path d=\"";
         for (std::size_t k = i; k < end; ++k) {
             drop_collinear(outlines[k]);
             append_subpath(out, outlines[k].loop, o.precision);
         }
-        const std::string fill = hex(outlines[i].color);
+        std::string fill = hex(outlines[i].color);
+        // Translucent and cut-out fills: fill-opacity and clip-path after the color, and no seam
+        // stroke on a translucent one (it would blend twice where it overlaps the fill).
+        std::string extra;
+        if (outlines[i].opacity != 1.0f)
+            extra += "\" fill-opacity=\"" + number(outlines[i].opacity);
+        if (outlines[i].clip >= 0)
+            extra += "\" clip-path=\"url(#zraster-cut-" + std::to_string(outlines[i].clip) + ")";
+        const bool translucent = outlines[i].opacity != 1.0f;
         const auto& flags = outlines[i].mesh_edge;
         const bool all_edges =
             o.edges && std::all_of(flags.begin(), flags.end(), [](std::uint8_t f) { return f; });
         if (all_edges) {
             // Its whole outline is mesh edges: the group's edge stroke draws them and covers the
             // seams, in one element.
-            out += "\" fill=\"" + fill + "\"/>\n";
+            out += "\" fill=\"" + fill + extra + "\"/>\n";
             ++paths;
             ++edge_paths;
             i = end;
             continue;
         }
-        if (seams)
-            out += "\" fill=\"" + fill + "\" stroke=\"" + fill + "\"" + seam_width + "/>\n";
-        else if (o.edges)
-            out += "\" fill=\"" + fill + "\" stroke=\"none\"/>\n";
+        if (seams && !translucent)
+            out += "\" fill=\"" + fill + extra + "\" stroke=\"" + fill + "\"" + seam_width + "/>\n";
+        else if (o.edges || seams)
+            out += "\" fill=\"" + fill + extra + "\" stroke=\"none\"/>\n";
         else
-            out += "\" fill=\"" + fill + "\"/>\n";
+            out += "\" fill=\"" + fill + extra + "\"/>\n";
         ++paths;
         if (o.edges) {
             // Only sides on mesh edges: split lines, fan diagonals and clipping lines are not
             // edges of the model.
             std::string d;
             if (append_edges(d, outlines[i], o.precision) > 0) {
-                out += "<path d=\"" + d + "\"/>\n";
+                out += "<path d=\"" + d + "\"";
+                if (outlines[i].clip >= 0)
+                    out +=
+                        " clip-path=\"url(#zraster-cut-" + std::to_string(outlines[i].clip) + ")\"";
+                out += "/>\n";
                 ++paths;
                 ++edge_paths;
             }

@@ -1,0 +1,384 @@
+// Materials' alpha on every path besides the z-buffer (the painter's algorithm, the BSP tree,
+// Warnock's subdivision, multisampling, the A-buffer, SVG), each against the z-buffer's picture
+// (tests/render/alpha_modes_test.cpp): a Mask checkerboard quad shows the wall through its cut
+// cells with the wall's depth and ids; a blended quad over an opaque one submitted after it is
+// the analytic "over" within 1/255; every submission order gives the same image; the Opaque
+// alpha mode draws what opaque materials draw.
+//
+// Cost: a few dozen 64 x 64 frames; well under a second.
+#include <zraster/abuffer.hpp>
+#include <zraster/render.hpp>
+#include <zraster/scene.hpp>
+#include <zraster/svg.hpp>
+#include <zraster/texture.hpp>
+#include <zraster/visibility.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "support/test_support.hpp"
+
+namespace zraster::test {
+namespace {
+
+constexpr int kAlphaImage = 64;
+
+// Orthographic on +z: world (x, y) lands on window (x + 32, 32 - y), so a square from -h to h
+// covers the pixels 32 - h .. 32 + h - 1 each way.
+RenderOptions alpha_path_options() {
+    RenderOptions o;
+    o.width = kAlphaImage;
+    o.height = kAlphaImage;
+    o.threads = 2;
+    o.shading = ShadingMode::Unlit;  // colors = base colors, for the analytic blend
+    o.background = {0.25f, 0.5f, 0.75f};
+    o.id_targets = true;
+    Camera c;
+    c.eye = {0.0, 0.0, 8.0};
+    c.target = {0.0, 0.0, 0.0};
+    c.projection = Camera::Projection::Orthographic;
+    c.ortho_height = kAlphaImage;
+    c.near = 1.0;
+    c.far = 20.0;
+    o.camera = c;
+    return o;
+}
+
+// A square of half-width h at depth z, as two triangles with texture coordinates 0..1.
+Mesh alpha_square(float h, float z) {
+    Mesh m;
+    m.positions = {{-h, -h, z}, {h, -h, z}, {h, h, z}, {-h, h, z}};
+    m.uvs = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
+    m.normals.assign(4, glm::vec3(0, 0, 1));
+    m.indices = {0, 1, 2, 0, 2, 3};
+    update_bounds(m);
+    return m;
+}
+
+enum class Path { ZBuffer, Painter, Bsp, Warnock, Multisample, ABuffer };
+constexpr std::array<Path, 6> kPaths = {Path::ZBuffer, Path::Painter,     Path::Bsp,
+                                        Path::Warnock, Path::Multisample, Path::ABuffer};
+const char* path_name(Path p) {
+    constexpr const char* names[] = {"zbuffer", "painter", "bsp", "warnock", "msaa", "abuffer"};
+    return names[int(p)];
+}
+// Paths that sample one point per pixel (the pixel center), as the z-buffer does.
+bool point_sampled(Path p) {
+    return p != Path::Multisample && p != Path::ABuffer;
+}
+
+RenderResult draw_with(Path path, const Scene& scene, const RenderOptions& options) {
+    switch (path) {
+        case Path::ZBuffer:
+            return render(scene, options);
+        case Path::Painter:
+            return render_with_visibility(scene, options, VisibilityAlgorithm::Painter);
+        case Path::Bsp:
+            return render_with_visibility(scene, options, VisibilityAlgorithm::Bsp);
+        case Path::Warnock:
+            return render_with_visibility(scene, options, VisibilityAlgorithm::Warnock);
+        case Path::Multisample:
+            return render_multisampled(scene, options, 4);
+        case Path::ABuffer:
+            return render_abuffer(scene, options);
+    }
+    return {};
+}
+
+int alpha_unorm8(double v) {
+    return int(std::clamp(float(v), 0.0f, 1.0f) * 255.0f + 0.5f);
+}
+
+glm::ivec3 rgb_of(const RenderResult& r, int px, int py) {
+    const std::uint8_t* p = &r.targets.color[(std::size_t(py) * kAlphaImage + std::size_t(px)) * 4];
+    return {p[0], p[1], p[2]};
+}
+
+std::size_t at_pixel(int px, int py) {
+    return std::size_t(py) * kAlphaImage + std::size_t(px);
+}
+
+// A wall and, in front of it, a square with a checkerboard of transparent and opaque 8x8-pixel
+// cells (texel alpha 0 and 255): the z-buffer test's scene. `cut_out_first`: the square is
+// submitted before the wall.
+Scene checker_scene(AlphaMode mode, bool cut_out_first) {
+    Scene scene;
+    Material wall;
+    wall.base_color = {0.9f, 0.2f, 0.1f};
+    Material front;
+    front.base_color = {1.0f, 1.0f, 1.0f};
+    front.alpha_mode = mode;
+    front.alpha_cutoff = 0.5f;
+    // 4 x 4 cells of 16 texels over a square 32 pixels wide: 8 pixels a cell.
+    front.base_color_texture = std::make_shared<Texture>(
+        make_checkerboard_texture(4, 16, {40, 200, 60, 0}, {40, 200, 60, 255}));
+    scene.materials = {wall, front};
+    Mesh far = alpha_square(24.0f, -2.0f);
+    Mesh near = alpha_square(16.0f, 1.0f);
+    near.material = 1;
+    scene.meshes = {far, near};
+    scene.instances.resize(2);
+    scene.instances[1].mesh = 1;
+    if (cut_out_first) std::swap(scene.instances[0], scene.instances[1]);
+    return scene;
+}
+
+// The scene without its last instance (the wall alone, the opaque layers alone).
+Scene without_last(Scene scene) {
+    scene.instances.pop_back();
+    return scene;
+}
+
+TEST(AlphaPaths, MaskCheckerShowsTheWallThroughItsCutCells) {
+    const RenderOptions options = alpha_path_options();
+    const RenderResult reference = render(checker_scene(AlphaMode::Mask, false), options);
+    for (const Path path : kPaths) {
+        SCOPED_TRACE(path_name(path));
+        const RenderResult wall =
+            draw_with(path, without_last(checker_scene(AlphaMode::Mask, false)), options);
+        const RenderResult r = draw_with(path, checker_scene(AlphaMode::Mask, false), options);
+        const RenderResult swapped = draw_with(path, checker_scene(AlphaMode::Mask, true), options);
+        EXPECT_EQ(r.targets.color, swapped.targets.color);
+        int cut = 0, kept = 0;
+        for (int cy = 0; cy < 4; ++cy)
+            for (int cx = 0; cx < 4; ++cx) {
+                // A pixel well inside the cell (and off the squares' diagonals, where the
+                // subsample paths' ids are either triangle's): texel alpha 0 at the top left
+                // cell, alternating.
+                const int px = 16 + 8 * cx + 4, py = 16 + 8 * cy + 2;
+                const bool transparent = ((cx + cy) & 1) == 0;
+                const std::size_t p = at_pixel(px, py);
+                EXPECT_EQ(r.targets.instance_id[p], reference.targets.instance_id[p]);
+                EXPECT_EQ(r.targets.primitive_id[p], reference.targets.primitive_id[p]);
+                if (transparent) {
+                    EXPECT_EQ(r.targets.depth[p], wall.targets.depth[p]) << px << "," << py;
+                    EXPECT_EQ(rgb_of(r, px, py),
+                              glm::ivec3(alpha_unorm8(0.9), alpha_unorm8(0.2), alpha_unorm8(0.1)))
+                        << px << "," << py;
+                    EXPECT_EQ(r.targets.instance_id[p], 0) << px << "," << py;
+                    ++cut;
+                } else {
+                    EXPECT_LT(r.targets.depth[p], wall.targets.depth[p]) << px << "," << py;
+                    EXPECT_EQ(rgb_of(r, px, py), glm::ivec3(40, 200, 60)) << px << "," << py;
+                    EXPECT_EQ(r.targets.instance_id[p], 1) << px << "," << py;
+                    ++kept;
+                }
+            }
+        EXPECT_EQ(cut, 8);
+        EXPECT_EQ(kept, 8);
+        // One sample a pixel, the texture's alpha sampled as render() samples it: the same holes
+        // pixel for pixel, and the same depth and ids everywhere.
+        if (point_sampled(path)) {
+            EXPECT_EQ(r.targets.color, reference.targets.color);
+            EXPECT_TRUE(same_bits(r.targets.depth, reference.targets.depth));
+            EXPECT_EQ(r.targets.instance_id, reference.targets.instance_id);
+            EXPECT_EQ(r.targets.primitive_id, reference.targets.primitive_id);
+        }
+    }
+}
+
+// The checker's transparent cells at alpha 64 instead of 0, blended: the A-buffer and MSAA
+// sample the texture's alpha per fragment as render() does at each pixel.
+TEST(AlphaPaths, TextureAlphaBlendsAsTheZBufferBlends) {
+    const RenderOptions options = alpha_path_options();
+    Scene scene = checker_scene(AlphaMode::Blend, false);
+    scene.materials[1].base_color_texture = std::make_shared<Texture>(
+        make_checkerboard_texture(4, 16, {40, 200, 60, 64}, {40, 200, 60, 255}));
+    const RenderResult reference = render(scene, options);
+    const glm::dvec3 wall(0.9, 0.2, 0.1), green(40 / 255.0, 200 / 255.0, 60 / 255.0);
+    for (const Path path : kPaths) {
+        SCOPED_TRACE(path_name(path));
+        const RenderResult wall_only = draw_with(path, without_last(scene), options);
+        const RenderResult r = draw_with(path, scene, options);
+        for (int cy = 0; cy < 4; ++cy)
+            for (int cx = 0; cx < 4; ++cx) {
+                const int px = 16 + 8 * cx + 4, py = 16 + 8 * cy + 2;
+                const double a = ((cx + cy) & 1) == 0 ? 64 / 255.0 : 1.0;
+                const glm::dvec3 expected = a * green + (1.0 - a) * wall;
+                const glm::ivec3 got = rgb_of(r, px, py);
+                for (int c = 0; c < 3; ++c)
+                    EXPECT_LE(std::abs(got[c] - alpha_unorm8(expected[c])), 1)
+                        << px << "," << py << " channel " << c;
+                // Blended fragments write no depth and no ids: the wall's everywhere.
+                const std::size_t p = at_pixel(px, py);
+                EXPECT_EQ(r.targets.instance_id[p], 0);
+                EXPECT_EQ(r.targets.depth[p], wall_only.targets.depth[p]);
+            }
+        if (point_sampled(path)) {
+            EXPECT_EQ(r.targets.color, reference.targets.color);
+            EXPECT_EQ(r.targets.instance_id, reference.targets.instance_id);
+        }
+    }
+}
+
+struct AlphaLayer {
+    float half_width, z;
+    glm::vec3 color;
+    float opacity;
+};
+
+// Far opaque, then two blended layers nearer, each smaller.
+const std::array<AlphaLayer, 3> kAlphaLayers = {{
+    {20.0f, -2.0f, {0.9f, 0.2f, 0.1f}, 1.0f},
+    {14.0f, 0.0f, {0.1f, 0.8f, 0.3f}, 0.5f},
+    {8.0f, 2.0f, {0.2f, 0.3f, 0.9f}, 0.35f},
+}};
+
+Scene alpha_layers(const std::array<int, 3>& order) {
+    Scene scene;
+    scene.materials.push_back(Material{});
+    for (const int k : order) {
+        const AlphaLayer& layer = kAlphaLayers[std::size_t(k)];
+        Material m;
+        m.base_color = layer.color;
+        m.opacity = layer.opacity;
+        scene.materials.push_back(m);
+        Mesh mesh = alpha_square(layer.half_width, layer.z);
+        mesh.material = std::uint32_t(scene.materials.size() - 1);
+        scene.meshes.push_back(std::move(mesh));
+        Instance instance;
+        instance.mesh = std::uint32_t(scene.meshes.size() - 1);
+        scene.instances.push_back(instance);
+    }
+    return scene;
+}
+
+// The blended layers in every submission order (the half-transparent one first, the opaque one
+// after it among them): the same image, "over" within 1/255, the opaque layer's depth and ids.
+TEST(AlphaPaths, BlendIsOverInAnyOrder) {
+    const RenderOptions options = alpha_path_options();
+    glm::dvec3 inner(kAlphaLayers[0].color);
+    for (std::size_t k = 1; k < 3; ++k)
+        inner = double(kAlphaLayers[k].opacity) * glm::dvec3(kAlphaLayers[k].color) +
+                (1.0 - double(kAlphaLayers[k].opacity)) * inner;
+    const glm::dvec3 middle =
+        double(kAlphaLayers[1].opacity) * glm::dvec3(kAlphaLayers[1].color) +
+        (1.0 - double(kAlphaLayers[1].opacity)) * glm::dvec3(kAlphaLayers[0].color);
+    const RenderResult reference = render(alpha_layers({1, 0, 2}), options);
+    for (const Path path : kPaths) {
+        SCOPED_TRACE(path_name(path));
+        Scene opaque_only = alpha_layers({0, 1, 2});
+        opaque_only.instances.resize(1);
+        const RenderResult wall = draw_with(path, opaque_only, options);
+        std::array<int, 3> order = {0, 1, 2};
+        RenderResult first;
+        int orders = 0;
+        do {
+            const RenderResult r = draw_with(path, alpha_layers(order), options);
+            if (orders++ == 0) {
+                first = r;
+                continue;
+            }
+            EXPECT_EQ(r.targets.color, first.targets.color)
+                << "order " << order[0] << order[1] << order[2];
+            EXPECT_TRUE(same_bits(r.targets.depth, first.targets.depth));
+        } while (std::next_permutation(order.begin(), order.end()));
+        for (const auto& [px, py, expected] :
+             {std::tuple{32, 32, inner}, std::tuple{26, 38, inner}, std::tuple{20, 20, middle},
+              std::tuple{14, 14, glm::dvec3(kAlphaLayers[0].color)}}) {
+            const glm::ivec3 got = rgb_of(first, px, py);
+            for (int c = 0; c < 3; ++c)
+                EXPECT_LE(std::abs(got[c] - alpha_unorm8(expected[c])), 1)
+                    << "pixel " << px << "," << py << " channel " << c;
+            // The opaque layer's depth and ids, as the path has them without the others.
+            const std::size_t p = at_pixel(px, py);
+            EXPECT_EQ(first.targets.depth[p], wall.targets.depth[p]);
+            EXPECT_EQ(first.targets.primitive_id[p], reference.targets.primitive_id[p]);
+        }
+        if (point_sampled(path)) {
+            EXPECT_EQ(first.targets.color, reference.targets.color);
+        }
+    }
+}
+
+// --alpha-mode opaque: every path draws what it draws when every material says Opaque.
+TEST(AlphaPaths, OpaqueModeDrawsEverythingOpaque) {
+    RenderOptions opaque = alpha_path_options();
+    opaque.alpha_mode = MaterialAlpha::Opaque;
+    for (const Path path : kPaths) {
+        SCOPED_TRACE(path_name(path));
+        for (Scene scene : {checker_scene(AlphaMode::Mask, false), alpha_layers({2, 0, 1})}) {
+            const RenderResult ignored = draw_with(path, scene, opaque);
+            for (Material& m : scene.materials) m.alpha_mode = AlphaMode::Opaque;
+            const RenderResult reference = draw_with(path, scene, alpha_path_options());
+            EXPECT_EQ(ignored.targets.color, reference.targets.color);
+            EXPECT_EQ(ignored.targets.instance_id, reference.targets.instance_id);
+        }
+    }
+}
+
+// With one sample a pixel (at its center) multisampling and the A-buffer cut out exactly the
+// pixels render() cuts out: the alpha is sampled where render() samples it.
+TEST(AlphaPaths, OneSampleAPixelCutsOutAsTheZBuffer) {
+    const RenderOptions options = alpha_path_options();
+    const Scene scene = checker_scene(AlphaMode::Mask, true);
+    const RenderResult reference = render(scene, options);
+    const RenderResult msaa = render_multisampled(scene, options, 1);
+    EXPECT_EQ(msaa.targets.color, reference.targets.color);
+    EXPECT_EQ(msaa.targets.instance_id, reference.targets.instance_id);
+    ABufferOptions one;
+    one.samples_per_side = 1;
+    const RenderResult abuffer = render_abuffer(scene, options, one);
+    EXPECT_EQ(abuffer.targets.color, reference.targets.color);
+    EXPECT_EQ(abuffer.targets.instance_id, reference.targets.instance_id);
+}
+
+// Multisampling composites per sample: any thread count gives the same bits.
+TEST(AlphaPaths, MultisampledBlendIsTheSameForAnyThreadCount) {
+    RenderOptions options = alpha_path_options();
+    const Scene scene = alpha_layers({2, 0, 1});
+    options.threads = 1;
+    const RenderResult one = render_multisampled(scene, options, 4);
+    options.threads = 3;
+    const RenderResult three = render_multisampled(scene, options, 4);
+    EXPECT_EQ(one.targets.color, three.targets.color);
+    EXPECT_GT(one.stats.fragments_blended, 0u);
+    EXPECT_GT(one.stats.pixels_blended, 0u);
+}
+
+// SVG: a blended polygon gets fill-opacity and leaves what is behind it in the drawing; a Mask
+// material under its cutoff is left out; a textured cut-out is clipped to its kept pixels.
+TEST(AlphaPaths, SvgBlendsAndCutsOut) {
+    const RenderOptions options = alpha_path_options();
+    for (const SvgOptions::Order order : {SvgOptions::Order::Bsp, SvgOptions::Order::Painter}) {
+        SvgOptions svg_options;
+        svg_options.order = order;
+        Scene layers = alpha_layers({1, 0, 2});
+        const std::string svg = render_svg(layers, options, svg_options);
+        EXPECT_NE(svg.find("fill=\"#e6331a\""), std::string::npos) << svg;  // the opaque wall
+        EXPECT_NE(svg.find("fill-opacity=\"0.5\""), std::string::npos) << svg;
+        EXPECT_NE(svg.find("fill-opacity=\"0.35\""), std::string::npos) << svg;
+        // Back to front: the wall, then the 0.5 layer, then the 0.35 one.
+        EXPECT_LT(svg.find("fill=\"#e6331a\""), svg.find("fill-opacity=\"0.5\""));
+        EXPECT_LT(svg.find("fill-opacity=\"0.5\""), svg.find("fill-opacity=\"0.35\""));
+        // Opaque mode: no opacity anywhere.
+        RenderOptions opaque = options;
+        opaque.alpha_mode = MaterialAlpha::Opaque;
+        EXPECT_EQ(render_svg(layers, opaque, svg_options).find("fill-opacity"), std::string::npos);
+        // The 0.5 layer as a Mask under a cutoff of 0.6: left out whole.
+        Material& half = layers.materials.at(layers.meshes.at(0).material);
+        ASSERT_EQ(half.opacity, 0.5f);
+        half.alpha_mode = AlphaMode::Mask;
+        half.alpha_cutoff = 0.6f;
+        const std::string masked = render_svg(layers, options, svg_options);
+        EXPECT_EQ(masked.find("fill-opacity=\"0.5\""), std::string::npos) << masked;
+        EXPECT_EQ(masked.find("#1acc4d"), std::string::npos) << masked;  // its color
+        EXPECT_NE(masked.find("fill-opacity=\"0.35\""), std::string::npos) << masked;
+        // The checker: clipped to the 16 rows of kept pixels in each of the 8 kept cells.
+        const std::string checker =
+            render_svg(checker_scene(AlphaMode::Mask, false), options, svg_options);
+        EXPECT_NE(checker.find("<clipPath id=\"zraster-cut-0\">"), std::string::npos) << checker;
+        EXPECT_NE(checker.find("clip-path=\"url(#zraster-cut-0)\""), std::string::npos);
+        EXPECT_NE(checker.find("M16 16h8v1h-8z") == std::string::npos,
+                  checker.find("M24 16h8v1h-8z") == std::string::npos)
+            << "exactly one of the two top-left cells is kept";
+    }
+}
+
+}  // namespace
+}  // namespace zraster::test
