@@ -14,32 +14,8 @@
 #include "debug_view_legend.hpp"
 #include "depth_camera_outputs.hpp"
 #include "output_maps.hpp"
-#include "render/material_alpha.hpp"
 
 namespace zraster::cli {
-
-// Blended and alpha-tested materials count in the z-buffer pipeline and the A-buffer (which
-// blends): say so when another way draws the scene and it has any.
-void warn_if_transparent(const Scene& scene, const RenderOptions& options, const std::string& what,
-                         std::FILE* notes) {
-    std::size_t transparent = 0;
-    std::string first;
-    for (const Instance& instance : scene.instances) {
-        const Mesh& mesh = scene.meshes.at(instance.mesh);
-        const Material& m =
-            scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
-        const bool textured = options.textures && !mesh.uvs.empty();
-        if (detail::effective_alpha_mode(m, textured, options) != AlphaMode::Opaque &&
-            transparent++ == 0)
-            first = m.name;
-    }
-    if (transparent > 0 && notes != nullptr)
-        fmt::print(notes,
-                   "note: {} instance(s) have a transparent or cut-out material (e.g. '{}'): {} "
-                   "draws them opaque; `zraster render` (the z-buffer, with or without --aa) "
-                   "and `--visibility abuffer` do not\n",
-                   transparent, first, what);
-}
 
 void check_render_outputs(const RenderArguments& a, OutputFiles& outputs) {
     if (a.output.empty()) throw InputError("-o", "the output path is empty");
@@ -67,13 +43,6 @@ RenderedFrame render_outputs(const RenderArguments& a, const Scene& scene, Outpu
     options.id_targets = !a.id_out.empty();
     options.normal_target |= depth_camera_needs_normals(a.depth_camera);
     check_frame_arguments(a);
-    // (Supersampling renders with the pipeline: it blends and cuts out as the frame does.)
-    if (a.alpha_mode == "auto" && a.visibility != "abuffer" &&
-        !(a.visibility == "zbuffer" && !a.msaa))
-        warn_if_transparent(
-            scene, options,
-            a.visibility == "zbuffer" ? std::string("--msaa") : "--visibility " + a.visibility,
-            notes);
     RenderResult own;
     const RenderResult* result = &own;
     if (renderer != nullptr && renders_with_pipeline(a)) {

@@ -31,16 +31,11 @@ struct RenderedFrame {
 
 // Renders `scene` as the arguments ask and adds every requested file's bytes to `outputs`
 // (checked before with check_render_outputs); writes nothing. `progress` receives the reports of
-// long object-space work (null: none); `notes` the note of warn_if_transparent (null: none).
+// long object-space work (null: none); `notes` the notes of debug views (null: none).
 // With `renderer`, a pipeline frame (renders_with_pipeline) is drawn by it, reusing its memory
 // and threads from the frames before (same bytes); null: a frame of its own.
 RenderedFrame render_outputs(const RenderArguments& arguments, const Scene& scene,
                              OutputFiles& outputs, ProgressReporter* progress, std::FILE* notes,
                              Renderer* renderer = nullptr);
-
-// A note on `notes` when instances have blended or alpha-tested materials (as `options` would
-// draw them), which `what` draws opaque.
-void warn_if_transparent(const Scene& scene, const RenderOptions& options, const std::string& what,
-                         std::FILE* notes = stderr);
 
 }  // namespace zraster::cli

@@ -16,9 +16,34 @@
 #include "command_line.hpp"
 #include "io/atomic_write.hpp"
 #include "progress.hpp"
+#include "render/material_alpha.hpp"
 #include "render_outputs.hpp"
 
 namespace zraster::cli {
+namespace {
+
+// SVG fills hold one opacity: say so when a material's alpha comes from textures (svg.hpp).
+void note_textured_alpha(const Scene& scene, const RenderOptions& options) {
+    std::size_t textured = 0;
+    std::string first;
+    for (const Instance& instance : scene.instances) {
+        const Mesh& mesh = scene.meshes.at(instance.mesh);
+        const Material& m =
+            scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
+        const bool uvs = options.textures && !mesh.uvs.empty();
+        if (uvs && (m.base_color_texture || m.opacity_texture) &&
+            detail::effective_alpha_mode(m, uvs, options) != AlphaMode::Opaque && textured++ == 0)
+            first = m.name;
+    }
+    if (textured > 0)
+        fmt::print(stderr,
+                   "note: {} instance(s) take their alpha from textures (e.g. '{}'): zraster svg "
+                   "approximates it, a blended polygon by one fill-opacity (its mean alpha), a "
+                   "cut-out by a clip path of whole pixels\n",
+                   textured, first);
+}
+
+}  // namespace
 
 void add_svg_command(CLI::App& app, SvgArguments& a) {
     CLI::App* cmd = app.add_subcommand(
@@ -62,8 +87,7 @@ int run_svg(const SvgArguments& a) {
     const Scene scene = load_scene_or_procedural(a.render.scene);
     RenderOptions options = make_render_options(a.render, scene);
     options.progress = stderr_progress();
-    if (options.alpha_mode == MaterialAlpha::Auto)
-        warn_if_transparent(scene, options, "zraster svg");
+    note_textured_alpha(scene, options);
 
     SvgOptions svg;
     svg.order = a.order == "painter" ? SvgOptions::Order::Painter : SvgOptions::Order::Bsp;
