@@ -13,6 +13,7 @@
 
 #include "render/blend_scratch.hpp"
 #include "render/frame.hpp"
+#include "render/tile_context.hpp"
 
 #include <cstdint>
 
@@ -23,18 +24,9 @@ struct BlendCounts {
     std::uint64_t pixels = 0;     // with at least one
 };
 
-// The tile [x0, x1) x [y0, y1) whose depths are `depth` (tile rows of kTileStride)
-// and whose color is already in `targets.color`.
-struct BlendTile {
-    const Frame& frame;
-    const DepthBuffer& codec;
-    CompareFunc compare;
-    const TargetViews& targets;
-    const float* depth;
-    int x0, y0, x1, y1;
-};
-
-// Draws scratch.triangles over the tile and composites their fragments into the color target.
-BlendCounts composite_blended(const BlendTile& tile, BlendScratch& scratch);
+// Draws scratch.triangles over the tile `c`, whose buffers `tile` hold the opaque depths (as
+// stored) and whose color is already in the color target, and composites their fragments
+// there.
+BlendCounts composite_blended(const TileContext& c, const TileBuffers& tile, BlendScratch& scratch);
 
 }  // namespace zraster::detail

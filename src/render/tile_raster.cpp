@@ -205,10 +205,7 @@ void draw_tile(const TilePlan& plan, std::size_t tile_number, const ClearRows& c
                                      ? c.counts.passed
                                      : c.counts.shaded_forward + shaded_deferred;
     if (!blended.empty()) {
-        const BlendCounts counts =
-            composite_blended(BlendTile{plan.frame, plan.codec, plan.compare, plan.targets.views,
-                                        tile.depth, c.x0, c.y0, c.x1, c.y1},
-                              slot.blend);
+        const BlendCounts counts = composite_blended(c, tile, slot.blend);
         totals.alpha[tile_number].blended_fragments = counts.fragments;
         totals.alpha[tile_number].blended_pixels = counts.pixels;
     }
