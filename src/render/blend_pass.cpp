@@ -147,14 +147,12 @@ class ShadedHere {
 // pixels it passed are then read out and restored. Phong instances without alpha textures are
 // lit by the kernel as they pass (forward); the others get their barycentrics and are shaded
 // here.
-void kernel_fragments(const TileContext& c, const TileBuffers& tile, BlendScratch& scratch,
-                      FragmentSink& sink) {
+void kernel_fragments(const TileContext& c, const TileBuffers& tile, TileBuffers& buffers,
+                      BlendScratch& scratch, FragmentSink& sink) {
     const TilePlan& plan = c.plan;
     const Frame& frame = plan.frame;
     const RenderOptions& options = *frame.options;
     const int width = c.x1 - c.x0;
-    if (!scratch.buffers) scratch.buffers = std::make_unique<TileBuffers>();
-    TileBuffers& buffers = *scratch.buffers;
     for (int y = 0; y < c.y1 - c.y0; ++y) {
         std::memcpy(buffers.depth + tile_index(0, y), tile.depth + tile_index(0, y),
                     std::size_t(width) * sizeof(float));
@@ -267,7 +265,7 @@ void scalar_fragments(const TileContext& c, const TileBuffers& tile, BlendScratc
 
 }  // namespace
 
-BlendCounts composite_blended(const TileContext& c, const TileBuffers& tile,
+BlendCounts composite_blended(const TileContext& c, const TileBuffers& tile, TileBuffers& side,
                               BlendScratch& scratch) {
     const TilePlan& plan = c.plan;
     const Frame& frame = plan.frame;
@@ -288,7 +286,7 @@ BlendCounts composite_blended(const TileContext& c, const TileBuffers& tile,
     FragmentSink sink{
         slots, plan.compare == CompareFunc::Greater || plan.compare == CompareFunc::GreaterEqual};
     if (plan.traversal == Traversal::Blocks && frame.options->depth_write)
-        kernel_fragments(c, tile, scratch, sink);
+        kernel_fragments(c, tile, side, scratch, sink);
     else
         scalar_fragments(c, tile, scratch, sink);
     BlendCounts counts;

@@ -26,7 +26,8 @@ struct BlendCounts {
 
 // Draws scratch.triangles over the tile `c`, whose buffers `tile` hold the opaque depths (as
 // stored) and whose color is already in the color target, and composites their fragments
-// there.
-BlendCounts composite_blended(const TileContext& c, const TileBuffers& tile, BlendScratch& scratch);
+// there. `side`: a side buffer (mask_pass.hpp's make_side_buffer).
+BlendCounts composite_blended(const TileContext& c, const TileBuffers& tile, TileBuffers& side,
+                              BlendScratch& scratch);
 
 }  // namespace zraster::detail

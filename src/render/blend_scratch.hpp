@@ -34,8 +34,6 @@ struct BlendScratch {
     BlendSlots slots;
     std::vector<PendingFragment> pending;
     std::vector<BlendFragment> list;  // one pixel's fragments, when it has more than kSlots
-    // The visibility kernel's buffers for the blended triangles (allocated on first use).
-    std::unique_ptr<TileBuffers> buffers;
 };
 
 }  // namespace zraster::detail
