@@ -36,9 +36,16 @@ void AppendBlendRow(const BlendRow& row, TileBuffers& buffers, const float* opaq
         if (!hn::AllFalse(du, take)) {
             const auto key = hn::Xor(hn::BitCast(du, hn::LoadU(d, buffers.depth + at)), flip);
             const auto rgba = hn::LoadU(du, buffers.color + at);
-            hn::BlendedStore(no_triangle, take, du, buffers.ref + at);
-            hn::BlendedStore(hn::LoadU(d, opaque_depth + at), hn::RebindMask(d, take), d,
-                             buffers.depth + at);
+            // (Blends and whole stores, not masked stores: those are slow on AMD's AVX2. Every
+            // lane here is the row's and this thread's.)
+            const auto blend_u = [&](auto m, auto v, std::uint32_t* to) {
+                hn::StoreU(hn::IfThenElse(m, v, hn::LoadU(du, to)), du, to);
+            };
+            const auto blend_f = [&](auto m, auto v, float* to) {
+                hn::StoreU(hn::IfThenElse(hn::RebindMask(d, m), v, hn::LoadU(d, to)), d, to);
+            };
+            blend_u(take, no_triangle, buffers.ref + at);
+            blend_f(take, hn::LoadU(d, opaque_depth + at), buffers.depth + at);
             hn::StoreU(hn::IfThenElse(take, hn::Add(n, hn::Set(du, 1u)), n), du,
                        slots.count.data() + pixel);
             // Each slot layer the lanes append to (all one, mostly).
@@ -48,10 +55,10 @@ void AppendBlendRow(const BlendRow& row, TileBuffers& buffers, const float* opaq
                 const std::uint32_t layer = counts[hn::FindFirstTrue(du, pending)];
                 const auto these = hn::And(pending, hn::Eq(n, hn::Set(du, layer)));
                 const std::size_t slot = layer * slots.pixels + pixel;
-                hn::BlendedStore(key, these, du, slots.depth_key.data() + slot);
-                hn::BlendedStore(rgba, these, du, slots.rgba.data() + slot);
-                hn::BlendedStore(source, these, du, slots.source.data() + slot);
-                hn::BlendedStore(alpha, hn::RebindMask(d, these), d, slots.alpha.data() + slot);
+                blend_u(these, key, slots.depth_key.data() + slot);
+                blend_u(these, rgba, slots.rgba.data() + slot);
+                blend_u(these, source, slots.source.data() + slot);
+                blend_f(these, alpha, slots.alpha.data() + slot);
                 pending = hn::AndNot(these, pending);
             } while (!hn::AllFalse(du, pending));
         }
