@@ -3,6 +3,9 @@
 // then each blended triangle is drawn again over the tile: every fragment in front of the
 // opaque depth is shaded and kept, and each pixel's fragments are composited over the opaque
 // color, farthest first ("over", Porter & Duff 1984), as the A-buffer composites its lists.
+// On the block traversal the visibility kernel finds (and, for SIMD Phong instances, lights)
+// the fragments in a side buffer, and the kernels of blend_kernels.hpp keep them in per-pixel
+// slots and composite them a vector of pixels at a time.
 // Fragments are ordered by depth, then by content (alpha, color), then by instance and
 // triangle: the image does not depend on the order the triangles were submitted in, and since
 // a tile's pixels are its own, not on the thread count either. Blended fragments write no
