@@ -159,9 +159,6 @@ void kernel_fragments(const TileContext& c, const TileBuffers& tile, TileBuffers
         std::memset(buffers.ref + tile_index(0, y), 0xff,
                     std::size_t(width) * sizeof(std::uint32_t));  // kNoTriangle
     }
-    // Blocks whose edges are too long for the kernel's lanes take the scalar reference path
-    // (its counts are not the tile's).
-    TileContext scalar_context{plan, c.x0, c.y0, c.x1, c.y1, {}};
     BlockJob job;
     job.perspective = options.interpolation == Interpolation::PerspectiveCorrect;
     job.compare = plan.compare;
@@ -175,26 +172,12 @@ void kernel_fragments(const TileContext& c, const TileBuffers& tile, TileBuffers
         const bool forward = s.corners.tag != 0 && s.constant_alpha > 0.0f;
         const TriangleSetup& setup = blended.setup;
         const std::uint32_t id = triangle_reference(blended.chunk, blended.ref);
-        job.planes = {setup.depth, setup.q, setup.p1, setup.p2, setup.l1, setup.l2};
-        job.corners = forward ? &s.corners : nullptr;
-        job.piece = s.piece;
-        job.shade_constants =
-            forward ? &frame.phong_constants[(s.corners.tag & ~kShadeFlip) - 1] : nullptr;
-        job.ref = id;
-        const TileTriangle triangle{
-            s.chunk, s.ref, setup, id, job.corners, job.piece, job.shade_constants};
-        for_each_block_job(
-            setup, c.x0, c.y0, c.x1, c.y1,
-            [&]<bool>(int x0, int y0, int x1, int y1, bool full, unsigned inside) {
-                set_block_job(setup, c.x0, c.y0, x0, y0, x1, y1, full, inside, job);
-                if (plan.simd)
-                    visibility_block(job, buffers);
-                else
-                    visibility_block_scalar(job, buffers);
-            },
-            [&](int x0, int y0, int x1, int y1) {
-                rasterize_scalar(scalar_context, triangle, buffers, x0, y0, x1 + 1, y1 + 1);
-            });
+        draw_into_side(
+            c,
+            TileTriangle{
+                s.chunk, s.ref, setup, id, forward ? &s.corners : nullptr, s.piece,
+                forward ? &frame.phong_constants[(s.corners.tag & ~kShadeFlip) - 1] : nullptr},
+            job, buffers);
 
         // Read out (and restore) the pixels it passed, row by row.
         const int rx0 = std::max(setup.min_x, c.x0), ry0 = std::max(setup.min_y, c.y0);

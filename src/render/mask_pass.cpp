@@ -33,26 +33,10 @@ std::uint64_t rasterize_masked(TileContext& c, const TileTriangle& t, TileBuffer
     job.write_depth = true;  // into `side`: the fragment's depth, written to the tile if kept
     job.attributes = true;
     job.barycentrics = true;  // what the alpha is computed from
-    job.corners = nullptr;
-    job.shade_constants = nullptr;
-    job.planes = {setup.depth, setup.q, setup.p1, setup.p2, setup.l1, setup.l2};
-    job.ref = t.id;
-    // Blocks whose edges are too long for the kernel's lanes: the scalar path, which writes
-    // what the kernel would (its own alpha test is repeated below, to the same result).
-    TileContext scalar_context{plan, c.x0, c.y0, c.x1, c.y1, {}};
-    const TileTriangle plain{t.chunk, t.ref, setup, t.id, nullptr, nullptr, nullptr};
-    for_each_block_job(
-        setup, c.x0, c.y0, c.x1, c.y1,
-        [&]<bool>(int x0, int y0, int x1, int y1, bool full, unsigned inside) {
-            set_block_job(setup, c.x0, c.y0, x0, y0, x1, y1, full, inside, job);
-            if (plan.simd)
-                visibility_block(job, side);
-            else
-                visibility_block_scalar(job, side);
-        },
-        [&](int x0, int y0, int x1, int y1) {
-            rasterize_scalar(scalar_context, plain, side, x0, y0, x1 + 1, y1 + 1);
-        });
+    // (Blocks whose edges are too long for the kernel's lanes take the scalar path, which
+    // alpha-tests too: the test below repeats it, to the same result.)
+    draw_into_side(c, TileTriangle{t.chunk, t.ref, setup, t.id, nullptr, nullptr, nullptr}, job,
+                   side);
 
     // The alpha test, then the writes the kernel makes for a fragment that passes.
     ShadingTriangle shading;

@@ -164,6 +164,28 @@ std::uint64_t rasterize_blocks(TileContext& c, const TileTriangle& t, TileBuffer
     return passed;
 }
 
+void draw_into_side(const TileContext& c, const TileTriangle& t, BlockJob& job, TileBuffers& side) {
+    const TriangleSetup& setup = t.setup;
+    job.planes = {setup.depth, setup.q, setup.p1, setup.p2, setup.l1, setup.l2};
+    job.ref = t.id;
+    job.corners = t.corners;
+    job.piece = t.piece;
+    job.shade_constants = t.shade_constants;
+    TileContext scalar_context{c.plan, c.x0, c.y0, c.x1, c.y1, {}};
+    for_each_block_job(
+        setup, c.x0, c.y0, c.x1, c.y1,
+        [&]<bool>(int x0, int y0, int x1, int y1, bool full, unsigned inside) {
+            set_block_job(setup, c.x0, c.y0, x0, y0, x1, y1, full, inside, job);
+            if (c.plan.simd)
+                visibility_block(job, side);
+            else
+                visibility_block_scalar(job, side);
+        },
+        [&](int x0, int y0, int x1, int y1) {
+            rasterize_scalar(scalar_context, t, side, x0, y0, x1 + 1, y1 + 1);
+        });
+}
+
 void set_block_job(const TriangleSetup& setup, int tile_x0, int tile_y0, int x0, int y0, int x1,
                    int y1, bool full, unsigned inside, BlockJob& job) {
     for (std::size_t k = 0; k < 3; ++k) {

@@ -44,6 +44,13 @@ std::uint64_t rasterize_scalar(TileContext& c, const TileTriangle& t, TileBuffer
 // lanes: rasterize_scalar on that block). Returns the fragments that passed.
 std::uint64_t rasterize_blocks(TileContext& c, const TileTriangle& t, TileBuffers& tile);
 
+// The side passes' traversal (mask_pass.hpp, blend_pass.hpp): triangle `t` over the tile into
+// `side`, each block job by the kernel (blocks whose edges are too long for its lanes by
+// rasterize_scalar, counting apart from the tile), without hierarchical z. `job` carries the
+// depth test and what to write; its triangle's fields (planes, ref, corners, piece, shade
+// constants) are set from t.
+void draw_into_side(const TileContext& c, const TileTriangle& t, BlockJob& job, TileBuffers& side);
+
 // The edge and position fields of a kernel job on pixels [x0, x1] x [y0, y1] of the triangle
 // (image coordinates) in the tile whose first pixel is (tile_x0, tile_y0). Edges in `inside`
 // (bit k: edge k, non-negative over the whole job) get zero: their values far inside a large

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <memory>
 #include <random>
+#include <span>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -69,11 +70,12 @@ const std::array<Layer, 3> kLayers = {{
     {8.0f, 2.0f, {0.2f, 0.3f, 0.9f}, 0.35f},
 }};
 
-Scene layered_scene(const std::array<int, 3>& order) {
+// The squares layers[order[0]], layers[order[1]], ... in that submission order, a material each.
+Scene squares_scene(std::span<const Layer> layers, std::span<const int> order) {
     Scene scene;
     scene.materials.push_back(Material{});
     for (const int k : order) {
-        const Layer& layer = kLayers[std::size_t(k)];
+        const Layer& layer = layers[std::size_t(k)];
         Material m;
         m.base_color = layer.color;
         m.opacity = layer.opacity;
@@ -86,6 +88,10 @@ Scene layered_scene(const std::array<int, 3>& order) {
         scene.instances.push_back(instance);
     }
     return scene;
+}
+
+Scene layered_scene(const std::array<int, 3>& order) {
+    return squares_scene(kLayers, order);
 }
 
 int unorm8(double v) {
@@ -143,34 +149,15 @@ TEST(AlphaModes, BlendIsIndependentOfSubmissionOrderAndMatchesOver) {
 // order comes from content and ids. Every submission order, SIMD or not, 1 or 2 threads: one
 // image, the analytic "over" where the depths differ.
 TEST(AlphaModes, MoreLayersThanSlotsInAnyOrder) {
-    struct Square {
-        float half_width, z;
-        glm::vec3 color;
-        float opacity;
-    };
-    const std::array<Square, 7> squares = {{{24.0f, -6.0f, {0.9f, 0.2f, 0.1f}, 1.0f},
-                                            {22.0f, -4.0f, {0.1f, 0.8f, 0.3f}, 0.5f},
-                                            {18.0f, -2.0f, {0.2f, 0.3f, 0.9f}, 0.35f},
-                                            {14.0f, 0.0f, {0.7f, 0.7f, 0.1f}, 0.6f},
-                                            {10.0f, 2.0f, {0.3f, 0.1f, 0.6f}, 0.25f},
-                                            {6.0f, 2.0f, {0.9f, 0.9f, 0.9f}, 0.4f},
-                                            {3.0f, 0.0f, {0.0f, 0.5f, 0.5f}, 0.7f}}};
+    const std::array<Layer, 7> squares = {{{24.0f, -6.0f, {0.9f, 0.2f, 0.1f}, 1.0f},
+                                           {22.0f, -4.0f, {0.1f, 0.8f, 0.3f}, 0.5f},
+                                           {18.0f, -2.0f, {0.2f, 0.3f, 0.9f}, 0.35f},
+                                           {14.0f, 0.0f, {0.7f, 0.7f, 0.1f}, 0.6f},
+                                           {10.0f, 2.0f, {0.3f, 0.1f, 0.6f}, 0.25f},
+                                           {6.0f, 2.0f, {0.9f, 0.9f, 0.9f}, 0.4f},
+                                           {3.0f, 0.0f, {0.0f, 0.5f, 0.5f}, 0.7f}}};
     const auto scene_in = [&](const std::vector<int>& order) {
-        Scene scene;
-        for (const int k : order) {
-            const Square& sq = squares[std::size_t(k)];
-            Material m;
-            m.base_color = sq.color;
-            m.opacity = sq.opacity;
-            scene.materials.push_back(m);
-            Mesh mesh = square(sq.half_width, sq.z);
-            mesh.material = std::uint32_t(scene.materials.size() - 1);
-            scene.meshes.push_back(std::move(mesh));
-            Instance instance;
-            instance.mesh = std::uint32_t(scene.meshes.size() - 1);
-            scene.instances.push_back(instance);
-        }
-        return scene;
+        return squares_scene(squares, order);
     };
     std::vector<int> order = {0, 1, 2, 3, 4, 5, 6};
     const RenderOptions options = alpha_options();

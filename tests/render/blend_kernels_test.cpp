@@ -21,20 +21,10 @@
 
 #include "raster/visibility_kernel.hpp"
 #include "render/blend_kernels.hpp"
+#include "render/every_simd_target.hpp"
 
 namespace zraster::detail {
 namespace {
-
-template <class Check>
-void on_every_target(Check check) {
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        hwy::SetSupportedTargetsForTest(target);
-        SCOPED_TRACE(hwy::TargetName(target));
-        ASSERT_STREQ(visibility_kernel_target(), hwy::TargetName(target));
-        check();
-    }
-    hwy::SetSupportedTargetsForTest(0);
-}
 
 constexpr int kTile = 64;
 constexpr std::size_t kPixels = std::size_t(kTile) * kTile;
@@ -146,11 +136,11 @@ void CompositeMatchesScalar() {
 }
 
 TEST(BlendKernels, AppendMatchesScalar) {
-    on_every_target(AppendMatchesScalar);
+    test::on_every_simd_target(AppendMatchesScalar);
 }
 
 TEST(BlendKernels, CompositeMatchesScalar) {
-    on_every_target(CompositeMatchesScalar);
+    test::on_every_simd_target(CompositeMatchesScalar);
 }
 
 }  // namespace
