@@ -1,12 +1,7 @@
 // OcclusionBuffer micro-benchmarks (Google Benchmark, one thread).
 //
-// The occluder workload is Masked Software Occlusion Culling's classic fill-rate test: 100,000
-// triangles of about 50 pixels each at 1920 x 1080. Deterministic: splitmix64 seeded with 1.
-// Each triangle is equilateral with circumradius R = sqrt(200 / (3 sqrt 3)) = 6.20 px, so its
-// area is (3 sqrt 3 / 4) R^2 = 50 px^2, rotated by a random angle, centered at a uniformly random
-// point of the screen; its vertices are counter-clockwise on screen (front-facing, none culled)
-// at a random NDC depth in [-0.9, 0.9] (plus up to +-0.01 per vertex) and given in clip space
-// with a random w in [1, 4] (so x, y, z are NDC * w).
+// The occluder workload is Masked Software Occlusion Culling's classic fill-rate test
+// (msoc_workload.hpp).
 //
 // Reported counters: ns_per_triangle (occluder renders) and ns_per_test (rectangle and box
 // tests), both per item, single thread. Run: build/occlusion_bench [--benchmark_filter=...]
@@ -22,58 +17,18 @@
 #include <vector>
 
 #include "benchmark_main.hpp"
+#include "msoc_workload.hpp"
 
 namespace {
 
 using zraster::OcclusionBuffer;
 using zraster::OcclusionResult;
-
-constexpr int kWidth = 1920, kHeight = 1080;
-constexpr int kTriangles = 100'000;
-
-struct SplitMix64 {
-    std::uint64_t state;
-    std::uint64_t next() {
-        std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-        return z ^ (z >> 31);
-    }
-    double uniform() { return static_cast<double>(next() >> 11) * 0x1p-53; }  // [0, 1)
-    double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-};
-
-struct Workload {
-    std::vector<glm::vec4> clip;
-    std::vector<glm::vec3> ndc;  // the same vertices with w = 1, for the matrix path
-    std::vector<std::uint32_t> indices;
-};
-
-const Workload& msoc_workload() {
-    static const Workload w = [] {
-        Workload out;
-        SplitMix64 rng{1};
-        const double radius = std::sqrt(200.0 / (3.0 * std::sqrt(3.0)));
-        for (int t = 0; t < kTriangles; ++t) {
-            const double cx = rng.uniform(0.0, kWidth), cy = rng.uniform(0.0, kHeight);
-            const double angle = rng.uniform(0.0, 2.0 * std::numbers::pi);
-            const double depth = rng.uniform(-0.9, 0.9);
-            const double w = rng.uniform(1.0, 4.0);
-            for (int k = 0; k < 3; ++k) {
-                // Counter-clockwise with y up: increasing angle in NDC.
-                const double a = angle + k * 2.0 * std::numbers::pi / 3.0;
-                const double px = cx + radius * std::cos(a), py = cy - radius * std::sin(a);
-                const double nx = px / kWidth * 2.0 - 1.0, ny = 1.0 - py / kHeight * 2.0;
-                const double nz = depth + rng.uniform(-0.01, 0.01);
-                out.clip.emplace_back(nx * w, ny * w, nz * w, w);
-                out.ndc.emplace_back(nx, ny, nz);
-                out.indices.push_back(static_cast<std::uint32_t>(out.indices.size()));
-            }
-        }
-        return out;
-    }();
-    return w;
-}
+using zraster::bench::kHeight;
+using zraster::bench::kTriangles;
+using zraster::bench::kWidth;
+using zraster::bench::msoc_workload;
+using zraster::bench::SplitMix64;
+using zraster::bench::Workload;
 
 // Seconds per item, printed with an SI prefix ("41.5n" is 41.5 ns).
 void set_per_item(benchmark::State& state, const char* name, double items_per_iteration) {

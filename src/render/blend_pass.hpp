@@ -3,6 +3,9 @@
 // then each blended triangle is drawn again over the tile: every fragment in front of the
 // opaque depth is shaded and kept, and each pixel's fragments are composited over the opaque
 // color, farthest first ("over", Porter & Duff 1984), as the A-buffer composites its lists.
+// On the block traversal the visibility kernel finds (and, for SIMD Phong instances, lights)
+// the fragments in a side buffer, and the kernels of blend_kernels.hpp keep them in per-pixel
+// slots and composite them a vector of pixels at a time.
 // Fragments are ordered by depth, then by content (alpha, color), then by instance and
 // triangle: the image does not depend on the order the triangles were submitted in, and since
 // a tile's pixels are its own, not on the thread count either. Blended fragments write no
@@ -13,6 +16,7 @@
 
 #include "render/blend_scratch.hpp"
 #include "render/frame.hpp"
+#include "render/tile_context.hpp"
 
 #include <cstdint>
 
@@ -23,18 +27,10 @@ struct BlendCounts {
     std::uint64_t pixels = 0;     // with at least one
 };
 
-// The tile [x0, x1) x [y0, y1) whose depths are `depth` (tile rows of kTileStride)
-// and whose color is already in `targets.color`.
-struct BlendTile {
-    const Frame& frame;
-    const DepthBuffer& codec;
-    CompareFunc compare;
-    const TargetViews& targets;
-    const float* depth;
-    int x0, y0, x1, y1;
-};
-
-// Draws scratch.triangles over the tile and composites their fragments into the color target.
-BlendCounts composite_blended(const BlendTile& tile, BlendScratch& scratch);
+// Draws scratch.triangles over the tile `c`, whose buffers `tile` hold the opaque depths (as
+// stored) and whose color is already in the color target, and composites their fragments
+// there. `side`: a side buffer (mask_pass.hpp's make_side_buffer).
+BlendCounts composite_blended(const TileContext& c, const TileBuffers& tile, TileBuffers& side,
+                              BlendScratch& scratch);
 
 }  // namespace zraster::detail

@@ -2,10 +2,13 @@
 #pragma once
 #include <zraster/raster.hpp>
 
-#include <glm/glm.hpp>
-
+#include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <vector>
+
+#include "raster/visibility_kernel.hpp"
+#include "render/blend_kernels.hpp"
 
 namespace zraster::detail {
 
@@ -17,21 +20,20 @@ struct BlendTriangle {
     TriangleSetup setup;
 };
 
-struct BlendFragment {
-    std::uint32_t pixel = 0;  // index in the tile, row-major over its width
-    std::uint32_t next = 0;   // the pixel's next fragment (a list, newest first)
-    float depth = 0.0f;       // as stored (the depth format's code)
-    float alpha = 0.0f;       // in (0, 1]
-    std::uint32_t rgba = 0;   // shaded, RGBA8 as the color target holds it
-    std::uint32_t instance = 0, primitive = 0;
+// A triangle's fragments waiting for their colors (shaded in batches).
+struct PendingFragment {
+    std::uint32_t pixel;
+    BlendFragment fragment;
 };
 
 // A slot's working memory for its tiles' blended surfaces, kept from tile to tile.
 struct BlendScratch {
     std::vector<BlendTriangle> triangles;
-    std::vector<BlendFragment> fragments;
-    std::vector<std::uint32_t> head;  // per pixel of the tile: its newest fragment
-    std::vector<std::uint32_t> list;  // one pixel's fragments, sorted
+    // Per triangle: its instance in the scene and primitive (the order of equal depths).
+    std::vector<std::uint32_t> instance, primitive;
+    BlendSlots slots;
+    std::vector<PendingFragment> pending;
+    std::vector<BlendFragment> list;  // one pixel's fragments, when it has more than kSlots
 };
 
 }  // namespace zraster::detail

@@ -195,6 +195,7 @@ struct SlotScratch {
     std::vector<std::size_t> run_start, cursor;  // write_bins
     std::vector<std::byte> bin_storage;          // write_bins, from its first cache line
     BlendScratch blend;                          // rasterize_tiles' blended surfaces
+    std::unique_ptr<TileBuffers> side;           // ... and alpha-tested ones (mask_pass.hpp)
 };
 
 // Instance culling's working memory (occlusion_cull.cpp), kept from frame to frame.

@@ -5,6 +5,7 @@
 //   records (tile_records.hpp): its bin records streamed, kSetupLanes at a time, set up in lanes;
 //   traversal (tile_traversal.hpp): each triangle's pixels found and depth-tested, small ones as
 //     one kernel job straight from the lanes, the others block by block (hierarchical z);
+//     alpha-tested ones through a side buffer (mask_pass.hpp);
 //   resolve (tile_resolve.hpp): the visible pixels shaded once (deferred) and written out;
 //   blend (blend_pass.hpp): blended surfaces composited over the result.
 // The frame decides once how pixels are shaded (ShadingPath) and traversed (Traversal).
@@ -21,6 +22,7 @@
 #include "raster/visibility_kernel.hpp"
 #include "render/blend_pass.hpp"
 #include "render/frame.hpp"
+#include "render/mask_pass.hpp"
 #include "render/target_streaming.hpp"
 #include "render/tile_context.hpp"
 #include "render/tile_records.hpp"
@@ -80,7 +82,7 @@ void start_tile(const TileContext& c, const ClearRows& clear, TileBuffers& tile)
 // straight from the lanes, the others go one by one to their traversal (or, blended, to the
 // blend pass after the tile).
 void draw_triangles(TileContext& c, std::size_t tile_number, TileBuffers& tile,
-                    std::vector<BlendTriangle>& blended) {
+                    std::unique_ptr<TileBuffers>& side, std::vector<BlendTriangle>& blended) {
     const TilePlan& plan = c.plan;
     const Frame& frame = plan.frame;
     const bool blocks = plan.traversal == Traversal::Blocks;
@@ -166,8 +168,13 @@ void draw_triangles(TileContext& c, std::size_t tile_number, TileBuffers& tile,
             if (alpha == AlphaMode::Blend) {  // drawn after the tile (blend_pass.hpp)
                 if (plan.targets.color)
                     blended.push_back({batch.chunk[lane], reference_local(id), setup});
-            } else if (alpha == AlphaMode::Mask) {  // alpha-tested on the scalar way
-                c.counts.passed += rasterize_scalar(c, triangle, tile, c.x0, c.y0, c.x1, c.y1);
+            } else if (alpha == AlphaMode::Mask) {  // alpha-tested (mask_pass.hpp)
+                if (blocks) {
+                    if (!side) side = make_side_buffer();
+                    c.counts.passed += rasterize_masked(c, triangle, tile, *side);
+                } else {
+                    c.counts.passed += rasterize_scalar(c, triangle, tile, c.x0, c.y0, c.x1, c.y1);
+                }
                 c.counts.untagged = true;
             } else if (!blocks) {
                 c.counts.passed += rasterize_scalar(c, triangle, tile, c.x0, c.y0, c.x1, c.y1);
@@ -197,7 +204,7 @@ void draw_tile(const TilePlan& plan, std::size_t tile_number, const ClearRows& c
     start_tile(c, clear, tile);
     std::vector<BlendTriangle>& blended = slot.blend.triangles;
     blended.clear();
-    draw_triangles(c, tile_number, tile, blended);
+    draw_triangles(c, tile_number, tile, slot.side, blended);
     // (Resolved in every path: the depth and id targets are written there.)
     const std::uint64_t shaded_deferred = resolve_tile(c, tile, clear.background);
     totals.passed[tile_number] = c.counts.passed;
@@ -205,10 +212,8 @@ void draw_tile(const TilePlan& plan, std::size_t tile_number, const ClearRows& c
                                      ? c.counts.passed
                                      : c.counts.shaded_forward + shaded_deferred;
     if (!blended.empty()) {
-        const BlendCounts counts =
-            composite_blended(BlendTile{plan.frame, plan.codec, plan.compare, plan.targets.views,
-                                        tile.depth, c.x0, c.y0, c.x1, c.y1},
-                              slot.blend);
+        if (!slot.side) slot.side = make_side_buffer();
+        const BlendCounts counts = composite_blended(c, tile, *slot.side, slot.blend);
         totals.alpha[tile_number].blended_fragments = counts.fragments;
         totals.alpha[tile_number].blended_pixels = counts.pixels;
     }

@@ -24,10 +24,6 @@ void count_hit(const TargetViews& t, bool front_facing, int px, int py) {
         ++target_row(hits, front_facing ? t.front_hits_pitch : t.back_hits_pitch, py)[px];
 }
 
-std::int64_t edge_at(const TriangleSetup& t, std::size_t k, int px, int py) {
-    return t.edge_a[k] * px + t.edge_b[k] * py + t.edge_c[k];
-}
-
 // The hiz view's counts: each 8x8 block of a skipped job, in the image's block grid.
 void count_hidden_blocks(const TileContext& c, int bx0, int by0, int bx1, int by1) {
     const std::size_t blocks_per_row =
@@ -38,11 +34,6 @@ void count_hidden_blocks(const TileContext& c, int bx0, int by0, int bx1, int by
         for (int bx = bx0; bx <= bx1; ++bx)
             ++c.plan.hiz_block_counts[(first_y + std::size_t(by)) * blocks_per_row + first_x +
                                       std::size_t(bx)];
-}
-
-bool fits_int32(std::int64_t v) {
-    return v >= std::numeric_limits<std::int32_t>::min() &&
-           v <= std::numeric_limits<std::int32_t>::max();
 }
 
 }  // namespace
@@ -111,21 +102,18 @@ std::uint64_t rasterize_scalar(TileContext& c, const TileTriangle& t, TileBuffer
 std::uint64_t rasterize_blocks(TileContext& c, const TileTriangle& t, TileBuffers& tile) {
     const TilePlan& plan = c.plan;
     const TriangleSetup& setup = t.setup;
-    const int rx0 = std::max(setup.min_x, c.x0), ry0 = std::max(setup.min_y, c.y0);
-    const int rx1 = std::min(setup.max_x, c.x1 - 1), ry1 = std::min(setup.max_y, c.y1 - 1);
     BlockJob job = shared_job(plan);
     job.planes = {setup.depth, setup.q, setup.p1, setup.p2, setup.l1, setup.l2};
     job.corners = t.corners;
     job.piece = t.piece;
     job.shade_constants = t.shade_constants;
     job.ref = t.id;
-    // Runs the kernel on pixels [x0, x1] x [y0, y1] of the triangle (edge values there fit 32
-    // bits), unless hierarchical z shows them hidden; then refreshes the blocks' depth bounds.
-    // Edges in `inside` (bit k: edge k) are non-negative over the whole block: the kernel gets
-    // zero for them (their values far inside a large triangle need not fit 32 bits).
-    // `small`: the whole triangle is this one job (see below).
+    std::uint64_t passed = 0;
+    // Runs the kernel on pixels [x0, x1] x [y0, y1] of the triangle, unless hierarchical z
+    // shows them hidden; then refreshes the blocks' depth bounds. `small`: the whole triangle
+    // is this one job.
     const auto run_block = [&]<bool small>(int x0, int y0, int x1, int y1, bool full,
-                                           unsigned inside) -> std::uint64_t {
+                                           unsigned inside) {
         const int bx0 = (x0 - c.x0) / kBlockSize, bx1 = (x1 - c.x0) / kBlockSize;
         const int by0 = (y0 - c.y0) / kBlockSize, by1 = (y1 - c.y0) / kBlockSize;
         const bool largest = plan.hiz == HierarchicalZ::Largest;
@@ -149,28 +137,16 @@ std::uint64_t rasterize_blocks(TileContext& c, const TileTriangle& t, TileBuffer
                 c.counts.small_jobs.hidden += small;
                 ++c.counts.blocks_hidden;
                 if (plan.hiz_block_counts != nullptr) count_hidden_blocks(c, bx0, by0, bx1, by1);
-                return 0;
+                return;
             }
         }
-        for (std::size_t k = 0; k < 3; ++k) {
-            const bool zero = (inside >> k) & 1;
-            job.e[k] = zero ? 0 : static_cast<std::int32_t>(edge_at(setup, k, x0, y0));
-            job.step_x[k] = zero ? 0 : static_cast<std::int32_t>(setup.edge_a[k]);
-            job.step_y[k] = zero ? 0 : static_cast<std::int32_t>(setup.edge_b[k]);
-        }
-        job.full = full;
-        job.x0 = x0 - c.x0;
-        job.y0 = y0 - c.y0;
-        job.width = x1 - x0 + 1;
-        job.height = y1 - y0 + 1;
-        job.plane_dx = x0 - setup.min_x;
-        job.plane_dy = y0 - setup.min_y;
-        const int passed =
+        set_block_job(setup, c.x0, c.y0, x0, y0, x1, y1, full, inside, job);
+        const int kept =
             plan.simd ? visibility_block(job, tile) : visibility_block_scalar(job, tile);
+        passed += static_cast<std::uint64_t>(kept);
         // A stale bound is still a bound (stored depths only move nearer): refresh it only
         // after real work, not after every 1-pixel triangle.
-        if (plan.hiz != HierarchicalZ::Off && !small &&
-            (full || passed >= kRefreshAfterFragments)) {
+        if (plan.hiz != HierarchicalZ::Off && !small && (full || kept >= kRefreshAfterFragments)) {
             for (int by = by0; by <= by1; ++by)
                 for (int bx = bx0; bx <= bx1; ++bx) {
                     float& bound = tile.farthest[by * kBlocksPerTileRow + bx];
@@ -180,54 +156,51 @@ std::uint64_t rasterize_blocks(TileContext& c, const TileTriangle& t, TileBuffer
                     c.counts.bounded_blocks += !was_bounded && bounded(bound);
                 }
         }
-        return static_cast<std::uint64_t>(passed);
     };
-    // Small triangles (vertices within 64 pixels each way, the common case) have edge values
-    // that fit 32 bits anywhere near them (|E| <= 2^22 * 65 * 2 < 2^30), so one whose pixels in
-    // the tile span at most kSingleJobColumns columns is one kernel job, whatever its height and
-    // wherever it lies on the block grid: no corner tests, one call instead of one per block.
-    // Running the kernel over the rows and vectors the triangle does not cover costs less than
-    // a block's corner tests and call (docs/architecture.md has the measurements).
-    const auto [lo_x, hi_x] = std::minmax({setup.x[0], setup.x[1], setup.x[2]});
-    const auto [lo_y, hi_y] = std::minmax({setup.y[0], setup.y[1], setup.y[2]});
-    if (hi_x - lo_x < kSingleJobExtent && hi_y - lo_y < kSingleJobExtent &&
-        rx1 - rx0 < kSingleJobColumns)
-        return run_block.template operator()<true>(rx0, ry0, rx1, ry1, false, 0);
-
-    std::uint64_t passed = 0;
-    const int first_by = c.y0 + (ry0 - c.y0) / kBlockSize * kBlockSize;
-    const int first_bx = c.x0 + (rx0 - c.x0) / kBlockSize * kBlockSize;
-    for (int by = first_by; by <= ry1; by += kBlockSize) {
-        const int y0 = std::max(by, ry0), y1 = std::min(by + kBlockSize - 1, ry1);
-        for (int bx = first_bx; bx <= rx1; bx += kBlockSize) {
-            const int x0 = std::max(bx, rx0), x1 = std::min(bx + kBlockSize - 1, rx1);
-            bool outside = false, full = true, fits = true;
-            unsigned inside = 0;
-            for (std::size_t k = 0; k < 3 && !outside; ++k) {
-                // The extremes over the block's corners, from its first corner and the steps
-                // across it (a linear function: each step's sign picks the corner).
-                const std::int64_t e00 = edge_at(setup, k, x0, y0);
-                const std::int64_t across_x = setup.edge_a[k] * (x1 - x0);
-                const std::int64_t across_y = setup.edge_b[k] * (y1 - y0);
-                const std::int64_t lo =
-                    e00 + std::min<std::int64_t>(across_x, 0) + std::min<std::int64_t>(across_y, 0);
-                const std::int64_t hi =
-                    e00 + std::max<std::int64_t>(across_x, 0) + std::max<std::int64_t>(across_y, 0);
-                outside = hi < 0;  // linear: negative at all corners means negative everywhere
-                full &= lo >= 0;
-                inside |= unsigned(lo >= 0) << k;
-                // Only edges crossing the block are evaluated in 32-bit lanes.
-                fits &= lo >= 0 || (fits_int32(lo) && fits_int32(hi) &&
-                                    fits_int32(setup.edge_a[k]) && fits_int32(setup.edge_b[k]));
-            }
-            if (outside) continue;
-            if (!fits && !full)  // edges too long for 32-bit lanes: the exact 64-bit scalar path
-                passed += rasterize_scalar(c, t, tile, x0, y0, x1 + 1, y1 + 1);
-            else
-                passed += run_block.template operator()<false>(x0, y0, x1, y1, full, inside);
-        }
-    }
+    for_each_block_job(setup, c.x0, c.y0, c.x1, c.y1, run_block,
+                       [&](int x0, int y0, int x1, int y1) {
+                           passed += rasterize_scalar(c, t, tile, x0, y0, x1 + 1, y1 + 1);
+                       });
     return passed;
+}
+
+void draw_into_side(const TileContext& c, const TileTriangle& t, BlockJob& job, TileBuffers& side) {
+    const TriangleSetup& setup = t.setup;
+    job.planes = {setup.depth, setup.q, setup.p1, setup.p2, setup.l1, setup.l2};
+    job.ref = t.id;
+    job.corners = t.corners;
+    job.piece = t.piece;
+    job.shade_constants = t.shade_constants;
+    TileContext scalar_context{c.plan, c.x0, c.y0, c.x1, c.y1, {}};
+    for_each_block_job(
+        setup, c.x0, c.y0, c.x1, c.y1,
+        [&]<bool>(int x0, int y0, int x1, int y1, bool full, unsigned inside) {
+            set_block_job(setup, c.x0, c.y0, x0, y0, x1, y1, full, inside, job);
+            if (c.plan.simd)
+                visibility_block(job, side);
+            else
+                visibility_block_scalar(job, side);
+        },
+        [&](int x0, int y0, int x1, int y1) {
+            rasterize_scalar(scalar_context, t, side, x0, y0, x1 + 1, y1 + 1);
+        });
+}
+
+void set_block_job(const TriangleSetup& setup, int tile_x0, int tile_y0, int x0, int y0, int x1,
+                   int y1, bool full, unsigned inside, BlockJob& job) {
+    for (std::size_t k = 0; k < 3; ++k) {
+        const bool zero = (inside >> k) & 1;
+        job.e[k] = zero ? 0 : static_cast<std::int32_t>(edge_at(setup, k, x0, y0));
+        job.step_x[k] = zero ? 0 : static_cast<std::int32_t>(setup.edge_a[k]);
+        job.step_y[k] = zero ? 0 : static_cast<std::int32_t>(setup.edge_b[k]);
+    }
+    job.full = full;
+    job.x0 = x0 - tile_x0;
+    job.y0 = y0 - tile_y0;
+    job.width = x1 - x0 + 1;
+    job.height = y1 - y0 + 1;
+    job.plane_dx = x0 - setup.min_x;
+    job.plane_dy = y0 - setup.min_y;
 }
 
 }  // namespace zraster::detail

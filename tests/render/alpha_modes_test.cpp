@@ -13,6 +13,9 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <random>
+#include <span>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -67,11 +70,12 @@ const std::array<Layer, 3> kLayers = {{
     {8.0f, 2.0f, {0.2f, 0.3f, 0.9f}, 0.35f},
 }};
 
-Scene layered_scene(const std::array<int, 3>& order) {
+// The squares layers[order[0]], layers[order[1]], ... in that submission order, a material each.
+Scene squares_scene(std::span<const Layer> layers, std::span<const int> order) {
     Scene scene;
     scene.materials.push_back(Material{});
     for (const int k : order) {
-        const Layer& layer = kLayers[std::size_t(k)];
+        const Layer& layer = layers[std::size_t(k)];
         Material m;
         m.base_color = layer.color;
         m.opacity = layer.opacity;
@@ -84,6 +88,10 @@ Scene layered_scene(const std::array<int, 3>& order) {
         scene.instances.push_back(instance);
     }
     return scene;
+}
+
+Scene layered_scene(const std::array<int, 3>& order) {
+    return squares_scene(kLayers, order);
 }
 
 int unorm8(double v) {
@@ -134,6 +142,43 @@ TEST(AlphaModes, BlendIsIndependentOfSubmissionOrderAndMatchesOver) {
     EXPECT_TRUE(same_bits(first.targets.depth, reference.targets.depth));
     EXPECT_EQ(first.stats.pixels_blended, std::uint64_t(28 * 28));
     EXPECT_EQ(first.stats.fragments_blended, std::uint64_t(28 * 28 + 16 * 16));
+}
+
+// More blended layers than a pixel keeps in slots (render/blend_kernels.hpp): six squares
+// over an opaque one, nested so pixels see one to six layers; two pairs at equal depths, whose
+// order comes from content and ids. Every submission order, SIMD or not, 1 or 2 threads: one
+// image, the analytic "over" where the depths differ.
+TEST(AlphaModes, MoreLayersThanSlotsInAnyOrder) {
+    const std::array<Layer, 7> squares = {{{24.0f, -6.0f, {0.9f, 0.2f, 0.1f}, 1.0f},
+                                           {22.0f, -4.0f, {0.1f, 0.8f, 0.3f}, 0.5f},
+                                           {18.0f, -2.0f, {0.2f, 0.3f, 0.9f}, 0.35f},
+                                           {14.0f, 0.0f, {0.7f, 0.7f, 0.1f}, 0.6f},
+                                           {10.0f, 2.0f, {0.3f, 0.1f, 0.6f}, 0.25f},
+                                           {6.0f, 2.0f, {0.9f, 0.9f, 0.9f}, 0.4f},
+                                           {3.0f, 0.0f, {0.0f, 0.5f, 0.5f}, 0.7f}}};
+    const auto scene_in = [&](const std::vector<int>& order) {
+        return squares_scene(squares, order);
+    };
+    std::vector<int> order = {0, 1, 2, 3, 4, 5, 6};
+    const RenderOptions options = alpha_options();
+    const RenderResult reference = render(scene_in(order), options);
+    EXPECT_EQ(reference.stats.pixels_blended, std::uint64_t(44 * 44));
+    std::mt19937 rng(9);
+    for (int round = 0; round < 8; ++round) {
+        std::shuffle(order.begin(), order.end(), rng);
+        RenderOptions o = options;
+        o.simd = round % 2 == 0;
+        o.threads = round % 3 == 0 ? 1 : 2;
+        const RenderResult r = render(scene_in(order), o);
+        EXPECT_EQ(r.targets.color, reference.targets.color) << "round " << round;
+    }
+    // Where the depths differ (inside square 4, outside 5 and 6: layers 1 to 4 over 0).
+    glm::dvec3 expected(squares[0].color);
+    for (std::size_t k = 1; k <= 4; ++k)
+        expected = double(squares[k].opacity) * glm::dvec3(squares[k].color) +
+                   (1.0 - double(squares[k].opacity)) * expected;
+    const glm::ivec3 got = rgb_at(reference, 32 + 8, 32);
+    for (int c = 0; c < 3; ++c) EXPECT_LE(std::abs(got[c] - unorm8(expected[c])), 1) << c;
 }
 
 TEST(AlphaModes, OpaqueModeIgnoresAlpha) {

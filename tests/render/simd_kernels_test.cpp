@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "raster/visibility_kernel.hpp"
+#include "render/every_simd_target.hpp"
 #include "render/render_test_util.hpp"
 #include "render/shade_kernel.hpp"
 
@@ -506,44 +507,32 @@ void VisibilityLanesRunTheSingleJobs() {
     expect_same_tiles(*simd_tile, *block_tile);
 }
 
-template <class Check>
-void on_every_target(Check check) {
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        hwy::SetSupportedTargetsForTest(target);
-        SCOPED_TRACE(hwy::TargetName(target));
-        // The dispatcher really switched (not just the best target again).
-        ASSERT_STREQ(visibility_kernel_target(), hwy::TargetName(target));
-        check();
-    }
-    hwy::SetSupportedTargetsForTest(0);
-}
-
 TEST(SimdKernels, VisibilityBlockMatchesScalarOnRandomTriangles) {
-    on_every_target(VisibilityBlockMatchesScalarOnRandomTriangles);
+    test::on_every_simd_target(VisibilityBlockMatchesScalarOnRandomTriangles);
 }
 
 TEST(SimdKernels, VisibilityLanesRunTheSingleJobs) {
-    on_every_target(VisibilityLanesRunTheSingleJobs);
+    test::on_every_simd_target(VisibilityLanesRunTheSingleJobs);
 }
 
 TEST(SimdKernels, PhongShadingMatchesScalarOnRandomInputs) {
-    on_every_target(PhongShadingMatchesScalarOnRandomInputs);
+    test::on_every_simd_target(PhongShadingMatchesScalarOnRandomInputs);
 }
 
 TEST(SimdKernels, TaggedRowShadingMatchesScalar) {
-    on_every_target(TaggedRowShadingMatchesScalar);
+    test::on_every_simd_target(TaggedRowShadingMatchesScalar);
 }
 
 TEST(SimdKernels, WholeFramesMatchTheScalarPath) {
-    on_every_target(WholeFramesMatchTheScalarPath);
+    test::on_every_simd_target(WholeFramesMatchTheScalarPath);
 }
 
 TEST(SimdKernels, ForwardShadingGivesTheDeferredImage) {
-    on_every_target(ForwardEqualsDeferred);
+    test::on_every_simd_target(ForwardEqualsDeferred);
 }
 
 TEST(SimdKernels, BlockFarthestDepthMatchesScalar) {
-    on_every_target([] {
+    test::on_every_simd_target([] {
         std::mt19937 rng(3);
         std::uniform_real_distribution<float> depth(0.0f, 1.0f);
         auto tile = std::make_unique<TileBuffers>();
