@@ -22,6 +22,7 @@
 
 #include <algorithm>
 
+#include "render/blend_kernels.hpp"
 #include "render/material_alpha.hpp"
 
 namespace zraster {
@@ -53,6 +54,11 @@ bool any_alpha(const Scene& scene, const RenderOptions& options) {
     return false;
 }
 
+// An 8-bit channel as render()'s blend pass reads it (render/blend_kernels.hpp).
+float unorm8_to_float(std::uint8_t v) {
+    return detail::blend_channel(v, 0);
+}
+
 float unit_clamp_alpha(float v) {
     return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;  // (NaN: 0), as render()'s blend pass
 }
@@ -78,7 +84,7 @@ Canvas::Canvas(const RenderOptions& options, const Camera& camera, const Scene* 
     if (alpha && options.color_target) {
         over_.resize(targets_.color.size() / 4);
         for (std::size_t p = 0; p < over_.size(); ++p)
-            for (int c = 0; c < 3; ++c) over_[p][c] = float(bg[c]) / 255.0f;
+            for (int c = 0; c < 3; ++c) over_[p][c] = unorm8_to_float(bg[c]);
     }
 }
 
@@ -129,10 +135,11 @@ void Canvas::fill(const ScreenPolygon& polygon, std::span<const TriangleSetup> f
                 // render()'s blend pass: the shaded color quantized, composited in float.
                 const Shaded shaded = shader->shade(*shading, px, py, true, 0.0, 0.0, false);
                 glm::vec3& c = over_[p];
+                const float keep = 1.0f - alpha;
                 for (int k = 0; k < 3; ++k) {
-                    const float color = float(to_unorm8(shaded.color[k])) / 255.0f;
-                    c[k] = color * alpha + c[k] * (1.0f - alpha);
-                    targets_.color[p * 4 + std::size_t(k)] = to_unorm8(c[k]);
+                    const float color = unorm8_to_float(to_unorm8(shaded.color[k]));
+                    c[k] = color * alpha + c[k] * keep;
+                    targets_.color[p * 4 + std::size_t(k)] = detail::blend_unorm8(c[k]);
                 }
                 return;
             }
@@ -148,7 +155,7 @@ void Canvas::fill(const ScreenPolygon& polygon, std::span<const TriangleSetup> f
             if (options_.color_target) {
                 std::copy(rgba, rgba + 4, &targets_.color[p * 4]);
                 if (!over_.empty())
-                    for (int c = 0; c < 3; ++c) over_[p][c] = float(rgba[c]) / 255.0f;
+                    for (int c = 0; c < 3; ++c) over_[p][c] = unorm8_to_float(rgba[c]);
             }
             if (options_.id_targets) {
                 targets_.instance_id[p] = polygon.instance;
