@@ -12,12 +12,14 @@
 
 #include "batch_limits.hpp"
 #include "batch_views.hpp"
+#include "command_caps.hpp"
 #include "command_line.hpp"
 
 namespace zraster::cli {
 
 int batch_jobs(const BatchArguments& a) {
-    return a.jobs > 0 ? a.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
+    return capped_threads(
+        "--jobs", a.jobs > 0 ? a.jobs : int(std::max(1u, std::thread::hardware_concurrency())));
 }
 
 int batch_job_threads(int threads, int jobs) {
