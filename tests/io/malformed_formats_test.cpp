@@ -159,6 +159,12 @@ TEST(MalformedFormats, AssimpMessagesAreTranslated) {
               "malformed or unsupported XYZ file (Assimp: something new)");
     EXPECT_EQ(io::assimp_error_cause("m", "something new"),
               "malformed or unsupported 3D model file (Assimp: something new)");
+    EXPECT_EQ(io::assimp_error_cause("m.md2", "Invalid MD2 magic word: expected IDP2"),
+              "not a MD2 file: it does not start with the format's signature (Assimp: Invalid MD2 "
+              "magic word: expected IDP2)");
+    EXPECT_EQ(io::assimp_error_cause("m.3mf", "Failed to open file m.3mf."),
+              "not a valid 3MF file: the importer could not open its contents (Assimp: Failed to "
+              "open file m.3mf.)");
     EXPECT_EQ(io::assimp_detail("x (Assimp: y (z))"), "y (z)");
     EXPECT_EQ(io::assimp_detail("no detail"), std::nullopt);
 }
