@@ -104,6 +104,42 @@ head -c 120 cells/two.cells.json >cells/broken.cells.json
 printf '{"zraster_pvs": 1, "sets": [{"cell": "a", "visible": [0, 1]}, {"cell": "b", "visible": [0, 1]}]}\n' >two.pvs.json
 printf '{"zraster_pvs": 1, "sets": [{"cell": "a", "visible": [0, 7]}, {"cell": "b", "visible": [1]}]}\n' >range.pvs.json
 
+# Malformed files of each format Assimp reads (what used to reach the user as Assimp's
+# internals), references that are loops, FIFOs or directories, numbers out of range in files.
+head -c 100 /dev/urandom >random.stl
+printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nendloop\nendfacet\nendsolid x\n' >twovertex.stl
+printf 'solid\n' >emptysolid.stl
+head -c 84 /dev/zero >zerofacets.stl
+printf '[1, 2, 3]' >array.gltf
+printf '{"nodes": []}' >noasset.gltf
+printf '{"asset": {"version": "3.0"}}' >version3.gltf
+head -c 300 /dev/urandom | tr -d 'g' >random.glb
+printf 'glTF\x02\0\0\0\x20\0\0\0\x0c\0\0\0BIN\0\0\0\0\0\0\0\0\0\0\0\0\0' >binfirst.glb
+printf 'glTF\x02\0\0\0\x1f\0\0\0\x0b\0\0\0JSON{"asset":[ ' >badjson.glb
+printf 'this is text, not a 3DS file at all' >text.3ds
+printf 'MM\xe8\x03\0\0\x3d\x3d\x10\0\0\0\0\0\0\0\0\0\0\0\0\0' >pastend.3ds
+printf 'MM\x16\0\0\0\x3d\x3d\x02\0\0\0\0\0\0\0\0\0\0\0\0\0' >tinychunk.3ds
+printf "${tri}f 1 2 3\nf 1\n" >point.obj
+head -c 300 /dev/urandom | tr -d 'pP' >random.ply
+head -c 300 /dev/urandom | tr -d 'oO' >random.off
+head -c 300 /dev/urandom | tr -d '<' >random.dae
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' >tri.off
+ln -s loop-b model/loop-a
+ln -s loop-a model/loop-b
+mkfifo model/fifo.png
+printf 'newmtl m\nKd 1 1 1\nmap_Kd loop-a\n' >model/loop.mtl
+printf "mtllib loop.mtl\n${tri}vt 0 0\nusemtl m\nf 1/1 2/1 3/1\n" >model/loop-texture.obj
+printf 'newmtl m\nKd 1 1 1\nmap_Kd fifo.png\n' >model/fifo.mtl
+printf "mtllib fifo.mtl\n${tri}vt 0 0\nusemtl m\nf 1/1 2/1 3/1\n" >model/fifo-texture.obj
+printf "mtllib fifo.png\n${tri}f 1 2 3\n" >model/fifo-mtllib.obj
+buffer_gltf loop-a >model/loop.gltf
+printf 'newmtl m\nKd 1 1 1\nd 5\nNs 5000\n' >numbers.mtl
+printf "mtllib numbers.mtl\n${tri}usemtl m\nf 1 2 3\n" >numbers.obj
+printf '[{"orbit": [0, 95, 1]}]' >elevation.views.json
+printf '[{"eye": [1e39, 0, 0], "target": [0, 0, 0]}]' >eye.views.json
+printf '[{"eye": [3, 3, 3], "target": [0, 0, 0], "fovy": 0}]' >fovy.views.json
+printf "${ply_head}element face 2\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n" >two.ply
+
 failures=0
 echo "| # | Input | Command | Exit | Message (stderr) | Output left |"
 echo "|---|---|---|---|---|---|"
@@ -114,7 +150,7 @@ row() {
     local what=$1
     shift
     n=$((n + 1))
-    rm -rf out.png out.jpg depth.txt ./*.tmp-* 2>/dev/null || true
+    rm -rf out.png out.jpg out.d depth.txt ./*.tmp-* 2>/dev/null || true
     local rc=0
     "$zraster" "$@" >stdout.txt 2>stderr.txt </dev/null || rc=$?
     local left
@@ -234,6 +270,49 @@ cells_row "cells file: a mesh file outside its folder" cells/outside.cells.json 
 cells_row "cells file naming another cells file" cells/nested.cells.json "meshes.floor" render cells/nested.cells.json -o out.png
 cells_row "--pvs file for another scene" two.pvs.json "sets" render building:2x2 --pvs two.pvs.json -o out.png
 cells_row "--pvs file with a cell index out of range" range.pvs.json "sets[0].visible" render cells/two.cells.json --pvs range.pvs.json -o out.png
+# Malformed files: causes in the user's terms, Assimp's text at most as a trailing detail.
+row "STL of 100 random bytes" render random.stl -o out.png
+row "ASCII STL facet of two vertices" render twovertex.stl -o out.png
+row "ASCII STL: 'solid' and nothing else" render emptysolid.stl -o out.png
+row "binary STL of 0 facets" render zerofacets.stl -o out.png
+row "glTF that is a JSON array" render array.gltf -o out.png
+row "glTF without an asset" render noasset.gltf -o out.png
+row "glTF of version 3.0" render version3.gltf -o out.png
+row "GLB of random bytes" render random.glb -o out.png
+row "GLB whose first chunk is not JSON" render binfirst.glb -o out.png
+row "GLB whose JSON chunk is not valid JSON" render badjson.glb -o out.png
+row "3DS of text" render text.3ds -o out.png
+row "3DS chunk declaring bytes past the end" render pastend.3ds -o out.png
+row "3DS chunk smaller than its header" render tinychunk.3ds -o out.png
+row "OBJ face of one corner (Assimp: a POINT)" render point.obj -o out.png
+row "PLY of random bytes" render random.ply -o out.png
+row "OFF of random bytes" render random.off -o out.png
+row "COLLADA of random bytes" render random.dae -o out.png
+# References that are not regular files: the cause, and the --allow-outside-references hint only
+# for files outside the model's folder.
+row "OBJ texture: a loop of symbolic links (a warning)" render model/loop-texture.obj --size 8x8 -o out.png
+rm -f out.png
+row "OBJ texture: a FIFO (a warning)" render model/fifo-texture.obj --size 8x8 -o out.png
+rm -f out.png
+row "OBJ material library: a FIFO (a warning)" render model/fifo-mtllib.obj --size 8x8 -o out.png
+rm -f out.png
+row "glTF buffer: a loop of symbolic links" render model/loop.gltf -o out.png
+row "glTF buffer: a FIFO, outside references allowed" --allow-outside-references render model/fifo.gltf -o out.png
+# Numbers out of range, in files and options.
+row "MTL opacity 5 and shininess 5000 (warnings)" render numbers.obj --size 8x8 -o out.png
+rm -f out.png
+row "views file: orbit elevation 95 degrees" batch tri.off --views-json elevation.views.json --size 8x8 -o out.d
+row "views file: eye at 1e39" batch tri.off --views-json eye.views.json --size 8x8 -o out.d
+row "views file: field of view 0" batch tri.off --views-json fovy.views.json --size 8x8 -o out.d
+row "orbit distance 10^30 scene radii" render builtin:cube --orbit 0,0,1e30 -o out.png
+row "field of view 10^-9 degrees" render builtin:cube --fovy 1e-9 -o out.png
+row "near plane 10^-30" render builtin:cube --near 1e-30 -o out.png
+row "up vector of 10^-40" render builtin:cube --up 1e-40,0,0 -o out.png
+row "clip plane of 10^31" render builtin:cube --clip-plane 1e31,0,0,0 -o out.png
+row "point light at 10^39" render builtin:cube --point-light 1e39,0,0 -o out.png
+row "focal length 10^12 pixels" render builtin:cube --intrinsics 1e12,1e12,4,4 --size 8x8 -o out.png
+row "PLY past --max-triangles (refused in the worker)" render two.ply --max-triangles 1 -o out.png
+row "glTF past --max-instances" render shared-nodes.gltf --max-instances 1000 -o out.png
 echo
 echo "$n inputs; $failures broke the contract (exit 2, one line, nothing left)."
 [ "$failures" -eq 0 ]

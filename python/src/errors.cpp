@@ -41,10 +41,23 @@ void bind_errors(py::module_& m) {
         "argument ('' when none applies) and e.cause the rest.";
     exception->attr("source") = "";
     exception->attr("cause") = "";
+    static auto* const limit_exceeded =
+        new py::exception<LimitExceeded>(m, "LimitExceeded", exception->ptr());
+    limit_exceeded->doc() =
+        "Bad input refused by a budget (a load() keyword such as max_instances or max_triangles, "
+        "a render limit): an InputError. e.limit names the budget, the keyword or LoadOptions "
+        "field that raises it.";
+    limit_exceeded->attr("limit") = "";
     // NOLINTNEXTLINE(performance-unnecessary-value-param): pybind11's translator signature
     py::register_exception_translator([](std::exception_ptr p) {
         try {
             if (p) std::rethrow_exception(p);
+        } catch (const LimitExceeded& e) {
+            py::object error = py::handle(limit_exceeded->ptr())(e.what());
+            error.attr("source") = e.file();
+            error.attr("cause") = e.cause();
+            error.attr("limit") = e.limit();
+            PyErr_SetObject(limit_exceeded->ptr(), error.ptr());
         } catch (const InputError& e) {
             py::object error = py::handle(exception->ptr())(e.what());
             error.attr("source") = e.file();

@@ -157,6 +157,44 @@ def test_bad_files():
         zraster.load(42)
 
 
+# Ten levels of two children each above a node placing one triangle: 1024 placements.
+SHARED_NODES_GLTF = (
+    '{"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[10]}],'
+    '"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],'
+    '"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3",'
+    '"min":[0,0,0],"max":[1,1,0]}],"bufferViews":[{"buffer":0,"byteLength":36}],'
+    '"buffers":[{"uri":"data:application/octet-stream;base64,'
+    'AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA","byteLength":36}],"nodes":['
+    + '{"mesh":0},'
+    + ",".join('{"children":[%d,%d]}' % (k, k) for k in range(10))
+    + "]}"
+)
+
+
+@pytest.mark.parametrize("isolation", ["worker", "in-process"])
+def test_load_budgets_raise_limit_exceeded(tmp_path, isolation):
+    assert issubclass(zraster.LimitExceeded, zraster.InputError)
+    path = tmp_path / "shared.gltf"
+    path.write_text(SHARED_NODES_GLTF)
+    with raises(zraster.LimitExceeded, "shared.gltf", "more than 1000 meshes") as info:
+        zraster.load(path, isolation=isolation, max_instances=1000)
+    assert info.value.limit == "max_instances"
+    assert info.value.source == str(path)
+    obj = tmp_path / "two.obj"
+    obj.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n")
+    with raises(zraster.LimitExceeded, "too many triangles (2, limit 1)") as info:
+        zraster.load(obj, isolation=isolation, max_triangles=1)
+    assert info.value.limit == "max_triangles"
+    ply = tmp_path / "two.ply"
+    ply.write_text("ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n"
+                   "property float y\nproperty float z\nelement face 2\n"
+                   "property list uchar int vertex_indices\nend_header\n"
+                   "0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 1 3 2\n")
+    with raises(zraster.LimitExceeded, "too many triangles (2, limit 1)") as info:
+        zraster.load(ply, isolation=isolation, max_triangles=1)
+    assert info.value.limit == "max_triangles"
+
+
 @pytest.fixture(scope="module")
 def cube():
     return zraster.load("builtin:cube")
@@ -182,7 +220,7 @@ def test_bad_outputs(cube):
     ({"light_dir": (0, 0, 0)}, zraster.InputError, ("light_dir", "non-zero")),
     ({"light_dir": (1, 2)}, zraster.InputError, ("light_dir", "X,Y,Z")),
     ({"eye": (np.nan, 0, 0)}, zraster.InputError, ("eye", "finite")),
-    ({"orbit": (0, 0, -1)}, zraster.InputError, ("orbit", "positive")),
+    ({"orbit": (0, 0, -1)}, zraster.InputError, ("orbit", "distance must be in (0, 1e6]")),
     ({"orbit": (0, 0, 2), "eye": (1, 1, 1)}, zraster.InputError, ("orbit", "eye")),
     ({"background": (0, 0, 300)}, zraster.InputError, ("background", "0..255")),
     ({"clip_plane": (0, 0, 0, 1)}, zraster.InputError, ("clip_plane", "zero")),

@@ -22,7 +22,7 @@ def test_every_render_flag_of_the_command_is_a_keyword():
     # The Renderer's arguments, and the command's file outputs and printing.
     not_keywords = {"help", "size", "threads", "max-pixels", "output", "depth-out",
                     "normal-out", "id-out", "stats", "load-in-process",
-                    "allow-outside-references", "max-instances", "version",
+                    "allow-outside-references", "max-instances", "max-triangles", "version",
                     # The depth camera's files and flags: the outputs argument, Camera.from_intrinsics
                     # and the sensor are the module's own ways to them.
                     "z-out", "range-out", "points-out", "camera-json", "intrinsics",

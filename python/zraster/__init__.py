@@ -24,6 +24,7 @@ from ._zraster import (
     RENDER_OPTIONS,
     Camera,
     InputError,
+    LimitExceeded,
     LoadWarning,
     Material,
     Mesh,
@@ -38,6 +39,7 @@ from ._zraster import (
 __all__ = [
     "Camera",
     "InputError",
+    "LimitExceeded",
     "LoadWarning",
     "Material",
     "Mesh",

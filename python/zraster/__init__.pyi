@@ -19,6 +19,9 @@ class InputError(ValueError):
     source: str
     cause: str
 
+class LimitExceeded(InputError):
+    limit: str
+
 class LoadWarning(UserWarning): ...
 
 AlphaMode = Literal["opaque", "mask", "blend"]

@@ -130,8 +130,12 @@ Material convert_material(const aiMaterial& material, const std::string& fallbac
         if (finite(s)) out.specular = glm::max(s, glm::vec3(0.0f));
     }
     // Zero means "not given" for OBJ (Ns 0 with Ks 0) and glTF, where Assimp stores 0.
-    if (auto shininess = get_float(material, AI_MATKEY_SHININESS); shininess && *shininess > 0.0f)
+    if (auto shininess = get_float(material, AI_MATKEY_SHININESS); shininess && *shininess > 0.0f) {
         out.shininess = std::clamp(*shininess, 1.0f, 1024.0f);
+        if (*shininess > 1024.0f)
+            warnings.push_back("material '" + out.name + "': shininess " + number(*shininess) +
+                               " is past 1024, using 1024");
+    }
 
     if (auto mode = get_string(material, AI_MATKEY_GLTF_ALPHAMODE)) {
         convert_gltf_alpha(material, *mode, out, warnings);
@@ -140,9 +144,12 @@ Material convert_material(const aiMaterial& material, const std::string& fallbac
     // Every other format: Assimp's opacity (MTL d or 1 - Tr, FBX Opacity, 3DS transparency...),
     // else the diffuse color's alpha, blended (alpha 1 everywhere draws opaque).
     out.alpha_mode = AlphaMode::Blend;
-    if (auto opacity = get_float(material, AI_MATKEY_OPACITY))
+    if (auto opacity = get_float(material, AI_MATKEY_OPACITY)) {
         out.opacity = std::clamp(*opacity, 0.0f, 1.0f);
-    else if (base && std::isfinite(base->a))
+        if (out.opacity != *opacity)
+            warnings.push_back("material '" + out.name + "': opacity " + number(*opacity) +
+                               " is outside 0..1, using " + number(out.opacity));
+    } else if (base && std::isfinite(base->a))
         out.opacity = std::clamp(base->a, 0.0f, 1.0f);
     return out;
 }

@@ -28,10 +28,9 @@ std::vector<NodeMesh> collect_node_meshes(const aiScene& scene, std::size_t max_
         stack.pop_back();
         const glm::mat4 transform = parent * to_glm(node->mTransformation);
         if (node->mNumMeshes > max_instances - out.size())
-            throw InputError(file, "the node hierarchy places more than " +
-                                       std::to_string(max_instances) +
-                                       " meshes; the limit is LoadOptions::max_instances "
-                                       "(--max-instances)");
+            throw LimitExceeded(file, "max_instances",
+                                "the node hierarchy places more than " +
+                                    std::to_string(max_instances) + " meshes (max_instances)");
         for (unsigned i = 0; i < node->mNumMeshes; ++i)
             out.push_back({node->mMeshes[i], transform, node->mName.C_Str()});
         for (unsigned c = node->mNumChildren; c-- > 0;)

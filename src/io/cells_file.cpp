@@ -64,6 +64,10 @@ class CellsReader {
     [[noreturn]] void fail(const std::string& where, const std::string& cause) const {
         throw InputError(file_, where.empty() ? cause : where + ": " + cause);
     }
+    // A refusal by LoadOptions::max_instances, the budget's name kept for the front end.
+    [[noreturn]] void over_limit(const std::string& where, const std::string& cause) const {
+        throw LimitExceeded(file_, "max_instances", where + ": " + cause);
+    }
 
     const json& member(const json& object, const char* key, const std::string& where,
                        json::value_t type) const {
@@ -116,7 +120,7 @@ class CellsReader {
             if (check.verdict == ReferencePolicy::Verdict::Missing)
                 fail(at, "mesh file '" + file.string() + "' not found");
             if (check.verdict == ReferencePolicy::Verdict::Refused)
-                fail(at, check.reason + ": refused (" + ReferencePolicy::how_to_allow() + ")");
+                fail(at, check.reason + ": refused" + check.advice());
             if (is_cells_file(file)) fail(at, "a cells file cannot place another cells file");
             LoadedScene& loaded = meshes_[name];
             loaded.scene = load_scene(file, options_, &loaded.warnings);
@@ -156,9 +160,9 @@ class CellsReader {
     // Each instance places every instance of its mesh file (materials and meshes appended).
     void read_instances(const json& instances) {
         if (instances.size() > options_.max_instances)
-            fail("instances", std::to_string(instances.size()) +
-                                  " instances, more than the limit of " +
-                                  std::to_string(options_.max_instances));
+            over_limit("instances", std::to_string(instances.size()) +
+                                        " instances, more than max_instances " +
+                                        std::to_string(options_.max_instances));
         std::map<std::string, std::uint32_t> mesh_base;
         for (std::size_t k = 0; k < instances.size(); ++k) {
             const std::string at = "instances[" + std::to_string(k) + "]";
@@ -186,8 +190,9 @@ class CellsReader {
                 placed_by_.push_back(k);
             }
             if (scene_.instances.size() > options_.max_instances)
-                fail(at, "the scene places more than " + std::to_string(options_.max_instances) +
-                             " instances");
+                over_limit(at, "the scene places more than " +
+                                   std::to_string(options_.max_instances) +
+                                   " instances (max_instances)");
             instance_ranges_[name] = {first, std::uint32_t(scene_.instances.size())};
         }
     }

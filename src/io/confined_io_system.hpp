@@ -11,10 +11,18 @@
 
 namespace zraster::io {
 
+// Separates a refusal's cause from its advice in ConfinedIOSystem's lines (refusal_text()).
+inline constexpr char kAdviceMark = '\x01';
+
+// "'path' CAUSE: VERB (ADVICE)" from a line ConfinedIOSystem collected: the advice only for a
+// file outside the model's folder (ReferencePolicy::Check::advice()).
+std::string refusal_text(const std::string& line, const std::string& verb);
+
 class ConfinedIOSystem : public Assimp::DefaultIOSystem {
   public:
-    // `refusals` collects one line per refused file ("'path' is outside ..."); it must outlive
-    // the importer that owns this IOSystem.
+    // `refusals` collects one line per refused file ("'path' is outside ..." with the advice
+    // after kAdviceMark: read them with refusal_text()); it must outlive the importer that owns
+    // this IOSystem.
     ConfinedIOSystem(ReferencePolicy policy, std::vector<std::string>& refusals)
         : policy_(std::move(policy)), refusals_(refusals) {}
 

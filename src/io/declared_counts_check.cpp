@@ -168,7 +168,7 @@ void check_glb(const std::filesystem::path& path, std::uintmax_t file_size,
             length |= std::uint64_t{static_cast<std::uint8_t>(header[b])} << (8 * b);
         if (length > file_size - at - 8)
             throw InputError(path.string(),
-                             "unsupported or malformed file: GLB chunk " + std::to_string(chunk) +
+                             "truncated or malformed GLB file: GLB chunk " + std::to_string(chunk) +
                                  " declares " + std::to_string(length) + " bytes, more than the " +
                                  std::to_string(file_size - at - 8) + " left in the file");
         if (chunk == 0 && std::string_view(header + 4, 4) == "JSON") {
@@ -180,10 +180,10 @@ void check_glb(const std::filesystem::path& path, std::uintmax_t file_size,
         at += 8 + length;
     }
     if (declared_size > file_size)
-        throw InputError(path.string(), "unsupported or malformed file: the GLB header declares " +
-                                            std::to_string(declared_size) +
-                                            " bytes, the file holds " + std::to_string(file_size) +
-                                            " (truncated?)");
+        throw InputError(path.string(),
+                         "truncated or malformed GLB file: the GLB header declares " +
+                             std::to_string(declared_size) + " bytes, the file holds " +
+                             std::to_string(file_size) + " (truncated?)");
     check_gltf_bounds(path, json, binary, options);
 }
 
@@ -337,7 +337,7 @@ class OffHeaderReader {
             for (; q < line_end && *q >= '0' && *q <= '9'; ++q)
                 n = std::min<std::uint64_t>(n * 10 + std::uint64_t(*q - '0'), 1000);
             if (n == 0 || n > 9)
-                throw InputError(path.string(), "unsupported or malformed file: OFF face record " +
+                throw InputError(path.string(), "malformed OFF file: OFF face record " +
                                                     std::to_string(f) + " has " +
                                                     std::to_string(n) +
                                                     " vertex indices (1 to 9 are supported)");

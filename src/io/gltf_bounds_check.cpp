@@ -89,7 +89,7 @@ class Checker {
 
   private:
     [[noreturn]] void refuse(const std::string& what) const {
-        throw InputError(path_.string(), "unsupported or malformed file: glTF " + what);
+        throw InputError(path_.string(), "malformed glTF file: glTF " + what);
     }
 
     const json& array(const char* key) const {
@@ -263,10 +263,9 @@ class Checker {
                         total = std::min(limit + 1, total + placed[r.get<std::size_t>()]);
         }
         if (total > limit)
-            throw InputError(path_.string(),
-                             "the node graph places more than " + std::to_string(limit) +
-                                 " meshes (nodes sharing children multiply); the limit is "
-                                 "LoadOptions::max_instances (--max-instances)");
+            throw LimitExceeded(path_.string(), "max_instances",
+                                "the node graph places more than " + std::to_string(limit) +
+                                    " meshes (max_instances; nodes sharing children multiply)");
     }
 
     const std::filesystem::path& path_;

@@ -14,7 +14,7 @@ namespace zraster::io {
 
 // `json` is the glTF document (a .gltf file, or a GLB's JSON chunk); `glb_binary` the length of
 // a GLB's BIN chunk, if any. Buffers with a uri are sized from their data: URI or from the file
-// beside `path`. Throws InputError("unsupported or malformed file: ...") for a buffer view
+// beside `path`. Throws InputError("malformed glTF file: ...") for a buffer view
 // outside its buffer, an accessor (sparse parts included) outside its buffer view, or a buffer
 // declaring more bytes than its data holds, and for a node graph that places more than
 // options.max_instances meshes (nodes sharing children multiply: a small file can describe

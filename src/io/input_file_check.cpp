@@ -8,7 +8,8 @@
 
 namespace zraster::io {
 
-std::uintmax_t check_input_file(const std::filesystem::path& path, std::uintmax_t max_bytes) {
+std::uintmax_t check_input_file(const std::filesystem::path& path, std::uintmax_t max_bytes,
+                                const char* limit) {
     const std::string name = path.string();
     std::error_code ec;
     const auto status = std::filesystem::status(path, ec);
@@ -17,9 +18,12 @@ std::uintmax_t check_input_file(const std::filesystem::path& path, std::uintmax_
     const std::uintmax_t size = std::filesystem::file_size(path, ec);
     if (ec) throw InputError(name, "cannot read: " + ec.message());
     if (size == 0) throw InputError(name, "empty file");
-    if (size > max_bytes)
-        throw InputError(name, "file too large (" + std::to_string(size) + " bytes, limit " +
-                                   std::to_string(max_bytes) + ")");
+    if (size > max_bytes) {
+        const std::string cause = "file too large (" + std::to_string(size) + " bytes, limit " +
+                                  std::to_string(max_bytes) + ")";
+        if (limit != nullptr) throw LimitExceeded(name, limit, cause);
+        throw InputError(name, cause);
+    }
     // Assimp only says it cannot open the file; find out why first.
     std::ifstream probe(path, std::ios::binary);
     if (!probe) throw InputError(name, "cannot read: " + std::generic_category().message(errno));

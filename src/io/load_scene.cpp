@@ -3,6 +3,7 @@
 #include <zraster/error.hpp>
 #include <zraster/load.hpp>
 
+#include "io/assimp_errors.hpp"
 #include "io/assimp_material.hpp"
 #include "io/assimp_mesh.hpp"
 #include "io/assimp_nodes.hpp"
@@ -10,6 +11,7 @@
 #include "io/cells_file.hpp"
 #include "io/confined_io_system.hpp"
 #include "io/declared_counts_check.hpp"
+#include "io/format_structure_check.hpp"
 #include "io/input_file_check.hpp"
 #include "io/load_worker.hpp"
 #include "io/mtl_dissolve.hpp"
@@ -144,12 +146,13 @@ io::LoadedScene load_any(const std::filesystem::path& path, const LoadOptions& o
     const io::ObjFallback& fallback = std::get<io::ObjFallback>(fast);
     try {
         return io::load_scene_with_assimp(path, options);
+    } catch (const LimitExceeded&) {
+        throw;
     } catch (const InputError& e) {
-        const std::string_view malformed = "unsupported or malformed file: ";
-        if (fallback.line == 0 || !e.cause().starts_with(malformed)) throw;
+        const std::optional<std::string> detail = io::assimp_detail(e.cause());
+        if (fallback.line == 0 || !detail) throw;
         throw InputError(e.file(), "malformed OBJ file: line " + std::to_string(fallback.line) +
-                                       ": " + fallback.reason +
-                                       " (Assimp: " + e.cause().substr(malformed.size()) + ")");
+                                       ": " + fallback.reason + " (Assimp: " + *detail + ")");
     }
 }
 
@@ -173,6 +176,7 @@ std::uintmax_t io::precheck_assimp_input(const std::filesystem::path& path,
                                          const LoadOptions& options) {
     const std::uintmax_t size = io::check_input_file(path, options.max_file_bytes);
     io::check_declared_counts(path, size, options);
+    io::check_format_structure(path, size);
     return size;
 }
 
@@ -188,16 +192,16 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
     // Points and lines are not drawn: drop them while sorting primitives by type.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    // Assimp's own words only as a detail after ours (assimp_errors.hpp).
     auto malformed = [&](const std::string& why) {
-        return InputError(file, "unsupported or malformed file: " + io::one_line(why));
+        return InputError(file, io::assimp_error_cause(path, io::one_line(why)));
     };
     const aiScene* ai = nullptr;
     io::AssimpWarnings assimp_warnings;
     try {
         ai = importer.ReadFile(file, 0);
         if (ai == nullptr && !refusals.empty())
-            throw InputError(
-                file, refusals.front() + ": refused (" + io::ReferencePolicy::how_to_allow() + ")");
+            throw InputError(file, io::refusal_text(refusals.front(), "refused"));
         if (ai == nullptr) throw malformed(importer.GetErrorString());
         // Checked before post-processing, which rejects faceless meshes as "invalid".
         if (count_polygons(*ai) == 0) throw InputError(file, "no triangles");
@@ -218,7 +222,9 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
     std::size_t triangles = 0;
     std::vector<bool> referenced(ai->mNumMeshes, false);
     for (const io::NodeMesh& p : placements) {
-        if (p.mesh >= ai->mNumMeshes) throw malformed("node refers to a missing mesh");
+        if (p.mesh >= ai->mNumMeshes)
+            throw InputError(file, "malformed file: a node places mesh " + std::to_string(p.mesh) +
+                                       ", the file has " + std::to_string(ai->mNumMeshes));
         const aiMesh& mesh = *ai->mMeshes[p.mesh];
         if (!(mesh.mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
         triangles += mesh.mNumFaces;
@@ -226,8 +232,9 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
     }
     if (triangles == 0) throw InputError(file, "no triangles");
     if (triangles > options.max_triangles)
-        throw InputError(file, "too many triangles (" + std::to_string(triangles) + ", limit " +
-                                   std::to_string(options.max_triangles) + ")");
+        throw LimitExceeded(file, "max_triangles",
+                            "too many triangles (" + std::to_string(triangles) + ", limit " +
+                                std::to_string(options.max_triangles) + ")");
 
     LoadedScene loaded;
     Scene& scene = loaded.scene;
@@ -236,8 +243,7 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
     // (An OBJ's refused material libraries are warned about by the library scan instead.)
     if (!is_obj(path))
         for (const std::string& refusal : refusals)
-            warnings.push_back(refusal + ": not read (" + io::ReferencePolicy::how_to_allow() +
-                               ")");
+            warnings.push_back(io::refusal_text(refusal, "not read"));
     for (std::string& warning : assimp_warnings.take()) warnings.push_back(std::move(warning));
     MaterialTable materials(*ai, path, policy, options, scene, warnings);
     std::vector<unsigned> our_mesh(ai->mNumMeshes, kUnset);

@@ -123,6 +123,8 @@ void set_limit(int resource, std::uintmax_t value) {
     std::string message;
     try {
         message = encode_scene_message(import_with_assimp(path, options, true));
+    } catch (const LimitExceeded& e) {
+        message = encode_limit_message(e.limit(), e.cause());
     } catch (const InputError& e) {
         message = encode_error_message(WorkerMessageKind::InputError, e.cause());
     } catch (const std::bad_alloc&) {

@@ -31,10 +31,10 @@ MaterialLibraryChoice resolve_material_library(const std::filesystem::path& obj_
     const std::filesystem::path named = obj_path.parent_path() / library;
     const ReferencePolicy::Check check = policy.check(named);
     if (check.verdict == ReferencePolicy::Verdict::Readable) return {named, false, {}};
-    const std::string cause = check.verdict == ReferencePolicy::Verdict::Refused
-                                  ? "not read: " + named.string() + " " + check.reason + " (" +
-                                        ReferencePolicy::how_to_allow() + ")"
-                                  : "not found";
+    const std::string cause =
+        check.verdict == ReferencePolicy::Verdict::Refused
+            ? "not read: " + named.string() + " " + check.reason + check.advice()
+            : "not found";
     std::filesystem::path substitute = obj_path;
     substitute.replace_extension(".mtl");
     if (policy.check(substitute).verdict == ReferencePolicy::Verdict::Readable)

@@ -156,8 +156,9 @@ void check_triangle_count(std::size_t triangles, const std::string& file,
                           const LoadOptions& options) {
     if (triangles == 0) throw InputError(file, "no triangles");
     if (triangles > options.max_triangles)
-        throw InputError(file, "too many triangles (" + std::to_string(triangles) + ", limit " +
-                                   std::to_string(options.max_triangles) + ")");
+        throw LimitExceeded(file, "max_triangles",
+                            "too many triangles (" + std::to_string(triangles) + ", limit " +
+                                std::to_string(options.max_triangles) + ")");
 }
 
 // The first mesh with a non-finite position, as convert_mesh reports it, and the line of its `v`.

@@ -38,7 +38,8 @@ std::vector<std::vector<std::uint32_t>> load_pvs(const std::filesystem::path& pa
     const auto fail = [&](const std::string& where, const std::string& cause) {
         return InputError(file, where + ": " + cause);
     };
-    io::check_input_file(path, std::size_t{1} << 30);
+    io::check_input_file(path, std::size_t{1} << 30, nullptr);  // a fixed limit, not LoadOptions'
+
     const std::vector<std::uint8_t> bytes = io::read_file_bytes(path);
     json document;
     try {

@@ -1,7 +1,10 @@
 #include "io/reference_policy.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <system_error>
+
+#include <unistd.h>
 
 namespace zraster::io {
 
@@ -31,15 +34,24 @@ ReferencePolicy::Check ReferencePolicy::check(const std::filesystem::path& file)
         const auto [end, _] =
             std::mismatch(root_.begin(), root_.end(), resolved.begin(), resolved.end());
         if (end != root_.end())
-            return {Verdict::Refused, "is outside the model's folder (" + resolved.string() +
-                                          " is not under " + root_.string() + ")"};
+            return {Verdict::Refused,
+                    "is outside the model's folder (" + resolved.string() + " is not under " +
+                        root_.string() + ")",
+                    true};
     }
     const std::filesystem::file_status status = std::filesystem::status(resolved, ec);
     if (ec) return {Verdict::Missing, {}};
     if (std::filesystem::is_directory(status)) return {Verdict::Refused, "is a directory"};
     if (!std::filesystem::is_regular_file(status))
         return {Verdict::Refused, "is not a regular file (a FIFO, socket or device)"};
+    if (::access(resolved.c_str(), R_OK) != 0)
+        return {Verdict::Refused,
+                "cannot be read (" + std::generic_category().message(errno) + ")"};
     return {Verdict::Readable, {}};
+}
+
+std::string ReferencePolicy::Check::advice() const {
+    return outside ? std::string(" (") + how_to_allow() + ")" : std::string();
 }
 
 const char* ReferencePolicy::how_to_allow() {

@@ -15,6 +15,13 @@ class ReferencePolicy {
     struct Check {
         Verdict verdict = Verdict::Missing;
         std::string reason;  // for Refused: why, in the user's words
+        // Refused only because it lies outside the model's folder: the one refusal
+        // allow_outside_references lifts, so the one whose message names it (advice()).
+        bool outside = false;
+
+        // " (--allow-outside-references ...)" for a refusal for being outside the folder, else
+        // "": a loop of links, a FIFO or a file without read permission stays refused with it.
+        std::string advice() const;
     };
 
     // Allows every regular file (for callers with no model).
@@ -22,8 +29,9 @@ class ReferencePolicy {
     ReferencePolicy(const std::filesystem::path& model_path, bool allow_outside);
 
     // Whether `file` (as an importer would open it: relative to the working directory) may be
-    // read. Missing: it does not exist (or is a dangling link); Refused: it exists but is not a
-    // regular file, or lies outside the model's folder.
+    // read. Missing: it does not exist (or is a dangling link); Refused: it exists but is a
+    // loop of symbolic links, a directory, not a regular file, not readable (permission), or
+    // lies outside the model's folder.
     Check check(const std::filesystem::path& file) const;
 
     // The advice appended to a refusal's message.

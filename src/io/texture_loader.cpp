@@ -200,7 +200,7 @@ std::shared_ptr<const Texture> TextureLoader::load_external(const std::string& r
     }
 
     std::filesystem::path found;
-    std::string refused;  // the first candidate the policy refused, with the reason
+    std::string refused;  // the first candidate the policy refused, with the reason and advice
     for (const auto& c : candidates) {
         const ReferencePolicy::Check check = policy_.check(c);
         if (check.verdict == ReferencePolicy::Verdict::Readable) {
@@ -208,7 +208,8 @@ std::shared_ptr<const Texture> TextureLoader::load_external(const std::string& r
             break;
         }
         if (check.verdict == ReferencePolicy::Verdict::Refused && refused.empty())
-            refused = c.string() + " " + check.reason;
+            refused =
+                c.string() + " " + check.reason + ", using the material color" + check.advice();
     }
     std::error_code ec;
     const std::string key = found.empty() ? "missing:" + reference
@@ -217,8 +218,7 @@ std::shared_ptr<const Texture> TextureLoader::load_external(const std::string& r
 
     std::shared_ptr<const Texture> result;
     if (found.empty() && !refused.empty()) {
-        warnings_.push_back("texture '" + reference + "' not read: " + refused +
-                            ", using the material color (" + ReferencePolicy::how_to_allow() + ")");
+        warnings_.push_back("texture '" + reference + "' not read: " + refused);
     } else if (found.empty()) {
         warnings_.push_back("texture '" + reference + "' not found, using the material color");
     } else {

@@ -133,6 +133,14 @@ void check(bool ok, const std::string& what) {
     if (!ok) throw Malformed{what};
 }
 
+// A field name as LimitExceeded::limit() gives it: what a front end looks up to name its flag.
+bool valid_limit_name(const std::string& name) {
+    if (name.empty() || name.size() > 64) return false;
+    for (const char c : name)
+        if (!((c >= 'a' && c <= 'z') || c == '_')) return false;
+    return true;
+}
+
 LoadedScene decode_scene(Reader& in, const LoadOptions& options) {
     LoadedScene loaded;
     Scene& scene = loaded.scene;
@@ -315,6 +323,13 @@ std::string encode_error_message(WorkerMessageKind kind, const std::string& text
     return out.finish(kind);
 }
 
+std::string encode_limit_message(const std::string& limit, const std::string& cause) {
+    Writer out;
+    out.put_string(limit);
+    out.put_string(cause);
+    return out.finish(WorkerMessageKind::LimitExceeded);
+}
+
 std::uint64_t worker_payload_bytes(std::span<const std::uint8_t> header, const std::string& file) {
     const auto invalid = [&](const std::string& why) {
         return InputError(file, "the importer process sent an invalid result: " + why);
@@ -327,7 +342,7 @@ std::uint64_t worker_payload_bytes(std::span<const std::uint8_t> header, const s
         throw invalid("format version " + std::to_string(version) + ", expected " +
                       std::to_string(kWorkerMessageVersion));
     const auto kind = in.get<std::uint32_t>();
-    if (kind < 1 || kind > 4) throw invalid("unknown message kind " + std::to_string(kind));
+    if (kind < 1 || kind > 5) throw invalid("unknown message kind " + std::to_string(kind));
     if (in.get<std::uint32_t>() != 0) throw invalid("reserved header field not 0");
     return in.get<std::uint64_t>();
 }
@@ -354,6 +369,14 @@ LoadedScene decode_worker_message(std::span<const std::uint8_t> message, const s
                 check(in.remaining() == 0, "bytes after the error message");
                 if (cause.empty()) cause = "(no cause given)";
                 throw InputError(file, cause);
+            }
+            case WorkerMessageKind::LimitExceeded: {
+                const std::string limit = in.get_string("the limit's name");
+                std::string cause = in.get_string("the error message");
+                check(in.remaining() == 0, "bytes after the error message");
+                check(valid_limit_name(limit), "a limit name that is not a LoadOptions field");
+                if (cause.empty()) cause = "(no cause given)";
+                throw LimitExceeded(file, limit, cause);
             }
             case WorkerMessageKind::InternalError: {
                 const std::string what = in.get_string("the error message");

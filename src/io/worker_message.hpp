@@ -6,7 +6,8 @@
 // exist) before returning.
 //
 // Version 2 added the materials' alpha (alpha_mode, alpha_cutoff, the opacity texture); version 3
-// their double_sided flag.
+// their double_sided flag; version 4 the limit-exceeded kind (a LoadOptions budget's refusal
+// keeps the budget's name).
 //
 // Layout, all integers and floats little-endian (the host's; parent and child are the same
 // binary), no padding:
@@ -27,6 +28,7 @@
 //   kind 2   input error: string cause (the file is the parent's)
 //   kind 3   internal error: string what
 //   kind 4   out of memory (empty payload)
+//   kind 5   limit exceeded: string limit (a LoadOptions field: 1 to 64 of [a-z_]) | string cause
 //   string   u32 length (at most kMaxWorkerString) | bytes
 #pragma once
 #include <zraster/load.hpp>
@@ -41,7 +43,7 @@
 
 namespace zraster::io {
 
-inline constexpr std::uint32_t kWorkerMessageVersion = 3;
+inline constexpr std::uint32_t kWorkerMessageVersion = 4;
 inline constexpr std::size_t kWorkerHeaderBytes = 24;
 inline constexpr std::size_t kMaxWorkerString = 65536;
 inline constexpr int kMaxWorkerTextureSide = 16384;
@@ -51,17 +53,21 @@ enum class WorkerMessageKind : std::uint32_t {
     InputError = 2,
     InternalError = 3,
     OutOfMemory = 4,
+    LimitExceeded = 5,
 };
 
 // The child's side. Strings longer than kMaxWorkerString are cut (names and warnings only).
 std::string encode_scene_message(const LoadedScene& loaded);
 std::string encode_error_message(WorkerMessageKind kind, const std::string& text);
+// A LoadOptions budget's refusal (LimitExceeded): its limit() and cause().
+std::string encode_limit_message(const std::string& limit, const std::string& cause);
 
 // The payload length a header announces, or throws InputError(file, ...) if the header is not a
 // header of kWorkerMessageVersion (the parent reads the header first to bound what it accepts).
 std::uint64_t worker_payload_bytes(std::span<const std::uint8_t> header, const std::string& file);
 
-// The parent's side: the scene, or throws InputError(file, cause) for an error message, a
+// The parent's side: the scene, or throws InputError(file, cause) for an error message
+// (LimitExceeded(file, limit, cause) for a limit-exceeded message), a
 // malformed message ("the importer process sent an invalid result: ...") or an out-of-memory
 // message; std::runtime_error for an internal error of the child. Mesh bounds are recomputed.
 LoadedScene decode_worker_message(std::span<const std::uint8_t> message, const std::string& file,

@@ -352,7 +352,8 @@ void check_camera(const Camera& c, int width, int height) {
         (!c.pinhole && !std::isfinite(c.fovy_degrees)))
         throw InputError("", "camera parameters must be finite");
     if (!(c.near > 0.0) || (!c.infinite_far && !(c.far > c.near)))
-        throw InputError("", "camera needs 0 < near < far");
+        throw InputError("", "camera needs 0 < near < far, not near " + number(c.near) + ", far " +
+                                 number(c.far));
     if (c.pinhole) {
         const Intrinsics& k = c.pinhole->intrinsics;
         check_lens(k);

@@ -101,6 +101,67 @@ TEST(CliLimits, NumbersOutOfRange) {
                    "zraster: --clip-plane: the normal A,B,C of '0,0,0,-1' is zero");
 }
 
+// Every camera and lighting number has a range (docs/limits.md), the same for the flags and for
+// the cameras of a --views-json file, whose messages name the file, camera and field.
+TEST(CliLimits, CameraNumbersHaveRanges) {
+    const auto dir = temp_dir("cli-limits-ranges");
+    const std::pair<const char*, const char*> cases[] = {
+        {"--orbit 0,0,1e30", "--orbit: distance must be in (0, 1e6] scene radii, not 1e+30"},
+        {"--orbit 0,95,1", "--orbit: elevation must be in -90..90 degrees, not 95"},
+        {"--orbit 1e7,0,1", "--orbit: azimuth must be in -1e6..1e6 degrees, not 10000000"},
+        {"--fovy 1e-9", "--fovy: must be in 0.001..179.999 degrees, not 1e-09"},
+        {"--near 1e-30", "--near: must be in 1e-20..1e30 scene units, not 1e-30"},
+        {"--far 1e38", "--far: must be in 1e-20..1e30 scene units, not 1e+38"},
+        {"--near 5 --far 1", "--near: 5 is not below --far 1: the view needs near < far"},
+        {"--ortho --ortho-height 1e31",
+         "--ortho-height: must be in 1e-20..1e30 scene units, not 1e+31"},
+        {"--up 1e-40,0,0", "--up: the direction is zero (or shorter than 1e-30)"},
+        {"--up 1e31,0,0", "--up: 1e+31 is beyond the +-1e30 a direction may use"},
+        {"--light-dir 1e300,0,0", "--light-dir: 1e+300 is beyond the +-1e30 a direction may use"},
+        {"--point-light 1e39,0,0",
+         "--point-light: 1e+39 is beyond the +-1e32 a camera or light may use"},
+        {"--clip-plane 1e-40,0,0,0",
+         "--clip-plane: the normal A,B,C of '1e-40,0,0,0' is zero: the plane keeps "
+         "everything or nothing"},
+        {"--clip-plane 1e31,0,0,0", "--clip-plane: 1e+31 is beyond the +-1e30 a direction may use"},
+        {"--clip-plane 1,0,0,1e31", "--clip-plane: D = 1e+31 is beyond the +-1e30 a plane may use"},
+        {"--intrinsics 1e12,1e12,4,4 --size 8x8",
+         "--intrinsics: fx must be in 0.001..1e9 pixels, not 1000000000000"},
+        {"--intrinsics 100,100,1e10,4 --size 8x8",
+         "--intrinsics: cx must be within +-1e9 pixels, not 10000000000"},
+    };
+    for (const auto& [flags, message] : cases)
+        expect_refused(dir, std::string("render builtin:cube -o out.png ") + flags,
+                       std::string("zraster: ") + message + "\n");
+    write(dir / "tri.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    const std::pair<const char*, const char*> views[] = {
+        {R"([{"orbit": [0, 95, 1]}])",
+         "camera 0: \"orbit\": elevation must be in -90..90 degrees, not 95"},
+        {R"([{"eye": [1e39, 0, 0], "target": [0, 0, 0]}])",
+         "camera 0: \"eye\": 1e+39 is beyond the +-1e32 a camera or light may use"},
+        {R"([{"eye": [3, 3, 3], "target": [0, 0, 0], "fovy": 0}])",
+         "camera 0: \"fovy\": must be in 0.001..179.999 degrees, not 0"},
+        {R"([{"eye": [3, 3, 3], "target": [0, 0, 0], "up": [0, 0, 0]}])",
+         "camera 0: \"up\": the direction is zero (or shorter than 1e-30)"},
+        {R"([{"eye": [3, 3, 3], "target": [0, 0, 0], "near": 2, "far": 1}])",
+         "camera 0: \"near\": must be below \"far\""},
+    };
+    for (const auto& [json, message] : views) {
+        write(dir / "views.json", json);
+        const CommandResult r =
+            run_limited("batch tri.off --views-json views.json --size 8x8 -o out.batch", dir);
+        EXPECT_EQ(r.exit_code, 2) << r.output;
+        EXPECT_EQ(r.output, std::string("zraster: views.json: ") + message + "\n");
+        EXPECT_FALSE(std::filesystem::exists(dir / "out.batch"));
+    }
+    // In range, they render.
+    const CommandResult ok = run_limited(
+        "render builtin:cube --size 8x8 -o out.png --orbit 1e6,90,1e6 --fovy 0.001 --near 1e-20 "
+        "--far 1e30 --up 1e30,0,0 --light-dir 0,1e30,0 --point-light 1e32,0,0",
+        dir);
+    EXPECT_EQ(ok.exit_code, 0) << ok.output;
+}
+
 TEST(CliLimits, FilesClaimingTwoToTheFortyFaces) {
     const auto dir = temp_dir("cli-limits-faces");
     write(dir / "huge.ply",
@@ -138,6 +199,43 @@ TEST(CliLimits, FilesClaimingTwoToTheFortyFaces) {
 // The object-space algorithms' budgets: random triangles as big as the scene, which split
 // without end, are refused by the default BSP budget; every budget names its option, and the
 // svg command has them too.
+// The loader's budgets (LoadOptions) end in the flag that raises them, whether the file was
+// refused in the command's process or in the importer's worker process.
+TEST(CliLimits, LoaderBudgetsNameTheirFlags) {
+    const auto dir = temp_dir("cli-limits-loader");
+    std::string nodes = R"({"mesh":0})";
+    for (int level = 1; level <= 3; ++level)
+        nodes += R"(,{"children":[)" + std::to_string(level - 1) + "," + std::to_string(level - 1) +
+                 "]}";
+    write(dir / "shared.gltf",
+          R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[3]}],"nodes":[)" + nodes +
+              R"(],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],)"
+              R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3",)"
+              R"("min":[0,0,0],"max":[1,1,0]}],"bufferViews":[{"buffer":0,"byteLength":36}],)"
+              R"("buffers":[{"uri":"data:application/octet-stream;base64,)"
+              R"(AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA","byteLength":36}]})");
+    write(dir / "two.ply",
+          "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+          "property float z\nelement face 2\nproperty list uchar int vertex_indices\n"
+          "end_header\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 1 3 2\n");
+    for (const std::string isolation : {"", "--load-in-process "}) {
+        expect_refused(dir, isolation + "render shared.gltf --max-instances 7 -o out.png",
+                       "zraster: shared.gltf: the node graph places more than 7 meshes "
+                       "(max_instances; nodes sharing children multiply); raise it with "
+                       "--max-instances N\n");
+        expect_refused(dir, isolation + "render two.ply --max-triangles 1 -o out.png",
+                       "zraster: two.ply: too many triangles (2, limit 1); raise it with "
+                       "--max-triangles N\n");
+        expect_refused(dir, isolation + "info two.ply --max-triangles 1",
+                       "zraster: two.ply: too many triangles (2, limit 1); raise it with "
+                       "--max-triangles N\n");
+    }
+    // Within the budgets the same files load.
+    const CommandResult r =
+        run_limited("render shared.gltf --max-instances 8 --size 8x8 -o out.png", dir);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+}
+
 TEST(CliLimits, VisibilityAlgorithmBudgets) {
     const auto dir = temp_dir("cli-limits-budgets");
     std::string ply =

@@ -70,4 +70,19 @@ void expect_input_error(Action&& action, const std::filesystem::path& file,
     }
 }
 
+// As expect_input_error, for a LimitExceeded whose limit() is `limit`.
+template <typename Action>
+void expect_limit_exceeded(Action&& action, const std::filesystem::path& file,
+                           std::string_view limit, std::string_view cause) {
+    try {
+        action();
+        ADD_FAILURE() << "no LimitExceeded for " << file << " (expected '" << cause << "')";
+    } catch (const LimitExceeded& e) {
+        EXPECT_EQ(e.limit(), limit);
+        expect_input_error([&] { throw e; }, file, cause);
+    } catch (const InputError& e) {
+        ADD_FAILURE() << "an InputError, not a LimitExceeded: " << e.what();
+    }
+}
+
 }  // namespace zraster::test

@@ -40,8 +40,8 @@ TEST(LoadBudgets, SharedChildrenArePlacedEachTimeWithinTheBudget) {
     EXPECT_EQ(scene.instances.size(), 9u);
     LoadOptions tight;
     tight.max_instances = 8;
-    test::expect_input_error([&] { load_scene(model, tight); }, model,
-                             "the node graph places more than 8 meshes");
+    test::expect_limit_exceeded([&] { load_scene(model, tight); }, model, "max_instances",
+                                "the node graph places more than 8 meshes");
 }
 
 TEST(LoadBudgets, AGraphOfBillionsIsRefusedBeforeItIsExpanded) {
@@ -51,9 +51,43 @@ TEST(LoadBudgets, AGraphOfBillionsIsRefusedBeforeItIsExpanded) {
     for (const LoadIsolation isolation : {LoadIsolation::InProcess, LoadIsolation::WorkerProcess}) {
         LoadOptions o;
         o.isolation = isolation;
-        test::expect_input_error([&] { load_scene(model, o); }, model,
-                                 "the node graph places more than 1000000 meshes (nodes sharing "
-                                 "children multiply); the limit is LoadOptions::max_instances");
+        test::expect_limit_exceeded([&] { load_scene(model, o); }, model, "max_instances",
+                                    "the node graph places more than 1000000 meshes "
+                                    "(max_instances; nodes sharing children multiply)");
+    }
+}
+
+// The budgets of LoadOptions are LimitExceeded naming the field, in process and through the
+// worker process (whose message carries the name): what lets the command name its flag.
+TEST(LoadBudgets, BudgetRefusalsNameTheirLimitInProcessAndThroughTheWorker) {
+    const auto dir = test::temp_dir("budgets-limits");
+    const auto ply = dir / "two.ply";
+    test::write_bytes(ply,
+                      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n"
+                      "property float y\nproperty float z\nelement face 2\n"
+                      "property list uchar int vertex_indices\nend_header\n"
+                      "0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 1 3 2\n");
+    const auto obj = dir / "two.obj";
+    test::write_bytes(obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n");
+    const auto stl = dir / "one.stl";
+    test::write_bytes(stl,
+                      "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+                      "vertex 0 1 0\nendloop\nendfacet\nendsolid t\n");
+    for (const LoadIsolation isolation : {LoadIsolation::InProcess, LoadIsolation::WorkerProcess}) {
+        SCOPED_TRACE(isolation == LoadIsolation::InProcess ? "in process" : "worker");
+        LoadOptions o;
+        o.isolation = isolation;
+        o.max_triangles = 1;
+        // The PLY's triangles are counted by the importer: in the worker, in that case.
+        test::expect_limit_exceeded([&] { load_scene(ply, o); }, ply, "max_triangles",
+                                    "too many triangles (2, limit 1)");
+        test::expect_limit_exceeded([&] { load_scene(obj, o); }, obj, "max_triangles",
+                                    "too many triangles (2, limit 1)");
+        LoadOptions small = o;
+        small.max_triangles = 50;
+        small.max_file_bytes = 40;
+        test::expect_limit_exceeded([&] { load_scene(stl, small); }, stl, "max_file_bytes",
+                                    "file too large (");
     }
 }
 

@@ -4,6 +4,7 @@
 #include <zraster/load.hpp>
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <string>
@@ -133,6 +134,103 @@ TEST(LoadReferences, ObjLibrariesAndTexturesOutsideAreNotReadWithAWarning) {
     EXPECT_NE(t_warnings[0].find("texture '../outside.png' not read"), std::string::npos)
         << t_warnings[0];
     EXPECT_EQ(t.materials.at(1).base_color_texture, nullptr);
+}
+
+// The triangle of triangle_gltf("inside.bin") with a base-color texture whose image is `uri`.
+std::string textured_gltf(const std::string& uri) {
+    std::string text = triangle_gltf("inside.bin");
+    const std::string attributes = R"("attributes":{"POSITION":0}})";
+    text.replace(text.find(attributes), attributes.size(),
+                 R"("attributes":{"POSITION":0},"material":0})");
+    text.pop_back();  // the closing brace
+    return text + R"(,"materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}}],)" +
+           R"("textures":[{"source":0}],"images":[{"uri":")" + uri + R"("}]})";
+}
+
+// In model/: a loop of links, a FIFO, a directory; outside.* beside model/. Each refusal says its
+// own cause; only "outside the model's folder" names the flag that lifts it, and only where
+// lifting it would help.
+TEST(LoadReferences, EachRefusalSaysItsCauseAndOnlyOutsideNamesTheFlag) {
+    const auto dir = fixture("refs-causes");
+    const auto model_dir = dir / "model";
+    std::filesystem::create_symlink("loop-b", model_dir / "loop-a");
+    std::filesystem::create_symlink("loop-a", model_dir / "loop-b");
+    ASSERT_EQ(::mkfifo((model_dir / "fifo").c_str(), 0600), 0);
+    std::filesystem::create_directory(model_dir / "folder");
+    struct Case {
+        std::string name, cause;
+        bool advice;
+    };
+    const Case cases[] = {
+        {"loop-a", "is a loop of symbolic links", false},
+        {"fifo", "is not a regular file (a FIFO, socket or device)", false},
+        {"folder", "is a directory", false},
+        {"../outside.bin", "is outside the model's folder", true},
+    };
+    const std::string flag = "--allow-outside-references";
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.name);
+        for (const bool allow : {false, true}) {
+            const bool advice = c.advice && !allow;
+            // A glTF buffer: an error.
+            const auto buffer = model_dir / "buffer.gltf";
+            test::write_bytes(buffer, triangle_gltf(c.name));
+            if (c.advice && allow) {
+                EXPECT_EQ(load_scene(buffer, in_process(allow)).triangle_count(), 1u);
+            } else {
+                test::expect_input_error([&] { load_scene(buffer, in_process(allow)); }, buffer,
+                                         "'" + (model_dir / c.name).string() + "' " + c.cause);
+                try {
+                    load_scene(buffer, in_process(allow));
+                } catch (const InputError& e) {
+                    EXPECT_EQ(e.cause().find(flag) != std::string::npos, advice) << e.what();
+                }
+            }
+            if (c.advice && allow) continue;  // read: outside.bin is no image, another warning
+            // A glTF image, an OBJ material library and an OBJ texture: warnings.
+            const auto image = model_dir / "image.gltf";
+            test::write_bytes(image, textured_gltf(c.name));
+            test::write_bytes(model_dir / "m.mtl", "newmtl t\nKd 1 1 1\nmap_Kd " + c.name + "\n");
+            const auto library = model_dir / "library.obj";
+            test::write_bytes(
+                library, "mtllib " + c.name + "\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl t\nf 1 2 3\n");
+            const auto texture = model_dir / "texture.obj";
+            test::write_bytes(texture,
+                              "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nusemtl t\n"
+                              "f 1/1 2/1 3/1\n");
+            for (const auto& path : {image, library, texture}) {
+                SCOPED_TRACE(path.filename().string());
+                std::vector<std::string> warnings;
+                load_scene(path, in_process(allow), &warnings);
+                ASSERT_EQ(warnings.size(), 1u);
+                EXPECT_NE(warnings[0].find(c.cause), std::string::npos) << warnings[0];
+                EXPECT_EQ(warnings[0].find(flag) != std::string::npos, advice) << warnings[0];
+                EXPECT_EQ(warnings[0].find("not found"), std::string::npos) << warnings[0];
+            }
+        }
+    }
+    // A missing file is "not found", with no advice either.
+    const auto missing = model_dir / "missing.obj";
+    test::write_bytes(model_dir / "m.mtl", "newmtl t\nKd 1 1 1\nmap_Kd nothing.png\n");
+    test::write_bytes(missing,
+                      "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nusemtl t\nf 1/1 2/1 3/1\n");
+    std::vector<std::string> warnings;
+    load_scene(missing, in_process(), &warnings);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("texture 'nothing.png' not found"), std::string::npos)
+        << warnings[0];
+    // Without read permission (meaningless for root, who reads anything).
+    if (::geteuid() != 0) {
+        test::write_bytes(model_dir / "secret.png", "x");
+        std::filesystem::permissions(model_dir / "secret.png", std::filesystem::perms::none);
+        test::write_bytes(model_dir / "m.mtl", "newmtl t\nKd 1 1 1\nmap_Kd secret.png\n");
+        warnings.clear();
+        load_scene(missing, in_process(), &warnings);
+        ASSERT_EQ(warnings.size(), 1u);
+        EXPECT_NE(warnings[0].find("cannot be read (Permission denied)"), std::string::npos)
+            << warnings[0];
+        EXPECT_EQ(warnings[0].find(flag), std::string::npos) << warnings[0];
+    }
 }
 
 }  // namespace

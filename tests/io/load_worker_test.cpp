@@ -405,8 +405,8 @@ TEST(WorkerMessage, RefusesMalformedMessages) {
     expect_invalid("", "invalid result: truncated header");
     expect_invalid("XRWM" + good.substr(4), "invalid result: bad magic");
     std::string version = good;
-    version[4] = 2;  // a child of a zraster before the materials' double_sided
-    expect_invalid(version, "format version 2, expected 3");
+    version[4] = 3;  // a child of a zraster before the limit-exceeded kind
+    expect_invalid(version, "format version 3, expected 4");
     expect_invalid(good.substr(0, good.size() - 1), "the header says");
     std::string longer = good + "x";
     expect_invalid(longer, "the header says");
@@ -428,6 +428,24 @@ TEST(WorkerMessage, RefusesMalformedMessages) {
     limit.max_triangles = 1;
     test::expect_input_error([&] { io::decode_worker_message(byte_span(good), "m.ply", limit); },
                              "m.ply", "more triangles than the limit (1)");
+}
+
+// A budget's refusal crosses the pipe as a LimitExceeded with its field's name; a name that is
+// not a field's is an invalid result.
+TEST(WorkerMessage, LimitExceededKeepsTheLimitsName) {
+    const std::string message = io::encode_limit_message("max_instances", "too many placements");
+    try {
+        io::decode_worker_message(byte_span(message), "m.gltf", LoadOptions{});
+        ADD_FAILURE() << "no exception";
+    } catch (const LimitExceeded& e) {
+        EXPECT_EQ(e.limit(), "max_instances");
+        EXPECT_EQ(std::string(e.what()), "m.gltf: too many placements");
+    }
+    for (const std::string& bad : std::vector<std::string>{"", "Max", "max instances",
+                                                           "max_instances\n", std::string(65, 'a')})
+        expect_invalid(io::encode_limit_message(bad, "x"),
+                       "a limit name that is not a LoadOptions field");
+    expect_invalid(io::encode_limit_message("max_triangles", "x") + "y", "the header says");
 }
 
 // A 2 x 1 RGBA texture with `alpha` in its second texel.

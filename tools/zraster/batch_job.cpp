@@ -47,14 +47,12 @@ Scene load_within_limits(const BatchInput& input, const LoadOptions& options,
                          std::vector<std::string>& warnings) {
     try {
         return load_scene(input.source, options, &warnings);
-    } catch (const LimitExceeded&) {
-        throw;
-    } catch (const InputError& e) {
-        if (e.cause().starts_with("too many triangles"))
-            throw InputError(e.file(), fmt::format("{}; raise it with --max-triangles N (or "
-                                                   "--max-memory, at {} bytes a triangle)",
-                                                   e.cause(), kMinBytesPerTriangle));
-        throw;
+    } catch (const LimitExceeded& e) {
+        if (e.limit() != "max_triangles") throw;
+        // The advice in full: a plain InputError, so that no other advice is appended.
+        throw InputError(e.file(), fmt::format("{}; raise it with --max-triangles N (or "
+                                               "--max-memory, at {} bytes a triangle)",
+                                               e.cause(), kMinBytesPerTriangle));
     }
 }
 

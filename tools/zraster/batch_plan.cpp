@@ -12,12 +12,14 @@
 
 #include "batch_limits.hpp"
 #include "batch_views.hpp"
+#include "command_caps.hpp"
 #include "command_line.hpp"
 
 namespace zraster::cli {
 
 int batch_jobs(const BatchArguments& a) {
-    return a.jobs > 0 ? a.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
+    return capped_threads(
+        "--jobs", a.jobs > 0 ? a.jobs : int(std::max(1u, std::thread::hardware_concurrency())));
 }
 
 int batch_job_threads(int threads, int jobs) {
@@ -51,16 +53,11 @@ BatchSettings batch_settings(const BatchArguments& a, int jobs) {
     return s;
 }
 
-BatchPlan plan_batch(const BatchArguments& a, std::istream& standard_input) {
-    BatchPlan plan;
-    plan.jobs = batch_jobs(a);
-    plan.settings = batch_settings(a, plan.jobs);
-    const Shard shard = a.shard.empty() ? Shard{} : parse_shard(a.shard);
-    std::error_code ec;
-    std::filesystem::create_directories(a.out_dir, ec);
-    if (ec || !std::filesystem::is_directory(a.out_dir))
-        throw InputError("-o " + a.out_dir, "cannot create the output folder" +
-                                                (ec ? ": " + ec.message() : std::string()));
+namespace {
+
+// The inputs, their outputs checked for clashes, the shard's share of them, the log.
+void plan_inputs(const BatchArguments& a, std::istream& standard_input, const Shard& shard,
+                 BatchPlan& plan) {
     check_batch_settings(plan.settings);
 
     std::vector<std::string> paths = a.inputs;
@@ -79,6 +76,34 @@ BatchPlan plan_batch(const BatchArguments& a, std::istream& standard_input) {
                  [&](const BatchInput& input) { return in_shard(input, shard); });
     plan.log = a.log.empty() ? std::filesystem::path(a.out_dir) / "batch.jsonl"
                              : std::filesystem::path(a.log);
+}
+
+}  // namespace
+
+BatchPlan plan_batch(const BatchArguments& a, std::istream& standard_input) {
+    BatchPlan plan;
+    plan.jobs = batch_jobs(a);
+    plan.settings = batch_settings(a, plan.jobs);
+    const Shard shard = a.shard.empty() ? Shard{} : parse_shard(a.shard);
+    // The folders this run creates, deepest first: a plan refused below leaves none of them
+    // behind (a failed run leaves nothing; fuzz_cli found the output folder left).
+    std::vector<std::filesystem::path> created;
+    std::error_code ec;
+    for (std::filesystem::path p = a.out_dir; !p.empty() && !std::filesystem::exists(p, ec);
+         p = p.parent_path()) {
+        created.push_back(p);
+        if (p == p.parent_path()) break;
+    }
+    std::filesystem::create_directories(a.out_dir, ec);
+    if (ec || !std::filesystem::is_directory(a.out_dir))
+        throw InputError("-o " + a.out_dir, "cannot create the output folder" +
+                                                (ec ? ": " + ec.message() : std::string()));
+    try {
+        plan_inputs(a, standard_input, shard, plan);
+    } catch (...) {
+        for (const std::filesystem::path& p : created) std::filesystem::remove(p, ec);
+        throw;
+    }
     return plan;
 }
 

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <numbers>
 
+#include "camera_ranges.hpp"
 #include "command_line.hpp"
 
 namespace zraster::cli {
@@ -58,10 +59,19 @@ class CameraReader {
         return out;
     }
 
-    // "X,Y,Z" as the flags take it.
-    std::string vec3(const char* field) const {
+    // "X,Y,Z" as the flags take it, checked by `problem` (camera_ranges.hpp).
+    std::string vec3(const char* field, std::string (*problem)(const glm::dvec3&)) const {
         const std::vector<double> v = numbers(camera_.at(field), field, 3);
+        if (const std::string p = problem({v[0], v[1], v[2]}); !p.empty()) fail(field, p);
         return exact_number(v[0]) + "," + exact_number(v[1]) + "," + exact_number(v[2]);
+    }
+
+    // A number checked by `problem` (camera_ranges.hpp), if the camera has it.
+    std::optional<double> checked_scalar(const char* field, std::string (*problem)(double)) const {
+        const std::optional<double> x = optional_scalar(field);
+        if (x)
+            if (const std::string p = problem(*x); !p.empty()) fail(field, p);
+        return x;
     }
 
     const Json& at(const char* field) const { return camera_.at(field); }
@@ -166,20 +176,22 @@ BatchView read_camera(const std::filesystem::path& file, std::size_t index, cons
                                 "projection");
     if (r.has("eye")) {
         if (!r.has("target")) r.fail("target", "is missing (\"eye\" needs it)");
-        view.eye = r.vec3("eye");
-        view.target = r.vec3("target");
-        if (r.has("up")) view.up = r.vec3("up");
+        view.eye = r.vec3("eye", position_problem);
+        view.target = r.vec3("target", position_problem);
+        if (r.has("up")) view.up = r.vec3("up", direction_problem);
     } else if (r.has("orbit")) {
         const std::vector<double> o = r.numbers(r.at("orbit"), "orbit", 3);
+        if (const std::string p = orbit_problem({o[0], o[1], o[2]}); !p.empty()) r.fail("orbit", p);
         view.orbit = exact_number(o[0]) + "," + exact_number(o[1]) + "," + exact_number(o[2]);
     } else if (orthographic) {
         read_orthographic(r, view);
     } else {
         read_pinhole(r, view);
     }
-    if (!r.has("K") && !orthographic) view.fovy = r.optional_scalar("fovy");
-    view.near = r.optional_scalar("near");
-    if (!view.infinite_far) view.far = r.optional_scalar("far");
+    if (!r.has("K") && !orthographic) view.fovy = r.checked_scalar("fovy", fovy_problem);
+    view.near = r.checked_scalar("near", distance_problem);
+    if (!view.infinite_far) view.far = r.checked_scalar("far", distance_problem);
+    if (view.near && view.far && !(*view.near < *view.far)) r.fail("near", "must be below \"far\"");
     return view;
 }
 

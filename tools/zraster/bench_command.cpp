@@ -17,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "command_caps.hpp"
 #include "command_line.hpp"
 
 namespace zraster::cli {
@@ -100,7 +101,13 @@ int run_bench(const BenchArguments& a) {
     if (a.warmup < 0 || a.warmup > kMaxBenchFrames)
         throw InputError("--warmup", "must be in 0.." + std::to_string(kMaxBenchFrames) + ", not " +
                                          std::to_string(a.warmup));
-    const int threads = checked_thread_count("--threads", a.threads);
+    if (command_caps().max_frames != 0 && a.frames + a.warmup > command_caps().max_frames)
+        throw InputError("--frames",
+                         "with --warmup " + std::to_string(a.warmup) + ", " +
+                             std::to_string(a.frames + a.warmup) + " frames, more than the " +
+                             std::to_string(command_caps().max_frames) + " this run allows");
+    check_samples_cap("--size", size.x, size.y, 1);
+    const int threads = capped_threads("--threads", checked_thread_count("--threads", a.threads));
     validate_png_output(a.out);
     if (a.no_avx512) hwy::DisableTargets(HWY_AVX2 - 1);  // the targets better than AVX2
 

@@ -1,5 +1,7 @@
 #include "command_line.hpp"
 
+#include "command_caps.hpp"
+
 #include <zraster/load.hpp>
 #include <zraster/render.hpp>
 #include <zraster/scenes.hpp>
@@ -112,6 +114,7 @@ namespace {
 bool g_load_in_process = false;
 bool g_allow_outside_references = false;
 std::size_t g_max_instances = LoadOptions{}.max_instances;
+std::size_t g_max_load_triangles = LoadOptions{}.max_triangles;
 int g_max_texture_side = LoadOptions{}.max_texture_side;
 std::size_t g_max_texture_bytes = LoadOptions{}.max_texture_bytes;
 }  // namespace
@@ -123,6 +126,10 @@ void set_texture_limits(int max_side, std::size_t max_bytes) {
 
 void set_max_instances(std::size_t max_instances) {
     g_max_instances = max_instances;
+}
+
+void set_max_load_triangles(std::size_t max_triangles) {
+    g_max_load_triangles = max_triangles;
 }
 
 void set_load_in_process(bool in_process) {
@@ -138,13 +145,17 @@ LoadOptions command_load_options() {
     options.isolation = g_load_in_process ? LoadIsolation::InProcess : LoadIsolation::WorkerProcess;
     options.allow_outside_references = g_allow_outside_references;
     options.max_instances = g_max_instances;
+    options.max_triangles = g_max_load_triangles;
     options.max_texture_side = g_max_texture_side;
     options.max_texture_bytes = g_max_texture_bytes;
     return options;
 }
 
 Scene load_scene_or_procedural(const std::string& spec, std::vector<std::string>* warnings) {
-    if (is_procedural_spec(spec)) return make_procedural_scene(spec);
+    if (is_procedural_spec(spec)) {
+        check_scene_cap(spec);
+        return make_procedural_scene(spec);
+    }
     std::vector<std::string> found;
     Scene scene = load_scene(spec, command_load_options(), &found);
     for (const std::string& w : found) fmt::print(stderr, "warning: {}\n", w);

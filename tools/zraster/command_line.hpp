@@ -51,6 +51,8 @@ void set_load_in_process(bool in_process);
 void set_allow_outside_references(bool allow);
 // The --max-instances option (LoadOptions::max_instances).
 void set_max_instances(std::size_t max_instances);
+// The command's --max-triangles (LoadOptions::max_triangles; `zraster batch` sets its own).
+void set_max_load_triangles(std::size_t max_triangles);
 // --max-texture-side and --max-texture-memory (LoadOptions::max_texture_side, max_texture_bytes).
 void set_texture_limits(int max_side, std::size_t max_bytes);
 // The LoadOptions of the settings above, the rest as LoadOptions' defaults.

@@ -254,6 +254,19 @@ Camera apply_intrinsics(const DepthCameraArguments& a, const Camera& camera, int
         throw InputError("--intrinsics",
                          "expected FX,FY,CX,CY (finite, in pixels), got '" + a.intrinsics + "'");
     }
+    // Focal lengths of a thousandth of a pixel to 10^9 pixels (a field of view from 180 degrees
+    // down to 10^-6 of a degree at 16384 pixels), principal points within +-10^9 pixels.
+    for (int i = 0; i < 4; ++i) {
+        const bool focal = i < 2;
+        if ((focal && !(v[i] >= 1e-3 && v[i] <= 1e9)) || (!focal && !(std::abs(v[i]) <= 1e9)))
+            throw InputError("--intrinsics", std::string(i == 0   ? "fx"
+                                                         : i == 1 ? "fy"
+                                                         : i == 2 ? "cx"
+                                                                  : "cy") +
+                                                 (focal ? " must be in 0.001..1e9 pixels, not "
+                                                        : " must be within +-1e9 pixels, not ") +
+                                                 exact_number(v[i]));
+    }
     Intrinsics k;
     k.fx = v.x;
     k.fy = v.y;

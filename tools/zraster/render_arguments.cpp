@@ -6,12 +6,15 @@
 #include <zraster/depth_buffer.hpp>
 #include <zraster/scenes.hpp>
 
+#include <fmt/format.h>
 #include <glm/gtx/component_wise.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 
+#include "camera_ranges.hpp"
+#include "command_caps.hpp"
 #include "command_line.hpp"
 
 namespace zraster::cli {
@@ -192,7 +195,8 @@ Camera place_camera(const RenderArguments& a, Camera camera, const BoundingSpher
                                         " both place the camera: give one or the other");
     if (!a.orbit.empty()) {
         const glm::dvec3 o = parse_vec3("--orbit", a.orbit);
-        if (!(o.z > 0.0)) throw InputError("--orbit", "distance must be positive");
+        if (const std::string problem = orbit_problem(o); !problem.empty())
+            throw InputError("--orbit", problem);
         const double distance = o.z * radius;
         camera = orbit_camera(sphere.center, distance, o.x, o.y, camera.fovy_degrees);
         camera.near = std::max(distance - 1.01 * radius, distance * 1e-3);
@@ -201,13 +205,25 @@ Camera place_camera(const RenderArguments& a, Camera camera, const BoundingSpher
     if (!a.eye.empty()) camera.eye = parse_position("--eye", a.eye);
     if (!a.target.empty()) camera.target = parse_position("--target", a.target);
     camera.up = parse_vec3("--up", a.up);
+    if (const std::string problem = direction_problem(camera.up); !problem.empty())
+        throw InputError("--up", problem);
     if (!a.eye.empty() || !a.target.empty()) {
         // Near/far from the bounding sphere as seen from the new eye, unless given.
         const double d = glm::length(sphere.center - camera.eye);
+        // Farther, the scene is below a pixel at any field of view and its near and far sides
+        // fall within one float of each other.
+        if (!a.eye.empty() && !(a.near && a.far) && d > kMaxEyeDistance * radius)
+            throw InputError("--eye", fmt::format("{} is {:.3g} scene radii from the scene's "
+                                                  "center, more than the {:g} a view can resolve",
+                                                  a.eye, d / radius, kMaxEyeDistance));
         camera.near = std::max(d - 1.01 * radius, std::max(d + 1.01 * radius, 1e-6) * 1e-4);
         camera.far = d + 1.01 * radius;
     }
-    if (a.fovy) camera.fovy_degrees = *a.fovy;
+    if (a.fovy) {
+        if (const std::string problem = fovy_problem(*a.fovy); !problem.empty())
+            throw InputError("--fovy", problem);
+        camera.fovy_degrees = *a.fovy;
+    }
     if (a.ortho_height && !a.ortho) throw InputError("--ortho-height", "goes with --ortho");
     if (a.ortho) {
         camera.projection = Camera::Projection::Orthographic;
@@ -215,6 +231,8 @@ Camera place_camera(const RenderArguments& a, Camera camera, const BoundingSpher
         if (a.ortho_height) {
             if (!(std::isfinite(*a.ortho_height) && *a.ortho_height > 0.0))
                 throw InputError("--ortho-height", "must be a positive number");
+            if (const std::string problem = distance_problem(*a.ortho_height); !problem.empty())
+                throw InputError("--ortho-height", problem);
             camera.ortho_height = *a.ortho_height;
         }
     }
@@ -251,21 +269,30 @@ RenderOptions make_render_options(const RenderArguments& a,
         throw InputError("--size", a.size + " is " + std::to_string(pixels) +
                                        " pixels, more than --max-pixels " +
                                        std::to_string(a.max_pixels));
+    check_samples_cap("--size", size.x, size.y, a.aa);
     o.width = size.x;
     o.height = size.y;
     o.limits.max_pixels = a.max_pixels;
     o.limits.max_painter_comparisons = a.max_painter_comparisons;
     o.limits.max_bsp_polygons = a.max_bsp_polygons;
     o.limits.max_warnock_classifications = a.max_warnock_classifications;
-    o.threads = checked_thread_count("--threads", a.threads);
+    o.threads = capped_threads("--threads", checked_thread_count("--threads", a.threads));
     if (camera) {
         o.camera = *camera;
     } else {
         o.camera = place_camera(a, default_camera(a.scene, world_positions),
                                 bounding_sphere(world_positions));
     }
+    for (const auto& [option, value] : {std::pair{"--near", a.near}, std::pair{"--far", a.far}})
+        if (value)
+            if (const std::string problem = distance_problem(*value); !problem.empty())
+                throw InputError(option, problem);
     if (a.near) o.camera->near = *a.near;
     if (a.far) o.camera->far = *a.far;
+    if (a.near && a.far && !(*a.near < *a.far))
+        throw InputError(
+            "--near",
+            fmt::format("{} is not below --far {}: the view needs near < far", *a.near, *a.far));
     // A given camera keeps its own depth conventions unless the flags add to them.
     if (!camera || a.reversed_z) o.camera->reversed_z = a.reversed_z;
     if (!camera || a.infinite_far) o.camera->infinite_far = a.infinite_far;
@@ -282,13 +309,18 @@ RenderOptions make_render_options(const RenderArguments& a,
         Light light;
         const glm::dvec3 d = parse_vec3("--light-dir", text);
         if (glm::length(d) == 0.0) throw InputError("--light-dir", "direction must be non-zero");
+        if (const std::string problem = direction_problem(d); !problem.empty())
+            throw InputError("--light-dir", problem);
         light.direction = glm::vec3(glm::normalize(d));
         o.lighting.lights.push_back(light);
     }
     for (const std::string& text : a.point_lights) {
         Light light;
         light.type = Light::Type::Point;
-        light.position = glm::vec3(parse_vec3("--point-light", text));
+        const glm::dvec3 position = parse_vec3("--point-light", text);
+        if (const std::string problem = position_problem(position); !problem.empty())
+            throw InputError("--point-light", problem);
+        light.position = glm::vec3(position);
         o.lighting.lights.push_back(light);
     }
     o.cull = a.no_cull || a.cull == "none" ? CullMode::None
@@ -321,10 +353,16 @@ RenderOptions make_render_options(const RenderArguments& a,
     o.textures = !a.no_textures;
     for (const std::string& text : a.clip_planes) {
         const glm::dvec4 plane = parse_vec4("--clip-plane", text);
-        if (glm::dvec3(plane) == glm::dvec3(0.0))
+        if (glm::dvec3(plane) == glm::dvec3(0.0) ||
+            glm::length(glm::dvec3(plane)) < kMinDirectionLength)
             throw InputError("--clip-plane", "the normal A,B,C of '" + text +
                                                  "' is zero: the plane keeps everything or "
                                                  "nothing");
+        if (const std::string problem = direction_problem(glm::dvec3(plane)); !problem.empty())
+            throw InputError("--clip-plane", problem);
+        if (!(std::abs(plane.w) <= kMaxDirectionComponent))
+            throw InputError("--clip-plane",
+                             fmt::format("D = {} is beyond the +-1e30 a plane may use", plane.w));
         o.clip_planes.push_back(glm::vec4(plane));
     }
     const glm::dvec3 bg = parse_vec3("--background", a.background);

@@ -62,6 +62,13 @@ int run_zraster(std::vector<std::string> args) {
                    "share children multiply them)")
         ->check(CLI::Range(std::size_t{1}, std::size_t{1'000'000'000}))
         ->capture_default_str();
+    // `zraster batch` has its own --max-triangles (over a file's instances, with --max-memory),
+    // which takes precedence after `batch`.
+    std::size_t max_load_triangles = LoadOptions{}.max_triangles;
+    app.add_option("--max-triangles", max_load_triangles,
+                   "Refuse model files of more triangles than this (over their instances)")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 40))
+        ->capture_default_str();
     int max_texture_side = LoadOptions{}.max_texture_side;
     app.add_option("--max-texture-side", max_texture_side,
                    "Reduce textures wider or taller than this many texels (halving them, with a "
@@ -120,6 +127,7 @@ int run_zraster(std::vector<std::string> args) {
     set_load_in_process(load_in_process);
     set_allow_outside_references(allow_outside_references);
     set_max_instances(max_instances);
+    set_max_load_triangles(max_load_triangles);
     try {
         set_texture_limits(max_texture_side,
                            parse_byte_size("--max-texture-memory", max_texture_memory));

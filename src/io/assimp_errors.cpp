@@ -1,0 +1,102 @@
+#include "io/assimp_errors.hpp"
+
+#include <cctype>
+#include <string_view>
+
+namespace zraster::io {
+
+namespace {
+
+constexpr std::string_view kDetail = " (Assimp: ";
+
+struct Translation {
+    const char* assimp;  // a part of Assimp's message
+    const char* ours;    // "{}" stands for the format's name
+};
+
+// The first entry whose `assimp` text occurs in the message applies: specific texts first.
+constexpr Translation kTranslations[] = {
+    {"No suitable reader found",
+     "no importer recognises its contents as a {} file (a wrong extension, or not a 3D model)"},
+    {"Failed to determine STL storage representation",
+     "neither an ASCII STL (starting with 'solid') nor a binary STL (84 + 50 x triangles bytes)"},
+    {"STL: Invalid number of vertices", "malformed ASCII STL: a facet without 3 vertices"},
+    {"Normal buffer size does not match",
+     "malformed ASCII STL: facets with and without a 'facet normal'"},
+    {"STL: unexpected EOF", "truncated: the ASCII STL ends inside a facet"},
+    {"STL: file is empty", "no triangles (a binary STL of 0 facets)"},
+    {"STL: file is too small", "truncated: too short for a binary STL's 84-byte header"},
+    {"Chunk is too large", "truncated: a 3DS chunk declares more bytes than the file holds"},
+    {"3DS file is either empty or corrupt", "truncated or not a 3DS file (too short)"},
+    {"is a POINT but", "a face of 1 corner (a point) among the mesh's polygons"},
+    {"is a LINE but", "a face of 2 corners (a line) among the mesh's polygons"},
+    {"mNumIndices is 0",
+     "a face without vertex indices (fewer face records than the header declares?)"},
+    {"OFF: Header is invalid",
+     "not an OFF file: the header (OFF, then the vertex, face and edge counts) is invalid"},
+    {"Incorrect magic number", "not a PLY file: it does not start with 'ply'"},
+    {"Invalid .ply file", "malformed PLY file"},
+    {"malformed XML", "not well-formed XML, as a {} file must be"},
+    {"OBJ: Invalid face index", "malformed OBJ file: a face index that is not a valid number"},
+    {"FBX-Tokenize", "malformed FBX file (its text cannot be split into tokens)"},
+    {"FBX-Parser", "malformed FBX file"},
+    {"FBX-DOM", "malformed FBX file"},
+    {"GLTF: No scene", "no scene to draw (the glTF file has no \"scene\" and no \"scenes\")"},
+    {"Missing section", "malformed glTF file: a section its contents refer to is missing"},
+    {"File is too small", "too short to be a {} file"},
+    {"Header mismatch", "not a {} file: its header is not the format's"},
+    {"magic", "not a {} file: it does not start with the format's signature"},
+    {"Magic", "not a {} file: it does not start with the format's signature"},
+    {"Signature", "not a {} file: it does not start with the format's signature"},
+    {"No meshes loaded", "no meshes in it (is it a {} file?)"},
+    {"Unable to open file", "cannot be opened"},
+    {"Failed to open", "not a valid {} file: the importer could not open its contents"},
+    {"is out of range", "a face names a vertex past the mesh's vertices"},
+    {"Validation failed", "malformed {} file: the importer made an inconsistent scene of it"},
+};
+
+std::string format_name(const std::filesystem::path& path) {
+    std::string name = path.extension().string();
+    if (name.size() <= 1) return "3D model";
+    name.erase(0, 1);
+    for (char& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return name;
+}
+
+std::string with_format(std::string_view text, const std::string& format) {
+    std::string out(text);
+    if (const std::size_t at = out.find("{}"); at != std::string::npos) out.replace(at, 2, format);
+    return out;
+}
+
+// `GLTF: could not open referenced file "missing.bin"`: the file, quoted.
+std::optional<std::string> quoted_reference(const std::string& text) {
+    const std::string_view marker = "could not open referenced file \"";
+    const std::size_t at = text.find(marker);
+    if (at == std::string::npos) return std::nullopt;
+    const std::size_t first = at + marker.size();
+    const std::size_t last = text.find('"', first);
+    if (last == std::string::npos) return std::nullopt;
+    return text.substr(first, last - first);
+}
+
+}  // namespace
+
+std::string assimp_error_cause(const std::filesystem::path& path, const std::string& text) {
+    const std::string detail = std::string(kDetail) + text + ")";
+    if (const std::optional<std::string> reference = quoted_reference(text))
+        return "the file it refers to, '" + *reference + "', is missing or cannot be read" + detail;
+    const std::string format = format_name(path);
+    for (const Translation& t : kTranslations)
+        if (text.find(t.assimp) != std::string::npos) return with_format(t.ours, format) + detail;
+    return "malformed or unsupported " + format + " file" + detail;
+}
+
+std::optional<std::string> assimp_detail(const std::string& cause) {
+    const std::size_t at = cause.rfind(kDetail);
+    if (at == std::string::npos || !cause.ends_with(")")) return std::nullopt;
+    const std::size_t first = at + kDetail.size();
+    return cause.substr(first, cause.size() - 1 - first);
+}
+
+}  // namespace zraster::io

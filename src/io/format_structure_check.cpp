@@ -1,0 +1,302 @@
+#include "io/format_structure_check.hpp"
+
+#include <zraster/error.hpp>
+
+#include "io/text_util.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace zraster::io {
+
+namespace {
+
+using json = nlohmann::json;
+
+// Files up to this size are read whole for the checks; larger ones (rare for the formats checked
+// here) are left to Assimp.
+constexpr std::uintmax_t kMaxCheckedBytes = std::uintmax_t{256} << 20;
+
+std::string lower_extension(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return extension;
+}
+
+std::string whole_file(const std::filesystem::path& path, std::uintmax_t size) {
+    std::ifstream in(path, std::ios::binary);
+    std::string bytes(static_cast<std::size_t>(size), '\0');
+    in.read(bytes.data(), static_cast<std::streamsize>(size));
+    bytes.resize(static_cast<std::size_t>(std::max<std::streamsize>(0, in.gcount())));
+    return bytes;
+}
+
+std::uint32_t little_u32(std::string_view bytes, std::size_t at) {
+    std::uint32_t v = 0;
+    for (int b = 0; b < 4; ++b)
+        v |= std::uint32_t{static_cast<std::uint8_t>(bytes[at + std::size_t(b)])} << (8 * b);
+    return v;
+}
+
+std::uint16_t little_u16(std::string_view bytes, std::size_t at) {
+    return static_cast<std::uint16_t>(static_cast<std::uint8_t>(bytes[at]) |
+                                      (static_cast<std::uint8_t>(bytes[at + 1]) << 8));
+}
+
+std::string hex16(std::uint16_t id) {
+    static const char* digits = "0123456789ABCDEF";
+    std::string out = "0x";
+    for (int shift = 12; shift >= 0; shift -= 4) out += digits[(id >> shift) & 15];
+    return out;
+}
+
+// nlohmann's "[json.exception.parse_error.101] parse error at line 1, column 31: syntax error
+// while parsing value - unexpected end of input; expected ..." as "line 1, column 31: unexpected
+// end of input; expected ...".
+std::string json_error_text(const json::parse_error& e) {
+    std::string what = e.what();
+    const std::size_t at = what.find(" at line ");
+    const std::size_t colon = at == std::string::npos ? at : what.find(": ", at);
+    const std::size_t dash = what.find(" - ");
+    std::string where = at != std::string::npos && colon != std::string::npos
+                            ? what.substr(at + 4, colon - at - 4)
+                            : "byte " + std::to_string(e.byte);
+    std::string reason = dash != std::string::npos ? what.substr(dash + 3) : what;
+    // It quotes the input ("last read: '...'"), which may be any bytes.
+    for (char& c : reason)
+        if (static_cast<unsigned char>(c) >= 0x80) c = '?';
+    return where + ": " + reason;
+}
+
+// A glTF document (the .gltf text, or a GLB's JSON chunk: `chunk`): JSON, an object, an asset
+// whose version Assimp has an importer for (1.x, 2.x).
+void check_gltf_json(const std::string& file, std::string_view text, bool chunk) {
+    const std::string json_text = chunk ? "its JSON chunk" : "the JSON";
+    json document;
+    try {
+        document = json::parse(text.begin(), text.end());
+    } catch (const json::parse_error& e) {
+        throw InputError(file, (chunk ? "its JSON chunk is not valid JSON: " : "not valid JSON: ") +
+                                   json_error_text(e));
+    }
+    if (!document.is_object())
+        throw InputError(file,
+                         "not a glTF file: " + json_text + " is not an object (a glTF file's is)");
+    const auto asset = document.find("asset");
+    if (asset == document.end() || !asset->is_object())
+        throw InputError(file, "not a glTF file: " + json_text +
+                                   " has no \"asset\" object (every glTF file has one)");
+    const auto version = asset->find("version");
+    if (version == asset->end() || !version->is_string())
+        throw InputError(file, "not a glTF file: its \"asset\" has no \"version\" string");
+    const std::string v = version->get<std::string>();
+    if (!v.starts_with("1.") && !v.starts_with("2.") && v != "1" && v != "2")
+        throw InputError(file, "glTF version '" + one_line(v.substr(0, 32)) +
+                                   "' is not supported (1.x and 2.x are)");
+}
+
+void check_glb_structure(const std::string& file, const std::string& bytes) {
+    if (bytes.size() < 12)
+        throw InputError(file,
+                         "truncated: a binary glTF (GLB) file starts with a 12-byte "
+                         "header, this file has " +
+                             std::to_string(bytes.size()) + " bytes");
+    if (!bytes.starts_with("glTF"))
+        throw InputError(file, "not a binary glTF (GLB) file: it does not start with 'glTF'");
+    const std::uint32_t version = little_u32(bytes, 4);
+    if (version != 1 && version != 2)
+        throw InputError(
+            file, "GLB version " + std::to_string(version) + " is not supported (1 and 2 are)");
+    if (version == 1) return;  // a different layout; Assimp's glTF 1 importer reads it
+    if (bytes.size() < 20)
+        throw InputError(file, "truncated: the GLB header is not followed by a chunk (the JSON)");
+    const std::uint32_t length = little_u32(bytes, 12);
+    if (std::string_view(bytes).substr(16, 4) != "JSON")
+        throw InputError(file, "malformed GLB file: its first chunk is not the JSON chunk");
+    if (length > bytes.size() - 20) return;  // declared_counts_check names it
+    check_gltf_json(file, std::string_view(bytes).substr(20, length), true);
+}
+
+// STL, as Assimp tells the two apart: binary when the size is exactly 84 + 50 x the count at
+// byte 80; else ASCII when it starts with "solid" (after blanks).
+void check_stl_structure(const std::string& file, const std::string& bytes) {
+    const std::size_t size = bytes.size();
+    if (size >= 84) {
+        const std::uint64_t declared = little_u32(bytes, 80);
+        if (84 + 50 * declared == size) {
+            if (declared == 0)
+                throw InputError(file, "no triangles (a binary STL whose header declares 0)");
+            return;
+        }
+    }
+    std::size_t at = 0;
+    while (at < size &&
+           (bytes[at] == ' ' || bytes[at] == '\t' || bytes[at] == '\r' || bytes[at] == '\n'))
+        ++at;
+    if (bytes.compare(at, 5, "solid") != 0 || at + 5 >= size) {
+        std::string cause =
+            "neither an ASCII STL (starting with 'solid') nor a binary STL (84 + 50 x triangles "
+            "bytes";
+        if (size >= 84) {
+            const std::uint64_t declared = little_u32(bytes, 80);
+            cause += "; its header declares " + std::to_string(declared) + " triangles, " +
+                     std::to_string(84 + 50 * declared) + " bytes";
+        }
+        throw InputError(file, cause + "), this file has " + std::to_string(size) + " bytes");
+    }
+    // A binary STL whose 80-byte header happens to start with "solid" and whose size is not
+    // 84 + 50 x its count: Assimp reads it as ASCII and finds nothing; say what it is.
+    if (size >= 84 && bytes.find('\0') < 84) {
+        const std::uint64_t declared = little_u32(bytes, 80);
+        throw InputError(file,
+                         "truncated or malformed binary STL (its header starts with "
+                         "'solid', but it holds binary data): its header declares " +
+                             std::to_string(declared) + " triangles, 84 + 50 x " +
+                             std::to_string(declared) + " = " + std::to_string(84 + 50 * declared) +
+                             " bytes, this file has " + std::to_string(size));
+    }
+    // ASCII: Assimp counts at most 3 vertices a facet, and fails when a facet has fewer.
+    std::size_t line = 1, facet_line = 0;
+    std::uint64_t facets = 0, complete = 0;
+    int vertices = 3;
+    auto end_facet = [&] {
+        if (facets != 0 && vertices < 3)
+            throw InputError(file, "malformed ASCII STL: facet " + std::to_string(facets) +
+                                       " (line " + std::to_string(facet_line) + ") has " +
+                                       std::to_string(vertices) + " vertices; a facet has 3");
+        if (facets != 0 && vertices == 3) ++complete;
+    };
+    bool in_facet = false;
+    while (at < size) {
+        const char c = bytes[at];
+        if (c == '\n') ++line;
+        if (c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\0') {
+            ++at;
+            continue;
+        }
+        std::size_t end = at;
+        while (end < size && !std::isspace(static_cast<unsigned char>(bytes[end])) &&
+               bytes[end] != '\0')
+            ++end;
+        const std::string_view token(bytes.data() + at, end - at);
+        if (token == "facet") {
+            if (in_facet) end_facet();
+            in_facet = true;
+            ++facets;
+            facet_line = line;
+            vertices = 0;
+        } else if (token == "vertex" && in_facet) {
+            vertices = std::min(vertices + 1, 3);
+        } else if (token == "endfacet" && in_facet) {
+            end_facet();
+            in_facet = false;
+        } else if (token.starts_with("endsolid")) {
+            if (in_facet) end_facet();
+            in_facet = false;
+        }
+        at = end;
+    }
+    if (in_facet && vertices < 3)
+        throw InputError(file, "truncated: the ASCII STL ends inside facet " +
+                                   std::to_string(facets) + " (line " + std::to_string(facet_line) +
+                                   ") after " + std::to_string(vertices) + " of its 3 vertices");
+    if (complete == 0 && !(in_facet && vertices == 3))
+        throw InputError(file, "no triangles (an ASCII STL without a complete facet)");
+}
+
+// 3DS: chunks of [u16 id][u32 size, header included]. Assimp reads each chunk header of the
+// main chunk and of the chunks below that it descends into, and fails ("Chunk is too large")
+// when a size is under 6 or reaches past the end of the file.
+bool is_3ds_container(std::uint16_t id) {
+    switch (id) {
+        case 0x4D4D:  // main
+        case 0xC23D:  // main, of a project file
+        case 0x3D3D:  // editor
+        case 0x4000:  // object (after its name)
+        case 0x4100:  // triangle mesh
+        case 0xAFFF:  // material
+        case 0xB000:  // keyframer
+            return true;
+        default:
+            return false;
+    }
+}
+
+void check_3ds_structure(const std::string& file, const std::string& bytes) {
+    const std::size_t size = bytes.size();
+    if (size < 16)
+        throw InputError(file, "truncated: " + std::to_string(size) +
+                                   " bytes are too few for a 3DS file (a main chunk of 16 or "
+                                   "more)");
+    const std::uint16_t first = little_u16(bytes, 0);
+    if (first != 0x4D4D && first != 0xC23D)
+        throw InputError(file,
+                         "not a 3DS file: it does not start with the main chunk (0x4D4D), "
+                         "but with " +
+                             hex16(first));
+    // (start, end) of the chunk sequences still to walk; explicit stack, nesting is bounded by
+    // the bytes anyway.
+    std::vector<std::pair<std::size_t, std::size_t>> pending{{0, size}};
+    int walked = 0;
+    while (!pending.empty()) {
+        auto [at, end] = pending.back();
+        pending.pop_back();
+        while (end - at >= 6) {
+            if (++walked > 1'000'000) return;  // enough for a check
+            const std::uint16_t id = little_u16(bytes, at);
+            const std::uint32_t declared = little_u32(bytes, at + 2);
+            if (declared < 6)
+                throw InputError(file, "malformed 3DS file: chunk " + hex16(id) + " at byte " +
+                                           std::to_string(at) + " declares " +
+                                           std::to_string(declared) +
+                                           " bytes, less than its own 6-byte header");
+            if (declared > size - at)
+                throw InputError(file, "truncated: a 3DS chunk (" + hex16(id) + " at byte " +
+                                           std::to_string(at) + ") declares " +
+                                           std::to_string(declared) + " bytes, " +
+                                           std::to_string(declared - (size - at)) +
+                                           " past the end of the file");
+            const std::size_t chunk_end = std::min<std::size_t>(at + declared, end);
+            if (is_3ds_container(id)) {
+                std::size_t content = at + 6;
+                if (id == 0x4000) {  // a NUL-terminated name first
+                    const std::size_t nul = bytes.find('\0', content);
+                    content = nul == std::string::npos || nul >= chunk_end ? chunk_end : nul + 1;
+                }
+                pending.emplace_back(content, chunk_end);
+            }
+            at += declared;
+            if (at >= end) break;
+        }
+    }
+}
+
+}  // namespace
+
+void check_format_structure(const std::filesystem::path& path, std::uintmax_t file_size) {
+    if (file_size > kMaxCheckedBytes) return;
+    const std::string extension = lower_extension(path);
+    const std::string file = path.string();
+    if (extension == ".gltf") {
+        const std::string text = whole_file(path, file_size);
+        // A .gltf that is in fact a GLB is read as one.
+        if (text.starts_with("glTF")) return check_glb_structure(file, text);
+        check_gltf_json(file, text, false);
+    } else if (extension == ".glb") {
+        check_glb_structure(file, whole_file(path, file_size));
+    } else if (extension == ".stl") {
+        check_stl_structure(file, whole_file(path, file_size));
+    } else if (extension == ".3ds") {
+        check_3ds_structure(file, whole_file(path, file_size));
+    }
+}
+
+}  // namespace zraster::io

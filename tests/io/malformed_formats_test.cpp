@@ -1,0 +1,173 @@
+// Malformed files of every format Assimp reads: each is refused with one line naming the file
+// and the cause in the user's terms (format_structure_check.cpp before Assimp, the translation
+// of Assimp's messages in assimp_errors.cpp after it); Assimp's own text appears at most as a
+// trailing "(Assimp: ...)" detail. In process and through the worker process alike.
+#include <zraster/load.hpp>
+
+#include "io/assimp_errors.hpp"
+#include "io/io_test_util.hpp"
+#include "support/test_support.hpp"
+
+#include <string>
+#include <vector>
+
+namespace zraster {
+namespace {
+
+struct Malformed {
+    std::string name;   // the file name (its extension picks the format)
+    std::string bytes;  // its contents
+    std::string cause;  // the exact cause, up to any "(Assimp: ...)" detail
+};
+
+std::string binary_stl_header(std::uint32_t count) {
+    std::string bytes(80, '\0');
+    for (int b = 0; b < 4; ++b) bytes.push_back(static_cast<char>((count >> (8 * b)) & 0xff));
+    return bytes;
+}
+
+std::string pseudo_random(std::size_t size, unsigned seed, char avoid) {
+    std::string bytes;
+    std::uint32_t x = seed;
+    while (bytes.size() < size) {
+        x = x * 1664525u + 1013904223u;
+        const char c = static_cast<char>(x >> 24);
+        if (c != avoid) bytes.push_back(c);
+    }
+    return bytes;
+}
+
+std::vector<Malformed> malformed_files() {
+    const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    return {
+        // STL
+        {"random.stl", binary_stl_header(7) + std::string(16, 'x'),
+         "neither an ASCII STL (starting with 'solid') nor a binary STL (84 + 50 x triangles "
+         "bytes; its header declares 7 triangles, 434 bytes), this file has 100 bytes"},
+        {"short.stl", "STL",
+         "neither an ASCII STL (starting with 'solid') nor a binary STL (84 + "
+         "50 x triangles bytes), this file has 3 bytes"},
+        {"two.stl",
+         "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nendloop\n"
+         "endfacet\nendsolid x\n",
+         "malformed ASCII STL: facet 1 (line 2) has 2 vertices; a facet has 3"},
+        {"cut.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 1 2 3\n",
+         "truncated: the ASCII STL ends inside facet 1 (line 2) after 1 of its 3 vertices"},
+        {"empty-solid.stl", "solid\n", "no triangles (an ASCII STL without a complete facet)"},
+        {"zero.stl", binary_stl_header(0), "no triangles (a binary STL whose header declares 0)"},
+        // glTF and GLB
+        {"cut.gltf", R"({"asset":{"version":"2.0"},"nodes":[)",
+         "not valid JSON: line 1, column 37: unexpected end of input; expected '[', '{', or a "
+         "literal"},
+        {"array.gltf", "[1, 2]", "not a glTF file: the JSON is not an object (a glTF file's is)"},
+        {"noasset.gltf", R"({"nodes": []})",
+         "not a glTF file: the JSON has no \"asset\" object (every glTF file has one)"},
+        {"noversion.gltf", R"({"asset": {}})",
+         "not a glTF file: its \"asset\" has no \"version\" string"},
+        {"v3.gltf", R"({"asset": {"version": "3.0"}})",
+         "glTF version '3.0' is not supported (1.x and 2.x are)"},
+        {"random.glb", pseudo_random(300, 1, 'g'),
+         "not a binary glTF (GLB) file: it does not start with 'glTF'"},
+        {"tiny.glb", std::string("glTF\x02\0\0", 7),
+         "truncated: a binary glTF (GLB) file starts with a 12-byte header, this file has 7 bytes"},
+        {"v9.glb", std::string("glTF\x09\0\0\0\x14\0\0\0", 12) + std::string(8, '\0'),
+         "GLB version 9 is not supported (1 and 2 are)"},
+        {"bin-first.glb",
+         std::string("glTF\x02\0\0\0\x20\0\0\0\x0c\0\0\0BIN\0", 20) + std::string(12, '\0'),
+         "malformed GLB file: its first chunk is not the JSON chunk"},
+        {"bad-json.glb",
+         std::string("glTF\x02\0\0\0\x1f\0\0\0\x0b\0\0\0JSON", 20) + "{\"asset\":[ ",
+         "its JSON chunk is not valid JSON: line 1, column 12: unexpected end of input; expected "
+         "'[', '{', or a literal"},
+        // 3DS
+        {"text.3ds", "this is text, not a 3DS file at all",
+         "not a 3DS file: it does not start with the main chunk (0x4D4D), but with 0x6874"},
+        {"past-end.3ds",
+         std::string("MM\xe8\x03\0\0\x3d\x3d\x10\0\0\0", 12) + std::string(10, '\0'),
+         "truncated: a 3DS chunk (0x4D4D at byte 0) declares 1000 bytes, 978 past the end of the "
+         "file"},
+        {"tiny-chunk.3ds",
+         std::string("MM\x16\0\0\0\x3d\x3d\x02\0\0\0", 12) + std::string(10, '\0'),
+         "malformed 3DS file: chunk 0x3D3D at byte 6 declares 2 bytes, less than its own 6-byte "
+         "header"},
+        {"short.3ds", std::string("MM\x10\0\0\0", 6),
+         "truncated: 6 bytes are too few for a 3DS file (a main chunk of 16 or more)"},
+        // Formats left to Assimp: its messages translated.
+        {"random.ply", pseudo_random(300, 2, 'p'), "not a PLY file: it does not start with 'ply'"},
+        {"random.off", "this is not an OFF file\n1 2 3\n",
+         "not an OFF file: the header (OFF, then the vertex, face and edge counts) is invalid"},
+        {"point.obj", tri + "f 1 2 3\nf 1\n", "malformed OBJ file: line 5: face with 1 corners"},
+        {"short.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+         "a face without vertex indices (fewer face records than the header declares?)"},
+        {"index.ply",
+         "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+         "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+         "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n",
+         "a face names a vertex past the mesh's vertices"},
+        {"garbage.xyzzy", pseudo_random(4096, 4, '\0'),
+         "no importer recognises its contents as a XYZZY file (a wrong extension, or not a 3D "
+         "model)"},
+        {"random.dae", pseudo_random(300, 3, '<'), "not well-formed XML, as a DAE file must be"},
+    };
+}
+
+// The cause without a trailing "(Assimp: ...)", which must be Assimp's only place.
+std::string without_detail(const std::string& cause) {
+    const std::optional<std::string> detail = io::assimp_detail(cause);
+    if (!detail) return cause;
+    return cause.substr(0, cause.size() - detail->size() - std::string(" (Assimp: )").size());
+}
+
+TEST(MalformedFormats, EachIsRefusedInTheUsersTerms) {
+    const auto dir = test::temp_dir("io-malformed-formats");
+    for (const Malformed& m : malformed_files()) {
+        SCOPED_TRACE(m.name);
+        const auto path = dir / m.name;
+        test::write_bytes(path, m.bytes);
+        for (const LoadIsolation isolation :
+             {LoadIsolation::InProcess, LoadIsolation::WorkerProcess}) {
+            LoadOptions options;
+            options.isolation = isolation;
+            try {
+                load_scene(path, options);
+                ADD_FAILURE() << "loaded";
+            } catch (const InputError& e) {
+                EXPECT_EQ(e.file(), path.string());
+                EXPECT_EQ(without_detail(e.cause()), m.cause) << e.what();
+                EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
+                for (const char* internal : {"aiMesh", "No suitable reader", "Failed to determine",
+                                             "Chunk is too large", "File is too small"})
+                    EXPECT_EQ(without_detail(e.cause()).find(internal), std::string::npos)
+                        << e.what();
+            }
+        }
+    }
+}
+
+// Assimp's messages that reach the table: ours first, Assimp's text only as the detail.
+TEST(MalformedFormats, AssimpMessagesAreTranslated) {
+    EXPECT_EQ(io::assimp_error_cause("m.3ds", "Chunk is too large"),
+              "truncated: a 3DS chunk declares more bytes than the file holds (Assimp: Chunk is "
+              "too large)");
+    EXPECT_EQ(io::assimp_error_cause("m.fbx", "FBX-Tokenize (line 1 << col 49) unexpected"),
+              "malformed FBX file (its text cannot be split into tokens) (Assimp: FBX-Tokenize "
+              "(line 1 << col 49) unexpected)");
+    EXPECT_EQ(io::assimp_error_cause("m.gltf", "GLTF: could not open referenced file \"a.bin\""),
+              "the file it refers to, 'a.bin', is missing or cannot be read (Assimp: GLTF: could "
+              "not open referenced file \"a.bin\")");
+    EXPECT_EQ(io::assimp_error_cause("m.xyz", "something new"),
+              "malformed or unsupported XYZ file (Assimp: something new)");
+    EXPECT_EQ(io::assimp_error_cause("m", "something new"),
+              "malformed or unsupported 3D model file (Assimp: something new)");
+    EXPECT_EQ(io::assimp_error_cause("m.md2", "Invalid MD2 magic word: expected IDP2"),
+              "not a MD2 file: it does not start with the format's signature (Assimp: Invalid MD2 "
+              "magic word: expected IDP2)");
+    EXPECT_EQ(io::assimp_error_cause("m.3mf", "Failed to open file m.3mf."),
+              "not a valid 3MF file: the importer could not open its contents (Assimp: Failed to "
+              "open file m.3mf.)");
+    EXPECT_EQ(io::assimp_detail("x (Assimp: y (z))"), "y (z)");
+    EXPECT_EQ(io::assimp_detail("no detail"), std::nullopt);
+}
+
+}  // namespace
+}  // namespace zraster

@@ -1,0 +1,37 @@
+// The ranges of the camera and lighting numbers the command reads, from flags (--orbit, --fovy,
+// --near, ...) and from --views-json files alike, so that both refuse the same values with the
+// same cause (docs/limits.md lists them). Each function returns the cause, in the user's terms,
+// or "" when the value is in range.
+#pragma once
+#include <glm/glm.hpp>
+
+#include <string>
+
+namespace zraster::cli {
+
+// Positions (--eye, --target, --point-light; "eye", "target"): every coordinate within +-1e32.
+inline constexpr double kMaxPosition = 1e32;
+// Directions and planes (--up, --light-dir, --clip-plane): components within +-1e30, and a
+// length of at least 1e-30 (anything shorter is zero once converted to float).
+inline constexpr double kMaxDirectionComponent = 1e30;
+inline constexpr double kMinDirectionLength = 1e-30;
+// --fovy, "fovy": degrees.
+inline constexpr double kMinFovy = 1e-3;
+inline constexpr double kMaxFovy = 179.999;
+// --near, --far, --ortho-height and their JSON fields: scene units.
+inline constexpr double kMinDistance = 1e-20;
+inline constexpr double kMaxDistance = 1e30;
+// --orbit AZIMUTH,ELEVATION,DISTANCE: degrees, degrees within -90..90, scene radii.
+inline constexpr double kMaxAzimuth = 1e6;
+inline constexpr double kMaxOrbitDistance = 1e6;
+// --eye without --near and --far: the near and far planes come from the scene's bounding sphere,
+// at most this many radii away.
+inline constexpr double kMaxEyeDistance = 1e7;
+
+std::string position_problem(const glm::dvec3& p);
+std::string direction_problem(const glm::dvec3& d);
+std::string fovy_problem(double degrees);
+std::string distance_problem(double distance);
+std::string orbit_problem(const glm::dvec3& orbit);
+
+}  // namespace zraster::cli
