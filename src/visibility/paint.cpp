@@ -23,7 +23,6 @@
 #include <algorithm>
 
 #include "render/blend_kernels.hpp"
-#include "render/material_alpha.hpp"
 
 namespace zraster {
 namespace visibility_detail {
@@ -40,19 +39,6 @@ struct Canvas::Shading {
 };
 
 namespace {
-
-// Whether any instance's material alpha counts this frame (as SurfaceShader decides it).
-bool any_alpha(const Scene& scene, const RenderOptions& options) {
-    for (const Instance& instance : scene.instances) {
-        const Mesh& mesh = scene.meshes.at(instance.mesh);
-        const Material& material =
-            scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
-        if (detail::effective_alpha_mode(material, options.textures && !mesh.uvs.empty(),
-                                         options) != AlphaMode::Opaque)
-            return true;
-    }
-    return false;
-}
 
 // An 8-bit channel as render()'s blend pass reads it (render/blend_kernels.hpp).
 float unorm8_to_float(std::uint8_t v) {
@@ -78,7 +64,7 @@ Canvas::Canvas(const RenderOptions& options, const Camera& camera, const Scene* 
                                 to_unorm8(options.background.z), 255};
     for (std::size_t i = 0; i < targets_.color.size(); i += 4)
         std::copy(bg, bg + 4, &targets_.color[i]);
-    const bool alpha = shade_from != nullptr && any_alpha(*shade_from, options);
+    const bool alpha = shade_from != nullptr && scene_has_alpha(*shade_from, options);
     if (shade_from != nullptr && (options.color_target || options.normal_target || alpha))
         shading_ = std::make_unique<Shading>(*shade_from, options);
     if (alpha && options.color_target) {

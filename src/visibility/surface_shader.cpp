@@ -230,4 +230,16 @@ bool SurfaceShader::passes_alpha_test(std::int32_t instance, float a) const {
     return info.alpha != AlphaMode::Mask || a >= info.material->alpha_cutoff;
 }
 
+bool scene_has_alpha(const Scene& scene, const RenderOptions& options) {
+    for (const Instance& instance : scene.instances) {
+        const Mesh& mesh = scene.meshes.at(instance.mesh);
+        const Material& material =
+            scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
+        if (detail::effective_alpha_mode(material, options.textures && !mesh.uvs.empty(),
+                                         options) != AlphaMode::Opaque)
+            return true;
+    }
+    return false;
+}
+
 }  // namespace zraster::visibility_detail

@@ -105,4 +105,8 @@ class SurfaceShader {
     std::vector<LightTerms> gouraud_;  // Gouraud instances only (else empty entries)
 };
 
+// Whether any instance's material alpha counts this frame (as SurfaceShader decides it): when
+// none does, the algorithms draw as if every surface were opaque.
+bool scene_has_alpha(const Scene& scene, const RenderOptions& options);
+
 }  // namespace zraster::visibility_detail

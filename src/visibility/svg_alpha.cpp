@@ -15,18 +15,6 @@
 namespace zraster::visibility_detail {
 namespace {
 
-bool has_transparency(const Scene& scene, const RenderOptions& options) {
-    for (const Instance& instance : scene.instances) {
-        const Mesh& mesh = scene.meshes.at(instance.mesh);
-        const Material& material =
-            scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
-        if (detail::effective_alpha_mode(material, options.textures && !mesh.uvs.empty(),
-                                         options) != AlphaMode::Opaque)
-            return true;
-    }
-    return false;
-}
-
 float clamp_unit(float v) {
     return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;  // (NaN: 0), as render()'s blend pass
 }
@@ -67,7 +55,7 @@ glm::dvec2 centroid_of(const ScreenPolygon& polygon) {
 std::vector<SvgPolygonAlpha> svg_polygon_alphas(const Scene& scene, const RenderOptions& options,
                                                 std::span<const ScreenPolygon> polygons) {
     std::vector<SvgPolygonAlpha> out(polygons.size());
-    if (!has_transparency(scene, options)) return out;
+    if (!scene_has_alpha(scene, options)) return out;
     const FrameContext frame = make_frame_context(scene, options);
     const SurfaceShader shader(frame);
     SurfaceShader::Prepared prepared;

@@ -19,97 +19,19 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "support/alpha_test_scenes.hpp"
 #include "support/test_support.hpp"
 
 namespace zraster::test {
 namespace {
 
-constexpr int kImage = 64;
-
-// Orthographic on +z: world (x, y) lands on window (x + 32, 32 - y), so a square from -h to h
-// covers the pixels 32 - h .. 32 + h - 1 each way.
-RenderOptions alpha_options() {
-    RenderOptions o;
-    o.width = kImage;
-    o.height = kImage;
-    o.threads = 2;
-    o.shading = ShadingMode::Unlit;  // colors = base colors, for the analytic blend
-    o.background = {0.25f, 0.5f, 0.75f};
-    Camera c;
-    c.eye = {0.0, 0.0, 8.0};
-    c.target = {0.0, 0.0, 0.0};
-    c.projection = Camera::Projection::Orthographic;
-    c.ortho_height = kImage;
-    c.near = 1.0;
-    c.far = 20.0;
-    o.camera = c;
-    return o;
-}
-
-// A square of half-width h at depth z, as two triangles with texture coordinates 0..1.
-Mesh square(float h, float z) {
-    Mesh m;
-    m.positions = {{-h, -h, z}, {h, -h, z}, {h, h, z}, {-h, h, z}};
-    m.uvs = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
-    m.normals.assign(4, glm::vec3(0, 0, 1));
-    m.indices = {0, 1, 2, 0, 2, 3};
-    update_bounds(m);
-    return m;
-}
-
-struct Layer {
-    float half_width, z;
-    glm::vec3 color;
-    float opacity;
-};
-
-// Far opaque, then two blended layers nearer, each smaller.
-const std::array<Layer, 3> kLayers = {{
-    {20.0f, -2.0f, {0.9f, 0.2f, 0.1f}, 1.0f},
-    {14.0f, 0.0f, {0.1f, 0.8f, 0.3f}, 0.5f},
-    {8.0f, 2.0f, {0.2f, 0.3f, 0.9f}, 0.35f},
-}};
-
-// The squares layers[order[0]], layers[order[1]], ... in that submission order, a material each.
-Scene squares_scene(std::span<const Layer> layers, std::span<const int> order) {
-    Scene scene;
-    scene.materials.push_back(Material{});
-    for (const int k : order) {
-        const Layer& layer = layers[std::size_t(k)];
-        Material m;
-        m.base_color = layer.color;
-        m.opacity = layer.opacity;
-        scene.materials.push_back(m);
-        Mesh mesh = square(layer.half_width, layer.z);
-        mesh.material = std::uint32_t(scene.materials.size() - 1);
-        scene.meshes.push_back(std::move(mesh));
-        Instance instance;
-        instance.mesh = std::uint32_t(scene.meshes.size() - 1);
-        scene.instances.push_back(instance);
-    }
-    return scene;
-}
-
-Scene layered_scene(const std::array<int, 3>& order) {
-    return squares_scene(kLayers, order);
-}
-
-int unorm8(double v) {
-    return int(std::clamp(float(v), 0.0f, 1.0f) * 255.0f + 0.5f);
-}
-
-glm::ivec3 rgb_at(const RenderResult& r, int px, int py) {
-    const std::uint8_t* p = &r.targets.color[(std::size_t(py) * kImage + std::size_t(px)) * 4];
-    return {p[0], p[1], p[2]};
-}
-
 TEST(AlphaModes, BlendIsIndependentOfSubmissionOrderAndMatchesOver) {
-    const RenderOptions options = alpha_options();
+    const RenderOptions options = alpha_test_options();
     std::array<int, 3> order = {0, 1, 2};
     RenderResult first;
     int orders = 0;
     do {
-        const RenderResult r = render(layered_scene(order), options);
+        const RenderResult r = render(alpha_layers_scene(kAlphaLayers, order), options);
         if (orders++ == 0) {
             first = r;
             continue;
@@ -121,22 +43,23 @@ TEST(AlphaModes, BlendIsIndependentOfSubmissionOrderAndMatchesOver) {
     EXPECT_EQ(orders, 6);
 
     // Inside every layer: the background hidden by the opaque one, then "over" twice.
-    glm::dvec3 inner(kLayers[0].color);
+    glm::dvec3 inner(kAlphaLayers[0].color);
     for (std::size_t k = 1; k < 3; ++k)
-        inner = double(kLayers[k].opacity) * glm::dvec3(kLayers[k].color) +
-                (1.0 - double(kLayers[k].opacity)) * inner;
-    const glm::dvec3 middle = double(kLayers[1].opacity) * glm::dvec3(kLayers[1].color) +
-                              (1.0 - double(kLayers[1].opacity)) * glm::dvec3(kLayers[0].color);
+        inner = double(kAlphaLayers[k].opacity) * glm::dvec3(kAlphaLayers[k].color) +
+                (1.0 - double(kAlphaLayers[k].opacity)) * inner;
+    const glm::dvec3 middle =
+        double(kAlphaLayers[1].opacity) * glm::dvec3(kAlphaLayers[1].color) +
+        (1.0 - double(kAlphaLayers[1].opacity)) * glm::dvec3(kAlphaLayers[0].color);
     for (const auto& [px, py, expected] :
          {std::tuple{32, 32, inner}, std::tuple{26, 38, inner}, std::tuple{20, 20, middle},
-          std::tuple{14, 14, glm::dvec3(kLayers[0].color)}}) {
-        const glm::ivec3 got = rgb_at(first, px, py);
+          std::tuple{14, 14, glm::dvec3(kAlphaLayers[0].color)}}) {
+        const glm::ivec3 got = alpha_test_rgb(first, px, py);
         for (int c = 0; c < 3; ++c)
-            EXPECT_LE(std::abs(got[c] - unorm8(expected[c])), 1)
+            EXPECT_LE(std::abs(got[c] - analytic_unorm8(expected[c])), 1)
                 << "pixel " << px << "," << py << " channel " << c;
     }
     // Blended surfaces write no depth: the opaque layer's alone.
-    Scene opaque_only = layered_scene({0, 1, 2});
+    Scene opaque_only = alpha_layers_scene(kAlphaLayers, {0, 1, 2});
     opaque_only.instances.resize(1);
     const RenderResult reference = render(opaque_only, options);
     EXPECT_TRUE(same_bits(first.targets.depth, reference.targets.depth));
@@ -149,18 +72,18 @@ TEST(AlphaModes, BlendIsIndependentOfSubmissionOrderAndMatchesOver) {
 // order comes from content and ids. Every submission order, SIMD or not, 1 or 2 threads: one
 // image, the analytic "over" where the depths differ.
 TEST(AlphaModes, MoreLayersThanSlotsInAnyOrder) {
-    const std::array<Layer, 7> squares = {{{24.0f, -6.0f, {0.9f, 0.2f, 0.1f}, 1.0f},
-                                           {22.0f, -4.0f, {0.1f, 0.8f, 0.3f}, 0.5f},
-                                           {18.0f, -2.0f, {0.2f, 0.3f, 0.9f}, 0.35f},
-                                           {14.0f, 0.0f, {0.7f, 0.7f, 0.1f}, 0.6f},
-                                           {10.0f, 2.0f, {0.3f, 0.1f, 0.6f}, 0.25f},
-                                           {6.0f, 2.0f, {0.9f, 0.9f, 0.9f}, 0.4f},
-                                           {3.0f, 0.0f, {0.0f, 0.5f, 0.5f}, 0.7f}}};
+    const std::array<AlphaLayer, 7> squares = {{{24.0f, -6.0f, {0.9f, 0.2f, 0.1f}, 1.0f},
+                                                {22.0f, -4.0f, {0.1f, 0.8f, 0.3f}, 0.5f},
+                                                {18.0f, -2.0f, {0.2f, 0.3f, 0.9f}, 0.35f},
+                                                {14.0f, 0.0f, {0.7f, 0.7f, 0.1f}, 0.6f},
+                                                {10.0f, 2.0f, {0.3f, 0.1f, 0.6f}, 0.25f},
+                                                {6.0f, 2.0f, {0.9f, 0.9f, 0.9f}, 0.4f},
+                                                {3.0f, 0.0f, {0.0f, 0.5f, 0.5f}, 0.7f}}};
     const auto scene_in = [&](const std::vector<int>& order) {
-        return squares_scene(squares, order);
+        return alpha_layers_scene(squares, order);
     };
     std::vector<int> order = {0, 1, 2, 3, 4, 5, 6};
-    const RenderOptions options = alpha_options();
+    const RenderOptions options = alpha_test_options();
     const RenderResult reference = render(scene_in(order), options);
     EXPECT_EQ(reference.stats.pixels_blended, std::uint64_t(44 * 44));
     std::mt19937 rng(9);
@@ -177,14 +100,14 @@ TEST(AlphaModes, MoreLayersThanSlotsInAnyOrder) {
     for (std::size_t k = 1; k <= 4; ++k)
         expected = double(squares[k].opacity) * glm::dvec3(squares[k].color) +
                    (1.0 - double(squares[k].opacity)) * expected;
-    const glm::ivec3 got = rgb_at(reference, 32 + 8, 32);
-    for (int c = 0; c < 3; ++c) EXPECT_LE(std::abs(got[c] - unorm8(expected[c])), 1) << c;
+    const glm::ivec3 got = alpha_test_rgb(reference, 32 + 8, 32);
+    for (int c = 0; c < 3; ++c) EXPECT_LE(std::abs(got[c] - analytic_unorm8(expected[c])), 1) << c;
 }
 
 TEST(AlphaModes, OpaqueModeIgnoresAlpha) {
-    RenderOptions options = alpha_options();
+    RenderOptions options = alpha_test_options();
     options.alpha_mode = MaterialAlpha::Opaque;
-    Scene scene = layered_scene({0, 1, 2});
+    Scene scene = alpha_layers_scene(kAlphaLayers, {0, 1, 2});
     const RenderResult ignored = render(scene, options);
     for (Material& m : scene.materials) m.opacity = 1.0f;
     options.alpha_mode = MaterialAlpha::Auto;
@@ -192,7 +115,7 @@ TEST(AlphaModes, OpaqueModeIgnoresAlpha) {
     EXPECT_EQ(ignored.targets.color, opaque.targets.color);
     EXPECT_EQ(ignored.stats.fragments_blended, 0u);
     // And a material that says Opaque keeps its alpha ignored in Auto.
-    scene = layered_scene({0, 1, 2});
+    scene = alpha_layers_scene(kAlphaLayers, {0, 1, 2});
     for (Material& m : scene.materials) m.alpha_mode = AlphaMode::Opaque;
     EXPECT_EQ(render(scene, options).targets.color, opaque.targets.color);
 }
@@ -211,8 +134,8 @@ Scene cut_out_scene(AlphaMode mode, bool cut_out_first) {
     front.base_color_texture = std::make_shared<Texture>(
         make_checkerboard_texture(4, 16, {40, 200, 60, 0}, {40, 200, 60, 255}));
     scene.materials = {back, front};
-    Mesh far = square(24.0f, -2.0f);
-    Mesh near = square(16.0f, 1.0f);
+    Mesh far = alpha_test_square(24.0f, -2.0f);
+    Mesh near = alpha_test_square(16.0f, 1.0f);
     near.material = 1;
     if (cut_out_first) std::swap(far, near);
     scene.meshes = {far, near};
@@ -222,20 +145,22 @@ Scene cut_out_scene(AlphaMode mode, bool cut_out_first) {
 }
 
 TEST(AlphaModes, MaskDiscardsFragmentsUnderTheCutoffBeforeTheyWriteDepth) {
-    const RenderOptions options = alpha_options();
+    const RenderOptions options = alpha_test_options();
     const RenderResult r = render(cut_out_scene(AlphaMode::Mask, false), options);
     EXPECT_EQ(render(cut_out_scene(AlphaMode::Mask, true), options).targets.color, r.targets.color);
-    const float far_depth = r.targets.depth[std::size_t(10) * kImage + 32];  // back square only
+    const float far_depth =
+        r.targets.depth[std::size_t(10) * kAlphaImage + 32];  // back square only
     int cut = 0, kept = 0;
     for (int cy = 0; cy < 4; ++cy)
         for (int cx = 0; cx < 4; ++cx) {
             // The cell's center pixel: texel alpha 0 at the top left cell, alternating.
             const int px = 16 + 8 * cx + 4, py = 16 + 8 * cy + 4;
             const bool transparent = ((cx + cy) & 1) == 0;
-            const glm::ivec3 got = rgb_at(r, px, py);
-            const float depth = r.targets.depth[std::size_t(py) * kImage + std::size_t(px)];
+            const glm::ivec3 got = alpha_test_rgb(r, px, py);
+            const float depth = r.targets.depth[std::size_t(py) * kAlphaImage + std::size_t(px)];
             if (transparent) {
-                EXPECT_EQ(got, glm::ivec3(unorm8(0.9), unorm8(0.2), unorm8(0.1)))
+                EXPECT_EQ(got, glm::ivec3(analytic_unorm8(0.9), analytic_unorm8(0.2),
+                                          analytic_unorm8(0.1)))
                     << px << "," << py;
                 EXPECT_EQ(depth, far_depth);
                 ++cut;
@@ -269,7 +194,7 @@ TEST(AlphaModes, TheOptimizationsAndTheSimdShaderDoNotChangeABit) {
                     m.base_color_texture.reset();
                     if (m.alpha_mode == AlphaMode::Blend) m.opacity = 0.6f;
                 }
-            RenderOptions options = alpha_options();
+            RenderOptions options = alpha_test_options();
             options.shading = shading;
             options.camera->projection = Camera::Projection::Perspective;
             const RenderResult reference = render(scene, options);
@@ -298,15 +223,15 @@ TEST(AlphaModes, TheOptimizationsAndTheSimdShaderDoNotChangeABit) {
 TEST(AlphaModes, CutOutsAndBlendedSurfacesDoNotOcclude) {
     for (const AlphaMode mode : {AlphaMode::Mask, AlphaMode::Blend}) {
         Scene scene = cut_out_scene(mode, true);
-        scene.meshes[0] = square(2.0f, 1.0f);  // the cut-out square, 4 x 4 cells
+        scene.meshes[0] = alpha_test_square(2.0f, 1.0f);  // the cut-out square, 4 x 4 cells
         scene.meshes[0].material = 1;
         // Small (under the 1% of the screen that makes every instance an occluder), behind the
         // middle of a transparent cell (the second in each direction).
-        scene.meshes[1] = square(0.15f, -2.0f);
+        scene.meshes[1] = alpha_test_square(0.15f, -2.0f);
         scene.meshes[1].material = 0;
         scene.instances[1].transform = glm::translate(glm::mat4(1.0f), {-0.5f, 0.5f, 0.0f});
         // (In perspective: the occlusion buffer compares 1/w, constant in an orthographic view.)
-        RenderOptions options = alpha_options();
+        RenderOptions options = alpha_test_options();
         options.camera->projection = Camera::Projection::Perspective;
         options.camera->fovy_degrees = 40.0;
         const RenderResult plain = render(scene, options);
@@ -320,7 +245,8 @@ TEST(AlphaModes, CutOutsAndBlendedSurfacesDoNotOcclude) {
         EXPECT_EQ(culled.targets.color, plain.targets.color);
         EXPECT_TRUE(same_bits(culled.targets.depth, plain.targets.depth));
         // The opaque square shows through the holes.
-        EXPECT_EQ(rgb_at(plain, 27, 27), glm::ivec3(unorm8(0.9), unorm8(0.2), unorm8(0.1)));
+        EXPECT_EQ(alpha_test_rgb(plain, 27, 27),
+                  glm::ivec3(analytic_unorm8(0.9), analytic_unorm8(0.2), analytic_unorm8(0.1)));
     }
 }
 

@@ -21,45 +21,17 @@
 #include <memory>
 #include <string>
 
+#include "support/alpha_test_scenes.hpp"
 #include "support/test_support.hpp"
 
 namespace zraster::test {
 namespace {
 
-constexpr int kAlphaImage = 64;
-
-// Orthographic on +z: world (x, y) lands on window (x + 32, 32 - y), so a square from -h to h
-// covers the pixels 32 - h .. 32 + h - 1 each way.
 RenderOptions alpha_path_options() {
-    RenderOptions o;
-    o.width = kAlphaImage;
-    o.height = kAlphaImage;
-    o.threads = 2;
-    o.shading = ShadingMode::Unlit;  // colors = base colors, for the analytic blend
-    o.background = {0.25f, 0.5f, 0.75f};
+    RenderOptions o = alpha_test_options();
     o.id_targets = true;
-    Camera c;
-    c.eye = {0.0, 0.0, 8.0};
-    c.target = {0.0, 0.0, 0.0};
-    c.projection = Camera::Projection::Orthographic;
-    c.ortho_height = kAlphaImage;
-    c.near = 1.0;
-    c.far = 20.0;
-    o.camera = c;
     return o;
 }
-
-// A square of half-width h at depth z, as two triangles with texture coordinates 0..1.
-Mesh alpha_square(float h, float z) {
-    Mesh m;
-    m.positions = {{-h, -h, z}, {h, -h, z}, {h, h, z}, {-h, h, z}};
-    m.uvs = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
-    m.normals.assign(4, glm::vec3(0, 0, 1));
-    m.indices = {0, 1, 2, 0, 2, 3};
-    update_bounds(m);
-    return m;
-}
-
 enum class Path { ZBuffer, Painter, Bsp, Warnock, Multisample, ABuffer };
 constexpr std::array<Path, 6> kPaths = {Path::ZBuffer, Path::Painter,     Path::Bsp,
                                         Path::Warnock, Path::Multisample, Path::ABuffer};
@@ -90,15 +62,6 @@ RenderResult draw_with(Path path, const Scene& scene, const RenderOptions& optio
     return {};
 }
 
-int alpha_unorm8(double v) {
-    return int(std::clamp(float(v), 0.0f, 1.0f) * 255.0f + 0.5f);
-}
-
-glm::ivec3 rgb_of(const RenderResult& r, int px, int py) {
-    const std::uint8_t* p = &r.targets.color[(std::size_t(py) * kAlphaImage + std::size_t(px)) * 4];
-    return {p[0], p[1], p[2]};
-}
-
 std::size_t at_pixel(int px, int py) {
     return std::size_t(py) * kAlphaImage + std::size_t(px);
 }
@@ -118,8 +81,8 @@ Scene checker_scene(AlphaMode mode, bool cut_out_first) {
     front.base_color_texture = std::make_shared<Texture>(
         make_checkerboard_texture(4, 16, {40, 200, 60, 0}, {40, 200, 60, 255}));
     scene.materials = {wall, front};
-    Mesh far = alpha_square(24.0f, -2.0f);
-    Mesh near = alpha_square(16.0f, 1.0f);
+    Mesh far = alpha_test_square(24.0f, -2.0f);
+    Mesh near = alpha_test_square(16.0f, 1.0f);
     near.material = 1;
     scene.meshes = {far, near};
     scene.instances.resize(2);
@@ -157,14 +120,16 @@ TEST(AlphaPaths, MaskCheckerShowsTheWallThroughItsCutCells) {
                 EXPECT_EQ(r.targets.primitive_id[p], reference.targets.primitive_id[p]);
                 if (transparent) {
                     EXPECT_EQ(r.targets.depth[p], wall.targets.depth[p]) << px << "," << py;
-                    EXPECT_EQ(rgb_of(r, px, py),
-                              glm::ivec3(alpha_unorm8(0.9), alpha_unorm8(0.2), alpha_unorm8(0.1)))
+                    EXPECT_EQ(alpha_test_rgb(r, px, py),
+                              glm::ivec3(analytic_unorm8(0.9), analytic_unorm8(0.2),
+                                         analytic_unorm8(0.1)))
                         << px << "," << py;
                     EXPECT_EQ(r.targets.instance_id[p], 0) << px << "," << py;
                     ++cut;
                 } else {
                     EXPECT_LT(r.targets.depth[p], wall.targets.depth[p]) << px << "," << py;
-                    EXPECT_EQ(rgb_of(r, px, py), glm::ivec3(40, 200, 60)) << px << "," << py;
+                    EXPECT_EQ(alpha_test_rgb(r, px, py), glm::ivec3(40, 200, 60))
+                        << px << "," << py;
                     EXPECT_EQ(r.targets.instance_id[p], 1) << px << "," << py;
                     ++kept;
                 }
@@ -200,9 +165,9 @@ TEST(AlphaPaths, TextureAlphaBlendsAsTheZBufferBlends) {
                 const int px = 16 + 8 * cx + 4, py = 16 + 8 * cy + 2;
                 const double a = ((cx + cy) & 1) == 0 ? 64 / 255.0 : 1.0;
                 const glm::dvec3 expected = a * green + (1.0 - a) * wall;
-                const glm::ivec3 got = rgb_of(r, px, py);
+                const glm::ivec3 got = alpha_test_rgb(r, px, py);
                 for (int c = 0; c < 3; ++c)
-                    EXPECT_LE(std::abs(got[c] - alpha_unorm8(expected[c])), 1)
+                    EXPECT_LE(std::abs(got[c] - analytic_unorm8(expected[c])), 1)
                         << px << "," << py << " channel " << c;
                 // Blended fragments write no depth and no ids: the wall's everywhere.
                 const std::size_t p = at_pixel(px, py);
@@ -216,38 +181,6 @@ TEST(AlphaPaths, TextureAlphaBlendsAsTheZBufferBlends) {
     }
 }
 
-struct AlphaLayer {
-    float half_width, z;
-    glm::vec3 color;
-    float opacity;
-};
-
-// Far opaque, then two blended layers nearer, each smaller.
-const std::array<AlphaLayer, 3> kAlphaLayers = {{
-    {20.0f, -2.0f, {0.9f, 0.2f, 0.1f}, 1.0f},
-    {14.0f, 0.0f, {0.1f, 0.8f, 0.3f}, 0.5f},
-    {8.0f, 2.0f, {0.2f, 0.3f, 0.9f}, 0.35f},
-}};
-
-Scene alpha_layers(const std::array<int, 3>& order) {
-    Scene scene;
-    scene.materials.push_back(Material{});
-    for (const int k : order) {
-        const AlphaLayer& layer = kAlphaLayers[std::size_t(k)];
-        Material m;
-        m.base_color = layer.color;
-        m.opacity = layer.opacity;
-        scene.materials.push_back(m);
-        Mesh mesh = alpha_square(layer.half_width, layer.z);
-        mesh.material = std::uint32_t(scene.materials.size() - 1);
-        scene.meshes.push_back(std::move(mesh));
-        Instance instance;
-        instance.mesh = std::uint32_t(scene.meshes.size() - 1);
-        scene.instances.push_back(instance);
-    }
-    return scene;
-}
-
 // The blended layers in every submission order (the half-transparent one first, the opaque one
 // after it among them): the same image, "over" within 1/255, the opaque layer's depth and ids.
 TEST(AlphaPaths, BlendIsOverInAnyOrder) {
@@ -259,17 +192,18 @@ TEST(AlphaPaths, BlendIsOverInAnyOrder) {
     const glm::dvec3 middle =
         double(kAlphaLayers[1].opacity) * glm::dvec3(kAlphaLayers[1].color) +
         (1.0 - double(kAlphaLayers[1].opacity)) * glm::dvec3(kAlphaLayers[0].color);
-    const RenderResult reference = render(alpha_layers({1, 0, 2}), options);
+    const RenderResult reference = render(alpha_layers_scene(kAlphaLayers, {1, 0, 2}), options);
     for (const Path path : kPaths) {
         SCOPED_TRACE(path_name(path));
-        Scene opaque_only = alpha_layers({0, 1, 2});
+        Scene opaque_only = alpha_layers_scene(kAlphaLayers, {0, 1, 2});
         opaque_only.instances.resize(1);
         const RenderResult wall = draw_with(path, opaque_only, options);
         std::array<int, 3> order = {0, 1, 2};
         RenderResult first;
         int orders = 0;
         do {
-            const RenderResult r = draw_with(path, alpha_layers(order), options);
+            const RenderResult r =
+                draw_with(path, alpha_layers_scene(kAlphaLayers, order), options);
             if (orders++ == 0) {
                 first = r;
                 continue;
@@ -281,9 +215,9 @@ TEST(AlphaPaths, BlendIsOverInAnyOrder) {
         for (const auto& [px, py, expected] :
              {std::tuple{32, 32, inner}, std::tuple{26, 38, inner}, std::tuple{20, 20, middle},
               std::tuple{14, 14, glm::dvec3(kAlphaLayers[0].color)}}) {
-            const glm::ivec3 got = rgb_of(first, px, py);
+            const glm::ivec3 got = alpha_test_rgb(first, px, py);
             for (int c = 0; c < 3; ++c)
-                EXPECT_LE(std::abs(got[c] - alpha_unorm8(expected[c])), 1)
+                EXPECT_LE(std::abs(got[c] - analytic_unorm8(expected[c])), 1)
                     << "pixel " << px << "," << py << " channel " << c;
             // The opaque layer's depth and ids, as the path has them without the others.
             const std::size_t p = at_pixel(px, py);
@@ -302,7 +236,8 @@ TEST(AlphaPaths, OpaqueModeDrawsEverythingOpaque) {
     opaque.alpha_mode = MaterialAlpha::Opaque;
     for (const Path path : kPaths) {
         SCOPED_TRACE(path_name(path));
-        for (Scene scene : {checker_scene(AlphaMode::Mask, false), alpha_layers({2, 0, 1})}) {
+        for (Scene scene :
+             {checker_scene(AlphaMode::Mask, false), alpha_layers_scene(kAlphaLayers, {2, 0, 1})}) {
             const RenderResult ignored = draw_with(path, scene, opaque);
             for (Material& m : scene.materials) m.alpha_mode = AlphaMode::Opaque;
             const RenderResult reference = draw_with(path, scene, alpha_path_options());
@@ -331,7 +266,7 @@ TEST(AlphaPaths, OneSampleAPixelCutsOutAsTheZBuffer) {
 // Multisampling composites per sample: any thread count gives the same bits.
 TEST(AlphaPaths, MultisampledBlendIsTheSameForAnyThreadCount) {
     RenderOptions options = alpha_path_options();
-    const Scene scene = alpha_layers({2, 0, 1});
+    const Scene scene = alpha_layers_scene(kAlphaLayers, {2, 0, 1});
     options.threads = 1;
     const RenderResult one = render_multisampled(scene, options, 4);
     options.threads = 3;
@@ -348,7 +283,7 @@ TEST(AlphaPaths, SvgBlendsAndCutsOut) {
     for (const SvgOptions::Order order : {SvgOptions::Order::Bsp, SvgOptions::Order::Painter}) {
         SvgOptions svg_options;
         svg_options.order = order;
-        Scene layers = alpha_layers({1, 0, 2});
+        Scene layers = alpha_layers_scene(kAlphaLayers, {1, 0, 2});
         const std::string svg = render_svg(layers, options, svg_options);
         EXPECT_NE(svg.find("fill=\"#e6331a\""), std::string::npos) << svg;  // the opaque wall
         EXPECT_NE(svg.find("fill-opacity=\"0.5\""), std::string::npos) << svg;
