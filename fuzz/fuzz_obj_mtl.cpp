@@ -149,16 +149,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     fuzz::write_file(path, generate_obj(in, libraries));
 
-    Scene scene;
-    std::vector<std::string> warnings;
-    try {
-        scene = load_scene(path, options, &warnings);
-    } catch (const InputError& e) {
-        fuzz::check_load_refusal(e, path.string());
-        return 0;
-    }
-    fuzz::check_loaded_scene(scene, warnings);
-    if (!options.allow_outside_references) fuzz::check_nothing_read_outside(scene);
-    fuzz::check_renders(scene, "a loaded scene");
+    fuzz::load_reference_model(path, options);
     return 0;
 }

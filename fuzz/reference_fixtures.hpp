@@ -19,6 +19,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <span>
 #include <string>
@@ -132,6 +133,25 @@ inline void check_load_refusal(const InputError& e, const std::string& file) {
         if (e.cause().find(internal) != std::string::npos &&
             e.cause().find("(Assimp: ") == std::string::npos)
             fail("Assimp's internals as the cause: " + std::string(e.what()));
+}
+
+// The generated model at `path` through load_scene, checked: refused with one line naming it,
+// or a scene that keeps load.hpp's promises, holds nothing from outside its folder (unless
+// allowed) and renders. The scene, or nothing when refused.
+inline std::optional<Scene> load_reference_model(const std::filesystem::path& path,
+                                                 const LoadOptions& options) {
+    Scene scene;
+    std::vector<std::string> warnings;
+    try {
+        scene = load_scene(path, options, &warnings);
+    } catch (const InputError& e) {
+        check_load_refusal(e, path.string());
+        return std::nullopt;
+    }
+    check_loaded_scene(scene, warnings);
+    if (!options.allow_outside_references) check_nothing_read_outside(scene);
+    check_renders(scene, "a loaded scene");
+    return scene;
 }
 
 }  // namespace zraster::fuzz

@@ -8,7 +8,6 @@
 
 #include <algorithm>
 
-#include "render/material_alpha.hpp"
 #include "visibility/frame_context.hpp"
 #include "visibility/surface_shader.hpp"
 
