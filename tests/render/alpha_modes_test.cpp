@@ -120,34 +120,10 @@ TEST(AlphaModes, OpaqueModeIgnoresAlpha) {
     EXPECT_EQ(render(scene, options).targets.color, opaque.targets.color);
 }
 
-// A square with a checkerboard of transparent and opaque 8x8-pixel cells in front of an opaque
-// one: the transparent cells show (and keep the depth of) what is behind.
-Scene cut_out_scene(AlphaMode mode, bool cut_out_first) {
-    Scene scene;
-    Material back;
-    back.base_color = {0.9f, 0.2f, 0.1f};
-    Material front;
-    front.base_color = {1.0f, 1.0f, 1.0f};
-    front.alpha_mode = mode;
-    front.alpha_cutoff = 0.5f;
-    // 4 x 4 cells of 16 texels over a square 32 pixels wide: 8 pixels a cell.
-    front.base_color_texture = std::make_shared<Texture>(
-        make_checkerboard_texture(4, 16, {40, 200, 60, 0}, {40, 200, 60, 255}));
-    scene.materials = {back, front};
-    Mesh far = alpha_test_square(24.0f, -2.0f);
-    Mesh near = alpha_test_square(16.0f, 1.0f);
-    near.material = 1;
-    if (cut_out_first) std::swap(far, near);
-    scene.meshes = {far, near};
-    scene.instances.resize(2);
-    scene.instances[1].mesh = 1;
-    return scene;
-}
-
 TEST(AlphaModes, MaskDiscardsFragmentsUnderTheCutoffBeforeTheyWriteDepth) {
     const RenderOptions options = alpha_test_options();
-    const RenderResult r = render(cut_out_scene(AlphaMode::Mask, false), options);
-    EXPECT_EQ(render(cut_out_scene(AlphaMode::Mask, true), options).targets.color, r.targets.color);
+    const RenderResult r = render(checker_scene(AlphaMode::Mask, false), options);
+    EXPECT_EQ(render(checker_scene(AlphaMode::Mask, true), options).targets.color, r.targets.color);
     const float far_depth =
         r.targets.depth[std::size_t(10) * kAlphaImage + 32];  // back square only
     int cut = 0, kept = 0;
@@ -177,7 +153,7 @@ TEST(AlphaModes, MaskDiscardsFragmentsUnderTheCutoffBeforeTheyWriteDepth) {
     // A depth-only frame cuts the same holes.
     RenderOptions depth_only = options;
     depth_only.color_target = false;
-    EXPECT_TRUE(same_bits(render(cut_out_scene(AlphaMode::Mask, false), depth_only).targets.depth,
+    EXPECT_TRUE(same_bits(render(checker_scene(AlphaMode::Mask, false), depth_only).targets.depth,
                           r.targets.depth));
 }
 
@@ -188,7 +164,7 @@ TEST(AlphaModes, TheOptimizationsAndTheSimdShaderDoNotChangeABit) {
                                         {AlphaMode::Mask, ShadingMode::Phong},
                                         {AlphaMode::Blend, ShadingMode::Phong}}) {
         for (const bool first : {false, true}) {
-            Scene scene = cut_out_scene(mode, first);
+            Scene scene = checker_scene(mode, first);
             if (shading == ShadingMode::Phong)  // untextured, alpha from the opacity: SIMD-lit
                 for (Material& m : scene.materials) {
                     m.base_color_texture.reset();
@@ -222,13 +198,14 @@ TEST(AlphaModes, TheOptimizationsAndTheSimdShaderDoNotChangeABit) {
 // opaque: it must not serve as an occluder.
 TEST(AlphaModes, CutOutsAndBlendedSurfacesDoNotOcclude) {
     for (const AlphaMode mode : {AlphaMode::Mask, AlphaMode::Blend}) {
-        Scene scene = cut_out_scene(mode, true);
-        scene.meshes[0] = alpha_test_square(2.0f, 1.0f);  // the cut-out square, 4 x 4 cells
-        scene.meshes[0].material = 1;
+        // (Instance 0 draws mesh 1, the cut-out square; instance 1 mesh 0, the wall.)
+        Scene scene = checker_scene(mode, true);
+        scene.meshes[1] = alpha_test_square(2.0f, 1.0f);  // the cut-out square, 4 x 4 cells
+        scene.meshes[1].material = 1;
         // Small (under the 1% of the screen that makes every instance an occluder), behind the
         // middle of a transparent cell (the second in each direction).
-        scene.meshes[1] = alpha_test_square(0.15f, -2.0f);
-        scene.meshes[1].material = 0;
+        scene.meshes[0] = alpha_test_square(0.15f, -2.0f);
+        scene.meshes[0].material = 0;
         scene.instances[1].transform = glm::translate(glm::mat4(1.0f), {-0.5f, 0.5f, 0.0f});
         // (In perspective: the occlusion buffer compares 1/w, constant in an orthographic view.)
         RenderOptions options = alpha_test_options();

@@ -4,12 +4,15 @@
 #pragma once
 #include <zraster/render.hpp>
 #include <zraster/scene.hpp>
+#include <zraster/texture.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
 #include <initializer_list>
+#include <memory>
 #include <span>
+#include <utility>
 
 namespace zraster::test {
 
@@ -83,6 +86,31 @@ inline Scene alpha_layers_scene(std::span<const AlphaLayer> layers, std::span<co
 inline Scene alpha_layers_scene(std::span<const AlphaLayer> layers,
                                 std::initializer_list<int> order) {
     return alpha_layers_scene(layers, std::span<const int>(order.begin(), order.size()));
+}
+
+// A wall and, in front of it, a square with a checkerboard of transparent and opaque 8x8-pixel
+// cells (texel alpha 0 and 255) in alpha mode `mode`: the transparent cells show (and keep the
+// depth and ids of) the wall. `cut_out_first`: the square is submitted before the wall.
+inline Scene checker_scene(AlphaMode mode, bool cut_out_first) {
+    Scene scene;
+    Material wall;
+    wall.base_color = {0.9f, 0.2f, 0.1f};
+    Material front;
+    front.base_color = {1.0f, 1.0f, 1.0f};
+    front.alpha_mode = mode;
+    front.alpha_cutoff = 0.5f;
+    // 4 x 4 cells of 16 texels over a square 32 pixels wide: 8 pixels a cell.
+    front.base_color_texture = std::make_shared<Texture>(
+        make_checkerboard_texture(4, 16, {40, 200, 60, 0}, {40, 200, 60, 255}));
+    scene.materials = {wall, front};
+    Mesh far = alpha_test_square(24.0f, -2.0f);
+    Mesh near = alpha_test_square(16.0f, 1.0f);
+    near.material = 1;
+    scene.meshes = {far, near};
+    scene.instances.resize(2);
+    scene.instances[1].mesh = 1;
+    if (cut_out_first) std::swap(scene.instances[0], scene.instances[1]);
+    return scene;
 }
 
 // An analytic channel value as an 8-bit target stores it.

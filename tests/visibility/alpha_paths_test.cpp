@@ -66,31 +66,6 @@ std::size_t at_pixel(int px, int py) {
     return std::size_t(py) * kAlphaImage + std::size_t(px);
 }
 
-// A wall and, in front of it, a square with a checkerboard of transparent and opaque 8x8-pixel
-// cells (texel alpha 0 and 255): the z-buffer test's scene. `cut_out_first`: the square is
-// submitted before the wall.
-Scene checker_scene(AlphaMode mode, bool cut_out_first) {
-    Scene scene;
-    Material wall;
-    wall.base_color = {0.9f, 0.2f, 0.1f};
-    Material front;
-    front.base_color = {1.0f, 1.0f, 1.0f};
-    front.alpha_mode = mode;
-    front.alpha_cutoff = 0.5f;
-    // 4 x 4 cells of 16 texels over a square 32 pixels wide: 8 pixels a cell.
-    front.base_color_texture = std::make_shared<Texture>(
-        make_checkerboard_texture(4, 16, {40, 200, 60, 0}, {40, 200, 60, 255}));
-    scene.materials = {wall, front};
-    Mesh far = alpha_test_square(24.0f, -2.0f);
-    Mesh near = alpha_test_square(16.0f, 1.0f);
-    near.material = 1;
-    scene.meshes = {far, near};
-    scene.instances.resize(2);
-    scene.instances[1].mesh = 1;
-    if (cut_out_first) std::swap(scene.instances[0], scene.instances[1]);
-    return scene;
-}
-
 // The scene without its last instance (the wall alone, the opaque layers alone).
 Scene without_last(Scene scene) {
     scene.instances.pop_back();
