@@ -64,26 +64,23 @@ std::vector<SvgPolygonAlpha> svg_polygon_alphas(const Scene& scene, const Render
         SvgPolygonAlpha& a = out[i];
         const AlphaMode mode = shader.alpha_mode(polygon.instance);
         if (mode == AlphaMode::Opaque) continue;
-        if (!shader.alpha_varies(polygon.instance)) {
-            const float alpha = shader.constant_alpha(polygon.instance);
+        // One alpha for the whole polygon: kept or dropped (Mask), or its opacity (Blend).
+        const auto whole = [&](float alpha) {
             if (mode == AlphaMode::Mask)
                 a.shown = shader.passes_alpha_test(polygon.instance, alpha);
             else
                 a.opacity = clamp_unit(alpha);
             a.shown = a.shown && a.opacity > 0.0f;
+        };
+        if (!shader.alpha_varies(polygon.instance)) {
+            whole(shader.constant_alpha(polygon.instance));
             continue;
         }
         shader.prepare(polygon, prepared);
         pixel_alphas(frame, shader, prepared, polygon, pixels);
-        if (pixels.empty()) {
-            // Covers no pixel center: its alpha at the centroid.
+        if (pixels.empty()) {  // covers no pixel center: its alpha at the centroid
             const glm::dvec2 c = centroid_of(polygon);
-            const float alpha = shader.alpha(prepared, 0, 0, false, c.x, c.y);
-            if (mode == AlphaMode::Mask)
-                a.shown = shader.passes_alpha_test(polygon.instance, alpha);
-            else
-                a.opacity = clamp_unit(alpha);
-            a.shown = a.shown && a.opacity > 0.0f;
+            whole(shader.alpha(prepared, 0, 0, false, c.x, c.y));
             continue;
         }
         if (mode == AlphaMode::Blend) {
