@@ -30,6 +30,15 @@ void append(std::string& out, const T& value) {
     out.append(reinterpret_cast<const char*>(&value), sizeof value);
 }
 
+// fuzz_load_stl: a vertical tab (or form feed) between tokens of an ASCII STL was a blank the
+// structure check's token loop stopped at but did not skip: it never moved on (a hang).
+TEST(FuzzRegressions, StlVerticalTabBetweenTokens) {
+    expect_refused("stl-vtab", "vtab.stl",
+                   "solid x\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\v\n   vertex 1 0 "
+                   "0\n  endloop\n endfacet\nendsolid x\n",
+                   "has 2 vertices; a facet has 3");
+}
+
 // fuzz_load_off: "OFF4294967295" declares 4294967295 vertices to Assimp (no separator needed
 // after the keyword); it allocated 48 GiB.
 TEST(FuzzRegressions, OffCountGluedToTheKeyword) {
