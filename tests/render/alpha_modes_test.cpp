@@ -27,29 +27,11 @@ namespace {
 
 TEST(AlphaModes, BlendIsIndependentOfSubmissionOrderAndMatchesOver) {
     const RenderOptions options = alpha_test_options();
-    std::array<int, 3> order = {0, 1, 2};
-    RenderResult first;
-    int orders = 0;
-    do {
-        const RenderResult r = render(alpha_layers_scene(kAlphaLayers, order), options);
-        if (orders++ == 0) {
-            first = r;
-            continue;
-        }
-        EXPECT_EQ(r.targets.color, first.targets.color)
-            << "order " << order[0] << order[1] << order[2];
-        EXPECT_TRUE(same_bits(r.targets.depth, first.targets.depth));
-    } while (std::next_permutation(order.begin(), order.end()));
-    EXPECT_EQ(orders, 6);
+    const RenderResult first =
+        same_image_in_every_order([&](const Scene& scene) { return render(scene, options); });
 
     // Inside every layer: the background hidden by the opaque one, then "over" twice.
-    glm::dvec3 inner(kAlphaLayers[0].color);
-    for (std::size_t k = 1; k < 3; ++k)
-        inner = double(kAlphaLayers[k].opacity) * glm::dvec3(kAlphaLayers[k].color) +
-                (1.0 - double(kAlphaLayers[k].opacity)) * inner;
-    const glm::dvec3 middle =
-        double(kAlphaLayers[1].opacity) * glm::dvec3(kAlphaLayers[1].color) +
-        (1.0 - double(kAlphaLayers[1].opacity)) * glm::dvec3(kAlphaLayers[0].color);
+    const glm::dvec3 inner = alpha_over(3), middle = alpha_over(2);
     for (const auto& [px, py, expected] :
          {std::tuple{32, 32, inner}, std::tuple{26, 38, inner}, std::tuple{20, 20, middle},
           std::tuple{14, 14, glm::dvec3(kAlphaLayers[0].color)}}) {

@@ -12,7 +12,11 @@
 #include <initializer_list>
 #include <memory>
 #include <span>
+
+#include <gtest/gtest.h>
+
 #include <utility>
+#include "support/test_support.hpp"
 
 namespace zraster::test {
 
@@ -111,6 +115,37 @@ inline Scene checker_scene(AlphaMode mode, bool cut_out_first) {
     scene.instances[1].mesh = 1;
     if (cut_out_first) std::swap(scene.instances[0], scene.instances[1]);
     return scene;
+}
+
+// The analytic "over" where the first `layers` of kAlphaLayers overlap (3: inside all of them).
+inline glm::dvec3 alpha_over(int layers) {
+    glm::dvec3 c(kAlphaLayers[0].color);
+    for (int k = 1; k < layers; ++k)
+        c = double(kAlphaLayers[std::size_t(k)].opacity) *
+                glm::dvec3(kAlphaLayers[std::size_t(k)].color) +
+            (1.0 - double(kAlphaLayers[std::size_t(k)].opacity)) * c;
+    return c;
+}
+
+// kAlphaLayers drawn by draw(scene) in all 6 submission orders: one color and depth image,
+// returned.
+template <class Draw>
+RenderResult same_image_in_every_order(const Draw& draw) {
+    std::array<int, 3> order = {0, 1, 2};
+    RenderResult first;
+    int orders = 0;
+    do {
+        const RenderResult r = draw(alpha_layers_scene(kAlphaLayers, order));
+        if (orders++ == 0) {
+            first = r;
+            continue;
+        }
+        EXPECT_EQ(r.targets.color, first.targets.color)
+            << "order " << order[0] << order[1] << order[2];
+        EXPECT_TRUE(same_bits(r.targets.depth, first.targets.depth));
+    } while (std::next_permutation(order.begin(), order.end()));
+    EXPECT_EQ(orders, 6);
+    return first;
 }
 
 // An analytic channel value as an 8-bit target stores it.

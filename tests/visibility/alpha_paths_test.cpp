@@ -160,33 +160,15 @@ TEST(AlphaPaths, TextureAlphaBlendsAsTheZBufferBlends) {
 // after it among them): the same image, "over" within 1/255, the opaque layer's depth and ids.
 TEST(AlphaPaths, BlendIsOverInAnyOrder) {
     const RenderOptions options = alpha_path_options();
-    glm::dvec3 inner(kAlphaLayers[0].color);
-    for (std::size_t k = 1; k < 3; ++k)
-        inner = double(kAlphaLayers[k].opacity) * glm::dvec3(kAlphaLayers[k].color) +
-                (1.0 - double(kAlphaLayers[k].opacity)) * inner;
-    const glm::dvec3 middle =
-        double(kAlphaLayers[1].opacity) * glm::dvec3(kAlphaLayers[1].color) +
-        (1.0 - double(kAlphaLayers[1].opacity)) * glm::dvec3(kAlphaLayers[0].color);
+    const glm::dvec3 inner = alpha_over(3), middle = alpha_over(2);
     const RenderResult reference = render(alpha_layers_scene(kAlphaLayers, {1, 0, 2}), options);
     for (const Path path : kPaths) {
         SCOPED_TRACE(path_name(path));
         Scene opaque_only = alpha_layers_scene(kAlphaLayers, {0, 1, 2});
         opaque_only.instances.resize(1);
         const RenderResult wall = draw_with(path, opaque_only, options);
-        std::array<int, 3> order = {0, 1, 2};
-        RenderResult first;
-        int orders = 0;
-        do {
-            const RenderResult r =
-                draw_with(path, alpha_layers_scene(kAlphaLayers, order), options);
-            if (orders++ == 0) {
-                first = r;
-                continue;
-            }
-            EXPECT_EQ(r.targets.color, first.targets.color)
-                << "order " << order[0] << order[1] << order[2];
-            EXPECT_TRUE(same_bits(r.targets.depth, first.targets.depth));
-        } while (std::next_permutation(order.begin(), order.end()));
+        const RenderResult first = same_image_in_every_order(
+            [&](const Scene& scene) { return draw_with(path, scene, options); });
         for (const auto& [px, py, expected] :
              {std::tuple{32, 32, inner}, std::tuple{26, 38, inner}, std::tuple{20, 20, middle},
               std::tuple{14, 14, glm::dvec3(kAlphaLayers[0].color)}}) {
