@@ -117,6 +117,11 @@ inline void check_loaded_scene(const Scene& scene, const std::vector<std::string
                      ", " + std::to_string(normal.z) + ") not unit length in mesh " + mesh.name);
         }
         if (!mesh.uvs.empty() && mesh.uvs.size() != n) fail("uvs not one per position");
+        if (!mesh.colors.empty() && mesh.colors.size() != n) fail("colors not one per position");
+        for (const glm::vec4& c : mesh.colors)
+            if (!(c.x >= 0.0f && c.x <= 1.0f && c.y >= 0.0f && c.y <= 1.0f && c.z >= 0.0f &&
+                  c.z <= 1.0f && c.w >= 0.0f && c.w <= 1.0f))
+                fail("vertex color outside [0, 1] in mesh " + mesh.name);
         if (mesh.material >= scene.materials.size()) fail("material index out of range");
     }
     for (const Instance& instance : scene.instances)

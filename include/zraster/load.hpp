@@ -72,7 +72,8 @@ struct LoadOptions {
 //
 // Loads every mesh with its material (base color, specular, shininess, alpha: opacity, alpha
 // mode and cutoff, base-color and opacity textures; docs/materials.md says what each format
-// gives) and the node hierarchy as instances (node transforms applied). Computes
+// gives), vertex colors (glTF COLOR_0, PLY red/green/blue/alpha: Mesh::colors, clamped to
+// [0, 1]) and the node hierarchy as instances (node transforms applied). Computes
 // angle-weighted normals when the file has none, and bounds.
 // Non-fatal problems (a missing material library or texture: the default material or the
 // material's color is used; a texture reduced to fit the limits; an unknown glTF alpha mode) are

@@ -9,8 +9,8 @@
 namespace zraster {
 
 // What a material's alpha does (glTF's alphaMode). A fragment's alpha is the material's opacity
-// times the base-color texture's alpha times the opacity texture's red channel (each where
-// present).
+// times the base-color texture's alpha times the opacity texture's red channel times the mesh's
+// interpolated vertex alpha (Mesh::colors) (each where present).
 enum class AlphaMode : std::uint8_t {
     Opaque,  // alpha is ignored: drawn opaque (glTF OPAQUE)
     Mask,    // alpha test: fragments with alpha below alpha_cutoff are discarded, the rest opaque
@@ -18,7 +18,8 @@ enum class AlphaMode : std::uint8_t {
 };
 
 // color = base * (ambient + diffuse * sum(light * max(N.L, 0))) + specular * sum(light *
-// spec^shininess) where base = base_color * texture(uv) when a texture is bound. The defaults
+// spec^shininess) where base = base_color * texture(uv) when a texture is bound, times the
+// interpolated vertex color where the mesh has colors. The defaults
 // reproduce the benchmark scenes' "phong" shading (docs/bench-scenes.md).
 struct Material {
     std::string name = "default";

@@ -13,8 +13,11 @@ namespace zraster {
 struct Mesh {
     std::string name;
     std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;      // empty or one per position, unit length
-    std::vector<glm::vec2> uvs;          // empty or one per position; v = 0 at the image's top row
+    std::vector<glm::vec3> normals;  // empty or one per position, unit length
+    std::vector<glm::vec2> uvs;      // empty or one per position; v = 0 at the image's top row
+    // Empty or one per position: RGBA in [0, 1] multiplying the material's base color and alpha
+    // (glTF COLOR_0, PLY red/green/blue/alpha), interpolated over each triangle.
+    std::vector<glm::vec4> colors;
     std::vector<std::uint32_t> indices;  // three per triangle; counter-clockwise = front
     std::uint32_t material = 0;          // index into Scene::materials
     Bounds3f bounds;                     // of positions, in the mesh's own space

@@ -27,7 +27,8 @@
 
 namespace zraster {
 
-// `count` elements of N floats (N by the attribute: 3 for positions and normals, 2 for uvs),
+// `count` elements of N floats (N by the attribute: 3 for positions and normals, 2 for uvs, 4 for
+// colors),
 // element i at byte offset i * stride from `data`; stride 0 means tightly packed (N * 4 bytes).
 // So an interleaved vertex buffer works:
 //   positions = {&vertices[0].position.x, n, sizeof(Vertex)}.
@@ -55,6 +56,8 @@ struct MeshView {
     AttributeView normals;    // optional (count 0), else one per position, 3 floats, unit length
     AttributeView uvs;        // optional (count 0), else one per position, 2 floats; v = 0 at the
                               // image's top row
+    AttributeView colors;     // optional (count 0), else one per position, 4 floats: RGBA
+                              // multiplying the material's base color and alpha (Mesh::colors)
     IndexView indices;        // three per triangle, counter-clockwise = front; a partial last
                               // triple is ignored
     std::uint32_t material = 0;  // index into SceneView::materials

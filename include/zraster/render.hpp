@@ -343,7 +343,7 @@ struct RenderResult {
 // Renders one frame. Throws InputError for unusable options (size out of range, more user clip
 // planes than supported, a non-finite camera), a request past options.limits, or an inconsistent
 // scene (an instance naming a missing mesh, a vertex index past the mesh's positions, normals or
-// uvs not one per position, no materials).
+// uvs or colors not one per position, no materials).
 ZRASTER_API RenderResult render(const Scene& scene, const RenderOptions& options);
 // The same from views into the caller's targets (see Renderer::render below), for one frame.
 ZRASTER_API RenderStats render(const SceneView& scene, const RenderOptions& options,
@@ -377,7 +377,7 @@ class ZRASTER_API Renderer {
     // One frame of the caller's scene into the caller's targets (see TargetViews), the same
     // images as the call above for the same scene and options. Throws InputError, before
     // anything is read or written, for what the call above refuses and for unusable views: a
-    // null pointer with a non-zero count, a stride shorter than its element, normals or uvs
+    // null pointer with a non-zero count, a stride shorter than its element, normals, uvs or colors
     // neither absent nor one per position, an index past the positions, an instance naming a
     // missing mesh, a mesh naming a missing material, no materials, targets of another size
     // than the options', a pitch shorter than a row, a misaligned target. The messages name

@@ -12,11 +12,13 @@ const float* floats_of(const std::vector<Vector>& v) {
 }  // namespace
 
 MeshView view_of(const Mesh& mesh) {
-    static_assert(sizeof(glm::vec3) == 3 * sizeof(float) && sizeof(glm::vec2) == 2 * sizeof(float));
+    static_assert(sizeof(glm::vec3) == 3 * sizeof(float) &&
+                  sizeof(glm::vec2) == 2 * sizeof(float) && sizeof(glm::vec4) == 4 * sizeof(float));
     MeshView view;
     view.positions = {floats_of(mesh.positions), mesh.positions.size(), sizeof(glm::vec3)};
     view.normals = {floats_of(mesh.normals), mesh.normals.size(), sizeof(glm::vec3)};
     view.uvs = {floats_of(mesh.uvs), mesh.uvs.size(), sizeof(glm::vec2)};
+    view.colors = {floats_of(mesh.colors), mesh.colors.size(), sizeof(glm::vec4)};
     view.indices = {mesh.indices.data(), mesh.indices.size(), IndexType::UInt32};
     view.material = mesh.material;
     if (!mesh.bounds.empty() || mesh.positions.empty()) view.bounds = mesh.bounds;

@@ -6,6 +6,7 @@
 
 #include <assimp/mesh.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace zraster::io {
@@ -35,6 +36,37 @@ bool copy_normals(const aiMesh& source, Mesh& mesh) {
         }
     }
     return all_valid;
+}
+
+// The first vertex-color set (glTF COLOR_0, PLY red/green/blue/alpha), as Assimp normalizes it:
+// components outside [0, 1] are clamped and non-finite ones become 1, each with one warning.
+void copy_colors(const aiMesh& source, const MeshConversion& how, Mesh& mesh,
+                 std::vector<std::string>& warnings) {
+    const std::string& label = how.label;
+    bool clamped = false, replaced = false;
+    mesh.colors.resize(source.mNumVertices);
+    for (unsigned v = 0; v < source.mNumVertices; ++v) {
+        const aiColor4D& c = source.mColors[0][v];
+        float in[4] = {c.r, c.g, c.b, c.a};
+        for (float& x : in) {
+            if (!std::isfinite(x)) {
+                x = 1.0f;
+                replaced = true;
+            } else if (x < 0.0f || x > 1.0f) {
+                x = std::clamp(x, 0.0f, 1.0f);
+                clamped = true;
+            }
+        }
+        mesh.colors[v] = glm::vec4(in[0], in[1], in[2], in[3]);
+    }
+    bool alpha_zero = true;
+    for (const glm::vec4& c : mesh.colors) alpha_zero &= c.w == 0.0f;
+    if (how.color_alpha == GltfColorAlpha::Opaque ||
+        (how.color_alpha == GltfColorAlpha::OpaqueWhereZero && alpha_zero))
+        for (glm::vec4& c : mesh.colors) c.w = 1.0f;
+    if (replaced) warnings.push_back("mesh " + label + ": non-finite vertex colors replaced by 1");
+    if (clamped)
+        warnings.push_back("mesh " + label + ": vertex colors outside [0, 1] clamped to it");
 }
 
 }  // namespace
@@ -81,6 +113,8 @@ Mesh convert_mesh(const aiMesh& source, const MeshConversion& how,
             warnings.push_back("mesh " + label +
                                ": non-finite texture coordinates replaced by (0, 0)");
     }
+
+    if (source.HasVertexColors(0)) copy_colors(source, how, mesh, warnings);
 
     if (source.HasNormals()) {
         if (!copy_normals(source, mesh)) {

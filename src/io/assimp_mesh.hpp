@@ -1,7 +1,9 @@
 // One triangulated Assimp mesh to a zraster Mesh: positions, unit normals (computed when the file
-// has none), uv channel 0, indices and bounds.
+// has none), uv channel 0, vertex color set 0, indices and bounds.
 #pragma once
 #include <zraster/mesh.hpp>
+
+#include "io/gltf_vertex_colors.hpp"
 
 #include <string>
 #include <vector>
@@ -16,6 +18,8 @@ struct MeshConversion {
     // Merge bitwise-equal vertices: Assimp's OBJ importer emits one vertex per face corner,
     // which other importers do not, so OBJ meshes get their sharing back this way.
     bool weld = false;
+    // What Assimp's vertex alpha means (glTF COLOR_0 of type VEC3 arrives with alpha 0).
+    GltfColorAlpha color_alpha = GltfColorAlpha::AsRead;
 };
 
 // Throws InputError for non-finite positions or indices out of range; non-finite uvs are zeroed

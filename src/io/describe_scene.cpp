@@ -1,6 +1,7 @@
 // The text `zraster info` prints about a scene.
 #include <zraster/load.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -70,8 +71,9 @@ bool has_partial_red(const Texture& t) {
 }
 
 // "alpha opaque", "alpha mask (cutoff 0.5)", "alpha blend (opacity 0.5)", then for mask and
-// blend whether alpha can be below 1 and from which factors (material.hpp's product).
-std::string alpha_text(const Material& m) {
+// blend whether alpha can be below 1 and from which factors (material.hpp's product; vertex
+// alpha: the least of the meshes that use it).
+std::string alpha_text(const Material& m, float least_vertex_alpha) {
     if (m.alpha_mode == AlphaMode::Opaque) return "alpha opaque";
     std::string out = m.alpha_mode == AlphaMode::Mask
                           ? "alpha mask (cutoff " + number(m.alpha_cutoff) +
@@ -85,7 +87,20 @@ std::string alpha_text(const Material& m) {
     if (m.base_color_texture && m.base_color_texture->has_translucent_texels())
         add("texture alpha");
     if (m.opacity_texture && has_partial_red(*m.opacity_texture)) add("opacity texture");
+    if (least_vertex_alpha < 1.0f) add("vertex alpha");
     return out + (sources.empty() ? ", alpha 1 everywhere" : ", alpha below 1 from " + sources);
+}
+
+// ", vertex colors (alpha 0.25 to 1)" for a mesh with colors, else nothing.
+std::string colors_text(const Mesh& m) {
+    if (m.colors.empty()) return "";
+    float least = 1.0f, most = 0.0f;
+    for (const glm::vec4& c : m.colors) {
+        least = std::min(least, c.w);
+        most = std::max(most, c.w);
+    }
+    return ", vertex colors (alpha " +
+           (least == most ? number(least) : number(least) + " to " + number(most)) + ")";
 }
 
 template <typename Item>
@@ -108,8 +123,14 @@ std::string describe_scene(const Scene& scene, const std::vector<std::string>& w
         return "mesh " + std::to_string(i) + " " + quoted(m.name) + ": " +
                std::to_string(m.triangle_count()) + " triangles, " +
                std::to_string(m.vertex_count()) + " vertices, material " + material + ", bounds " +
-               box(m.bounds);
+               box(m.bounds) + colors_text(m);
     });
+    // Vertex alpha per material: the least over the meshes that use it.
+    std::vector<float> least_vertex_alpha(scene.materials.size(), 1.0f);
+    for (const Mesh& m : scene.meshes)
+        if (m.material < scene.materials.size())
+            for (const glm::vec4& c : m.colors)
+                least_vertex_alpha[m.material] = std::min(least_vertex_alpha[m.material], c.w);
     list(out, "instances", scene.instances, [&](std::size_t i, const Instance& instance) {
         return "instance " + std::to_string(i) + " " + quoted(instance.name) + ": mesh " +
                std::to_string(instance.mesh) + ", " + transform_text(instance.transform);
@@ -123,8 +144,8 @@ std::string describe_scene(const Scene& scene, const std::vector<std::string>& w
         const std::string opacity_texture =
             m.opacity_texture ? ", opacity texture " + size_text(*m.opacity_texture) : "";
         return "material " + std::to_string(i) + " " + quoted(m.name) + ": base color " +
-               vec(m.base_color) + ", texture " + texture + opacity_texture + ", " + alpha_text(m) +
-               (m.double_sided ? ", double-sided" : "");
+               vec(m.base_color) + ", texture " + texture + opacity_texture + ", " +
+               alpha_text(m, least_vertex_alpha[i]) + (m.double_sided ? ", double-sided" : "");
     });
     if (!warnings.empty())
         list(out, "warnings", warnings, [](std::size_t, const std::string& w) { return w; });

@@ -246,12 +246,14 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
             warnings.push_back(io::refusal_text(refusal, "not read"));
     for (std::string& warning : assimp_warnings.take()) warnings.push_back(std::move(warning));
     MaterialTable materials(*ai, path, policy, options, scene, warnings);
+    const io::GltfColorAlpha color_alpha = io::gltf_color_alpha(path);
     std::vector<unsigned> our_mesh(ai->mNumMeshes, kUnset);
     std::vector<std::string> labels(ai->mNumMeshes);
     for (unsigned m = 0; m < ai->mNumMeshes; ++m) {
         if (!referenced[m]) continue;
         labels[m] = mesh_label(*ai->mMeshes[m], m);
-        Mesh mesh = io::convert_mesh(*ai->mMeshes[m], {labels[m], file, is_obj(path)}, warnings);
+        Mesh mesh = io::convert_mesh(*ai->mMeshes[m], {labels[m], file, is_obj(path), color_alpha},
+                                     warnings);
         if (mesh.indices.empty()) continue;
         mesh.material = materials.index_of(ai->mMeshes[m]->mMaterialIndex);
         our_mesh[m] = static_cast<unsigned>(scene.meshes.size());

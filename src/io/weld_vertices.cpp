@@ -8,7 +8,7 @@ namespace zraster::io {
 
 namespace {
 
-using Key = std::array<std::uint32_t, 8>;
+using Key = std::array<std::uint32_t, 12>;
 
 struct KeyHash {
     std::size_t operator()(const Key& k) const {
@@ -28,7 +28,7 @@ std::uint32_t bits(float f) {
 }
 
 Key position_key(const glm::vec3& p) {
-    return {bits(p.x), bits(p.y), bits(p.z), 0, 0, 0, 0, 0};
+    return {bits(p.x), bits(p.y), bits(p.z), 0, 0, 0, 0, 0, 0, 0, 0, 0};
 }
 
 // For each vertex the index of the first vertex equal to it under key_of, and the count.
@@ -52,6 +52,7 @@ std::vector<std::uint32_t> first_equal_vertex(std::size_t count, KeyOf key_of,
 void weld_identical_vertices(Mesh& mesh) {
     const bool has_normals = !mesh.normals.empty();
     const bool has_uvs = !mesh.uvs.empty();
+    const bool has_colors = !mesh.colors.empty();
     std::vector<std::uint32_t> kept;
     const std::vector<std::uint32_t> id_of = first_equal_vertex(
         mesh.positions.size(),
@@ -66,6 +67,8 @@ void weld_identical_vertices(Mesh& mesh) {
                 k[6] = bits(mesh.uvs[v].x);
                 k[7] = bits(mesh.uvs[v].y);
             }
+            if (has_colors)
+                for (int c = 0; c < 4; ++c) k[8 + std::size_t(c)] = bits(mesh.colors[v][c]);
             return k;
         },
         kept);
@@ -81,6 +84,7 @@ void weld_identical_vertices(Mesh& mesh) {
     compact(mesh.positions);
     compact(mesh.normals);
     compact(mesh.uvs);
+    compact(mesh.colors);
     for (std::uint32_t& i : mesh.indices) i = id_of[i];
 }
 

@@ -199,7 +199,7 @@ LoadedScene decode_scene(Reader& in, const LoadOptions& options) {
         scene.materials.push_back(std::move(m));
     }
 
-    const std::uint32_t mesh_count = in.get_count(40, "meshes");
+    const std::uint32_t mesh_count = in.get_count(48, "meshes");
     for (std::uint32_t i = 0; i < mesh_count; ++i) {
         Mesh mesh;
         const std::string label = "mesh " + std::to_string(i);
@@ -209,12 +209,15 @@ LoadedScene decode_scene(Reader& in, const LoadOptions& options) {
         mesh.positions = in.get_array<glm::vec3>("positions");
         mesh.normals = in.get_array<glm::vec3>("normals");
         mesh.uvs = in.get_array<glm::vec2>("uvs");
+        mesh.colors = in.get_array<glm::vec4>("colors");
         mesh.indices = in.get_array<std::uint32_t>("indices");
         const std::size_t n = mesh.positions.size();
         check(n <= 0xffffffffu, label + " has more than 2^32 - 1 vertices");
         // load_scene computes normals when a file has none: always one per position.
         check(mesh.normals.size() == n, label + ": normals not one per position");
         check(mesh.uvs.empty() || mesh.uvs.size() == n, label + ": uvs not one per position");
+        check(mesh.colors.empty() || mesh.colors.size() == n,
+              label + ": colors not one per position");
         check(!mesh.indices.empty() && mesh.indices.size() % 3 == 0,
               label + ": index count not a positive multiple of 3");
         for (const std::uint32_t index : mesh.indices)
@@ -226,6 +229,10 @@ LoadedScene decode_scene(Reader& in, const LoadOptions& options) {
                   label + ": a normal is not finite and of unit length");
         for (const glm::vec2& uv : mesh.uvs)
             check(std::isfinite(uv.x) && std::isfinite(uv.y), label + ": non-finite uv");
+        for (const glm::vec4& c : mesh.colors)
+            check(c.x >= 0.0f && c.x <= 1.0f && c.y >= 0.0f && c.y <= 1.0f && c.z >= 0.0f &&
+                      c.z <= 1.0f && c.w >= 0.0f && c.w <= 1.0f,
+                  label + ": a vertex color is outside [0, 1]");
         update_bounds(mesh);
         scene.meshes.push_back(std::move(mesh));
     }
@@ -304,6 +311,7 @@ std::string encode_scene_message(const LoadedScene& loaded) {
         out.put_array(mesh.positions);
         out.put_array(mesh.normals);
         out.put_array(mesh.uvs);
+        out.put_array(mesh.colors);
         out.put_array(mesh.indices);
     }
 

@@ -2,17 +2,17 @@
 // converted Scene or the reason there is none, in a small versioned binary format. The parent
 // trusts nothing in it: decode_worker_message checks every count against the bytes present and
 // the load limits before allocating, and every promise of load.hpp (indices in range, one unit
-// normal per position, no uvs or one per position, finite values, materials and meshes that
-// exist) before returning.
+// normal per position, no uvs or colors or one per position, finite values, materials and meshes
+// that exist) before returning.
 //
 // Version 2 added the materials' alpha (alpha_mode, alpha_cutoff, the opacity texture); version 3
 // their double_sided flag; version 4 the limit-exceeded kind (a LoadOptions budget's refusal
-// keeps the budget's name).
+// keeps the budget's name); version 5 the meshes' vertex colors.
 //
 // Layout, all integers and floats little-endian (the host's; parent and child are the same
 // binary), no padding:
 //
-//   header   "ZRWM" | u32 version (3) | u32 kind | u32 0 | u64 payload bytes | payload
+//   header   "ZRWM" | u32 version (5) | u32 kind | u32 0 | u64 payload bytes | payload
 //   kind 1   scene:
 //              string source | u32 n, n strings (warnings)
 //              u32 n, n textures: u32 width | u32 height | width*height*4 bytes (RGBA8, level 0)
@@ -22,7 +22,8 @@
 //                u8 double_sided (0 or 1) |
 //                u32 base-color texture | u32 opacity texture (textures: ~0 for none)
 //              u32 n, n meshes: string name | u32 material | u64 n, n f32[3] positions |
-//                u64 n, n f32[3] normals | u64 n, n f32[2] uvs | u64 n, n u32 indices
+//                u64 n, n f32[3] normals | u64 n, n f32[2] uvs | u64 n, n f32[4] colors (in
+//                [0, 1]) | u64 n, n u32 indices
 //              u32 n, n instances: u32 mesh | f32[16] transform (column-major) |
 //                u8 shading (255: none, else ShadingMode) | string name
 //   kind 2   input error: string cause (the file is the parent's)
@@ -43,7 +44,7 @@
 
 namespace zraster::io {
 
-inline constexpr std::uint32_t kWorkerMessageVersion = 4;
+inline constexpr std::uint32_t kWorkerMessageVersion = 5;
 inline constexpr std::size_t kWorkerHeaderBytes = 24;
 inline constexpr std::size_t kMaxWorkerString = 65536;
 inline constexpr int kMaxWorkerTextureSide = 16384;

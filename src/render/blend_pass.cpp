@@ -82,7 +82,7 @@ class PhongFragments {
 // The alpha of a material without alpha textures is its opacity everywhere; -1 when it varies.
 float constant_fragment_alpha(const Frame& frame, const FrameInstance& fi,
                               const ShadingTriangle& shading) {
-    return fi.alpha_textured ? -1.0f : unit_clamp(fragment_alpha(frame, shading, 0, 0, 0, 0));
+    return fi.alpha_varies.any() ? -1.0f : unit_clamp(fragment_alpha(frame, shading, 0, 0, 0, 0));
 }
 
 // What the fragment generators know of a blended triangle.
@@ -93,7 +93,7 @@ struct BlendSource {
     ShadingTriangle shading;
     CornerAttributes corners;
     const glm::vec3* piece;  // a clipped piece's corner weights, or null
-    float constant_alpha;    // -1: alpha textures, computed per fragment
+    float constant_alpha;    // -1: alpha textures or vertex alpha, computed per fragment
 
     BlendSource(const Frame& frame, const BlendTriangle& blended)
         : chunk(frame.chunks[blended.chunk]),

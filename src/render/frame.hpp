@@ -18,6 +18,7 @@
 #include "render/classify_kernel.hpp"
 #include "render/cluster_cache.hpp"
 #include "render/debug_view_scratch.hpp"
+#include "render/material_alpha.hpp"
 #include "render/mesh_access.hpp"
 #include "render/portal_cull.hpp"
 #include "render/shade_kernel.hpp"
@@ -46,7 +47,8 @@ struct FrameInstance {
     glm::mat3 normal_matrix{1.0f};  // object to world for normals (inverse transpose)
     bool textured = false;
     AlphaMode alpha = AlphaMode::Opaque;  // effective_alpha_mode (material_alpha.hpp)
-    bool alpha_textured = false;          // alpha from the material's textures (uvs needed)
+    AlphaVariation alpha_varies;          // per fragment from textures (uvs needed), vertices
+    bool vertex_colored = false;          // base color times the mesh's vertex colors
     // Materials' sides (material_sides.hpp): the faces the front end culls, and whether back
     // faces are lit with the flipped normal.
     CullMode cull = CullMode::Back;
@@ -116,6 +118,7 @@ struct FrameVertices {
     std::vector<glm::vec3> normal;       // world space, unit
     std::vector<glm::vec2> uv;           // (0, 0) when the mesh has none
     std::vector<LightTerms> gouraud;     // per-vertex lighting (Gouraud instances only)
+    std::vector<glm::vec4> color;        // vertex colors (vertex-colored instances only)
 };
 inline constexpr std::uint32_t kNonFinite = 0xffffffffu;
 

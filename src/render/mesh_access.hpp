@@ -16,6 +16,7 @@ namespace zraster::detail {
 
 inline constexpr std::size_t kPositionBytes = 3 * sizeof(float);  // also a normal
 inline constexpr std::size_t kUvBytes = 2 * sizeof(float);
+inline constexpr std::size_t kColorBytes = 4 * sizeof(float);
 
 // The distance between elements of `element` bytes (stride 0: tightly packed).
 inline std::size_t stride_of(const AttributeView& a, std::size_t element) {
@@ -43,6 +44,12 @@ inline glm::vec3 load_vec3(const AttributeView& a, std::size_t i) {
 inline glm::vec2 load_vec2(const AttributeView& a, std::size_t i) {
     glm::vec2 v;
     std::memcpy(&v, element_bytes(a, kUvBytes, i), kUvBytes);
+    return v;
+}
+
+inline glm::vec4 load_vec4(const AttributeView& a, std::size_t i) {
+    glm::vec4 v;
+    std::memcpy(&v, element_bytes(a, kColorBytes, i), kColorBytes);
     return v;
 }
 
@@ -89,15 +96,20 @@ struct FrameMesh {
     const glm::vec3* normals = nullptr;
     const std::uint32_t* indices = nullptr;
     Bounds3f bounds;
+    // The least alpha of its vertex colors (1 without colors; NaN when one is NaN): whether
+    // vertex alpha can make its material transparent (material_alpha.hpp).
+    float least_vertex_alpha = 1.0f;
 
     std::size_t vertex_count() const { return view->positions.count; }
     std::size_t triangle_count() const { return detail::triangle_count(*view); }
     bool has_normals() const { return view->normals.count > 0; }
     bool has_uvs() const { return view->uvs.count > 0; }
+    bool has_colors() const { return view->colors.count > 0; }
     glm::vec3 position(std::size_t i) const {
         return positions != nullptr ? positions[i] : load_vec3(view->positions, i);
     }
     glm::vec2 uv(std::size_t i) const { return load_vec2(view->uvs, i); }
+    glm::vec4 color(std::size_t i) const { return load_vec4(view->colors, i); }
     std::uint32_t index(std::size_t i) const {
         return indices != nullptr ? indices[i] : load_index(view->indices, i);
     }

@@ -183,9 +183,9 @@ void cull_instances(Frame& frame, const glm::mat4& view_projection) {
         c.distance = glm::length(glm::dvec3(center) - frame.camera.position());
         if (!std::isfinite(c.distance)) c.distance = 0.0;
         c.triangles = mesh.triangle_count();
-        c.opaque =
-            effective_alpha_mode(scene.materials[mesh.view->material],
-                                 options.textures && mesh.has_uvs(), options) == AlphaMode::Opaque;
+        c.opaque = effective_alpha_mode(scene.materials[mesh.view->material],
+                                        options.textures && mesh.has_uvs(), mesh.least_vertex_alpha,
+                                        options) == AlphaMode::Opaque;
         candidates.push_back(c);
     }
     // (Sorts with ties in candidate order: stable, without stable_sort's buffer.)

@@ -9,7 +9,7 @@ namespace zraster::detail {
 namespace {
 
 SurfaceMaterial surface_of(const FrameInstance& fi) {
-    return {fi.material, fi.shading, fi.textured};
+    return {fi.material, fi.shading, fi.textured, fi.vertex_colored};
 }
 
 // The source triangle's weights one pixel over (texture derivatives), where it has a setup.
@@ -30,7 +30,7 @@ struct RendererNeighbours {
 
 VertexAttributes vertex_attributes(const Frame& frame) {
     const FrameVertices& v = frame.vertices;
-    return {v.world, v.normal, v.uv, v.gouraud};
+    return {v.world, v.normal, v.uv, v.gouraud, v.color};
 }
 
 ShadingFrame shading_frame(const Frame& frame, const FrameInstance& fi) {
@@ -47,7 +47,7 @@ void prepare_shading_triangle(const Frame& frame, const Chunk& chunk, const Tria
     out.corners.front_facing = ref.front_facing;
     const FrameInstance& fi = frame.instances[ref.instance];
     out.has_setup = false;
-    if ((fi.textured || fi.alpha_textured) &&
+    if ((fi.textured || fi.alpha_varies.textures) &&
         frame.options->texture_filter == TextureFilter::Trilinear) {
         const std::array<ScreenVertex, 3> v{frame.screen_vertex(chunk, ref, 0),
                                             frame.screen_vertex(chunk, ref, 1),
@@ -72,19 +72,10 @@ ShadedFragment shade_fragment(const Frame& frame, const ShadingTriangle& t, floa
 float fragment_alpha(const Frame& frame, const ShadingTriangle& t, float b1, float b2, int px,
                      int py) {
     const FrameInstance& fi = frame.instances[t.ref->instance];
-    const Material& material = *fi.material;
-    float base_alpha = 1.0f, opacity_red = 1.0f;
-    if (fi.alpha_textured) {
-        const ShadingFrame shading = shading_frame(frame, fi);
-        const glm::vec3 b = original_barycentrics(t, {1.0f - b1 - b2, b1, b2});
-        const TextureLookup at = texture_lookup(shading, vertex_attributes(frame), t.corners, b,
-                                                RendererNeighbours{frame, t, px, py});
-        if (material.base_color_texture)
-            base_alpha = sample(shading, *material.base_color_texture, at).w;
-        if (material.opacity_texture)
-            opacity_red = sample(shading, *material.opacity_texture, at).x;
-    }
-    return material_alpha(material, base_alpha, opacity_red);
+    if (!fi.alpha_varies.any()) return material_alpha(*fi.material, 1.0f, 1.0f);
+    const glm::vec3 b = original_barycentrics(t, {1.0f - b1 - b2, b1, b2});
+    return surface_alpha(shading_frame(frame, fi), *fi.material, vertex_attributes(frame),
+                         t.corners, b, RendererNeighbours{frame, t, px, py}, fi.alpha_varies);
 }
 
 // The corners' world positions and normals of a triangle the SIMD Phong shader draws, for

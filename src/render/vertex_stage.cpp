@@ -52,7 +52,7 @@ void assign_phong_kernels(Frame& frame) {
     const RenderOptions& options = *frame.options;
     frame.phong_constants.clear();
     for (FrameInstance& fi : frame.instances) {
-        if (fi.shading != ShadingMode::Phong || fi.textured || !options.simd ||
+        if (fi.shading != ShadingMode::Phong || fi.textured || fi.vertex_colored || !options.simd ||
             !phong_kernel_applies(options.lighting, *fi.material))
             continue;
         fi.phong_kernel = static_cast<int>(frame.phong_constants.size());
@@ -177,9 +177,13 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
         fi.model = instance.transform;
         fi.normal_matrix = normal_matrix(instance.transform);
         fi.textured = options.textures && fi.material->base_color_texture && mesh.has_uvs();
-        fi.alpha = effective_alpha_mode(*fi.material, options.textures && mesh.has_uvs(), options);
-        fi.alpha_textured = fi.alpha != AlphaMode::Opaque && options.textures && mesh.has_uvs() &&
-                            (fi.material->base_color_texture || fi.material->opacity_texture);
+        fi.alpha = effective_alpha_mode(*fi.material, options.textures && mesh.has_uvs(),
+                                        mesh.least_vertex_alpha, options);
+        fi.alpha_varies.textures =
+            fi.alpha != AlphaMode::Opaque && options.textures && mesh.has_uvs() &&
+            (fi.material->base_color_texture || fi.material->opacity_texture);
+        fi.alpha_varies.vertices = fi.alpha != AlphaMode::Opaque && mesh.least_vertex_alpha < 1.0f;
+        fi.vertex_colored = mesh.has_colors();
         frame.alpha_instances |= fi.alpha != AlphaMode::Opaque;
         fi.cull = instance_cull(*fi.material, options);
         fi.two_sided_lighting = instance_two_sided_lighting(*fi.material, options);
@@ -213,10 +217,11 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
     }
     const bool attributes = frame.needs_attributes;
     const bool world = attributes || !options.clip_planes.empty();
-    bool any_gouraud = false, any_textured = false;
+    bool any_gouraud = false, any_textured = false, any_colored = false;
     for (const FrameInstance& fi : frame.instances) {
         any_gouraud |= fi.shading == ShadingMode::Gouraud;
-        any_textured |= fi.textured || fi.alpha_textured;
+        any_textured |= fi.textured || fi.alpha_varies.textures;
+        any_colored |= fi.vertex_colored;
     }
     memory::resize_on_huge_pages(v.screen, vertex_count);
     memory::resize_on_huge_pages(v.outcode, vertex_count);
@@ -226,6 +231,7 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
     if (attributes) memory::resize_on_huge_pages(v.normal, vertex_count);
     if (attributes && any_textured) memory::resize_on_huge_pages(v.uv, vertex_count);
     if (any_gouraud && attributes) memory::resize_on_huge_pages(v.gouraud, vertex_count);
+    if (any_colored && attributes) memory::resize_on_huge_pages(v.color, vertex_count);
 
     // Positions hashed this frame, per scene mesh: instances of the same mesh hash it once.
     frame.mesh_hashed.assign(scene.meshes.size(), 0);
@@ -355,11 +361,13 @@ void run_vertex_stage(Frame& frame, RenderStats& stats) {
                     hash_low += static_cast<std::uint32_t>(h);
                     hash_high += static_cast<std::uint32_t>(h >> 32);
                 }
-                const bool uvs = fi.textured || fi.alpha_textured;
-                if (!attributes || (!uvs && !lit_per_vertex)) return;
+                const bool uvs = fi.textured || fi.alpha_varies.textures;
+                const bool colors = fi.vertex_colored;
+                if (!attributes || (!uvs && !colors && !lit_per_vertex)) return;
                 for (std::size_t k = r.begin(); k < r.end(); ++k) {
                     const std::size_t out = fi.first_vertex + k;
                     if (uvs) v.uv[out] = mesh.uv(k);
+                    if (colors) v.color[out] = mesh.color(k);
                     if (lit_per_vertex)
                         v.gouraud[out] =
                             evaluate_lighting(options.lighting, *fi.material, v.world[out],

@@ -25,6 +25,7 @@ struct VertexAttributes {
     std::span<const glm::vec3> normal;    // unit
     std::span<const glm::vec2> uv;        // (0, 0) where a mesh has none
     std::span<const LightTerms> gouraud;  // Gouraud instances' vertices (others unread)
+    std::span<const glm::vec4> color;     // vertex colors (only vertex-colored instances read)
 };
 
 // A vertex's world position and unit world normal ((0, 1, 0) for a zero normal): the one
@@ -51,7 +52,8 @@ struct ShadingFrame {
 struct SurfaceMaterial {
     const Material* material = nullptr;
     ShadingMode shading = ShadingMode::Phong;
-    bool textured = false;  // base color from its texture (the mesh has uvs, textures on)
+    bool textured = false;        // base color from its texture (the mesh has uvs, textures on)
+    bool vertex_colored = false;  // base color times the interpolated vertex color
 };
 
 // One triangle as shading sees it.
@@ -136,6 +138,7 @@ SurfaceShade shade_surface(const ShadingFrame& frame, const SurfaceMaterial& sur
         base = material.base_color *
                glm::vec3(sample(frame, *material.base_color_texture,
                                 texture_lookup(frame, attributes, corners, b, neighbours)));
+    if (surface.vertex_colored) base *= glm::vec3(interpolate(attributes.color, idx, b));
     SurfaceShade out;
     switch (surface.shading) {
         case ShadingMode::Unlit:

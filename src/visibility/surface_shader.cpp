@@ -32,11 +32,15 @@ SurfaceShader::SurfaceShader(const FrameContext& frame)
             &scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
         info.shading = instance.shading.value_or(options.shading);
         info.textured = options.textures && info.material->base_color_texture && !mesh.uvs.empty();
+        info.vertex_colored = !mesh.colors.empty();
         // As the renderer's vertex stage decides them (src/render/vertex_stage.cpp).
         const bool uvs = options.textures && !mesh.uvs.empty();
-        info.alpha = detail::effective_alpha_mode(*info.material, uvs, options);
-        info.alpha_textured = info.alpha != AlphaMode::Opaque && uvs &&
-                              (info.material->base_color_texture || info.material->opacity_texture);
+        const float least_vertex_alpha = detail::least_vertex_alpha(mesh.colors);
+        info.alpha = detail::effective_alpha_mode(*info.material, uvs, least_vertex_alpha, options);
+        info.alpha_varies.textures =
+            info.alpha != AlphaMode::Opaque && uvs &&
+            (info.material->base_color_texture || info.material->opacity_texture);
+        info.alpha_varies.vertices = info.alpha != AlphaMode::Opaque && least_vertex_alpha < 1.0f;
         info.two_sided_lighting = detail::instance_two_sided_lighting(*info.material, options);
         info.first_vertex = total;
         instances_.push_back(info);
@@ -46,6 +50,7 @@ SurfaceShader::SurfaceShader(const FrameContext& frame)
     normal_.resize(total);
     uv_.resize(total);
     gouraud_.resize(total);
+    color_.resize(total);
     // As the renderer's vertex stage (src/render/vertex_stage.cpp).
     for (std::size_t i = 0; i < scene.instances.size(); ++i) {
         const Instance& instance = scene.instances[i];
@@ -58,6 +63,7 @@ SurfaceShader::SurfaceShader(const FrameContext& frame)
             detail::world_attributes(instance.transform, to_world_normal, mesh.positions[k], n,
                                      world_[out], normal_[out]);
             uv_[out] = k < mesh.uvs.size() ? mesh.uvs[k] : glm::vec2(0.0f);
+            color_[out] = k < mesh.colors.size() ? mesh.colors[k] : glm::vec4(1.0f);
             if (info.shading == ShadingMode::Gouraud)
                 gouraud_[out] = evaluate_lighting(options.lighting, *info.material, world_[out],
                                                   normal_[out], frame.eye, frame.view_axis);
@@ -194,8 +200,9 @@ Shaded SurfaceShader::shade(const Prepared& p, int px, int py, bool center, doub
     glm::vec3 b;
     detail::NeighbourWeights over;
     if (!weights_at(p, px, py, center, x, y, b, over)) return {p.polygon->color, p.polygon->normal};
-    const detail::SurfaceMaterial surface{info.material, info.shading, info.textured};
-    const detail::VertexAttributes attributes{world_, normal_, uv_, gouraud_};
+    const detail::SurfaceMaterial surface{info.material, info.shading, info.textured,
+                                          info.vertex_colored};
+    const detail::VertexAttributes attributes{world_, normal_, uv_, gouraud_, color_};
     return detail::shade_surface(shading_of(info), surface, attributes, p.corners, b,
                                  KnownNeighbours{over}, want_normal);
 }
@@ -208,21 +215,14 @@ float SurfaceShader::alpha(const Prepared& p, int px, int py, bool center, doubl
                            double y) const {
     const InstanceInfo& info = instances_[p.instance];
     const Material& material = *info.material;
-    if (!info.alpha_textured) return detail::material_alpha(material, 1.0f, 1.0f);
     glm::vec3 b;
     detail::NeighbourWeights over;
-    if (!weights_at(p, px, py, center, x, y, b, over))
+    if (!info.alpha_varies.any() || !weights_at(p, px, py, center, x, y, b, over))
         return detail::material_alpha(material, 1.0f, 1.0f);
     // As the renderer's fragment_alpha (src/render/shade_fragment.cpp).
-    const detail::VertexAttributes attributes{world_, normal_, uv_, gouraud_};
-    const detail::TextureLookup at =
-        detail::texture_lookup(shading_, attributes, p.corners, b, KnownNeighbours{over});
-    float base_alpha = 1.0f, opacity_red = 1.0f;
-    if (material.base_color_texture)
-        base_alpha = detail::sample(shading_, *material.base_color_texture, at).w;
-    if (material.opacity_texture)
-        opacity_red = detail::sample(shading_, *material.opacity_texture, at).x;
-    return detail::material_alpha(material, base_alpha, opacity_red);
+    const detail::VertexAttributes attributes{world_, normal_, uv_, gouraud_, color_};
+    return detail::surface_alpha(shading_of(info), material, attributes, p.corners, b,
+                                 KnownNeighbours{over}, info.alpha_varies);
 }
 
 bool SurfaceShader::passes_alpha_test(std::int32_t instance, float a) const {
@@ -236,6 +236,7 @@ bool scene_has_alpha(const Scene& scene, const RenderOptions& options) {
         const Material& material =
             scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
         if (detail::effective_alpha_mode(material, options.textures && !mesh.uvs.empty(),
+                                         detail::least_vertex_alpha(mesh.colors),
                                          options) != AlphaMode::Opaque)
             return true;
     }

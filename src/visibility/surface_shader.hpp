@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "render/material_alpha.hpp"
 #include "shade/surface_shading.hpp"
 #include "visibility/frame_context.hpp"
 
@@ -58,16 +59,17 @@ class SurfaceShader {
     AlphaMode alpha_mode(std::int32_t instance) const {
         return instances_[std::size_t(instance)].alpha;
     }
-    // Whether its alpha varies over the surface (textures' alpha), else it is constant_alpha().
+    // Whether its alpha varies over the surface (textures' or vertex alpha), else it is
+    // constant_alpha().
     bool alpha_varies(std::int32_t instance) const {
-        return instances_[std::size_t(instance)].alpha_textured;
+        return instances_[std::size_t(instance)].alpha_varies.any();
     }
     // The alpha of an instance whose alpha does not vary: the material's opacity.
     float constant_alpha(std::int32_t instance) const;
     // The fragment's alpha (render/material_alpha.hpp: opacity x base-color texture alpha x
-    // opacity texture red, unclamped) at the point shade() would shade: its textures sampled as
-    // the base color is, with the same coordinates and derivatives, so at a pixel center the
-    // z-buffer draws it is render()'s alpha there bit for bit.
+    // opacity texture red x vertex alpha, unclamped) at the point shade() would shade: its
+    // textures sampled as the base color is, with the same coordinates and derivatives, so at a
+    // pixel center the z-buffer draws it is render()'s alpha there bit for bit.
     float alpha(const Prepared& p, int px, int py, bool center, double x, double y) const;
     // Whether a fragment of alpha `a` of this instance survives the alpha test (Mask: a >= the
     // cutoff, NaN fails, as the z-buffer tests; other modes: always).
@@ -78,9 +80,10 @@ class SurfaceShader {
         const Material* material = nullptr;
         ShadingMode shading = ShadingMode::Phong;
         bool textured = false;
+        bool vertex_colored = false;  // the mesh has vertex colors
         AlphaMode alpha = AlphaMode::Opaque;
-        bool alpha_textured = false;     // alpha from the material's textures (uvs, textures on)
-        bool two_sided_lighting = true;  // render/material_sides.hpp
+        detail::AlphaVariation alpha_varies;  // from textures (uvs, textures on), vertex alpha
+        bool two_sided_lighting = true;       // render/material_sides.hpp
         std::uint32_t first_vertex = 0;
     };
     // The source triangle's weights at the point shade() takes and one pixel over; false when
@@ -103,6 +106,7 @@ class SurfaceShader {
     std::vector<glm::vec3> world_, normal_;
     std::vector<glm::vec2> uv_;
     std::vector<LightTerms> gouraud_;  // Gouraud instances only (else empty entries)
+    std::vector<glm::vec4> color_;     // vertex-colored instances only (else empty entries)
 };
 
 // Whether any instance's material alpha counts this frame (as SurfaceShader decides it): when

@@ -316,14 +316,16 @@ bool shaded_fill(const Scene& scene, const RenderOptions& options, std::int32_t 
     const Instance& placed = scene.instances.at(std::size_t(instance));
     const ShadingMode mode = placed.shading.value_or(options.shading);
     if (mode == ShadingMode::Gouraud || mode == ShadingMode::Phong) return true;
-    if (mode == ShadingMode::Unlit || !options.textures) return false;
     const Mesh& mesh = scene.meshes.at(placed.mesh);
+    if (!mesh.colors.empty()) return true;  // vertex colors vary over the face
+    if (mode == ShadingMode::Unlit || !options.textures) return false;
     const Material& material =
         scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
     return material.base_color_texture != nullptr && !mesh.uvs.empty();
 }
 
-// A fill holds one color: a smooth or textured face is shaded by the renderer's shading core
+// A fill holds one color: a smooth, textured or vertex-colored face is shaded by the renderer's
+// shading core
 // (SurfaceShader, as the painter's and BSP frames shade their pixels) at the piece's centroid.
 void shade_fills(const Scene& scene, const RenderOptions& options,
                  std::vector<ScreenPolygon>& polygons) {

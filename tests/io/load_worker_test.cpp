@@ -110,6 +110,7 @@ void expect_same_scene(const io::LoadedScene& a_loaded, const io::LoadedScene& b
         EXPECT_TRUE(x.positions == y.positions) << where;
         EXPECT_TRUE(x.normals == y.normals) << where;
         EXPECT_TRUE(x.uvs == y.uvs) << where;
+        EXPECT_TRUE(x.colors == y.colors) << where;
         EXPECT_TRUE(x.indices == y.indices) << where;
         EXPECT_EQ(x.bounds.lo, y.bounds.lo) << where;
         EXPECT_EQ(x.bounds.hi, y.bounds.hi) << where;
@@ -405,8 +406,8 @@ TEST(WorkerMessage, RefusesMalformedMessages) {
     expect_invalid("", "invalid result: truncated header");
     expect_invalid("XRWM" + good.substr(4), "invalid result: bad magic");
     std::string version = good;
-    version[4] = 3;  // a child of a zraster before the limit-exceeded kind
-    expect_invalid(version, "format version 3, expected 4");
+    version[4] = 4;  // a child of a zraster before vertex colors
+    expect_invalid(version, "format version 4, expected 5");
     expect_invalid(good.substr(0, good.size() - 1), "the header says");
     std::string longer = good + "x";
     expect_invalid(longer, "the header says");

@@ -156,6 +156,46 @@ TEST(AlphaPaths, TextureAlphaBlendsAsTheZBufferBlends) {
     }
 }
 
+// A square whose vertex alpha runs from 0 (left) to 1 (right) over the wall, white times its
+// vertex colors: blended, the analytic "over" of the interpolated color; as a cut-out, the wall
+// left of the middle. Point-sampled paths equal the z-buffer bit for bit.
+Scene vertex_alpha_scene(AlphaMode mode) {
+    Scene scene = checker_scene(mode, false);
+    scene.materials[1].base_color_texture.reset();
+    const glm::vec4 left(1.0f, 0.2f, 0.4f, 0.0f), right(0.0f, 0.8f, 0.4f, 1.0f);
+    scene.meshes[1].colors = {left, right, right, left};  // corners (-h,-h), (h,-h), (h,h), (-h,h)
+    return scene;
+}
+
+TEST(AlphaPaths, VertexAlphaBlendsAndCutsOutAsTheZBuffer) {
+    const RenderOptions options = alpha_path_options();
+    const glm::dvec3 wall(0.9, 0.2, 0.1);
+    const glm::dvec4 left(1.0, 0.2, 0.4, 0.0), right(0.0, 0.8, 0.4, 1.0);
+    for (const AlphaMode mode : {AlphaMode::Blend, AlphaMode::Mask}) {
+        const Scene scene = vertex_alpha_scene(mode);
+        const RenderResult reference = render(scene, options);
+        for (const Path path : kPaths) {
+            SCOPED_TRACE(std::string(path_name(path)) + (mode == AlphaMode::Mask ? " mask" : ""));
+            const RenderResult r = draw_with(path, scene, options);
+            for (int px = 18; px < 47; px += 4) {
+                const double t = (px + 0.5 - 32.0 + 16.0) / 32.0;
+                const glm::dvec4 c = (1.0 - t) * left + t * right;
+                const glm::dvec3 expected = mode == AlphaMode::Blend
+                                                ? c.w * glm::dvec3(c) + (1.0 - c.w) * wall
+                                                : (c.w >= 0.5 ? glm::dvec3(c) : wall);
+                const glm::ivec3 got = alpha_test_rgb(r, px, 30);
+                for (int k = 0; k < 3; ++k)
+                    EXPECT_LE(std::abs(got[k] - analytic_unorm8(expected[k])), 1)
+                        << px << " channel " << k;
+            }
+            if (point_sampled(path)) {
+                EXPECT_EQ(r.targets.color, reference.targets.color);
+                EXPECT_EQ(r.targets.instance_id, reference.targets.instance_id);
+            }
+        }
+    }
+}
+
 // The blended layers in every submission order (the half-transparent one first, the opaque one
 // after it among them): the same image, "over" within 1/255, the opaque layer's depth and ids.
 TEST(AlphaPaths, BlendIsOverInAnyOrder) {

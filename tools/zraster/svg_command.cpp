@@ -22,25 +22,30 @@
 namespace zraster::cli {
 namespace {
 
-// SVG fills hold one opacity: say so when a material's alpha comes from textures (svg.hpp).
-void note_textured_alpha(const Scene& scene, const RenderOptions& options) {
-    std::size_t textured = 0;
+// SVG fills hold one opacity: say so when a material's alpha varies over its surfaces, from
+// textures or vertex alpha (svg.hpp).
+void note_varying_alpha(const Scene& scene, const RenderOptions& options) {
+    std::size_t varying = 0;
     std::string first;
     for (const Instance& instance : scene.instances) {
         const Mesh& mesh = scene.meshes.at(instance.mesh);
         const Material& m =
             scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
         const bool uvs = options.textures && !mesh.uvs.empty();
-        if (uvs && (m.base_color_texture || m.opacity_texture) &&
-            detail::effective_alpha_mode(m, uvs, options) != AlphaMode::Opaque && textured++ == 0)
+        const float least_vertex_alpha = detail::least_vertex_alpha(mesh.colors);
+        const bool textures = uvs && (m.base_color_texture || m.opacity_texture);
+        if ((textures || least_vertex_alpha < 1.0f) &&
+            detail::effective_alpha_mode(m, uvs, least_vertex_alpha, options) !=
+                AlphaMode::Opaque &&
+            varying++ == 0)
             first = m.name;
     }
-    if (textured > 0)
+    if (varying > 0)
         fmt::print(stderr,
-                   "note: {} instance(s) take their alpha from textures (e.g. '{}'): zraster svg "
-                   "approximates it, a blended polygon by one fill-opacity (its mean alpha), a "
-                   "cut-out by a clip path of whole pixels\n",
-                   textured, first);
+                   "note: {} instance(s) take their alpha from textures or vertex colors (e.g. "
+                   "'{}'): zraster svg approximates it, a blended polygon by one fill-opacity (its "
+                   "mean alpha), a cut-out by a clip path of whole pixels\n",
+                   varying, first);
 }
 
 }  // namespace
@@ -87,7 +92,7 @@ int run_svg(const SvgArguments& a) {
     const Scene scene = load_scene_or_procedural(a.render.scene);
     RenderOptions options = make_render_options(a.render, scene);
     options.progress = stderr_progress();
-    note_textured_alpha(scene, options);
+    note_varying_alpha(scene, options);
 
     SvgOptions svg;
     svg.order = a.order == "painter" ? SvgOptions::Order::Painter : SvgOptions::Order::Bsp;
