@@ -25,14 +25,15 @@ namespace py = pybind11;
 // a MeshView (float32 rows of contiguous floats, 16- or 32-bit contiguous indices), copies
 // otherwise. The arrays are kept referenced, so the view stays valid while the Mesh lives.
 struct PyMesh {
-    py::array positions, normals, uvs, indices;  // normals and uvs: None when absent
-    MeshView view;                               // into the arrays above
-    // From `color`, `texture`, `alpha_mode` or `alpha_cutoff` (the texture is the material's own
+    py::array positions, normals, uvs, colors, indices;  // normals, uvs, colors: None if absent
+    MeshView view;                                       // into the arrays above
+    // From `color`, `texture`, `alpha_mode`, `alpha_cutoff` or `double_sided` (the texture is the
+    // material's own
     // copy of the image); none of them: the scene's default material.
     std::optional<Material> material;
     std::string name;
     bool positions_copied = false, normals_copied = false, uvs_copied = false,
-         indices_copied = false;
+         colors_copied = false, indices_copied = false;
     bool normals_computed = false;
 };
 

@@ -47,6 +47,39 @@ FloatRows per_vertex(const py::object& rows, std::size_t columns, const char* ar
     return r;
 }
 
+// Vertex colors: (N, 4) or (N, 3) real numbers in 0..1, or uint8 (scaled by 1 / 255); RGB gets
+// alpha 1. Referenced when float32 RGBA rows (as float_rows references), else copied as such.
+FloatRows vertex_colors(const py::object& colors, std::size_t positions) {
+    py::array a = py::array::ensure(colors);
+    const bool rgb = a && a.ndim() == 2 && a.shape(1) == 3;
+    const bool bytes = a && a.dtype().kind() == 'u' && a.itemsize() == 1;
+    FloatRows rows;
+    if (rgb || bytes) {
+        const py::module_ numpy = py::module_::import("numpy");
+        py::object rgba = numpy.attr("asarray")(a, "dtype"_a = "float32");
+        if (bytes) rgba = rgba.attr("__truediv__")(py::float_(255.0)).attr("astype")("float32");
+        if (rgb)
+            rgba = numpy.attr("concatenate")(
+                py::make_tuple(
+                    rgba, numpy.attr("ones")(py::make_tuple(a.shape(0), 1), "dtype"_a = "float32")),
+                "axis"_a = 1);
+        rows = per_vertex(rgba, 4, "colors", "color", positions);
+        rows.copied = true;
+    } else {
+        rows = per_vertex(colors, 4, "colors", "color", positions);
+    }
+    for (std::size_t i = 0; i < rows.view.count; ++i)
+        for (std::size_t c = 0; c < 4; ++c) {
+            const float v =
+                rows.view.data[(i * (rows.view.stride ? rows.view.stride : 16)) / 4 + c];
+            if (v < 0.0f || v > 1.0f)
+                input_error("colors", "row " + std::to_string(i) +
+                                          " has a component outside 0..1 (" + std::to_string(v) +
+                                          ")");
+        }
+    return rows;
+}
+
 // The base color from `color`: RGB and an optional alpha, each in 0..1.
 void set_color(Material& material, const py::object& color) {
     const std::size_t n =
@@ -65,9 +98,10 @@ void set_color(Material& material, const py::object& color) {
 // what they set. A texture without a color multiplies white, as a glTF baseColorTexture does.
 std::optional<Material> mesh_material(const std::string& name, bool has_uvs,
                                       const py::object& color, const py::object& texture,
-                                      const py::object& alpha_mode,
-                                      const py::object& alpha_cutoff) {
-    if (color.is_none() && texture.is_none() && alpha_mode.is_none() && alpha_cutoff.is_none())
+                                      const py::object& alpha_mode, const py::object& alpha_cutoff,
+                                      const py::object& double_sided) {
+    if (color.is_none() && texture.is_none() && alpha_mode.is_none() && alpha_cutoff.is_none() &&
+        double_sided.is_none())
         return std::nullopt;
     Material material;
     material.name = name;
@@ -89,6 +123,11 @@ std::optional<Material> mesh_material(const std::string& name, bool has_uvs,
             input_error("alpha_cutoff", "must be in 0..1, got " + std::to_string(cutoff));
         material.alpha_cutoff = float(cutoff);
     }
+    if (!double_sided.is_none()) {
+        if (!py::isinstance<py::bool_>(double_sided))
+            type_error("double_sided", "True or False", double_sided);
+        material.double_sided = double_sided.cast<bool>();
+    }
     return material;
 }
 
@@ -96,7 +135,8 @@ std::shared_ptr<PyMesh> make_mesh(const py::object& positions, const py::object&
                                   const py::object& normals, const py::object& uvs,
                                   const py::object& color, std::string name,
                                   const py::object& texture, const py::object& alpha_mode,
-                                  const py::object& alpha_cutoff) {
+                                  const py::object& alpha_cutoff, const py::object& colors,
+                                  const py::object& double_sided) {
     auto mesh = std::make_shared<PyMesh>();
     FloatRows p = float_rows(positions, 3, "positions");
     mesh->positions = p.array;
@@ -122,7 +162,14 @@ std::shared_ptr<PyMesh> make_mesh(const py::object& positions, const py::object&
         mesh->uvs_copied = t.copied;
         mesh->view.uvs = t.view;
     }
-    mesh->material = mesh_material(name, !uvs.is_none(), color, texture, alpha_mode, alpha_cutoff);
+    if (!colors.is_none()) {
+        const FloatRows c = vertex_colors(colors, p.view.count);
+        mesh->colors = c.array;
+        mesh->colors_copied = c.copied;
+        mesh->view.colors = c.view;
+    }
+    mesh->material =
+        mesh_material(name, !uvs.is_none(), color, texture, alpha_mode, alpha_cutoff, double_sided);
     mesh->name = std::move(name);
     return mesh;
 }
@@ -142,7 +189,7 @@ std::shared_ptr<PyMesh> mesh_from(const Mesh& m, const py::object& color) {
     return make_mesh(positions, indices,
                      m.normals.size() == m.positions.size() ? py::object(normals) : py::none(),
                      m.uvs.size() == m.positions.size() ? py::object(uvs) : py::none(), color,
-                     m.name, py::none(), py::none(), py::none());
+                     m.name, py::none(), py::none(), py::none(), py::none(), py::none());
 }
 
 py::object optional_array(const py::array& a) {
@@ -155,7 +202,7 @@ void bind_mesh(py::module_& m) {
     py::class_<PyMesh, std::shared_ptr<PyMesh>>(m, "Mesh", R"(A triangle mesh over numpy arrays.
 
 Mesh(positions, indices, normals=None, uvs=None, color=None, name="", texture=None,
-     alpha_mode=None, alpha_cutoff=None)
+     alpha_mode=None, alpha_cutoff=None, colors=None, double_sided=None)
 
 positions: (N, 3) real numbers, object space.
 indices:   (M, 3) or flat (3M,) integers in 0..N-1; counter-clockwise triangles face the viewer.
@@ -174,8 +221,14 @@ alpha_mode: optional "blend" (the default: composited over what is behind it whe
            alpha_cutoff are discarded, the rest opaque) or "opaque" (alpha ignored; the
            material's opacity is 1 then, as the glTF loader makes an OPAQUE material).
 alpha_cutoff: optional, in 0..1 (default 0.5): the "mask" threshold.
+colors:    optional per-vertex colors, (N, 4) RGBA or (N, 3) RGB (alpha 1), real numbers in
+           0..1 or uint8 (scaled by 1/255), as a glTF COLOR_0: interpolated over each triangle,
+           they multiply the base color (and the texture), and their alpha the material's.
+double_sided: optional True or False (default False): a double-sided material is never
+           back-face culled and its back faces are lit with the flipped normal, as glTF's
+           doubleSided (RenderOptions.material_sides).
 
-Alpha = A x the texture's alpha. With none of color, texture, alpha_mode, alpha_cutoff the mesh
+Alpha = A x the texture's alpha x the vertex alpha. With none of color, texture, alpha_mode, alpha_cutoff, double_sided the mesh
 has no material of its own and is drawn with zraster's default material. `material` returns
 the mesh's material (a zraster.Material) or None.
 
@@ -188,12 +241,13 @@ checks - shapes, finite values, indices in range - are made here, once). The tex
 copied.
 
 Raises InputError (naming the argument) for wrong shapes, non-finite values, indices out of
-range, a color or alpha_cutoff out of 0..1, an unknown alpha_mode, float texels out of [0, 1]
+range, a color, vertex color or alpha_cutoff out of 0..1, an unknown alpha_mode, float texels out of [0, 1]
 or a texture without uvs, and TypeError for arguments of the wrong type (a texture of a dtype
 other than uint8 or float).)")
         .def(py::init(&make_mesh), "positions"_a, "indices"_a, "normals"_a = py::none(),
              "uvs"_a = py::none(), "color"_a = py::none(), "name"_a = "", "texture"_a = py::none(),
-             "alpha_mode"_a = py::none(), "alpha_cutoff"_a = py::none())
+             "alpha_mode"_a = py::none(), "alpha_cutoff"_a = py::none(), "colors"_a = py::none(),
+             "double_sided"_a = py::none())
         .def_static(
             "uv_sphere",
             [](float radius, int stacks, int slices, const py::object& color) {
@@ -227,6 +281,9 @@ other than uint8 or float).)")
         .def_property_readonly(
             "uvs", [](const PyMesh& mesh) { return optional_array(mesh.uvs); },
             "The (N, 2) uvs, or None.")
+        .def_property_readonly(
+            "colors", [](const PyMesh& mesh) { return optional_array(mesh.colors); },
+            "The (N, 4) float32 vertex colors (RGBA), or None.")
         .def_property_readonly(
             "color",
             [](const PyMesh& mesh) -> py::object {
@@ -264,6 +321,7 @@ other than uint8 or float).)")
                 d["indices"] = mesh.indices_copied;
                 d["normals"] = mesh.normals_copied;
                 d["uvs"] = mesh.uvs_copied;
+                d["colors"] = mesh.colors_copied;
                 return d;
             },
             "Which arrays were copied (True) rather than referenced (False).")

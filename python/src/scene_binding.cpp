@@ -202,6 +202,9 @@ const Scene& PyScene::owning() const {
         mesh.uvs.resize(view.uvs.count);
         for (std::size_t i = 0; i < view.uvs.count; ++i)
             std::memcpy(&mesh.uvs[i], float_bytes(view.uvs, i, 8), 8);
+        mesh.colors.resize(view.colors.count);
+        for (std::size_t i = 0; i < view.colors.count; ++i)
+            std::memcpy(&mesh.colors[i], float_bytes(view.colors, i, 16), 16);
         mesh.indices.resize(view.indices.count);
         for (std::size_t i = 0; i < view.indices.count; ++i)
             mesh.indices[i] = view.indices.type == IndexType::UInt16

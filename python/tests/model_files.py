@@ -83,7 +83,7 @@ def write_obj(folder, name, objects):
 def write_gltf(folder, name, objects):
     """Writes NAME.gltf (buffers and images embedded as data URIs) into `folder`: one mesh,
     node and material per entry of `objects`, a dict with positions, faces, normals, optional
-    uvs, and the material: color (RGBA baseColorFactor), alpha_mode ("OPAQUE", "MASK",
+    uvs and colors (COLOR_0, RGB or RGBA floats), and the material: color (RGBA baseColorFactor), alpha_mode ("OPAQUE", "MASK",
     "BLEND"), alpha_cutoff, double_sided, texture (an image array, embedded as a PNG). Returns
     the path."""
     blob = bytearray()
@@ -111,6 +111,9 @@ def write_gltf(folder, name, objects):
         }
         if o.get("uvs") is not None:
             attributes["TEXCOORD_0"] = add(np.asarray(o["uvs"], np.float32), 34962, "VEC2", 5126)
+        if o.get("colors") is not None:
+            colors = np.asarray(o["colors"], np.float32)
+            attributes["COLOR_0"] = add(colors, 34962, f"VEC{colors.shape[1]}", 5126)
         faces = np.asarray(o["faces"], np.uint32).reshape(-1)
         indices = add(faces.reshape(-1, 1), 34963, "SCALAR", 5125)
         pbr = {"baseColorFactor": [float(c) for c in o["color"]], "metallicFactor": 0.0}

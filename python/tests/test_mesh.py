@@ -37,7 +37,8 @@ def test_float32_and_32_bit_indices_are_referenced():
     mesh = zraster.Mesh(positions, faces)
     assert mesh.positions is positions and mesh.indices is faces
     assert sys.getrefcount(positions) == count + 1
-    assert mesh.copied == {"positions": False, "indices": False, "normals": False, "uvs": False}
+    assert mesh.copied == {"positions": False, "indices": False, "normals": False, "uvs": False,
+                           "colors": False}
     assert mesh.computed_normals  # none given: computed into an array the Mesh owns
     int32 = zraster.Mesh(positions, faces.astype(np.int32))
     assert not int32.copied["indices"]

@@ -66,6 +66,8 @@ class Mesh:
         texture: npt.NDArray[np.uint8] | npt.NDArray[np.floating] | None = None,
         alpha_mode: AlphaMode | None = None,
         alpha_cutoff: float | None = None,
+        colors: ArrayLike | None = None,
+        double_sided: bool | None = None,
     ) -> None: ...
     @staticmethod
     def uv_sphere(
@@ -81,6 +83,8 @@ class Mesh:
     def normals(self) -> npt.NDArray[np.float32] | None: ...
     @property
     def uvs(self) -> npt.NDArray[np.float32] | None: ...
+    @property
+    def colors(self) -> npt.NDArray[np.float32] | None: ...
     @property
     def color(self) -> tuple[float, float, float, float] | None: ...
     @property
