@@ -282,6 +282,9 @@ struct WarnockObserver {
 struct WarnockResult {
     RenderTargets targets;
     WarnockStats stats;
+    // The fragment counts of RenderStats: fragments_shaded, fragments_alpha_discarded,
+    // fragments_blended and pixels_blended (the rest unset).
+    RenderStats fragments;
 };
 
 // Warnock's algorithm over the whole viewport. Depth comparisons use each polygon's plane in

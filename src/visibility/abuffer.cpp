@@ -261,10 +261,11 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
         return std::make_tuple(e.shading.color.x, e.shading.color.y, e.shading.color.z, p.instance,
                                p.primitive);
     };
-    std::atomic<std::uint64_t> shaded_total{0};
+    std::atomic<std::uint64_t> shaded_total{0}, discarded_total{0}, blended_total{0},
+        blended_pixels_total{0};
     auto resolve_rows = [&](const tbb::blocked_range<int>& rows) {
         std::vector<Entry> list;
-        std::uint64_t shaded = 0;
+        std::uint64_t shaded = 0, discarded = 0, blended = 0, blended_pixels = 0;
         for (int py = rows.begin(); py < rows.end(); ++py) {
             for (int px = 0; px < width; ++px) {
                 const std::size_t p = std::size_t(py) * std::size_t(width) + std::size_t(px);
@@ -274,7 +275,12 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
                 for (std::uint32_t f = head[p]; f != kEnd; f = pool[f].next) {
                     const float alpha =
                         alphas.at(prepared[pool[f].polygon], pool[f].polygon, pool[f].mask, px, py);
-                    if (alpha > 0.0f) list.push_back({&pool[f], alpha, false, {}});
+                    if (alpha > 0.0f) {
+                        list.push_back({&pool[f], alpha, false, {}});
+                    } else if (shader.alpha_mode(polygons[pool[f].polygon].instance) ==
+                               AlphaMode::Mask) {
+                        ++discarded;
+                    }
                 }
                 std::sort(list.begin(), list.end(), before);
                 // Ties: order by the shaded color, so submission order never decides.
@@ -333,15 +339,27 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
                     }
                 }
                 for (const Entry& e : list) shaded += e.shaded;
+                // Blended fragments in front of the nearest opaque one (as render() counts the
+                // ones that pass its depth test).
+                std::uint64_t in_front = 0;
+                for (auto e = list.begin(); e != nearest_it; ++e) in_front += e->alpha > 0.0f;
+                blended += in_front;
+                blended_pixels += in_front > 0;
             }
         }
         shaded_total += shaded;
+        discarded_total += discarded;
+        blended_total += blended;
+        blended_pixels_total += blended_pixels;
     };
     arena.execute([&] { tbb::parallel_for(tbb::blocked_range<int>(0, height, 8), resolve_rows); });
 
     if (stats) *stats = local;
     result.stats.triangles_rasterized = polygons.size();
     result.stats.fragments_shaded = shaded_total.load();
+    result.stats.fragments_alpha_discarded = discarded_total.load();
+    result.stats.fragments_blended = blended_total.load();
+    result.stats.pixels_blended = blended_pixels_total.load();
     visibility_detail::finish_stats(result.stats, camera, scene, start);
     return result;
 }

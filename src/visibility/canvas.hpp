@@ -46,6 +46,10 @@ class Canvas {
     std::uint64_t fragments() const { return fragments_; }
     std::uint64_t alpha_discarded() const { return alpha_discarded_; }
     std::uint64_t blended() const { return blended_; }
+    // Its counts as RenderStats holds them: fragments drawn, cut out (Mask) and composited
+    // (Blend; every one drawn, also where a nearer surface covers it later), and the pixels
+    // that received at least one of those.
+    void count_fragments(RenderStats& stats) const;
 
   private:
     struct Shading;
@@ -61,7 +65,8 @@ class Canvas {
     // The composite so far of each pixel, in float (as render()'s blend pass keeps it between
     // layers): only when a Blend polygon may be drawn into the color target.
     std::vector<glm::vec3> over_;
-    std::uint64_t fragments_ = 0, alpha_discarded_ = 0, blended_ = 0;
+    std::vector<std::uint8_t> blended_pixels_;  // 1: a Blend fragment drawn there
+    std::uint64_t fragments_ = 0, alpha_discarded_ = 0, blended_ = 0, pixels_blended_ = 0;
 };
 
 }  // namespace zraster::visibility_detail

@@ -67,6 +67,7 @@ Canvas::Canvas(const RenderOptions& options, const Camera& camera, const Scene* 
     const bool alpha = shade_from != nullptr && scene_has_alpha(*shade_from, options);
     if (shade_from != nullptr && (options.color_target || options.normal_target || alpha))
         shading_ = std::make_unique<Shading>(*shade_from, options);
+    if (alpha) blended_pixels_.assign(std::size_t(options.width) * std::size_t(options.height), 0);
     if (alpha && options.color_target) {
         over_.resize(targets_.color.size() / 4);
         for (std::size_t p = 0; p < over_.size(); ++p)
@@ -117,6 +118,8 @@ void Canvas::fill(const ScreenPolygon& polygon, std::span<const TriangleSetup> f
                 if (alpha == 0.0f) return;
                 ++fragments_;
                 ++blended_;
+                pixels_blended_ += blended_pixels_[p] == 0;
+                blended_pixels_[p] = 1;
                 if (!options_.color_target || shading == nullptr) return;
                 // render()'s blend pass: the shaded color quantized, composited in float.
                 const Shaded shaded = shader->shade(*shading, px, py, true, 0.0, 0.0, false);
@@ -191,6 +194,13 @@ bool Canvas::hides_at(const ScreenPolygon& polygon, int px, int py) {
                             ? shader.alpha(kept(polygon), px, py, true, 0.0, 0.0)
                             : shader.constant_alpha(polygon.instance);
     return shader.passes_alpha_test(polygon.instance, alpha);
+}
+
+void Canvas::count_fragments(RenderStats& stats) const {
+    stats.fragments_shaded = fragments_;
+    stats.fragments_alpha_discarded = alpha_discarded_;
+    stats.fragments_blended = blended_;
+    stats.pixels_blended = pixels_blended_;
 }
 
 RenderTargets Canvas::take() {

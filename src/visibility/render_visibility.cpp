@@ -56,7 +56,7 @@ RenderResult render_bsp(const BspTree& tree, const Scene& scene, const RenderOpt
     for_each_bsp_piece(tree, frame, [&](const ScreenPolygon& piece) { canvas.draw(piece); });
     RenderResult result;
     result.targets = canvas.take();
-    result.stats.fragments_shaded = canvas.fragments();
+    canvas.count_fragments(result.stats);
     finish_stats(result.stats, frame.camera, scene, start);
     return result;
 }
@@ -82,7 +82,10 @@ RenderResult render_frame(const Scene& scene, const RenderOptions& options,
             PainterResult sorted =
                 painter_sort(std::move(polygons), Viewport{options.width, options.height}, painter);
             out.painter = sorted.stats;
-            result.targets = paint_polygons(sorted.order, options, camera, &scene);
+            visibility_detail::Canvas canvas(options, camera, &scene);
+            for (const ScreenPolygon& polygon : sorted.order) canvas.draw(polygon);
+            result.targets = canvas.take();
+            canvas.count_fragments(result.stats);
             result.stats.camera = camera;
             break;
         }
@@ -102,6 +105,10 @@ RenderResult render_frame(const Scene& scene, const RenderOptions& options,
             WarnockResult w = warnock_render(polygons, options, camera, nullptr, &scene);
             out.warnock = std::move(w.stats);
             result.targets = std::move(w.targets);
+            result.stats.fragments_shaded = w.fragments.fragments_shaded;
+            result.stats.fragments_alpha_discarded = w.fragments.fragments_alpha_discarded;
+            result.stats.fragments_blended = w.fragments.fragments_blended;
+            result.stats.pixels_blended = w.fragments.pixels_blended;
             result.stats.camera = camera;
             break;
         }

@@ -268,6 +268,7 @@ WarnockResult warnock_render(std::span<const ScreenPolygon> polygons, const Rend
             if (q.x1 > q.x0 && q.y1 > q.y0) tasks.push_back({q, task.level + 1, kept});
     }
     result.targets = canvas.take();
+    canvas.count_fragments(result.fragments);
     return result;
 }
 

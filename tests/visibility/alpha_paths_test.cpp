@@ -156,6 +156,34 @@ TEST(AlphaPaths, TextureAlphaBlendsAsTheZBufferBlends) {
     }
 }
 
+// --stats: every path counts the cut-out fragments, the blended fragments in front of the opaque
+// surfaces and the pixels they cover as the z-buffer does, where no blended surface is hidden
+// (the area-sampled paths also count the fragments of pixels a square covers only in part).
+TEST(AlphaPaths, EveryPathCountsCutOutAndBlendedFragments) {
+    const RenderOptions options = alpha_path_options();
+    const Scene mask = checker_scene(AlphaMode::Mask, false);
+    const Scene blend = alpha_layers_scene(kAlphaLayers, {0, 1, 2});
+    const RenderStats mask_reference = render(mask, options).stats;
+    const RenderStats blend_reference = render(blend, options).stats;
+    EXPECT_EQ(mask_reference.fragments_alpha_discarded, 16u * 32u);
+    EXPECT_EQ(blend_reference.fragments_blended, 28u * 28u + 16u * 16u);
+    for (const Path path : kPaths) {
+        SCOPED_TRACE(path_name(path));
+        const RenderStats m = draw_with(path, mask, options).stats;
+        EXPECT_EQ(m.fragments_alpha_discarded, mask_reference.fragments_alpha_discarded);
+        EXPECT_EQ(m.fragments_blended, 0u);
+        const RenderStats b = draw_with(path, blend, options).stats;
+        EXPECT_EQ(b.fragments_alpha_discarded, 0u);
+        if (point_sampled(path)) {
+            EXPECT_EQ(b.fragments_blended, blend_reference.fragments_blended);
+        } else {  // also the edge pixels whose centers the squares miss: one row each side
+            EXPECT_GE(b.fragments_blended, blend_reference.fragments_blended);
+            EXPECT_LE(b.fragments_blended, blend_reference.fragments_blended + 4u * (29 + 17));
+        }
+        EXPECT_EQ(b.pixels_blended, blend_reference.pixels_blended);
+    }
+}
+
 // A square whose vertex alpha runs from 0 (left) to 1 (right) over the wall, white times its
 // vertex colors: blended, the analytic "over" of the interpolated color; as a cut-out, the wall
 // left of the middle. Point-sampled paths equal the z-buffer bit for bit.
