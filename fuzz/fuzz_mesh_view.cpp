@@ -216,13 +216,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             c.hostile ? in.ConsumeIntegralInRange<std::size_t>(0, vertex_range) : vertex_range;
         mesh.positions = pick_attribute(c, floats, 12, count);
         const std::size_t n = mesh.positions.count;
-        // Normals and uvs: none or one per position, or when hostile any count.
+        // Normals, uvs and colors: none or one per position, or when hostile any count.
         const auto other = [&] {
             if (c.fault(4)) return in.ConsumeIntegralInRange<std::size_t>(0, vertex_range);
             return in.ConsumeBool() ? n : 0;
         };
         mesh.normals = pick_attribute(c, floats, 12, other());
         mesh.uvs = pick_attribute(c, floats, 8, other());
+        mesh.colors = pick_attribute(c, floats, 16, other());
         mesh.indices = pick_indices(c, index_buffers);
         mesh.material = in.ConsumeIntegralInRange<std::uint32_t>(
             0, std::uint32_t(materials.size() + (c.hostile ? 1 : 0)) - (materials.empty() ? 0 : 1));

@@ -1,8 +1,8 @@
 // libFuzzer target: the pipeline fed raw geometry. The input bytes choose a scene (meshes with
 // positions from a palette of hostile values: NaN, +-Inf, +-1e30, FLT_MAX, denormals, signed
 // zeros, duplicates of earlier vertices, points on the line through two earlier ones; indices;
-// normals, uvs, tiny textures; instances with random, singular and non-finite matrices),
-// a camera (or none: fit_camera), and every render option, at sizes up to 96x96.
+// normals, uvs, vertex colors, tiny textures; instances with random, singular and non-finite
+// matrices), a camera (or none: fit_camera), and every render option, at sizes up to 96x96.
 //
 // Oracles besides the sanitizers: render() either returns targets of the right sizes whose
 // values are in range (depth in [0, 1], ids naming real instances and triangles) or throws an
@@ -117,6 +117,13 @@ Mesh make_mesh(FuzzedDataProvider& in) {
         for (int v = 0; v < vertices; ++v) {
             const float s = hostile_float(in), t = hostile_float(in);
             mesh.uvs.emplace_back(s, t);
+        }
+    if (in.ConsumeBool())  // vertex colors: mostly in [0, 1], sometimes hostile (refused)
+        for (int v = 0; v < vertices; ++v) {
+            const bool hostile = in.ConsumeIntegralInRange(0, 15) == 0;
+            const float a = hostile ? hostile_float(in) : in.ConsumeProbability<float>();
+            mesh.colors.emplace_back(in.ConsumeProbability<float>(), in.ConsumeProbability<float>(),
+                                     in.ConsumeProbability<float>(), a);
         }
     mesh.material = in.ConsumeIntegralInRange<std::uint32_t>(0, 3);
     update_bounds(mesh);

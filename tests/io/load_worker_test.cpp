@@ -536,6 +536,32 @@ TEST(WorkerMessage, RefusesBadMaterialAlpha) {
     expect_invalid(missing, "material 0 names a missing opacity texture");
 }
 
+// Vertex colors cross the pipe as they are, and the parent refuses what the loader never
+// produces: colors not one per position, a component outside [0, 1] or NaN.
+TEST(WorkerMessage, VertexColors) {
+    Mesh tri;
+    tri.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    tri.indices = {0, 1, 2};
+    tri.colors = {{1, 0, 0, 0.25f}, {0, 1, 0, 0.5f}, {0, 0, 1, 1}};
+    compute_angle_weighted_normals(tri);
+    update_bounds(tri);
+    const io::LoadedScene sent{scene_from_meshes({tri}), {}};
+    const std::string message = io::encode_scene_message(sent);
+    expect_same_scene(sent, io::decode_worker_message(byte_span(message), "m.ply", {}), "colors");
+    const auto message_with = [&](auto change) {
+        Scene scene = scene_from_meshes({tri});
+        change(scene.meshes.at(0).colors);
+        return io::encode_scene_message({scene, {}});
+    };
+    expect_invalid(message_with([](std::vector<glm::vec4>& c) { c.pop_back(); }),
+                   "mesh 0: colors not one per position");
+    for (const float bad : {-0.5f, 1.5f, std::nanf("")}) {
+        SCOPED_TRACE(bad);
+        expect_invalid(message_with([&](std::vector<glm::vec4>& c) { c[1].w = bad; }),
+                       "mesh 0: a vertex color is outside [0, 1]");
+    }
+}
+
 TEST(WorkerMessage, ErrorMessages) {
     test::expect_input_error(
         [&] {
