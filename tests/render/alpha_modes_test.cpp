@@ -139,6 +139,32 @@ TEST(AlphaModes, MaskDiscardsFragmentsUnderTheCutoffBeforeTheyWriteDepth) {
                           r.targets.depth));
 }
 
+// A cut-out texture minified 8 times (256 texels over 32 pixels): trilinear filtering samples
+// its mip levels (the 32x32 level and the next), whose alpha the box filter keeps inside the
+// cells; the cells cut out where the finest level, sampled without mipmaps, cuts them.
+TEST(AlphaModes, MaskSamplesTheMipLevelsOfAMinifiedTexture) {
+    Scene scene = checker_scene(AlphaMode::Mask, false);
+    scene.materials[1].base_color_texture = std::make_shared<Texture>(
+        make_checkerboard_texture(4, 64, {40, 200, 60, 0}, {40, 200, 60, 255}));
+    ASSERT_GE(scene.materials[1].base_color_texture->levels(), 6);
+    const RenderOptions options = alpha_test_options();
+    RenderOptions finest = options;
+    finest.texture_filter = TextureFilter::Nearest;
+    const RenderResult r = render(scene, options), reference = render(scene, finest);
+    for (int cy = 0; cy < 4; ++cy)
+        for (int cx = 0; cx < 4; ++cx) {
+            const int px = 16 + 8 * cx + 4, py = 16 + 8 * cy + 4;
+            const bool transparent = ((cx + cy) & 1) == 0;
+            const glm::ivec3 expected =
+                transparent
+                    ? glm::ivec3(analytic_unorm8(0.9), analytic_unorm8(0.2), analytic_unorm8(0.1))
+                    : glm::ivec3(40, 200, 60);
+            EXPECT_EQ(alpha_test_rgb(r, px, py), expected) << px << "," << py;
+            EXPECT_EQ(alpha_test_rgb(reference, px, py), expected) << px << "," << py;
+        }
+    EXPECT_GT(r.stats.fragments_alpha_discarded, 8u * 36u);
+}
+
 TEST(AlphaModes, TheOptimizationsAndTheSimdShaderDoNotChangeABit) {
     // (Phong: blended fragments lit by the SIMD shader, against the scalar one without SIMD.)
     for (const auto& [mode, shading] : {std::pair{AlphaMode::Mask, ShadingMode::Unlit},
