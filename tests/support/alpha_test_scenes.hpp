@@ -148,6 +148,27 @@ RenderResult same_image_in_every_order(const Draw& draw) {
     return first;
 }
 
+// The scene drawn with each of the pipeline's exact optimizations turned off in turn (SIMD,
+// hierarchical z), occlusion culling on, cluster culling off, one thread with forward shading:
+// the same color and depth as with `options` as given, which it returns.
+inline RenderResult same_image_under_every_optimization(const Scene& scene,
+                                                        const RenderOptions& options) {
+    const RenderResult reference = render(scene, options);
+    for (int variant = 0; variant < 5; ++variant) {
+        RenderOptions o = options;
+        o.simd = variant != 0;
+        o.hierarchical_z = variant != 1;
+        o.occlusion_cull = variant == 2;
+        o.cluster_culling = variant != 3;
+        o.threads = variant == 4 ? 1 : 2;
+        o.strategy = variant == 4 ? ShadingStrategy::Forward : ShadingStrategy::Auto;
+        const RenderResult r = render(scene, o);
+        EXPECT_EQ(r.targets.color, reference.targets.color) << "variant " << variant;
+        EXPECT_TRUE(same_bits(r.targets.depth, reference.targets.depth)) << "variant " << variant;
+    }
+    return reference;
+}
+
 // An analytic channel value as an 8-bit target stores it.
 inline int analytic_unorm8(double v) {
     return int(std::clamp(float(v), 0.0f, 1.0f) * 255.0f + 0.5f);
