@@ -97,6 +97,24 @@ std::vector<Malformed> malformed_files() {
         {"random.off", "this is not an OFF file\n1 2 3\n",
          "not an OFF file: the header (OFF, then the vertex, face and edge counts) is invalid"},
         {"point.obj", tri + "f 1 2 3\nf 1\n", "malformed OBJ file: line 5: face with 1 corners"},
+        // OFF face indices, which Assimp would move to the last vertex (past the end) or read as
+        // vertex 0 (missing, negative, not a number).
+        {"index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n",
+         "malformed OFF file: OFF face 0 (line 6) names vertex 7, but the file has 3 vertices (0 "
+         "to 2)"},
+        {"index-coff.off",
+         "COFF\n3 2 0\n0 0 0 1 0 0 1\n1 0 0 1 0 0 1\n0 1 0 1 0 0 1\n3 0 1 2\n"
+         "3 2 1 4294967296 255 0 0\n",
+         "malformed OFF file: OFF face 1 (line 7) names vertex 4294967296, but the file has 3 "
+         "vertices (0 to 2)"},
+        {"index-noff.off",
+         "NOFF\r\n3 1 0\r\n0 0 0 0 0 1\r\n1 0 0 0 0 1\r\n0 1 0 0 0 1\r\n3\t0\t3\t1\r\n",
+         "malformed OFF file: OFF face 0 (line 6) names vertex 3, but the file has 3 vertices (0 "
+         "to 2)"},
+        {"negative.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 -1\n",
+         "malformed OFF file: OFF face 0 (line 6): vertex index '-1' is not a number of 0 or more"},
+        {"few.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n",
+         "malformed OFF file: OFF face 0 (line 6) declares 3 vertices but lists 2 indices"},
         {"short.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
          "a face without vertex indices (fewer face records than the header declares?)"},
         {"index.ply",
