@@ -163,16 +163,18 @@ void check_stl_structure(const std::string& file, const std::string& bytes) {
                              std::to_string(declared) + " = " + std::to_string(84 + 50 * declared) +
                              " bytes, this file has " + std::to_string(size));
     }
-    // ASCII: Assimp counts at most 3 vertices a facet, and fails when a facet has fewer.
+    // ASCII: Assimp fails when a facet has fewer than 3 vertices, and drops every vertex after
+    // the third with no more than a log line (the facet then is not what the file says): both
+    // are refused here.
     std::size_t line = 1, facet_line = 0;
     std::uint64_t facets = 0, complete = 0;
     int vertices = 3;
     auto end_facet = [&] {
-        if (facets != 0 && vertices < 3)
+        if (facets != 0 && vertices != 3)
             throw InputError(file, "malformed ASCII STL: facet " + std::to_string(facets) +
                                        " (line " + std::to_string(facet_line) + ") has " +
-                                       std::to_string(vertices) + " vertices; a facet has 3");
-        if (facets != 0 && vertices == 3) ++complete;
+                                       std::to_string(vertices) + " vertices; STL facets have 3");
+        if (facets != 0) ++complete;
     };
     bool in_facet = false;
     while (at < size) {
@@ -196,7 +198,8 @@ void check_stl_structure(const std::string& file, const std::string& bytes) {
             facet_line = line;
             vertices = 0;
         } else if (token == "vertex" && in_facet) {
-            vertices = std::min(vertices + 1, 3);
+            // A fourth is refused at once (no count to keep past it).
+            if (++vertices > 3) end_facet();
         } else if (token == "endfacet" && in_facet) {
             end_facet();
             in_facet = false;

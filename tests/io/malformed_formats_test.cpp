@@ -50,9 +50,13 @@ std::vector<Malformed> malformed_files() {
         {"two.stl",
          "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nendloop\n"
          "endfacet\nendsolid x\n",
-         "malformed ASCII STL: facet 1 (line 2) has 2 vertices; a facet has 3"},
+         "malformed ASCII STL: facet 1 (line 2) has 2 vertices; STL facets have 3"},
         {"cut.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 1 2 3\n",
          "truncated: the ASCII STL ends inside facet 1 (line 2) after 1 of its 3 vertices"},
+        {"four.stl",
+         "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+         "vertex 5 5 5\nendloop\nendfacet\nendsolid x\n",
+         "malformed ASCII STL: facet 1 (line 2) has 4 vertices; STL facets have 3"},
         {"empty-solid.stl", "solid\n", "no triangles (an ASCII STL without a complete facet)"},
         {"zero.stl", binary_stl_header(0), "no triangles (a binary STL whose header declares 0)"},
         // glTF and GLB
