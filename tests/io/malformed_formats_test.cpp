@@ -37,6 +37,15 @@ std::string pseudo_random(std::size_t size, unsigned seed, char avoid) {
     return bytes;
 }
 
+// A binary glTF 1.0 (KHR_binary_glTF) header and its JSON content.
+std::string glb1_header(const std::string& json) {
+    std::string bytes = "glTF";
+    for (const std::uint32_t v : {1u, static_cast<std::uint32_t>(20 + json.size()),
+                                  static_cast<std::uint32_t>(json.size()), 0u})
+        for (int b = 0; b < 4; ++b) bytes.push_back(static_cast<char>((v >> (8 * b)) & 0xff));
+    return bytes + json;
+}
+
 std::vector<Malformed> malformed_files() {
     const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
     return {
@@ -69,13 +78,22 @@ std::vector<Malformed> malformed_files() {
         {"noversion.gltf", R"({"asset": {}})",
          "not a glTF file: its \"asset\" has no \"version\" string"},
         {"v3.gltf", R"({"asset": {"version": "3.0"}})",
-         "glTF version '3.0' is not supported (1.x and 2.x are)"},
+         "glTF version '3.0' is not supported (2.x is)"},
+        // glTF 1.0, which Assimp would read as far as its importer goes.
+        {"v1.gltf", R"({"asset": {"version": "1.0"}, "meshes": {}})",
+         "glTF 1.0 is not supported, only glTF 2.0 is (convert the file to 2.0)"},
+        {"v1.glb", glb1_header(R"({"asset": {"version": "1.0"}})"),
+         "GLB version 1 (binary glTF 1.0) is not supported, only GLB 2 (glTF 2.0) is (convert "
+         "the file to 2.0)"},
+        {"v1-glb.bin", glb1_header(R"({"asset": {"version": "1.0"}})"),
+         "GLB version 1 (binary glTF 1.0) is not supported, only GLB 2 (glTF 2.0) is (convert "
+         "the file to 2.0)"},
         {"random.glb", pseudo_random(300, 1, 'g'),
          "not a binary glTF (GLB) file: it does not start with 'glTF'"},
         {"tiny.glb", std::string("glTF\x02\0\0", 7),
          "truncated: a binary glTF (GLB) file starts with a 12-byte header, this file has 7 bytes"},
         {"v9.glb", std::string("glTF\x09\0\0\0\x14\0\0\0", 12) + std::string(8, '\0'),
-         "GLB version 9 is not supported (1 and 2 are)"},
+         "GLB version 9 is not supported (2 is)"},
         {"bin-first.glb",
          std::string("glTF\x02\0\0\0\x20\0\0\0\x0c\0\0\0BIN\0", 20) + std::string(12, '\0'),
          "malformed GLB file: its first chunk is not the JSON chunk"},
