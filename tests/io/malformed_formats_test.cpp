@@ -119,6 +119,15 @@ std::vector<Malformed> malformed_files() {
         {"random.off", "this is not an OFF file\n1 2 3\n",
          "not an OFF file: the header (OFF, then the vertex, face and edge counts) is invalid"},
         {"point.obj", tri + "f 1 2 3\nf 1\n", "malformed OBJ file: line 5: face with 1 corners"},
+        // OBJ texture and normal indices, which Assimp would clamp or drop without a word.
+        {"uv.obj", tri + "vt 0 0\nf 1/99 2/1 3/1\n",
+         "line 5: texture coordinate index out of range (99; the file has 1 texture coordinates)"},
+        {"normal.obj", tri + "vn 0 0 1\nf 1//1 2//1 3//99\n",
+         "line 5: normal index out of range (99; the file has 1 normals)"},
+        {"normal-negative.obj", tri + "vt 0 0\nvn 0 0 1\nf 1/1/-2 2/1/1 3/1/1\n",
+         "line 6: normal index out of range (a negative index before the first normal)"},
+        {"no-uv.obj", tri + "f 1/1 2/1 3/1\n",
+         "line 4: texture coordinate index out of range (1; the file has 0 texture coordinates)"},
         // OFF face indices, which Assimp would move to the last vertex (past the end) or read as
         // vertex 0 (missing, negative, not a number).
         {"index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n",
