@@ -112,6 +112,11 @@ bool is_placeholder_material(const aiMaterial& material) {
            !base_color_texture_reference(material);
 }
 
+bool is_skeleton_placeholder_material(const aiMaterial& material) {
+    // SkeletonMeshBuilder::CreateMaterial gives it these two properties and no others.
+    return material.mNumProperties == 2 && material_name(material) == "SkeletonMaterial";
+}
+
 Material convert_material(const aiMaterial& material, const std::string& fallback_name,
                           std::vector<std::string>& warnings) {
     Material out;

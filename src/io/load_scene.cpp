@@ -38,12 +38,20 @@ namespace {
 
 constexpr unsigned kUnset = ~0u;  // not converted (yet)
 
-// Faces of three or more corners in the imported (not yet triangulated) scene.
+bool is_skeleton_placeholder(const aiScene& scene, const aiMesh& mesh) {
+    return mesh.mMaterialIndex < scene.mNumMaterials &&
+           scene.mMaterials[mesh.mMaterialIndex] != nullptr &&
+           io::is_skeleton_placeholder_material(*scene.mMaterials[mesh.mMaterialIndex]);
+}
+
+// Faces of three or more corners in the imported (not yet triangulated) scene, not counting the
+// skeleton Assimp draws for a file without meshes.
 std::size_t count_polygons(const aiScene& scene) {
     std::size_t n = 0;
     for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
         const aiMesh* mesh = scene.mMeshes[m];
         if (mesh == nullptr || mesh->mFaces == nullptr) continue;
+        if (is_skeleton_placeholder(scene, *mesh)) continue;
         for (unsigned f = 0; f < mesh->mNumFaces; ++f)
             if (mesh->mFaces[f].mNumIndices >= 3 && mesh->mFaces[f].mIndices != nullptr) ++n;
     }
@@ -204,7 +212,13 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
             throw InputError(file, io::refusal_text(refusals.front(), "refused"));
         if (ai == nullptr) throw malformed(importer.GetErrorString());
         // Checked before post-processing, which rejects faceless meshes as "invalid".
-        if (count_polygons(*ai) == 0) throw InputError(file, "no triangles");
+        if (count_polygons(*ai) == 0) {
+            for (unsigned m = 0; m < ai->mNumMeshes; ++m)
+                if (ai->mMeshes[m] != nullptr && is_skeleton_placeholder(*ai, *ai->mMeshes[m]))
+                    throw InputError(file, "no triangles in it (no mesh, only nodes: is it a " +
+                                               io::format_name(path) + " file?)");
+            throw InputError(file, "no triangles");
+        }
         // Validation first: Debian's Assimp keeps its assertions, and triangulating a face with
         // missing indices (a short OFF body) would abort the process. No vertex joining, no
         // degenerate removal (the rasterizer handles degenerate triangles), no generated
