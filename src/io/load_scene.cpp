@@ -123,7 +123,7 @@ class MaterialTable {
         }
         Material material =
             io::convert_material(source, "material " + std::to_string(ai_index), warnings_);
-        obj_dissolve_.apply(material);
+        obj_dissolve_.apply(material, warnings_);
         textures_.attach_textures(source, material);
         map_[ai_index] = static_cast<std::uint32_t>(out_.materials.size());
         out_.materials.push_back(std::move(material));
