@@ -148,6 +148,7 @@ printf '\x4d\x4d\x6c\0\0\0\x02\0\x0a\0\0\0\x03\0\0\0\x3d\x3d\x5c\0\0\0\x3e\x3d\x
 printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nvertex 5 5 5\nendloop\nendfacet\nendsolid x\n' >fourvertex.stl
 printf "${tri}vt 0 0\nf 1/99/1 2/1/1 3/1/1\nvn 0 0 1\n" >uvindex.obj
 printf "${tri}vn 0 0 1\nf 1//1 2//1 3//-2\n" >normalindex.obj
+printf "${tri}v 0.5 -1 0\nv 1 1 0\nvt 0 0\nf 1/1 4/1 2/9 5/1 3/1\n" >pentagon.obj
 printf 'glTF\x01\0\0\0\x34\0\0\0\x20\0\0\0\0\0\0\0{"asset": {"version": "1.0"}}   ' >version1.glb
 printf '{"asset": {"version": "1.0"}, "meshes": {}}' >version1.gltf
 head -c 4096 /dev/urandom >random.ase
@@ -339,6 +340,7 @@ rm -f out.png
 row "ASCII STL facet of four vertices" render fourvertex.stl -o out.png
 row "OBJ texture coordinate index past the vt lines" render uvindex.obj -o out.png
 row "OBJ negative normal index before the first vn" render normalindex.obj -o out.png
+row "OBJ pentagon (read by Assimp) with a texture index past the vt lines" render pentagon.obj -o out.png
 row "GLB version 1 (glTF 1.0)" render version1.glb -o out.png
 row "glTF 1.0" render version1.gltf -o out.png
 row "4 KiB of random bytes named .ase (Assimp: nodes, no mesh)" render random.ase -o out.png

@@ -15,6 +15,7 @@
 #include "io/input_file_check.hpp"
 #include "io/load_worker.hpp"
 #include "io/mtl_dissolve.hpp"
+#include "io/obj_index_scan.hpp"
 #include "io/obj_material_libraries.hpp"
 #include "io/obj_parser.hpp"
 #include "io/reference_policy.hpp"
@@ -152,6 +153,7 @@ io::LoadedScene load_any(const std::filesystem::path& path, const LoadOptions& o
     // looked wrong comes first: Assimp's messages name neither the line nor, often, the cause
     // ("vertex index out of range" for a coordinate that is not a number).
     const io::ObjFallback& fallback = std::get<io::ObjFallback>(fast);
+    io::check_obj_indices(path);  // what Assimp would clamp or drop without a word
     try {
         return io::load_scene_with_assimp(path, options);
     } catch (const LimitExceeded&) {

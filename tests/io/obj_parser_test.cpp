@@ -397,6 +397,19 @@ TEST(ObjParser, ErrorsNameTheLine) {
     expect_error(write_obj("uv-negative-range", v + "vt 0 0\nf 1/1 2/-2 3/1\n"),
                  "line 6: texture coordinate index out of range (a negative index before the "
                  "first texture coordinate)");
+    // The same in a file left to Assimp (a pentagon), checked before Assimp by
+    // obj_index_scan.cpp; a texture slot before the first vt is Assimp's normal index.
+    expect_error(write_obj("ngon-uv-range", v + "v 0.5 -1 0\nvt 0 0\nf 1/1 5/1 2/9 3/1 4/1\n"),
+                 "line 7: texture coordinate index out of range (9; the file has 1 texture "
+                 "coordinates)");
+    expect_error(
+        write_obj("ngon-normal-range", v + "v 0.5 -1 0\nvn 0 0 1\nf 1//1 5//-2 2//1 3//1 4//1\n"),
+        "line 7: normal index out of range (a negative index before the first normal)");
+    EXPECT_EQ(
+        load_scene(write_obj("ngon-in-range",
+                             v + "v 0.5 -1 0\nvt 0 0\nvn 0 0 1\nf 1/1/1 5/1/1 2/1/1 3/1/1 4/1/1\n"))
+            .meshes.size(),
+        1u);
     expect_error(write_obj("uv-without-uvs", v + "f 1/1 2/1 3/1\n"),
                  "line 5: texture coordinate index out of range (1; the file has 0 texture "
                  "coordinates)");
