@@ -343,6 +343,8 @@ row "OBJ negative normal index before the first vn" render normalindex.obj -o ou
 row "OBJ pentagon (read by Assimp) with a texture index past the vt lines" render pentagon.obj -o out.png
 row "GLB version 1 (glTF 1.0)" render version1.glb -o out.png
 row "glTF 1.0" render version1.gltf -o out.png
+cp shared-nodes.gltf shared-nodes.json
+row "glTF named .json, nodes sharing children: 10^10 placements" render shared-nodes.json -o out.png
 row "4 KiB of random bytes named .ase (Assimp: nodes, no mesh)" render random.ase -o out.png
 row "view script: wheel of 1e300 notches" view sphere:20 --script wheel.script
 row "view script: frame 5 x 10^9" view sphere:20 --script frame.script

@@ -480,6 +480,13 @@ void check_declared_counts(const std::filesystem::path& path, std::uintmax_t fil
     }
     for (const char* other : {".obj", ".ply", ".stl", ".glb", ".3ds"})
         if (extension == other) return;
+    if (extension != ".off" && starts_json_object(head)) {
+        std::ifstream in(path, std::ios::binary);
+        check_gltf_bounds(
+            path, std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()),
+            std::nullopt, options);
+        return;
+    }
     check_off(path, head, file_size);
 }
 

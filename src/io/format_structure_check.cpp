@@ -319,6 +319,10 @@ void check_format_structure(const std::filesystem::path& path, std::uintmax_t fi
         // Under another name: Assimp asks every importer whether it reads the file, and the
         // glTF ones claim it by its magic.
         check_glb_structure(file, whole_file(path, file_size));
+    } else if (extension != ".obj" && extension != ".ply" && extension != ".off") {
+        // A glTF under another name (x.json): read as one (starts_json_object).
+        if (starts_json_object(whole_file(path, std::min<std::uintmax_t>(file_size, 4096))))
+            check_gltf_json(file, whole_file(path, file_size), false);
     }
 }
 

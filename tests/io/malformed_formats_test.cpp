@@ -73,6 +73,9 @@ std::vector<Malformed> malformed_files() {
          "not valid JSON: line 1, column 37: unexpected end of input; expected '[', '{', or a "
          "literal"},
         {"array.gltf", "[1, 2]", "not a glTF file: the JSON is not an object (a glTF file's is)"},
+        // JSON under another name: Assimp's glTF importers would read it.
+        {"noasset.json", R"({"nodes": []})",
+         "not a glTF file: the JSON has no \"asset\" object (every glTF file has one)"},
         {"noasset.gltf", R"({"nodes": []})",
          "not a glTF file: the JSON has no \"asset\" object (every glTF file has one)"},
         {"noversion.gltf", R"({"asset": {}})",
@@ -85,6 +88,8 @@ std::vector<Malformed> malformed_files() {
         {"v1.glb", glb1_header(R"({"asset": {"version": "1.0"}})"),
          "GLB version 1 (binary glTF 1.0) is not supported, only GLB 2 (glTF 2.0) is (convert "
          "the file to 2.0)"},
+        {"v1.json", R"({"asset": {"version": "1.0"}, "meshes": {}})",
+         "glTF 1.0 is not supported, only glTF 2.0 is (convert the file to 2.0)"},
         {"v1-glb.bin", glb1_header(R"({"asset": {"version": "1.0"}})"),
          "GLB version 1 (binary glTF 1.0) is not supported, only GLB 2 (glTF 2.0) is (convert "
          "the file to 2.0)"},
