@@ -139,6 +139,24 @@ printf '[{"orbit": [0, 95, 1]}]' >elevation.views.json
 printf '[{"eye": [1e39, 0, 0], "target": [0, 0, 0]}]' >eye.views.json
 printf '[{"eye": [3, 3, 3], "target": [0, 0, 0], "fovy": 0}]' >fovy.views.json
 printf "${ply_head}element face 2\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n" >two.ply
+# Indices past their values, facets of four vertices, glTF 1.0, bytes Assimp reads as nodes only,
+# viewer scripts and material values out of range.
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n' >index.off
+printf 'COFF\n3 1 0\n0 0 0 1 0 0 1\n1 0 0 1 0 0 1\n0 1 0 1 0 0 1\n3 0 1 -1\n' >negative.off
+# One triangle (0,0,0) (1,0,0) (0,1,0) whose face names vertices 0, 1, 9.
+printf '\x4d\x4d\x6c\0\0\0\x02\0\x0a\0\0\0\x03\0\0\0\x3d\x3d\x5c\0\0\0\x3e\x3d\x0a\0\0\0\x03\0\0\0\0\x40\x4c\0\0\0tri\0\0\x41\x42\0\0\0\x10\x41\x2c\0\0\0\x03\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x80\x3f\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x80\x3f\0\0\0\0\x20\x41\x10\0\0\0\x01\0\0\0\x01\0\x09\0\0\0' >index.3ds
+printf 'solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nvertex 5 5 5\nendloop\nendfacet\nendsolid x\n' >fourvertex.stl
+printf "${tri}vt 0 0\nf 1/99/1 2/1/1 3/1/1\nvn 0 0 1\n" >uvindex.obj
+printf "${tri}vn 0 0 1\nf 1//1 2//1 3//-2\n" >normalindex.obj
+printf "${tri}v 0.5 -1 0\nv 1 1 0\nvt 0 0\nf 1/1 4/1 2/9 5/1 3/1\n" >pentagon.obj
+printf 'glTF\x01\0\0\0\x34\0\0\0\x20\0\0\0\0\0\0\0{"asset": {"version": "1.0"}}   ' >version1.glb
+printf '{"asset": {"version": "1.0"}, "meshes": {}}' >version1.gltf
+head -c 4096 /dev/urandom >random.ase
+printf '0 key v\n1 wheel 1e300\n' >wheel.script
+printf '0 drag left 20 0\n5000000000 quit\n' >frame.script
+printf 'newmtl m\nKd 2 -1 nan\nNs -5\nd nan\n' >colors.mtl
+printf "mtllib colors.mtl\n${tri}usemtl m\nf 1 2 3\n" >colors.obj
+printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"%s"}],"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],"materials":[{"name":"m","alphaMode":"MASK","alphaCutoff":7,"pbrMetallicRoughness":{"baseColorFactor":[2,0.5,-1,-0.5],"roughnessFactor":3}}],"meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0}' "$b64" >factors.gltf
 
 failures=0
 echo "| # | Input | Command | Exit | Message (stderr) | Output left |"
@@ -313,6 +331,27 @@ row "point light at 10^39" render builtin:cube --point-light 1e39,0,0 -o out.png
 row "focal length 10^12 pixels" render builtin:cube --intrinsics 1e12,1e12,4,4 --size 8x8 -o out.png
 row "PLY past --max-triangles (refused in the worker)" render two.ply --max-triangles 1 -o out.png
 row "glTF past --max-instances" render shared-nodes.gltf --max-instances 1000 -o out.png
+# Indices, facets and versions Assimp would bend silently; nodes without meshes; viewer scripts;
+# material values (warnings naming the value and what is used).
+row "OFF face index past the vertices" render index.off -o out.png
+row "COFF face index -1 (Assimp: vertex 0)" render negative.off -o out.png
+row "3DS face index past the vertices (a warning)" render index.3ds --size 8x8 -o out.png
+rm -f out.png
+row "ASCII STL facet of four vertices" render fourvertex.stl -o out.png
+row "OBJ texture coordinate index past the vt lines" render uvindex.obj -o out.png
+row "OBJ negative normal index before the first vn" render normalindex.obj -o out.png
+row "OBJ pentagon (read by Assimp) with a texture index past the vt lines" render pentagon.obj -o out.png
+row "GLB version 1 (glTF 1.0)" render version1.glb -o out.png
+row "glTF 1.0" render version1.gltf -o out.png
+cp shared-nodes.gltf shared-nodes.json
+row "glTF named .json, nodes sharing children: 10^10 placements" render shared-nodes.json -o out.png
+row "4 KiB of random bytes named .ase (Assimp: nodes, no mesh)" render random.ase -o out.png
+row "view script: wheel of 1e300 notches" view sphere:20 --script wheel.script
+row "view script: frame 5 x 10^9" view sphere:20 --script frame.script
+row "MTL base color 2,-1,NaN, shininess -5, opacity NaN (warnings)" render colors.obj --size 8x8 -o out.png
+rm -f out.png
+row "glTF baseColorFactor, alpha, roughness and alphaCutoff out of range (warnings)" render factors.gltf --size 8x8 -o out.png
+rm -f out.png
 echo
 echo "$n inputs; $failures broke the contract (exit 2, one line, nothing left)."
 [ "$failures" -eq 0 ]

@@ -40,11 +40,12 @@ def write_obj(folder, name, objects):
     """Writes NAME.obj and NAME.mtl into `folder`: one OBJ object and material per entry of
     `objects`, a dict with positions, faces, normals, optional uvs, and the material: kd (RGB),
     d (opacity, optional), texture (an image array, written as a PNG beside the file),
-    opacity_texture (map_d, likewise), ks and ns. A vertex's position, uv and normal share one
-    index. Returns the OBJ's path."""
+    opacity_texture (map_d, likewise), ks and ns. A vertex's position, uv and normal are at the
+    same place in their object's lists (each kind counted over the file on its own: objects
+    without uvs add none). Returns the OBJ's path."""
     obj = [f"mtllib {name}.mtl\n"]
     mtl = []
-    base = 1
+    base = uv_base = 1
     for k, o in enumerate(objects):
         material = f"m{k}"
         mtl.append(f"newmtl {material}\n")
@@ -68,12 +69,15 @@ def write_obj(folder, name, objects):
             obj.extend(_row("vt", (u, 1.0 - v)) for u, v in uvs)  # OBJ's v points up
         obj.extend(_row("vn", n) for n in o["normals"])
         for face in np.asarray(o["faces"]).reshape(-1, 3):
-            corners = [int(i) + base for i in face]
             if uvs is not None:
-                obj.append("f " + " ".join(f"{i}/{i}/{i}" for i in corners) + "\n")
+                obj.append("f " + " ".join(f"{int(i) + base}/{int(i) + uv_base}/{int(i) + base}"
+                                           for i in face) + "\n")
             else:
-                obj.append("f " + " ".join(f"{i}//{i}" for i in corners) + "\n")
+                obj.append("f " + " ".join(f"{int(i) + base}//{int(i) + base}" for i in face)
+                           + "\n")
         base += len(o["positions"])
+        if uvs is not None:
+            uv_base += len(uvs)
     (folder / f"{name}.mtl").write_text("".join(mtl))
     path = folder / f"{name}.obj"
     path.write_text("".join(obj))

@@ -55,14 +55,6 @@ constexpr Translation kTranslations[] = {
     {"Validation failed", "malformed {} file: the importer made an inconsistent scene of it"},
 };
 
-std::string format_name(const std::filesystem::path& path) {
-    std::string name = path.extension().string();
-    if (name.size() <= 1) return "3D model";
-    name.erase(0, 1);
-    for (char& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return name;
-}
-
 std::string with_format(std::string_view text, const std::string& format) {
     std::string out(text);
     if (const std::size_t at = out.find("{}"); at != std::string::npos) out.replace(at, 2, format);
@@ -81,6 +73,14 @@ std::optional<std::string> quoted_reference(const std::string& text) {
 }
 
 }  // namespace
+
+std::string format_name(const std::filesystem::path& path) {
+    std::string name = path.extension().string();
+    if (name.size() <= 1) return "3D model";
+    name.erase(0, 1);
+    for (char& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return name;
+}
 
 std::string assimp_error_cause(const std::filesystem::path& path, const std::string& text) {
     const std::string detail = std::string(kDetail) + text + ")";

@@ -21,4 +21,7 @@ std::string assimp_error_cause(const std::filesystem::path& path, const std::str
 // nullopt for any other cause.
 std::optional<std::string> assimp_detail(const std::string& cause);
 
+// The format as messages name it: the extension in capitals ("ASE"), or "3D model".
+std::string format_name(const std::filesystem::path& path);
+
 }  // namespace zraster::io

@@ -16,6 +16,11 @@ std::string material_name(const aiMaterial& material);
 // colour of their own): zraster's default material stands in for them.
 bool is_placeholder_material(const aiMaterial& material);
 
+// The material of the mesh Assimp's SkeletonMeshBuilder draws for a file that has nodes but no
+// mesh (ASE, BVH, MD5 animations): a pyramid per node, not the file's geometry. Random bytes
+// named .ase load as one.
+bool is_skeleton_placeholder_material(const aiMaterial& material);
+
 // Base color (glTF base color, else diffuse), specular color times its strength, shininess
 // (clamped to [1, 1024]; zero or absent keeps the default) and alpha (docs/materials.md): glTF's
 // alphaMode, alphaCutoff and baseColorFactor alpha; for other formats Assimp's opacity, blended.

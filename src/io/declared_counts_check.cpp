@@ -1,6 +1,7 @@
 #include "io/declared_counts_check.hpp"
 
 #include "io/gltf_bounds_check.hpp"
+#include "io/text_util.hpp"
 
 #include <zraster/error.hpp>
 
@@ -276,7 +277,8 @@ void check_ply(const std::filesystem::path& path, const std::string& head,
 // [dimension] vertices faces, each count being the leading digits of its token.
 class OffHeaderReader {
   public:
-    explicit OffHeaderReader(const std::string& text) : p_(text.c_str()), end_(p_ + text.size()) {}
+    explicit OffHeaderReader(const std::string& text)
+        : begin_(text.c_str()), p_(begin_), end_(p_ + text.size()) {}
 
     // nullopt where Assimp itself refuses the header before allocating.
     std::optional<std::vector<DeclaredElement>> read() {
@@ -341,10 +343,57 @@ class OffHeaderReader {
                                                     std::to_string(f) + " has " +
                                                     std::to_string(n) +
                                                     " vertex indices (1 to 9 are supported)");
+            check_face_indices(path, f, n, q, line_end, line);
         }
     }
 
   private:
+    // Assimp reads each index with strtoul10 after skipping blanks: an index past the vertices
+    // becomes the last vertex, and a missing or non-numeric one (a short record, "-1", "1.5")
+    // becomes vertex 0, both with no more than a log line; the face is then drawn stretched
+    // across the mesh. Each of the n indices must be digits naming a vertex of the file.
+    void check_face_indices(const std::filesystem::path& path, std::uint64_t face, std::uint64_t n,
+                            const char* q, const char* line_end, const char* line) const {
+        const auto where = [&] {
+            return "OFF face " + std::to_string(face) + " (line " +
+                   std::to_string(line_number(line)) + ")";
+        };
+        for (std::uint64_t m = 0; m < n; ++m) {
+            while (q < line_end && (*q == ' ' || *q == '\t')) ++q;
+            const char* token = q;
+            while (q < line_end && *q != ' ' && *q != '\t') ++q;
+            const std::string_view text(token, static_cast<std::size_t>(q - token));
+            if (text.empty())
+                throw InputError(path.string(), "malformed OFF file: " + where() + " declares " +
+                                                    std::to_string(n) + " vertices but lists " +
+                                                    std::to_string(m) + " indices");
+            std::uint64_t index = 0;
+            for (const char c : text) {
+                if (c < '0' || c > '9')
+                    throw InputError(path.string(), "malformed OFF file: " + where() +
+                                                        ": vertex index '" +
+                                                        one_line(std::string(text.substr(0, 32))) +
+                                                        "' is not a number of 0 or more");
+                index =
+                    std::min<std::uint64_t>(index * 10 + std::uint64_t(c - '0'), UINT64_MAX / 16);
+            }
+            if (index >= vertices_)
+                throw InputError(path.string(),
+                                 "malformed OFF file: " + where() + " names vertex " +
+                                     std::string(text.substr(0, 32)) + ", but the file has " +
+                                     std::to_string(vertices_) + " vertices (0 to " +
+                                     std::to_string(vertices_ - 1) + ")");
+        }
+    }
+
+    // 1-based, counting a CR LF, a lone CR or a lone LF as one line end.
+    std::size_t line_number(const char* at) const {
+        std::size_t lines = 1;
+        for (const char* c = begin_; c < at; ++c)
+            if (*c == '\n' || (*c == '\r' && (c + 1 >= end_ || c[1] != '\n'))) ++lines;
+        return lines;
+    }
+
     bool starts_with(std::string_view s) const {
         return static_cast<std::size_t>(end_ - p_) >= s.size() &&
                std::string_view(p_, s.size()) == s;
@@ -380,6 +429,7 @@ class OffHeaderReader {
         return true;
     }
 
+    const char* begin_;
     const char* p_;
     const char* end_;
     std::uint64_t vertices_ = 0, faces_ = 0;
@@ -430,6 +480,13 @@ void check_declared_counts(const std::filesystem::path& path, std::uintmax_t fil
     }
     for (const char* other : {".obj", ".ply", ".stl", ".glb", ".3ds"})
         if (extension == other) return;
+    if (extension != ".off" && starts_json_object(head)) {
+        std::ifstream in(path, std::ios::binary);
+        check_gltf_bounds(
+            path, std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()),
+            std::nullopt, options);
+        return;
+    }
     check_off(path, head, file_size);
 }
 

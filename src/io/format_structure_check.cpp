@@ -77,7 +77,9 @@ std::string json_error_text(const json::parse_error& e) {
 }
 
 // A glTF document (the .gltf text, or a GLB's JSON chunk: `chunk`): JSON, an object, an asset
-// whose version Assimp has an importer for (1.x, 2.x).
+// of version 2.x. glTF 1.0 (2015, superseded in 2017) is refused although Assimp has an importer
+// for it: that importer reports a malformed file as "no suitable reader" and checks little, and
+// zraster's own checks (gltf_bounds_check.cpp) read the 2.0 layout only.
 void check_gltf_json(const std::string& file, std::string_view text, bool chunk) {
     const std::string json_text = chunk ? "its JSON chunk" : "the JSON";
     json document;
@@ -98,9 +100,12 @@ void check_gltf_json(const std::string& file, std::string_view text, bool chunk)
     if (version == asset->end() || !version->is_string())
         throw InputError(file, "not a glTF file: its \"asset\" has no \"version\" string");
     const std::string v = version->get<std::string>();
-    if (!v.starts_with("1.") && !v.starts_with("2.") && v != "1" && v != "2")
-        throw InputError(file, "glTF version '" + one_line(v.substr(0, 32)) +
-                                   "' is not supported (1.x and 2.x are)");
+    if (v.starts_with("1.") || v == "1")
+        throw InputError(file, "glTF " + one_line(v.substr(0, 32)) +
+                                   " is not supported, only glTF 2.0 is (convert the file to 2.0)");
+    if (!v.starts_with("2.") && v != "2")
+        throw InputError(
+            file, "glTF version '" + one_line(v.substr(0, 32)) + "' is not supported (2.x is)");
 }
 
 void check_glb_structure(const std::string& file, const std::string& bytes) {
@@ -112,10 +117,13 @@ void check_glb_structure(const std::string& file, const std::string& bytes) {
     if (!bytes.starts_with("glTF"))
         throw InputError(file, "not a binary glTF (GLB) file: it does not start with 'glTF'");
     const std::uint32_t version = little_u32(bytes, 4);
-    if (version != 1 && version != 2)
-        throw InputError(
-            file, "GLB version " + std::to_string(version) + " is not supported (1 and 2 are)");
-    if (version == 1) return;  // a different layout; Assimp's glTF 1 importer reads it
+    if (version == 1)
+        throw InputError(file,
+                         "GLB version 1 (binary glTF 1.0) is not supported, only GLB 2 (glTF "
+                         "2.0) is (convert the file to 2.0)");
+    if (version != 2)
+        throw InputError(file,
+                         "GLB version " + std::to_string(version) + " is not supported (2 is)");
     if (bytes.size() < 20)
         throw InputError(file, "truncated: the GLB header is not followed by a chunk (the JSON)");
     const std::uint32_t length = little_u32(bytes, 12);
@@ -163,16 +171,18 @@ void check_stl_structure(const std::string& file, const std::string& bytes) {
                              std::to_string(declared) + " = " + std::to_string(84 + 50 * declared) +
                              " bytes, this file has " + std::to_string(size));
     }
-    // ASCII: Assimp counts at most 3 vertices a facet, and fails when a facet has fewer.
+    // ASCII: Assimp fails when a facet has fewer than 3 vertices, and drops every vertex after
+    // the third with no more than a log line (the facet then is not what the file says): both
+    // are refused here.
     std::size_t line = 1, facet_line = 0;
     std::uint64_t facets = 0, complete = 0;
     int vertices = 3;
     auto end_facet = [&] {
-        if (facets != 0 && vertices < 3)
+        if (facets != 0 && vertices != 3)
             throw InputError(file, "malformed ASCII STL: facet " + std::to_string(facets) +
                                        " (line " + std::to_string(facet_line) + ") has " +
-                                       std::to_string(vertices) + " vertices; a facet has 3");
-        if (facets != 0 && vertices == 3) ++complete;
+                                       std::to_string(vertices) + " vertices; STL facets have 3");
+        if (facets != 0) ++complete;
     };
     bool in_facet = false;
     while (at < size) {
@@ -196,7 +206,8 @@ void check_stl_structure(const std::string& file, const std::string& bytes) {
             facet_line = line;
             vertices = 0;
         } else if (token == "vertex" && in_facet) {
-            vertices = std::min(vertices + 1, 3);
+            // A fourth is refused at once (no count to keep past it).
+            if (++vertices > 3) end_facet();
         } else if (token == "endfacet" && in_facet) {
             end_facet();
             in_facet = false;
@@ -281,6 +292,12 @@ void check_3ds_structure(const std::string& file, const std::string& bytes) {
     }
 }
 
+bool starts_with_glb_magic(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    char magic[4] = {};
+    return in.read(magic, 4) && std::string_view(magic, 4) == "glTF";
+}
+
 }  // namespace
 
 void check_format_structure(const std::filesystem::path& path, std::uintmax_t file_size) {
@@ -298,6 +315,14 @@ void check_format_structure(const std::filesystem::path& path, std::uintmax_t fi
         check_stl_structure(file, whole_file(path, file_size));
     } else if (extension == ".3ds") {
         check_3ds_structure(file, whole_file(path, file_size));
+    } else if (starts_with_glb_magic(path)) {
+        // Under another name: Assimp asks every importer whether it reads the file, and the
+        // glTF ones claim it by its magic.
+        check_glb_structure(file, whole_file(path, file_size));
+    } else if (extension != ".obj" && extension != ".ply" && extension != ".off") {
+        // A glTF under another name (x.json): read as one (starts_json_object).
+        if (starts_json_object(whole_file(path, std::min<std::uintmax_t>(file_size, 4096))))
+            check_gltf_json(file, whole_file(path, file_size), false);
     }
 }
 

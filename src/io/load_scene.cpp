@@ -15,6 +15,7 @@
 #include "io/input_file_check.hpp"
 #include "io/load_worker.hpp"
 #include "io/mtl_dissolve.hpp"
+#include "io/obj_index_scan.hpp"
 #include "io/obj_material_libraries.hpp"
 #include "io/obj_parser.hpp"
 #include "io/reference_policy.hpp"
@@ -38,12 +39,20 @@ namespace {
 
 constexpr unsigned kUnset = ~0u;  // not converted (yet)
 
-// Faces of three or more corners in the imported (not yet triangulated) scene.
+bool is_skeleton_placeholder(const aiScene& scene, const aiMesh& mesh) {
+    return mesh.mMaterialIndex < scene.mNumMaterials &&
+           scene.mMaterials[mesh.mMaterialIndex] != nullptr &&
+           io::is_skeleton_placeholder_material(*scene.mMaterials[mesh.mMaterialIndex]);
+}
+
+// Faces of three or more corners in the imported (not yet triangulated) scene, not counting the
+// skeleton Assimp draws for a file without meshes.
 std::size_t count_polygons(const aiScene& scene) {
     std::size_t n = 0;
     for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
         const aiMesh* mesh = scene.mMeshes[m];
         if (mesh == nullptr || mesh->mFaces == nullptr) continue;
+        if (is_skeleton_placeholder(scene, *mesh)) continue;
         for (unsigned f = 0; f < mesh->mNumFaces; ++f)
             if (mesh->mFaces[f].mNumIndices >= 3 && mesh->mFaces[f].mIndices != nullptr) ++n;
     }
@@ -115,7 +124,7 @@ class MaterialTable {
         }
         Material material =
             io::convert_material(source, "material " + std::to_string(ai_index), warnings_);
-        obj_dissolve_.apply(material);
+        obj_dissolve_.apply(material, warnings_);
         textures_.attach_textures(source, material);
         map_[ai_index] = static_cast<std::uint32_t>(out_.materials.size());
         out_.materials.push_back(std::move(material));
@@ -144,6 +153,7 @@ io::LoadedScene load_any(const std::filesystem::path& path, const LoadOptions& o
     // looked wrong comes first: Assimp's messages name neither the line nor, often, the cause
     // ("vertex index out of range" for a coordinate that is not a number).
     const io::ObjFallback& fallback = std::get<io::ObjFallback>(fast);
+    io::check_obj_indices(path);  // what Assimp would clamp or drop without a word
     try {
         return io::load_scene_with_assimp(path, options);
     } catch (const LimitExceeded&) {
@@ -204,7 +214,13 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
             throw InputError(file, io::refusal_text(refusals.front(), "refused"));
         if (ai == nullptr) throw malformed(importer.GetErrorString());
         // Checked before post-processing, which rejects faceless meshes as "invalid".
-        if (count_polygons(*ai) == 0) throw InputError(file, "no triangles");
+        if (count_polygons(*ai) == 0) {
+            for (unsigned m = 0; m < ai->mNumMeshes; ++m)
+                if (ai->mMeshes[m] != nullptr && is_skeleton_placeholder(*ai, *ai->mMeshes[m]))
+                    throw InputError(file, "no triangles in it (no mesh, only nodes: is it a " +
+                                               io::format_name(path) + " file?)");
+            throw InputError(file, "no triangles");
+        }
         // Validation first: Debian's Assimp keeps its assertions, and triangulating a face with
         // missing indices (a short OFF body) would abort the process. No vertex joining, no
         // degenerate removal (the rasterizer handles degenerate triangles), no generated

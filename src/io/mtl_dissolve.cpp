@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 
 namespace zraster::io {
@@ -58,9 +59,17 @@ std::optional<float> MtlDissolve::hidden_dissolve(const std::string& material) c
     return it->second.dissolve;
 }
 
-void MtlDissolve::apply(Material& material) const {
-    if (std::optional<float> d = hidden_dissolve(material.name); d && std::isfinite(*d))
-        material.opacity = std::clamp(*d, 0.0f, 1.0f);
+void MtlDissolve::apply(Material& material, std::vector<std::string>& warnings) const {
+    const std::optional<float> d = hidden_dissolve(material.name);
+    if (!d) return;
+    const float kept = std::isnan(*d) ? 1.0f : std::clamp(*d, 0.0f, 1.0f);
+    if (kept != *d) {
+        char text[96];
+        std::snprintf(text, sizeof text, "opacity (d) %g is outside 0..1, using %g", double(*d),
+                      double(kept));
+        warnings.push_back("material '" + material.name + "': " + text);
+    }
+    material.opacity = kept;
 }
 
 }  // namespace zraster::io

@@ -10,6 +10,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace zraster::io {
 
@@ -23,8 +24,8 @@ class MtlDissolve {
     std::optional<float> hidden_dissolve(const std::string& material) const;
 
     // Material::opacity from the hidden `d` value, if any (clamped to [0, 1] as Assimp's opacity
-    // is).
-    void apply(Material& material) const;
+    // is, with a warning appended to `warnings` when that changes it).
+    void apply(Material& material, std::vector<std::string>& warnings) const;
 
   private:
     struct Statements {

@@ -112,7 +112,7 @@ std::optional<std::uint32_t> Materials::index_of(const std::optional<std::string
         if (source == nullptr) return std::nullopt;
         if (!is_placeholder_material(*source)) {
             Material material = convert_material(*source, Material{}.name, warnings_);
-            dissolve_.apply(material);
+            dissolve_.apply(material, warnings_);
             textures_->attach_textures(*source, material);
             index = static_cast<std::uint32_t>(scene_.materials.size());
             scene_.materials.push_back(std::move(material));

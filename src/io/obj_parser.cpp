@@ -88,8 +88,20 @@ struct Resolution {
     std::optional<std::pair<std::uint32_t, std::string>> error, fallback;  // line, what
 };
 
-// Replaces chunk k's corner indices by global ones; an out-of-range vertex index is an error, an
-// out-of-range uv or normal index (which Assimp reads in its own way) a fallback.
+// "vertex index out of range (9; the file has 3 vertices)": `what` names the index and the
+// value (`values` its plural), for an encoded index `raw` resolved outside the file's `total`.
+std::string index_out_of_range(const std::string& what, const std::string& values, std::int32_t raw,
+                               std::size_t total) {
+    if (raw < 0)
+        return what + " index out of range (a negative index before the first " + what + ")";
+    return what + " index out of range (" + std::to_string(raw + 1) + "; the file has " +
+           std::to_string(total) + " " + values + ")";
+}
+
+// Replaces chunk k's corner indices by global ones. An index of any kind outside the file's
+// values is an error: Assimp would read a vertex index past the end as garbage, and clamps or
+// drops texture coordinate and normal indices without a word (a face then gets another
+// corner's uv or normal).
 Resolution resolve_corners(Chunk& c, std::size_t k, const Offsets& offsets) {
     const std::size_t total_v = offsets.positions.back(), total_t = offsets.uvs.back(),
                       total_n = offsets.normals.back();
@@ -102,25 +114,31 @@ Resolution resolve_corners(Chunk& c, std::size_t k, const Offsets& offsets) {
         for (std::size_t corner = face.first; corner < face.first + face.corners; ++corner) {
             const std::int64_t v = resolve_index(c.corner_v[corner], offsets.positions[k], total_v);
             if (v < 0) {
-                const std::int32_t raw = c.corner_v[corner];
-                r.error = {face.line, raw >= 0 ? "vertex index out of range (" +
-                                                     std::to_string(raw + 1) + "; the file has " +
-                                                     std::to_string(total_v) + " vertices)"
-                                               : "vertex index out of range (a negative index "
-                                                 "before the first vertex)"};
+                r.error = {face.line,
+                           index_out_of_range("vertex", "vertices", c.corner_v[corner], total_v)};
                 return r;
             }
             c.corner_v[corner] = static_cast<std::int32_t>(v);
             if (face.attributes & kHasUv) {
                 const std::int64_t t = resolve_index(c.corner_t[corner], offsets.uvs[k], total_t);
-                if (t < 0 && !r.fallback)
-                    r.fallback = {face.line, "texture coordinate index out of range"};
+                // (In a file with normals and no `vt`, Assimp reads the slot as a normal index:
+                // the fallback above.)
+                if (t < 0 && !(total_t == 0 && total_n > 0)) {
+                    r.error = {face.line,
+                               index_out_of_range("texture coordinate", "texture coordinates",
+                                                  c.corner_t[corner], total_t)};
+                    return r;
+                }
                 c.corner_t[corner] = static_cast<std::int32_t>(t);
             }
             if (face.attributes & kHasNormal) {
                 const std::int64_t m =
                     resolve_index(c.corner_n[corner], offsets.normals[k], total_n);
-                if (m < 0 && !r.fallback) r.fallback = {face.line, "normal index out of range"};
+                if (m < 0) {
+                    r.error = {face.line, index_out_of_range("normal", "normals",
+                                                             c.corner_n[corner], total_n)};
+                    return r;
+                }
                 c.corner_n[corner] = static_cast<std::int32_t>(m);
             }
         }

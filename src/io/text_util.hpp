@@ -29,4 +29,12 @@ inline std::string one_line(std::string_view s) {
     return out;
 }
 
+// Text whose first non-blank character opens a JSON object. Assimp asks every importer about a
+// file whose extension it does not know, and its glTF importers read any such text as glTF: a
+// glTF named x.json is loaded, so the glTF checks apply to it as to x.gltf.
+inline bool starts_json_object(std::string_view bytes) {
+    const std::string_view t = trim(bytes);
+    return !t.empty() && t.front() == '{';
+}
+
 }  // namespace zraster::io

@@ -182,6 +182,51 @@ TEST(ViewCommand, BadFilesAreExitTwoWithOneLine) {
     EXPECT_TRUE(single_line(flags.output)) << flags.output;
 }
 
+// Every number of a script has the range of docs/limits.md, checked before the window opens: the
+// message names the script, the line and the range.
+TEST(ViewCommand, ScriptNumbersOutOfRangeAreRefusedWithTheirLine) {
+    const auto dir = temp_dir("view-script-ranges");
+    struct Case {
+        const char* script;
+        const char* message;
+    };
+    for (const Case& c :
+         {Case{"0 key v\n10000000000 quit\n",
+               "zraster: s.txt: line 2: frame 10000000000 is past 10^9 (view --frames' range)\n"},
+          Case{"0 drag left 1e9 0\n",
+               "zraster: s.txt: line 1: drag by 1e9,0 pixels: DX and DY must be within +-16384\n"},
+          Case{"0 drag right 0 -20000\n",
+               "zraster: s.txt: line 1: drag by 0,-20000 pixels: DX and DY must be within "
+               "+-16384\n"},
+          Case{"# zoom\n0 wheel -1e300\n",
+               "zraster: s.txt: line 2: wheel by -1e300 notches: must be within +-100\n"}}) {
+        SCOPED_TRACE(c.script);
+        write_view_script(dir / "s.txt", c.script);
+        const CommandResult r = run_zraster("view sphere:20 --script s.txt", dir);
+        EXPECT_EQ(r.exit_code, 2);
+        EXPECT_EQ(r.output, c.message);
+    }
+}
+
+// In-range events without end keep the camera within --orbit's ranges: 300 drags of a whole
+// window turn the eye 1.2 million degrees (past --orbit's 1e6) and 20 turns of 100 notches zoom
+// by 0.875^2000; the azimuth wraps and the distance stops at 1e-6 radii.
+TEST(ViewCommand, EndlessDragsAndZoomStayWithinTheOrbitRanges) {
+    const auto dir = temp_dir("view-endless");
+    std::string script;
+    for (int i = 0; i < 300; ++i) script += "0 drag left 16000 0\n";
+    for (int i = 0; i < 20; ++i) script += "0 wheel 100\n";
+    write_view_script(dir / "endless.txt", script);
+    const CommandResult v = run_viewer(
+        "sphere:200 --orbit 30,20,3 --size 32x24 --no-hud --frames 1 --script endless.txt", dir);
+    VIEWER_OR_SKIP(v);
+    ASSERT_EQ(v.exit_code, 0) << v.output;
+    // 30 - 300 x 4000 = -1199970 degrees, which is -90.
+    EXPECT_NE(v.output.find("view: camera --orbit -90,20,9.9999999999999995e-07\n"),
+              std::string::npos)
+        << v.output;
+}
+
 TEST(ViewCommand, NoDisplayIsAClearErrorNotACrash) {
     const auto dir = temp_dir("view-no-display");
     const CommandResult r = run_shell_line(

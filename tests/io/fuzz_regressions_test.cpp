@@ -36,7 +36,7 @@ TEST(FuzzRegressions, StlVerticalTabBetweenTokens) {
     expect_refused("stl-vtab", "vtab.stl",
                    "solid x\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\v\n   vertex 1 0 "
                    "0\n  endloop\n endfacet\nendsolid x\n",
-                   "has 2 vertices; a facet has 3");
+                   "has 2 vertices; STL facets have 3");
 }
 
 // fuzz_load_off: "OFF4294967295" declares 4294967295 vertices to Assimp (no separator needed

@@ -6,6 +6,7 @@
 #include "io/io_test_util.hpp"
 #include "support/test_support.hpp"
 
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -41,10 +42,12 @@ TEST(LoadMaterials, MtlValuesAndASharedTexture) {
                                              "o b\nusemtl blue\nf 1/1 3/3 4/4\n");
     std::vector<std::string> warnings;
     const Scene scene = load_scene(dir / "scene.obj", {}, &warnings);
-    // Ns past 1024 is used as 1024, and said so (docs/limits.md); Ns below 1 is 1 silently.
-    ASSERT_EQ(warnings.size(), 1u);
+    // Ns past 1024 is used as 1024, below 1 as 1, and said so (docs/limits.md).
+    ASSERT_EQ(warnings.size(), 2u);
     EXPECT_EQ(warnings[0], (dir / "scene.obj").string() +
                                ": material 'red': shininess 5000 is past 1024, using 1024");
+    EXPECT_EQ(warnings[1], (dir / "scene.obj").string() +
+                               ": material 'blue': shininess 0.25 is below 1, using 1");
     ASSERT_EQ(scene.materials.size(), 3u);  // the default, red, blue
     const Material& red = material_of(scene, "a");
     const Material& blue = material_of(scene, "b");
@@ -65,6 +68,59 @@ TEST(LoadMaterials, MtlValuesAndASharedTexture) {
     EXPECT_NEAR(texel.y, 40 / 255.0f, 1e-6f);
     EXPECT_NEAR(texel.z, 50 / 255.0f, 1e-6f);
     EXPECT_EQ(texel.w, 1.0f);
+}
+
+// MTL values outside their ranges (docs/limits.md): each replaced, with one warning naming the
+// material, the value read and the value used; NaN never reaches shading.
+TEST(LoadMaterials, MtlValuesOutsideTheirRangesAreReplacedWithAWarningEach) {
+    const auto dir = test::temp_dir("io-materials-ranges");
+    struct Case {
+        const char* statements;
+        const char* warning;
+    };
+    const Case cases[] = {
+        {"Kd 2 -1 0.5", "base color (2, -1, 0.5) is outside 0..1, using (1, 0, 0.5)"},
+        {"Kd nan 0 0", "base color (nan, 0, 0) is not finite, using the default (0.8, 0.75, 0.7)"},
+        {"Ks -1 0.5 0.5", "specular color (-1, 0.5, 0.5) is negative, using (0, 0.5, 0.5)"},
+        {"Ks 0 nan 0", "specular color (0, nan, 0) is not finite, using (0.25, 0.25, 0.25)"},
+        {"Ns -5", "shininess -5 is not in 1..1024, using the default 32"},
+        {"Ns nan", "shininess nan is not in 1..1024, using the default 32"},
+        {"Ns 0.5", "shininess 0.5 is below 1, using 1"},
+        {"d nan", "opacity nan is outside 0..1, using 1"},
+        {"d -1", "opacity -1 is outside 0..1, using 0"},
+        {"d 5\nTr 0.5", "opacity (d) 5 is outside 0..1, using 1"},
+    };
+    std::string mtl, obj = "mtllib ranges.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    for (std::size_t i = 0; i < std::size(cases); ++i) {
+        mtl += "newmtl m" + std::to_string(i) + "\n" + cases[i].statements + "\n";
+        obj += "o o" + std::to_string(i) + "\nusemtl m" + std::to_string(i) + "\nf 1 2 3\n";
+    }
+    test::write_bytes(dir / "ranges.mtl", mtl);
+    test::write_bytes(dir / "ranges.obj", obj);
+    for (const LoadIsolation isolation : {LoadIsolation::InProcess, LoadIsolation::WorkerProcess}) {
+        LoadOptions options;
+        options.isolation = isolation;
+        std::vector<std::string> warnings;
+        const Scene scene = load_scene(dir / "ranges.obj", options, &warnings);
+        ASSERT_EQ(warnings.size(), std::size(cases));
+        for (std::size_t i = 0; i < std::size(cases); ++i)
+            EXPECT_EQ(warnings[i], (dir / "ranges.obj").string() + ": material 'm" +
+                                       std::to_string(i) + "': " + cases[i].warning);
+        for (const Material& m : scene.materials) {
+            SCOPED_TRACE(m.name);
+            for (const float v : {m.base_color.x, m.base_color.y, m.base_color.z, m.specular.x,
+                                  m.specular.y, m.specular.z, m.shininess, m.opacity}) {
+                EXPECT_TRUE(std::isfinite(v));
+            }
+            EXPECT_TRUE(m.opacity >= 0.0f && m.opacity <= 1.0f);
+            EXPECT_TRUE(m.shininess >= 1.0f && m.shininess <= 1024.0f);
+            EXPECT_TRUE(glm::all(glm::greaterThanEqual(m.base_color, glm::vec3(0.0f))) &&
+                        glm::all(glm::lessThanEqual(m.base_color, glm::vec3(1.0f))));
+        }
+        EXPECT_EQ(material_of(scene, "o0").base_color, glm::vec3(1.0f, 0.0f, 0.5f));
+        EXPECT_EQ(material_of(scene, "o6").shininess, 1.0f);
+        EXPECT_EQ(material_of(scene, "o8").opacity, 0.0f);
+    }
 }
 
 TEST(LoadMaterials, MissingTextureIsAWarning) {

@@ -37,6 +37,15 @@ std::string pseudo_random(std::size_t size, unsigned seed, char avoid) {
     return bytes;
 }
 
+// A binary glTF 1.0 (KHR_binary_glTF) header and its JSON content.
+std::string glb1_header(const std::string& json) {
+    std::string bytes = "glTF";
+    for (const std::uint32_t v : {1u, static_cast<std::uint32_t>(20 + json.size()),
+                                  static_cast<std::uint32_t>(json.size()), 0u})
+        for (int b = 0; b < 4; ++b) bytes.push_back(static_cast<char>((v >> (8 * b)) & 0xff));
+    return bytes + json;
+}
+
 std::vector<Malformed> malformed_files() {
     const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
     return {
@@ -50,9 +59,13 @@ std::vector<Malformed> malformed_files() {
         {"two.stl",
          "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nendloop\n"
          "endfacet\nendsolid x\n",
-         "malformed ASCII STL: facet 1 (line 2) has 2 vertices; a facet has 3"},
+         "malformed ASCII STL: facet 1 (line 2) has 2 vertices; STL facets have 3"},
         {"cut.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 1 2 3\n",
          "truncated: the ASCII STL ends inside facet 1 (line 2) after 1 of its 3 vertices"},
+        {"four.stl",
+         "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+         "vertex 5 5 5\nendloop\nendfacet\nendsolid x\n",
+         "malformed ASCII STL: facet 1 (line 2) has 4 vertices; STL facets have 3"},
         {"empty-solid.stl", "solid\n", "no triangles (an ASCII STL without a complete facet)"},
         {"zero.stl", binary_stl_header(0), "no triangles (a binary STL whose header declares 0)"},
         // glTF and GLB
@@ -60,18 +73,32 @@ std::vector<Malformed> malformed_files() {
          "not valid JSON: line 1, column 37: unexpected end of input; expected '[', '{', or a "
          "literal"},
         {"array.gltf", "[1, 2]", "not a glTF file: the JSON is not an object (a glTF file's is)"},
+        // JSON under another name: Assimp's glTF importers would read it.
+        {"noasset.json", R"({"nodes": []})",
+         "not a glTF file: the JSON has no \"asset\" object (every glTF file has one)"},
         {"noasset.gltf", R"({"nodes": []})",
          "not a glTF file: the JSON has no \"asset\" object (every glTF file has one)"},
         {"noversion.gltf", R"({"asset": {}})",
          "not a glTF file: its \"asset\" has no \"version\" string"},
         {"v3.gltf", R"({"asset": {"version": "3.0"}})",
-         "glTF version '3.0' is not supported (1.x and 2.x are)"},
+         "glTF version '3.0' is not supported (2.x is)"},
+        // glTF 1.0, which Assimp would read as far as its importer goes.
+        {"v1.gltf", R"({"asset": {"version": "1.0"}, "meshes": {}})",
+         "glTF 1.0 is not supported, only glTF 2.0 is (convert the file to 2.0)"},
+        {"v1.glb", glb1_header(R"({"asset": {"version": "1.0"}})"),
+         "GLB version 1 (binary glTF 1.0) is not supported, only GLB 2 (glTF 2.0) is (convert "
+         "the file to 2.0)"},
+        {"v1.json", R"({"asset": {"version": "1.0"}, "meshes": {}})",
+         "glTF 1.0 is not supported, only glTF 2.0 is (convert the file to 2.0)"},
+        {"v1-glb.bin", glb1_header(R"({"asset": {"version": "1.0"}})"),
+         "GLB version 1 (binary glTF 1.0) is not supported, only GLB 2 (glTF 2.0) is (convert "
+         "the file to 2.0)"},
         {"random.glb", pseudo_random(300, 1, 'g'),
          "not a binary glTF (GLB) file: it does not start with 'glTF'"},
         {"tiny.glb", std::string("glTF\x02\0\0", 7),
          "truncated: a binary glTF (GLB) file starts with a 12-byte header, this file has 7 bytes"},
         {"v9.glb", std::string("glTF\x09\0\0\0\x14\0\0\0", 12) + std::string(8, '\0'),
-         "GLB version 9 is not supported (1 and 2 are)"},
+         "GLB version 9 is not supported (2 is)"},
         {"bin-first.glb",
          std::string("glTF\x02\0\0\0\x20\0\0\0\x0c\0\0\0BIN\0", 20) + std::string(12, '\0'),
          "malformed GLB file: its first chunk is not the JSON chunk"},
@@ -97,6 +124,37 @@ std::vector<Malformed> malformed_files() {
         {"random.off", "this is not an OFF file\n1 2 3\n",
          "not an OFF file: the header (OFF, then the vertex, face and edge counts) is invalid"},
         {"point.obj", tri + "f 1 2 3\nf 1\n", "malformed OBJ file: line 5: face with 1 corners"},
+        // OBJ texture and normal indices, which Assimp would clamp or drop without a word.
+        {"uv.obj", tri + "vt 0 0\nf 1/99 2/1 3/1\n",
+         "line 5: texture coordinate index out of range (99; the file has 1 texture coordinates)"},
+        {"normal.obj", tri + "vn 0 0 1\nf 1//1 2//1 3//99\n",
+         "line 5: normal index out of range (99; the file has 1 normals)"},
+        {"normal-negative.obj", tri + "vt 0 0\nvn 0 0 1\nf 1/1/-2 2/1/1 3/1/1\n",
+         "line 6: normal index out of range (a negative index before the first normal)"},
+        {"no-uv.obj", tri + "f 1/1 2/1 3/1\n",
+         "line 4: texture coordinate index out of range (1; the file has 0 texture coordinates)"},
+        // OFF face indices, which Assimp would move to the last vertex (past the end) or read as
+        // vertex 0 (missing, negative, not a number).
+        {"index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n",
+         "malformed OFF file: OFF face 0 (line 6) names vertex 7, but the file has 3 vertices (0 "
+         "to 2)"},
+        {"index-coff.off",
+         "COFF\n3 2 0\n0 0 0 1 0 0 1\n1 0 0 1 0 0 1\n0 1 0 1 0 0 1\n3 0 1 2\n"
+         "3 2 1 4294967296 255 0 0\n",
+         "malformed OFF file: OFF face 1 (line 7) names vertex 4294967296, but the file has 3 "
+         "vertices (0 to 2)"},
+        {"index-noff.off",
+         "NOFF\r\n3 1 0\r\n0 0 0 0 0 1\r\n1 0 0 0 0 1\r\n0 1 0 0 0 1\r\n3\t0\t3\t1\r\n",
+         "malformed OFF file: OFF face 0 (line 6) names vertex 3, but the file has 3 vertices (0 "
+         "to 2)"},
+        {"negative.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 -1\n",
+         "malformed OFF file: OFF face 0 (line 6): vertex index '-1' is not a number of 0 or more"},
+        {"few.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n",
+         "malformed OFF file: OFF face 0 (line 6) declares 3 vertices but lists 2 indices"},
+        // Random bytes that Assimp's ASE importer takes for a file of nodes without meshes (it
+        // then draws a placeholder skeleton).
+        {"random.ase", pseudo_random(4096, 5, '\0'),
+         "no triangles in it (no mesh, only nodes: is it a ASE file?)"},
         {"short.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
          "a face without vertex indices (fewer face records than the header declares?)"},
         {"index.ply",

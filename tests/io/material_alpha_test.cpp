@@ -162,6 +162,38 @@ TEST(MaterialAlpha, GltfCutoffOutsideZeroToOneIsClampedWithAWarning) {
     EXPECT_EQ(only_material(blend).alpha_cutoff, 0.0f);
 }
 
+// glTF factors outside their ranges (docs/limits.md): clamped, one warning each naming the
+// material, the value and what is used; a factor too large for a float is infinite and the
+// default color is used. roughnessFactor is checked itself (Assimp turns it into a shininess).
+TEST(MaterialAlpha, GltfFactorsOutsideTheirRangesAreClampedWithAWarningEach) {
+    const auto path = write_alpha_gltf(
+        "factors", R"({"name":"m","alphaMode":"BLEND","pbrMetallicRoughness":{"baseColorFactor":)"
+                   R"([2,-1,0.5,1.5],"roughnessFactor":-1}})");
+    std::vector<std::string> warnings;
+    const Scene scene = load_alpha_both_ways(path, &warnings);
+    const Material& m = only_material(scene);
+    EXPECT_EQ(m.base_color, glm::vec3(1.0f, 0.0f, 0.5f));
+    EXPECT_EQ(m.opacity, 1.0f);
+    EXPECT_EQ(m.shininess, 1000.0f);  // roughness 0
+    const std::string prefix = path.string() + ": material 'm': ";
+    EXPECT_EQ(warnings, (std::vector<std::string>{
+                            prefix + "base color (2, -1, 0.5) is outside 0..1, using (1, 0, 0.5)",
+                            prefix + "roughnessFactor -1 is outside 0..1, using 0",
+                            prefix + "baseColorFactor alpha 1.5 is outside 0..1, using 1"}));
+
+    std::vector<std::string> infinite_warnings;
+    const auto infinite = write_alpha_gltf(
+        "factors-infinite", R"({"name":"m","pbrMetallicRoughness":{"baseColorFactor":)"
+                            R"([1e39,0,0,1],"roughnessFactor":0.99}})");
+    const Material& i = only_material(load_alpha_both_ways(infinite, &infinite_warnings));
+    EXPECT_EQ(i.base_color, Material{}.base_color);
+    EXPECT_EQ(i.shininess, 1.0f);  // 1000 x 0.01^2 = 0.1, from a valid roughness: no warning
+    EXPECT_EQ(infinite_warnings,
+              std::vector<std::string>{infinite.string() +
+                                       ": material 'm': base color (inf, 0, 0) is not finite, "
+                                       "using the default (0.8, 0.75, 0.7)"});
+}
+
 TEST(MaterialAlpha, GltfUnknownAlphaModeIsOpaqueWithAWarning) {
     const auto path = write_alpha_gltf("mode", R"({"name":"odd","alphaMode":"blend"})");
     std::vector<std::string> warnings;

@@ -367,7 +367,6 @@ TEST(ObjParser, LeavesWhatAssimpBendsToTheAssimpPath) {
     expect_fallback(write_obj("mixed-forms", v + "vn 0 0 1\nf 1//1 2 3\n"), 6);
     expect_fallback(write_obj("continuation", v + "f 1 2 \\\n3\n"), 5);
     expect_fallback(write_obj("dot-number", "v .5 0 0\n" + v + "f 1 2 3\n"), 1);
-    expect_fallback(write_obj("normal-range", v + "vn 0 0 1\nf 1//1 2//1 3//2\n"), 6);
     expect_fallback(write_obj("uv-before-uvs", v + "vn 0 0 1\nf 1/1 2/1 3/1\n"), 6);
     expect_fallback(write_obj("cstype", v + "cstype bspline\nf 1 2 3\nend\nf 1 2 3\n"), 5);
     expect_fallback(write_obj("lone-cr", v + "# x\rf 1 2 3\nf 1 3 4\n"), 5);
@@ -389,6 +388,31 @@ TEST(ObjParser, ErrorsNameTheLine) {
     expect_error(write_obj("zero", v + "f 1 2 3\nf 0 1 2\n"), "line 6: invalid face index 0");
     expect_error(write_obj("line-range", v + "f 1 2 3\nl 1 9\n"),
                  "line 6: vertex index out of range");
+    // Texture and normal indices as vertex indices (Assimp would clamp or drop them silently).
+    expect_error(write_obj("normal-range", v + "vn 0 0 1\nf 1//1 2//1 3//2\n"),
+                 "line 6: normal index out of range (2; the file has 1 normals)");
+    expect_error(write_obj("uv-range", v + "vt 0 0\nvt 1 0\nf 1/1 2/2 3/3\n"),
+                 "line 7: texture coordinate index out of range (3; the file has 2 texture "
+                 "coordinates)");
+    expect_error(write_obj("uv-negative-range", v + "vt 0 0\nf 1/1 2/-2 3/1\n"),
+                 "line 6: texture coordinate index out of range (a negative index before the "
+                 "first texture coordinate)");
+    // The same in a file left to Assimp (a pentagon), checked before Assimp by
+    // obj_index_scan.cpp; a texture slot before the first vt is Assimp's normal index.
+    expect_error(write_obj("ngon-uv-range", v + "v 0.5 -1 0\nvt 0 0\nf 1/1 5/1 2/9 3/1 4/1\n"),
+                 "line 7: texture coordinate index out of range (9; the file has 1 texture "
+                 "coordinates)");
+    expect_error(
+        write_obj("ngon-normal-range", v + "v 0.5 -1 0\nvn 0 0 1\nf 1//1 5//-2 2//1 3//1 4//1\n"),
+        "line 7: normal index out of range (a negative index before the first normal)");
+    EXPECT_EQ(
+        load_scene(write_obj("ngon-in-range",
+                             v + "v 0.5 -1 0\nvt 0 0\nvn 0 0 1\nf 1/1/1 5/1/1 2/1/1 3/1/1 4/1/1\n"))
+            .meshes.size(),
+        1u);
+    expect_error(write_obj("uv-without-uvs", v + "f 1/1 2/1 3/1\n"),
+                 "line 5: texture coordinate index out of range (1; the file has 0 texture "
+                 "coordinates)");
     expect_error(write_obj("nan", "v 0 0 0\nv 1 0 0\n\nv nan 0 0\nf 1 2 3\n"),
                  "line 4: non-finite vertex coordinates (mesh defaultobject, vertex 2)");
     expect_error(write_obj("inf", "o thing\nv 0 0 0\nv 1e999 0 0\nv 0 1 0\nf 1 2 3\n"),

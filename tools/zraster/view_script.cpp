@@ -11,6 +11,12 @@
 namespace zraster::cli {
 namespace {
 
+// The ranges of docs/limits.md: frames as view --frames; a drag at most a window's largest side;
+// 100 notches zoom by 0.875^100, about 1.6e-6.
+constexpr long long kMaxScriptFrame = 1'000'000'000;
+constexpr double kMaxScriptDrag = 16384.0;
+constexpr double kMaxScriptNotches = 100.0;
+
 // A whole-token number, or an InputError naming the line.
 template <typename T>
 T script_number(const std::string& token, const std::string& name, int line, const char* what) {
@@ -57,10 +63,14 @@ InputEvent parse_event(std::istringstream& words, const std::string& kind, const
             throw fail("unknown button '" + a + "' (left, right or middle)");
         e.dx = script_number<double>(b, name, line, "DX");
         e.dy = script_number<double>(c, name, line, "DY");
+        if (std::abs(e.dx) > kMaxScriptDrag || std::abs(e.dy) > kMaxScriptDrag)
+            throw fail("drag by " + b + "," + c + " pixels: DX and DY must be within +-16384");
     } else if (kind == "wheel") {
         e.kind = InputEvent::Kind::Wheel;
         if (!(words >> a)) throw fail("wheel needs a number of notches");
         e.wheel = script_number<double>(a, name, line, "notches");
+        if (std::abs(e.wheel) > kMaxScriptNotches)
+            throw fail("wheel by " + a + " notches: must be within +-100");
     } else if (kind == "resize") {
         e.kind = InputEvent::Kind::Resize;
         if (!(words >> a >> b)) throw fail("resize needs WIDTH HEIGHT");
@@ -94,6 +104,9 @@ std::vector<ScriptEvent> parse_view_script(const std::string& text, const std::s
         if (!(words >> frame_token)) continue;  // blank or comment
         ScriptEvent event;
         event.frame = script_number<long long>(frame_token, name, line, "frame");
+        if (event.frame > kMaxScriptFrame)
+            throw InputError(name, "line " + std::to_string(line) + ": frame " + frame_token +
+                                       " is past 10^9 (view --frames' range)");
         if (event.frame < 0 || event.frame < last_frame)
             throw InputError(name, "line " + std::to_string(line) + ": frame " + frame_token +
                                        " is negative or before the previous event's");

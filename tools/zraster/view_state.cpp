@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "camera_ranges.hpp"
 #include "command_line.hpp"
 
 namespace zraster::cli {
@@ -68,7 +69,10 @@ void ViewState::apply(const InputEvent& event) {
                 pan(event.dx, event.dy);
             break;
         case InputEvent::Kind::Wheel:
-            camera_.distance *= std::pow(kZoomPerNotch, event.wheel);
+            // Kept within --orbit's distance range however far the wheel turns (the frame's
+            // camera is checked against it): 1e-6 radii is well inside the scene.
+            camera_.distance = std::clamp(camera_.distance * std::pow(kZoomPerNotch, event.wheel),
+                                          1e-6, kMaxOrbitDistance);
             camera_.moved = true;
             break;
         case InputEvent::Kind::Resize: {
@@ -178,7 +182,8 @@ void ViewState::apply_key(char key) {
 
 void ViewState::orbit(double dx, double dy) {
     // Dragging right turns the scene right: the eye goes left around it.
-    camera_.azimuth -= dx * kDegreesPerPixel;
+    // Within [-180, 180] (an exact remainder): any number of drags stays in --orbit's range.
+    camera_.azimuth = std::remainder(camera_.azimuth - dx * kDegreesPerPixel, 360.0);
     camera_.elevation =
         std::clamp(camera_.elevation + dy * kDegreesPerPixel, -kMaxElevation, kMaxElevation);
     camera_.moved = true;

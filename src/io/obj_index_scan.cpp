@@ -1,0 +1,148 @@
+// See obj_index_scan.hpp.
+#include "io/obj_index_scan.hpp"
+
+#include <zraster/error.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace zraster::io {
+
+namespace {
+
+enum Kind { kVertex = 0, kUv = 1, kNormal = 2 };
+
+constexpr std::array<const char*, 3> kWhat = {"vertex", "texture coordinate", "normal"};
+constexpr std::array<const char*, 3> kValues = {"vertices", "texture coordinates", "normals"};
+
+bool is_blank(char c) {
+    return c == ' ' || c == '\t' || c == '\r';
+}
+
+// The blank-separated words of `line` into `out` (reused: this runs once per line).
+void words(std::string_view line, std::vector<std::string_view>& out) {
+    out.clear();
+    std::size_t at = 0;
+    while (at < line.size()) {
+        while (at < line.size() && is_blank(line[at])) ++at;
+        std::size_t end = at;
+        while (end < line.size() && !is_blank(line[end])) ++end;
+        if (end > at) out.push_back(line.substr(at, end - at));
+        at = end;
+    }
+}
+
+// An optional '-' and 1 to 9 digits without a leading zero, as the reader takes an index.
+std::optional<std::int64_t> plain_index(std::string_view text) {
+    const bool negative = text.starts_with('-');
+    if (negative) text.remove_prefix(1);
+    if (text.empty() || text.size() > 9 || text[0] == '0') return std::nullopt;
+    std::int64_t value = 0;
+    for (const char c : text) {
+        if (c < '0' || c > '9') return std::nullopt;
+        value = value * 10 + (c - '0');
+    }
+    return negative ? -value : value;
+}
+
+struct Corner {
+    std::optional<std::int64_t> index[3];
+};
+
+// v, v/vt, v//vn or v/vt/vn; nullopt for anything else.
+std::optional<Corner> corner(std::string_view token) {
+    Corner c;
+    std::array<std::string_view, 3> parts;
+    std::size_t n = 0;
+    while (true) {
+        const std::size_t slash = token.find('/');
+        if (n == 3) return std::nullopt;
+        parts[n++] = token.substr(0, slash);
+        if (slash == std::string_view::npos) break;
+        token.remove_prefix(slash + 1);
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+        if (parts[k].empty() && k == 1 && n == 3) continue;  // v//vn
+        if (!(c.index[k] = plain_index(parts[k]))) return std::nullopt;
+    }
+    return c;
+}
+
+}  // namespace
+
+void check_obj_indices(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::vector<std::string_view> lines;
+    for (std::size_t at = 0; at < text.size();) {
+        std::size_t end = text.find('\n', at);
+        if (end == std::string::npos) end = text.size();
+        std::string_view line(text.data() + at, end - at);
+        while (!line.empty() && is_blank(line.back())) line.remove_suffix(1);
+        if (line.ends_with('\\')) return;  // continuations: Assimp joins lines its own way
+        lines.push_back(line);
+        at = end + 1;
+    }
+    const auto keyword = [](std::string_view line) {
+        std::size_t at = 0;
+        while (at < line.size() && is_blank(line[at])) ++at;
+        std::size_t end = at;
+        while (end < line.size() && !is_blank(line[end])) ++end;
+        return line.substr(at, end - at);
+    };
+    std::array<std::int64_t, 3> total{};
+    for (const std::string_view line : lines) {
+        const std::string_view k = keyword(line);
+        if (k == "v") ++total[kVertex];
+        if (k == "vt") ++total[kUv];
+        if (k == "vn") ++total[kNormal];
+    }
+    std::array<std::int64_t, 3> before{};
+    std::vector<std::string_view> w;
+    std::vector<Corner> corners;
+    for (std::size_t l = 0; l < lines.size(); ++l) {
+        words(lines[l], w);
+        if (w.empty()) continue;
+        if (w[0] == "v") ++before[kVertex];
+        if (w[0] == "vt") ++before[kUv];
+        if (w[0] == "vn") ++before[kNormal];
+        if (w[0] != "f") continue;
+        corners.clear();
+        for (std::size_t i = 1; i < w.size(); ++i) {
+            const std::optional<Corner> c = corner(w[i]);
+            if (!c) break;
+            corners.push_back(*c);
+        }
+        if (corners.size() + 1 != w.size()) continue;  // not plain corners: left to Assimp
+        // Before the first vt, Assimp reads a texture slot as a normal index: not checked.
+        if (before[kUv] == 0 && std::any_of(corners.begin(), corners.end(), [](const Corner& c) {
+                return c.index[kUv].has_value();
+            }))
+            continue;
+        for (const Corner& c : corners) {
+            for (int kind : {kVertex, kUv, kNormal}) {
+                if (!c.index[kind]) continue;
+                const std::int64_t i = *c.index[kind];
+                if (i > 0 && i <= total[kind]) continue;
+                if (i < 0 && -i <= before[kind]) continue;
+                const std::string cause =
+                    i > 0 ? std::string(kWhat[kind]) + " index out of range (" + std::to_string(i) +
+                                "; the file has " + std::to_string(total[kind]) + " " +
+                                kValues[kind] + ")"
+                          : std::string(kWhat[kind]) +
+                                " index out of range (a negative index before the first " +
+                                kWhat[kind] + ")";
+                throw InputError(path.string(), "line " + std::to_string(l + 1) + ": " + cause);
+            }
+        }
+    }
+}
+
+}  // namespace zraster::io

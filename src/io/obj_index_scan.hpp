@@ -1,0 +1,19 @@
+// Face indices of an OBJ file that zraster's reader leaves to Assimp (polygons of five or more
+// corners, mixed corner forms, ...: obj_parser.hpp). Assimp's OBJ importer clamps or drops a
+// texture coordinate or normal index past the file's values without a word, so that a corner
+// takes another one's uv or normal; the reader refuses such indices in the files it reads, and
+// this scan does for the others, before Assimp.
+//
+// It is deliberately narrower than the reader: only `f` lines whose every corner is v, v/vt,
+// v//vn or v/vt/vn with plain indices are checked, a texture or normal slot only where Assimp
+// reads it as one (after the file's first `vt`), and a file with line continuations not at all.
+#pragma once
+#include <filesystem>
+
+namespace zraster::io {
+
+// Throws InputError("FILE: line N: texture coordinate index out of range (I; the file has N
+// texture coordinates)", and likewise for vertex and normal indices) for the first such index.
+void check_obj_indices(const std::filesystem::path& path);
+
+}  // namespace zraster::io
