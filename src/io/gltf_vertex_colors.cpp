@@ -20,7 +20,7 @@ std::uint32_t little_u32(const std::array<char, 20>& b, std::size_t at) {
     return v;
 }
 
-// The glTF document: a GLB's JSON chunk, or a .gltf file whole; empty for anything else.
+// The glTF document: a GLB's JSON chunk, or a file of JSON whole; empty for anything else.
 std::string gltf_document(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
     std::array<char, 20> header{};
@@ -32,9 +32,10 @@ std::string gltf_document(const std::filesystem::path& path) {
         if (!in.read(text.data(), std::streamsize(text.size()))) return {};
         return text;
     }
-    std::string extension = path.extension().string();
-    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (extension != ".gltf") return {};
+    // Assimp reads a glTF under any name: a JSON object is taken as one (the parse decides).
+    const std::string_view start(header.data(), header.size());
+    const std::size_t first = start.find_first_not_of(" \t\r\n");
+    if (first == std::string_view::npos || start[first] != '{') return {};
     in.seekg(0);
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }

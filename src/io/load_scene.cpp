@@ -262,7 +262,12 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
             warnings.push_back(io::refusal_text(refusal, "not read"));
     for (std::string& warning : assimp_warnings.take()) warnings.push_back(std::move(warning));
     MaterialTable materials(*ai, path, policy, options, scene, warnings);
-    const io::GltfColorAlpha color_alpha = io::gltf_color_alpha(path);
+    // (The document is read again only when a mesh has vertex colors.)
+    bool any_colors = false;
+    for (unsigned m = 0; m < ai->mNumMeshes; ++m)
+        any_colors |= referenced[m] && ai->mMeshes[m]->HasVertexColors(0);
+    const io::GltfColorAlpha color_alpha =
+        any_colors ? io::gltf_color_alpha(path) : io::GltfColorAlpha::AsRead;
     std::vector<unsigned> our_mesh(ai->mNumMeshes, kUnset);
     std::vector<std::string> labels(ai->mNumMeshes);
     for (unsigned m = 0; m < ai->mNumMeshes; ++m) {
