@@ -217,8 +217,10 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
         if (count_polygons(*ai) == 0) {
             for (unsigned m = 0; m < ai->mNumMeshes; ++m)
                 if (ai->mMeshes[m] != nullptr && is_skeleton_placeholder(*ai, *ai->mMeshes[m]))
-                    throw InputError(file, "no triangles in it (no mesh, only nodes: is it a " +
-                                               io::format_name(path) + " file?)");
+                    throw InputError(
+                        file,
+                        "no triangles in it (no mesh, only nodes: is it really a model in the " +
+                            io::format_name(path) + " format?)");
             throw InputError(file, "no triangles");
         }
         // Validation first: Debian's Assimp keeps its assertions, and triangulating a face with

@@ -154,7 +154,7 @@ std::vector<Malformed> malformed_files() {
         // Random bytes that Assimp's ASE importer takes for a file of nodes without meshes (it
         // then draws a placeholder skeleton).
         {"random.ase", pseudo_random(4096, 5, '\0'),
-         "no triangles in it (no mesh, only nodes: is it a ASE file?)"},
+         "no triangles in it (no mesh, only nodes: is it really a model in the ASE format?)"},
         {"short.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
          "a face without vertex indices (fewer face records than the header declares?)"},
         {"index.ply",
