@@ -114,7 +114,7 @@ Mesh convert_mesh(const aiMesh& source, const MeshConversion& how,
                                ": non-finite texture coordinates replaced by (0, 0)");
     }
 
-    if (source.HasVertexColors(0)) copy_colors(source, how, mesh, warnings);
+    if (how.vertex_colors && source.HasVertexColors(0)) copy_colors(source, how, mesh, warnings);
 
     if (source.HasNormals()) {
         if (!copy_normals(source, mesh)) {

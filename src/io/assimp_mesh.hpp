@@ -20,6 +20,9 @@ struct MeshConversion {
     bool weld = false;
     // What Assimp's vertex alpha means (glTF COLOR_0 of type VEC3 arrives with alpha 0).
     GltfColorAlpha color_alpha = GltfColorAlpha::AsRead;
+    // Off for OBJ: zraster's own OBJ reader does not read the `v x y z r g b` colors, and the
+    // files it leaves to Assimp must load as it would load them.
+    bool vertex_colors = true;
 };
 
 // Throws InputError for non-finite positions or indices out of range; non-finite uvs are zeroed

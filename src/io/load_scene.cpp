@@ -275,8 +275,8 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
     for (unsigned m = 0; m < ai->mNumMeshes; ++m) {
         if (!referenced[m]) continue;
         labels[m] = mesh_label(*ai->mMeshes[m], m);
-        Mesh mesh = io::convert_mesh(*ai->mMeshes[m], {labels[m], file, is_obj(path), color_alpha},
-                                     warnings);
+        Mesh mesh = io::convert_mesh(
+            *ai->mMeshes[m], {labels[m], file, is_obj(path), color_alpha, !is_obj(path)}, warnings);
         if (mesh.indices.empty()) continue;
         mesh.material = materials.index_of(ai->mMeshes[m]->mMaterialIndex);
         our_mesh[m] = static_cast<unsigned>(scene.meshes.size());

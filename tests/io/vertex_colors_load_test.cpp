@@ -150,6 +150,20 @@ TEST(VertexColorsLoad, FilesWithoutColorsHaveNone) {
     EXPECT_TRUE(only_colors(scene).empty());
 }
 
+// OBJ's `v x y z r g b` colors are not read, by zraster's reader nor by Assimp for the files
+// the reader leaves to it (a pentagon here): both load the same mesh.
+TEST(VertexColorsLoad, ObjColorsAreNotRead) {
+    const std::string vertices =
+        "v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 1 1 0 0 0 1\nv 0.5 1.5 0 1 1 0\nv 0 1 0 1 0 1\n";
+    for (const char* faces : {"f 1 2 3\nf 1 3 5\n", "f 1 2 3 4 5\n"}) {
+        SCOPED_TRACE(faces);
+        const Scene scene = load_colors_both_ways(
+            test::write_fixture("vc-obj", "m.obj", vertices + std::string(faces)));
+        ASSERT_EQ(scene.meshes.size(), 1u);
+        EXPECT_TRUE(scene.meshes[0].colors.empty());
+    }
+}
+
 TEST(VertexColorsLoad, InfoReportsColorsAndVertexAlpha) {
     const std::array<float, 12> c = {1, 0, 0, 0.25f, 0, 1, 0, 0.5f, 0, 0, 1, 1};
     const auto path =
