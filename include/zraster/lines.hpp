@@ -57,5 +57,10 @@ ZRASTER_API void bresenham_line_depth(glm::ivec2 a, float depth_a, glm::ivec2 b,
                                       std::vector<LinePixel>& out);
 ZRASTER_API std::vector<LinePixel> bresenham_line_depth(glm::ivec2 a, float depth_a, glm::ivec2 b,
                                                         float depth_b);
+// The same line's pixels inside [0, width) x [0, height), appended to `out`, in order: what the
+// call above gives there, bit for bit, found in O(pixels inside) steps, however far outside the
+// endpoints lie (a wireframe edge that crosses a small image from far away).
+ZRASTER_API void bresenham_line_depth_in(glm::ivec2 a, float depth_a, glm::ivec2 b, float depth_b,
+                                         int width, int height, std::vector<LinePixel>& out);
 
 }  // namespace zraster

@@ -8,7 +8,8 @@
 // where the surface depth was evaluated, so the offset is half the triangle's depth change per
 // pixel in x plus in y, plus a small constant. Back edges are then hidden by the front surfaces.
 //
-// Cost: O(total edge length in pixels), one thread, after the tiles (edges cross tiles).
+// Cost: O(total edge length inside the image, in pixels), one thread, after the tiles (edges
+// cross tiles).
 #include <zraster/lines.hpp>
 
 #include <cmath>
@@ -72,9 +73,9 @@ void draw_edges(Frame& frame) {
                 const ScreenVertex& a = v[static_cast<std::size_t>(k)];
                 const ScreenVertex& b = v[static_cast<std::size_t>((k + 1) % 3)];
                 line.clear();
-                bresenham_line_depth(lattice_point(a), a.z, lattice_point(b), b.z, line);
+                bresenham_line_depth_in(lattice_point(a), a.z, lattice_point(b), b.z, width, height,
+                                        line);
                 for (const LinePixel& p : line) {
-                    if (p.x < 0 || p.y < 0 || p.x >= width || p.y >= height) continue;
                     if (hidden_line) {
                         const float surface =
                             target_row(targets.depth, targets.depth_pitch, p.y)[p.x];

@@ -162,6 +162,32 @@ TEST(Bresenham, DepthIsInterpolatedAndBitIdenticalInBothDirections) {
     EXPECT_EQ(point[0].depth, 0.3f);
 }
 
+// The pixels of a line inside a window, found without walking the rest, are the whole line's
+// pixels there, in order and bit for bit: random lines whose endpoints lie inside, outside and
+// far outside (200,000 pixels away) a small window, in every octant, ties included.
+TEST(Bresenham, DepthInsideAWindowIsTheWholeLinesThere) {
+    std::mt19937_64 rng(7);
+    std::uniform_int_distribution<int> near(-40, 80), far(-200000, 200000);
+    std::uniform_real_distribution<float> depth(0.0f, 1.0f);
+    constexpr int kWidth = 48, kHeight = 32;
+    for (int k = 0; k < 4000; ++k) {
+        auto& coord = k % 20 == 19 ? far : near;  // (a long whole walk now and then)
+        const glm::ivec2 a(coord(rng), near(rng)), b(coord(rng), coord(rng));
+        const float za = depth(rng), zb = depth(rng);
+        std::vector<LinePixel> expected;
+        for (const LinePixel& p : bresenham_line_depth(a, za, b, zb))
+            if (p.x >= 0 && p.y >= 0 && p.x < kWidth && p.y < kHeight) expected.push_back(p);
+        std::vector<LinePixel> got = {{-1, -1, 0.5f}};  // appended to what is there
+        bresenham_line_depth_in(a, za, b, zb, kWidth, kHeight, got);
+        ASSERT_EQ(got.size(), expected.size() + 1) << k;
+        for (std::size_t i = 0; i < expected.size(); ++i) {
+            ASSERT_EQ(got[i + 1].x, expected[i].x) << k;
+            ASSERT_EQ(got[i + 1].y, expected[i].y) << k;
+            ASSERT_EQ(got[i + 1].depth, expected[i].depth) << k;
+        }
+    }
+}
+
 // True when pixel i of the integer segment s lies on an exact tie (ideal minor coordinate exactly
 // half-way between two pixels).
 bool is_tie(const Segment& s, glm::ivec2 p) {
