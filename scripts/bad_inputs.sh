@@ -157,6 +157,7 @@ printf '0 drag left 20 0\n5000000000 quit\n' >frame.script
 printf 'newmtl m\nKd 2 -1 nan\nNs -5\nd nan\n' >colors.mtl
 printf "mtllib colors.mtl\n${tri}usemtl m\nf 1 2 3\n" >colors.obj
 printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"%s"}],"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],"materials":[{"name":"m","alphaMode":"MASK","alphaCutoff":7,"pbrMetallicRoughness":{"baseColorFactor":[2,0.5,-1,-0.5],"roughnessFactor":3}}],"meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0}' "$b64" >factors.gltf
+printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nproperty float red\nproperty float green\nproperty float blue\nproperty float alpha\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0 2.5 0 0 1\n1 0 0 0 -1 0 1\n0 1 0 0 0 1 7\n3 0 1 2\n' >colors.ply
 
 failures=0
 echo "| # | Input | Command | Exit | Message (stderr) | Output left |"
@@ -351,6 +352,8 @@ row "view script: frame 5 x 10^9" view sphere:20 --script frame.script
 row "MTL base color 2,-1,NaN, shininess -5, opacity NaN (warnings)" render colors.obj --size 8x8 -o out.png
 rm -f out.png
 row "glTF baseColorFactor, alpha, roughness and alphaCutoff out of range (warnings)" render factors.gltf --size 8x8 -o out.png
+rm -f out.png
+row "PLY vertex colors 2.5, -1 and alpha 7 (a warning)" render colors.ply --size 8x8 -o out.png
 rm -f out.png
 echo
 echo "$n inputs; $failures broke the contract (exit 2, one line, nothing left)."
