@@ -8,6 +8,7 @@
 #
 # Environment: ZRASTER_FUZZ_BUILD_DIR (default build-asan, shared with scripts/sanitize.sh asan),
 # ZRASTER_FUZZ_TARGETS (space-separated subset), ZRASTER_FUZZ_JOBS (build parallelism, default 2),
+# ZRASTER_FUZZ_TIMEOUT (seconds an input may take before it is a hang finding, default 20),
 # ZRASTER_FUZZ_LOAD_ISOLATION=worker (the loader targets run Assimp in the worker process the
 # command uses, so that Assimp's own crashes, open findings 16 and 17, are refused files: what CI
 # runs; default: in process, where the sanitizers see them).
@@ -104,10 +105,13 @@ for t in $targets; do
         fi
     done
     # Slow units (libFuzzer saves any input over 10 s by default) are not findings: on a loaded
-    # machine a 0.5 s input can take that long. Hangs are: -timeout.
+    # machine a 0.5 s input can take that long. Hangs are: -timeout (ZRASTER_FUZZ_TIMEOUT
+    # seconds, default 20; long runs at low priority beside other work want more, or CPU
+    # starvation ends them as a "timeout").
     t_seconds=$(target_seconds "$t")
     total_seconds=$((total_seconds + t_seconds))
-    args=(-max_total_time="$t_seconds" -timeout=20 -report_slow_units=20 -rss_limit_mb=2048
+    args=(-max_total_time="$t_seconds" -timeout="${ZRASTER_FUZZ_TIMEOUT:-20}" -report_slow_units=20
+          -rss_limit_mb=2048
           -malloc_limit_mb=512
           -max_len=65536 -close_fd_mask=1 -print_final_stats=1 -artifact_prefix="$findings/")
     dict=$(dictionary "$t")
