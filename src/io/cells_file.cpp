@@ -14,6 +14,7 @@
 #include <map>
 
 #include "io/input_file_check.hpp"
+#include "io/json_errors.hpp"
 #include "io/read_file.hpp"
 #include "io/reference_policy.hpp"
 
@@ -37,7 +38,7 @@ class CellsReader {
         try {
             document = json::parse(bytes.begin(), bytes.end());
         } catch (const json::exception& e) {
-            fail("", std::string("malformed JSON: ") + e.what());
+            fail("", "malformed JSON: " + json_error_text(e));
         }
         if (!document.is_object()) fail("", "expected a JSON object");
         if (!document.contains("zraster_cells") || document["zraster_cells"] != 1)

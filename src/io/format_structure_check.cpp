@@ -1,5 +1,7 @@
 #include "io/format_structure_check.hpp"
 
+#include "io/json_errors.hpp"
+
 #include <zraster/error.hpp>
 
 #include "io/text_util.hpp"
@@ -58,24 +60,6 @@ std::string hex16(std::uint16_t id) {
     return out;
 }
 
-// nlohmann's "[json.exception.parse_error.101] parse error at line 1, column 31: syntax error
-// while parsing value - unexpected end of input; expected ..." as "line 1, column 31: unexpected
-// end of input; expected ...".
-std::string json_error_text(const json::parse_error& e) {
-    std::string what = e.what();
-    const std::size_t at = what.find(" at line ");
-    const std::size_t colon = at == std::string::npos ? at : what.find(": ", at);
-    const std::size_t dash = what.find(" - ");
-    std::string where = at != std::string::npos && colon != std::string::npos
-                            ? what.substr(at + 4, colon - at - 4)
-                            : "byte " + std::to_string(e.byte);
-    std::string reason = dash != std::string::npos ? what.substr(dash + 3) : what;
-    // It quotes the input ("last read: '...'"), which may be any bytes.
-    for (char& c : reason)
-        if (static_cast<unsigned char>(c) >= 0x80) c = '?';
-    return where + ": " + reason;
-}
-
 // A glTF document (the .gltf text, or a GLB's JSON chunk: `chunk`): JSON, an object, an asset
 // of version 2.x. glTF 1.0 (2015, superseded in 2017) is refused although Assimp has an importer
 // for it: that importer reports a malformed file as "no suitable reader" and checks little, and
@@ -85,7 +69,7 @@ void check_gltf_json(const std::string& file, std::string_view text, bool chunk)
     json document;
     try {
         document = json::parse(text.begin(), text.end());
-    } catch (const json::parse_error& e) {
+    } catch (const json::exception& e) {
         throw InputError(file, (chunk ? "its JSON chunk is not valid JSON: " : "not valid JSON: ") +
                                    json_error_text(e));
     }

@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "io/input_file_check.hpp"
+#include "io/json_errors.hpp"
 #include "io/read_file.hpp"
 
 namespace zraster {
@@ -45,7 +46,7 @@ std::vector<std::vector<std::uint32_t>> load_pvs(const std::filesystem::path& pa
     try {
         document = json::parse(bytes.begin(), bytes.end());
     } catch (const json::exception& e) {
-        throw InputError(file, std::string("malformed JSON: ") + e.what());
+        throw InputError(file, "malformed JSON: " + io::json_error_text(e));
     }
     if (!document.is_object() || !document.contains("zraster_pvs") || document["zraster_pvs"] != 1)
         throw fail("zraster_pvs", "expected 1 (not a file of zraster pvs?)");

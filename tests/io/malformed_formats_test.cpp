@@ -73,6 +73,8 @@ std::vector<Malformed> malformed_files() {
          "not valid JSON: line 1, column 37: unexpected end of input; expected '[', '{', or a "
          "literal"},
         {"array.gltf", "[1, 2]", "not a glTF file: the JSON is not an object (a glTF file's is)"},
+        {"overflow.gltf", R"({"asset":{"version":"2.0"},"accessors":[{"count":1e400}]})",
+         "not valid JSON: a number too large for a double ('1e400')"},
         // JSON under another name: Assimp's glTF importers would read it.
         {"noasset.json", R"({"nodes": []})",
          "not a glTF file: the JSON has no \"asset\" object (every glTF file has one)"},

@@ -185,7 +185,8 @@ TEST(MaterialAlpha, GltfFactorsOutsideTheirRangesAreClampedWithAWarningEach) {
     const auto infinite = write_alpha_gltf(
         "factors-infinite", R"({"name":"m","pbrMetallicRoughness":{"baseColorFactor":)"
                             R"([1e39,0,0,1],"roughnessFactor":0.99}})");
-    const Material& i = only_material(load_alpha_both_ways(infinite, &infinite_warnings));
+    const Scene infinite_scene = load_alpha_both_ways(infinite, &infinite_warnings);
+    const Material& i = only_material(infinite_scene);
     EXPECT_EQ(i.base_color, Material{}.base_color);
     EXPECT_EQ(i.shininess, 1.0f);  // 1000 x 0.01^2 = 0.1, from a valid roughness: no warning
     EXPECT_EQ(infinite_warnings,

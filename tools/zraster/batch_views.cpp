@@ -1,6 +1,8 @@
 // See batch_views.hpp.
 #include "batch_views.hpp"
 
+#include "io/json_errors.hpp"
+
 #include <zraster/error.hpp>
 
 #include <fmt/format.h>
@@ -227,7 +229,7 @@ std::vector<BatchView> read_views_json(const std::filesystem::path& path) {
     try {
         document = Json::parse(in);
     } catch (const Json::exception& e) {
-        throw InputError(path.string(), std::string("not valid JSON: ") + e.what());
+        throw InputError(path.string(), "not valid JSON: " + io::json_error_text(e));
     }
     if (document.is_object()) document = Json::array({document});
     if (!document.is_array() || document.empty())
