@@ -101,6 +101,21 @@ TEST(CliLimits, NumbersOutOfRange) {
                    "zraster: --clip-plane: the normal A,B,C of '0,0,0,-1' is zero");
 }
 
+// An empty value is refused, not taken as "not given" (CLI11 would draw with the default), for
+// every subcommand; and a newline in a name does not split the one line of a refusal.
+TEST(CliLimits, EmptyValuesAndNewlinesInNames) {
+    const auto dir = temp_dir("cli-limits-empty");
+    for (const char* arguments :
+         {"render builtin:cube -o out.png --fovy ''",
+          "render builtin:cube -o out.png --near=", "bench builtin:cube --frames 1 --warmup ''",
+          "svg builtin:cube -o out.png --precision ''", "render '' -o out.png"})
+        expect_refused(dir, arguments, ": an empty value (give one, or leave the option out)");
+    expect_refused(dir, "render builtin:cube -o out.png --fovy ''",
+                   "zraster: after --fovy: an empty value");
+    expect_refused(dir, "render \"$(printf 'missing\\nfile.obj')\" -o out.png",
+                   "zraster: missing file.obj: file not found");
+}
+
 // Every camera and lighting number has a range (docs/limits.md), the same for the flags and for
 // the cameras of a --views-json file, whose messages name the file, camera and field.
 TEST(CliLimits, CameraNumbersHaveRanges) {

@@ -19,6 +19,7 @@
 #include "command_line.hpp"
 #include "explain_command.hpp"
 #include "info_command.hpp"
+#include "io/text_util.hpp"
 #include "pvs_command.hpp"
 #include "render_command.hpp"
 #include "svg_command.hpp"
@@ -110,6 +111,18 @@ int run_zraster(std::vector<std::string> args) {
                    args[first], names, before, after);
         return kExitBadInput;
     }
+    // An empty argument is never a value or a name zraster can use; CLI11 would take it as "not
+    // given" for an option with a default (`--fovy ''` drew with the default field of view).
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const bool after_equals = args[i].starts_with("--") && args[i].ends_with("=");
+        if (!args[i].empty() && !after_equals) continue;
+        const std::string where =
+            after_equals ? args[i].substr(0, args[i].size() - 1)
+                         : (i > 0 ? "after " + io::one_line(args[i - 1]) : "as the first argument");
+        fmt::print(stderr, "zraster: {}: an empty value (give one, or leave the option out)\n",
+                   where);
+        return kExitBadInput;
+    }
     std::reverse(args.begin(), args.end());  // CLI11 takes a reversed vector
     try {
         app.parse(args);
@@ -120,7 +133,7 @@ int run_zraster(std::vector<std::string> args) {
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        fmt::print(stderr, "zraster: {}\n", e.what());
+        fmt::print(stderr, "zraster: {}\n", io::one_line(e.what()));
         return kExitBadInput;
     }
 
@@ -141,16 +154,17 @@ int run_zraster(std::vector<std::string> args) {
         // No subcommand at all: render the built-in default scene to zraster.png.
         return run_render(render_args);
     } catch (const zraster::LimitExceeded& e) {
-        fmt::print(stderr, "zraster: {}{}\n", e.what(), limit_advice(e.limit()));
+        // (One line whatever the names in it hold: a path may contain a newline.)
+        fmt::print(stderr, "zraster: {}{}\n", io::one_line(e.what()), limit_advice(e.limit()));
         return kExitBadInput;
     } catch (const zraster::InputError& e) {
-        fmt::print(stderr, "zraster: {}\n", e.what());
+        fmt::print(stderr, "zraster: {}\n", io::one_line(e.what()));
         return kExitBadInput;
     } catch (const std::bad_alloc&) {
         fmt::print(stderr, "zraster: out of memory\n");
         return kExitInternal;
     } catch (const std::exception& e) {
-        fmt::print(stderr, "zraster: internal error: {}\n", e.what());
+        fmt::print(stderr, "zraster: internal error: {}\n", io::one_line(e.what()));
         return kExitInternal;
     }
 }
