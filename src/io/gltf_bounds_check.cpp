@@ -1,5 +1,6 @@
 #include "io/gltf_bounds_check.hpp"
 
+#include "io/gltf_schema_check.hpp"
 #include "io/reference_policy.hpp"
 
 #include <zraster/error.hpp>
@@ -282,6 +283,7 @@ void check_gltf_bounds(const std::filesystem::path& path, const std::string& jso
                        std::optional<std::uint64_t> glb_binary, const LoadOptions& options) {
     const json document = json::parse(json_text, nullptr, false);
     if (document.is_discarded() || !document.is_object()) return;
+    check_gltf_schema(path, document);
     Checker(path, document, glb_binary, options).run();
 }
 

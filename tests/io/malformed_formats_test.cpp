@@ -75,6 +75,28 @@ std::vector<Malformed> malformed_files() {
         {"array.gltf", "[1, 2]", "not a glTF file: the JSON is not an object (a glTF file's is)"},
         {"overflow.gltf", R"({"asset":{"version":"2.0"},"accessors":[{"count":1e400}]})",
          "not valid JSON: a number too large for a double ('1e400')"},
+        // glTF rules Assimp does not check (gltf_schema_check.hpp).
+        {"stride.gltf",
+         R"({"asset":{"version":"2.0"},"bufferViews":[{"buffer":0,"byteLength":36,"byteStride":3}]})",
+         "malformed glTF file: glTF buffer view 0: byteStride 3 is not a multiple of 4 in 4..252"},
+        {"overlap.gltf",
+         R"({"asset":{"version":"2.0"},"bufferViews":[{"buffer":0,"byteLength":36,"byteStride":8}],)"
+         R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"}]})",
+         "malformed glTF file: glTF accessor 0: elements of 12 bytes, 8 bytes apart (byteStride of "
+         "buffer view 0): they overlap"},
+        {"color.gltf",
+         R"({"asset":{"version":"2.0"},"accessors":[{"componentType":5126,"count":3,"type":"SCALAR"}],)"
+         R"("meshes":[{"primitives":[{"attributes":{"COLOR_0":0}}]}]})",
+         "malformed glTF file: glTF mesh 0, primitive 0: attribute COLOR_0 is a SCALAR accessor "
+         "(VEC3 or VEC4 in glTF 2.0)"},
+        {"draco.gltf",
+         R"({"asset":{"version":"2.0"},"extensionsRequired":["KHR_draco_mesh_compression"]})",
+         "the file requires the glTF extension KHR_draco_mesh_compression (extensionsRequired), "
+         "which zraster does not read"},
+        {"child.gltf", R"({"asset":{"version":"2.0"},"nodes":[{"children":[-1]}]})",
+         "malformed glTF file: glTF node 0: child -1 is not a node of the file's 1"},
+        {"scene.gltf", R"({"asset":{"version":"2.0"},"scene":5,"scenes":[{"nodes":[]}]})",
+         "malformed glTF file: glTF \"scene\" 5 is not one of the file's 1 scenes"},
         // JSON under another name: Assimp's glTF importers would read it.
         {"noasset.json", R"({"nodes": []})",
          "not a glTF file: the JSON has no \"asset\" object (every glTF file has one)"},

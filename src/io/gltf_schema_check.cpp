@@ -1,0 +1,172 @@
+// See gltf_schema_check.hpp.
+#include "io/gltf_schema_check.hpp"
+
+#include <zraster/error.hpp>
+
+#include <cstdint>
+#include <string>
+
+namespace zraster::io {
+namespace {
+
+using nlohmann::json;
+
+const json& array_of(const json& object, const char* key) {
+    static const json empty = json::array();
+    const auto it = object.find(key);
+    return it != object.end() && it->is_array() ? *it : empty;
+}
+
+std::uint64_t element_bytes(const json& accessor) {
+    const auto type = accessor.find("type");
+    const auto component = accessor.find("componentType");
+    if (type == accessor.end() || !type->is_string() || component == accessor.end() ||
+        !component->is_number_unsigned())
+        return 0;
+    const std::string t = type->get<std::string>();
+    const std::uint64_t n = t == "SCALAR" ? 1
+                            : t == "VEC2" ? 2
+                            : t == "VEC3" ? 3
+                            : t == "VEC4" ? 4
+                            : t == "MAT2" ? 4
+                            : t == "MAT3" ? 9
+                            : t == "MAT4" ? 16
+                                          : 0;
+    const std::uint64_t c = component->get<std::uint64_t>();
+    const std::uint64_t bytes = c == 5120 || c == 5121 ? 1 : c == 5122 || c == 5123 ? 2 : 4;
+    return n * bytes;
+}
+
+// The types an attribute may have; empty for one the specification leaves open.
+std::string allowed_types(const std::string& attribute) {
+    if (attribute == "POSITION" || attribute == "NORMAL") return "VEC3";
+    if (attribute.starts_with("TEXCOORD_")) return "VEC2";
+    if (attribute.starts_with("COLOR_")) return "VEC3 or VEC4";
+    return "";
+}
+
+// Extensions that change only materials and lights, which zraster's shading approximates: a
+// file requiring them still draws its geometry right.
+bool shading_only(const std::string& extension) {
+    return extension.starts_with("KHR_materials_") || extension == "KHR_texture_transform" ||
+           extension == "KHR_lights_punctual";
+}
+
+class SchemaChecker {
+  public:
+    SchemaChecker(const std::filesystem::path& path, const json& document)
+        : path_(path), document_(document) {}
+
+    void run() {
+        extensions();
+        strides();
+        attributes();
+        nodes();
+        scene();
+    }
+
+  private:
+    [[noreturn]] void refuse(const std::string& what) const {
+        throw InputError(path_.string(), "malformed glTF file: glTF " + what);
+    }
+
+    void extensions() const {
+        for (const json& e : array_of(document_, "extensionsRequired"))
+            if (e.is_string() && !shading_only(e.get<std::string>()))
+                throw InputError(path_.string(),
+                                 "the file requires the glTF extension " + e.get<std::string>() +
+                                     " (extensionsRequired), which zraster does not read");
+    }
+
+    void strides() const {
+        const json& views = array_of(document_, "bufferViews");
+        for (std::size_t v = 0; v < views.size(); ++v) {
+            if (!views[v].is_object()) continue;
+            const auto stride = views[v].find("byteStride");
+            if (stride == views[v].end()) continue;
+            if (!stride->is_number_unsigned() || stride->get<std::uint64_t>() < 4 ||
+                stride->get<std::uint64_t>() > 252 || stride->get<std::uint64_t>() % 4 != 0)
+                refuse("buffer view " + std::to_string(v) + ": byteStride " + stride->dump() +
+                       " is not a multiple of 4 in 4..252");
+        }
+        const json& accessors = array_of(document_, "accessors");
+        for (std::size_t a = 0; a < accessors.size(); ++a) {
+            const json& accessor = accessors[a];
+            if (!accessor.is_object()) continue;
+            const auto view = accessor.find("bufferView");
+            if (view == accessor.end() || !view->is_number_unsigned() ||
+                view->get<std::uint64_t>() >= views.size() ||
+                !views[view->get<std::size_t>()].is_object())
+                continue;
+            const json& v = views[view->get<std::size_t>()];
+            const auto stride = v.find("byteStride");
+            if (stride == v.end() || !stride->is_number_unsigned()) continue;
+            const std::uint64_t element = element_bytes(accessor);
+            if (stride->get<std::uint64_t>() < element)
+                refuse("accessor " + std::to_string(a) + ": elements of " +
+                       std::to_string(element) + " bytes, " + stride->dump() +
+                       " bytes apart (byteStride of buffer view " + view->dump() +
+                       "): they overlap");
+        }
+    }
+
+    void attributes() const {
+        const json& accessors = array_of(document_, "accessors");
+        const json& meshes = array_of(document_, "meshes");
+        for (std::size_t m = 0; m < meshes.size(); ++m) {
+            if (!meshes[m].is_object()) continue;
+            const json& primitives = array_of(meshes[m], "primitives");
+            for (std::size_t p = 0; p < primitives.size(); ++p) {
+                if (!primitives[p].is_object()) continue;
+                const auto attributes = primitives[p].find("attributes");
+                if (attributes == primitives[p].end() || !attributes->is_object()) continue;
+                for (const auto& [name, index] : attributes->items()) {
+                    const std::string allowed = allowed_types(name);
+                    if (allowed.empty() || !index.is_number_unsigned() ||
+                        index.get<std::uint64_t>() >= accessors.size() ||
+                        !accessors[index.get<std::size_t>()].is_object())
+                        continue;
+                    const auto type = accessors[index.get<std::size_t>()].find("type");
+                    if (type == accessors[index.get<std::size_t>()].end() || !type->is_string())
+                        continue;
+                    const std::string t = type->get<std::string>();
+                    if (allowed.find(t) == std::string::npos || t.size() != 4)
+                        refuse("mesh " + std::to_string(m) + ", primitive " + std::to_string(p) +
+                               ": attribute " + name + " is a " + t + " accessor (" + allowed +
+                               " in glTF 2.0)");
+                }
+            }
+        }
+    }
+
+    void nodes() const {
+        const json& nodes = array_of(document_, "nodes");
+        for (std::size_t n = 0; n < nodes.size(); ++n) {
+            if (!nodes[n].is_object()) continue;
+            for (const json& child : array_of(nodes[n], "children"))
+                if (!child.is_number_unsigned() || child.get<std::uint64_t>() >= nodes.size())
+                    refuse("node " + std::to_string(n) + ": child " + child.dump() +
+                           " is not a node of the file's " + std::to_string(nodes.size()));
+        }
+    }
+
+    void scene() const {
+        const auto scene = document_.find("scene");
+        if (scene == document_.end()) return;
+        const std::size_t scenes = array_of(document_, "scenes").size();
+        if (!scene->is_number_unsigned() || scene->get<std::uint64_t>() >= scenes)
+            refuse("\"scene\" " + scene->dump() + " is not one of the file's " +
+                   std::to_string(scenes) + " scenes");
+    }
+
+    const std::filesystem::path& path_;
+    const json& document_;
+};
+
+}  // namespace
+
+void check_gltf_schema(const std::filesystem::path& path, const json& document) {
+    SchemaChecker(path, document).run();
+}
+
+}  // namespace zraster::io
