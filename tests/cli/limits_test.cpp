@@ -112,6 +112,11 @@ TEST(CliLimits, EmptyValuesAndNewlinesInNames) {
         expect_refused(dir, arguments, ": an empty value (give one, or leave the option out)");
     expect_refused(dir, "render builtin:cube -o out.png --fovy ''",
                    "zraster: after --fovy: an empty value");
+    expect_refused(dir, "render builtin:cube -o out.png --size 3840x2160 --aa 8",
+                   "zraster: --aa: 8 times --size 3840x2160 is more than 16384 pixels a side");
+    expect_refused(dir, "render builtin:cube -o out.png --size 4000x4000 --aa 4",
+                   "zraster: --aa: 4 times --size 4000x4000 is 256000000 pixels, more than "
+                   "--max-pixels");
     expect_refused(dir, "render \"$(printf 'missing\\nfile.obj')\" -o out.png",
                    "zraster: missing file.obj: file not found");
 }

@@ -270,6 +270,18 @@ RenderOptions make_render_options(const RenderArguments& a,
                                        " pixels, more than --max-pixels " +
                                        std::to_string(a.max_pixels));
     check_samples_cap("--size", size.x, size.y, a.aa);
+    // Supersampling renders the image `aa` times larger a side: that image has the limits of any.
+    if (a.aa > 1 && !a.msaa && a.visibility == "zbuffer" &&
+        std::int64_t{std::max(size.x, size.y)} * a.aa > kMaxViewport)
+        throw InputError("--aa", std::to_string(a.aa) + " times --size " + a.size +
+                                     " is more than " + std::to_string(kMaxViewport) +
+                                     " pixels a side (lower --aa, or add --msaa)");
+    if (a.aa > 1 && !a.msaa && a.visibility == "zbuffer" &&
+        pixels * std::uint64_t(a.aa) * std::uint64_t(a.aa) > a.max_pixels)
+        throw InputError("--aa", std::to_string(a.aa) + " times --size " + a.size + " is " +
+                                     std::to_string(pixels * std::uint64_t(a.aa * a.aa)) +
+                                     " pixels, more than --max-pixels " +
+                                     std::to_string(a.max_pixels));
     o.width = size.x;
     o.height = size.y;
     o.limits.max_pixels = a.max_pixels;
