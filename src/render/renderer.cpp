@@ -1,6 +1,8 @@
 // The Renderer: joins the stages for one frame (see include/zraster/render.hpp).
 #include <tbb/task_arena.h>
 
+#include "render/thread_arena.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <span>
@@ -243,16 +245,17 @@ struct Renderer::State {
     std::vector<float> depth_rows;  // Destination::depth_rows
     // Kept from frame to frame while the thread count stays: with a new arena per frame the
     // workers join it anew every frame, which a small scene's front end pays for.
-    std::unique_ptr<tbb::task_arena> arena;
+    std::unique_ptr<detail::ThreadArena> arena;
     int arena_threads = 0;
 
     tbb::task_arena& arena_for(const RenderOptions& options) {
         const int threads = thread_count(options);
         if (!arena || arena_threads != threads) {
-            arena = std::make_unique<tbb::task_arena>(threads);
+            arena.reset();  // (its parallelism limit first)
+            arena = std::make_unique<detail::ThreadArena>(threads);
             arena_threads = threads;
         }
-        return *arena;
+        return arena->arena();
     }
 };
 
@@ -296,8 +299,8 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     Destination destination;
     destination.own = &result.targets;
     destination.instance_outcomes = &result.instance_outcomes;
-    tbb::task_arena arena(thread_count(options));
-    render_frame(arena, frame, view, scene.name, options, destination, result.stats);
+    detail::ThreadArena arena(thread_count(options));
+    render_frame(arena.arena(), frame, view, scene.name, options, destination, result.stats);
     return result;
 }
 
@@ -310,8 +313,8 @@ RenderStats render(const SceneView& scene, const RenderOptions& options,
     destination.caller = &targets;
     destination.depth_rows = &depth_rows;
     RenderStats stats;
-    tbb::task_arena arena(thread_count(options));
-    render_frame(arena, frame, scene, "", options, destination, stats);
+    detail::ThreadArena arena(thread_count(options));
+    render_frame(arena.arena(), frame, scene, "", options, destination, stats);
     return stats;
 }
 

@@ -44,6 +44,7 @@
 #include <string>
 #include <tuple>
 
+#include "render/thread_arena.hpp"
 #include "visibility/fragment_alphas.hpp"
 #include "visibility/frame_context.hpp"
 #include "visibility/surface_shader.hpp"
@@ -179,7 +180,9 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
     const Viewport viewport{width, height};
     const int n = abuffer.samples_per_side;
     const int samples = n * n;
-    tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+    detail::ThreadArena threads(options.threads > 0 ? options.threads
+                                                    : tbb::info::default_concurrency());
+    tbb::task_arena& arena = threads.arena();
 
     // Per polygon: depth plane and what shading needs; alpha (fragment_alphas.hpp) per fragment.
     const SurfaceShader shader(frame);

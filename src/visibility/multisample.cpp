@@ -42,6 +42,7 @@
 #include <string>
 #include <tuple>
 
+#include "render/thread_arena.hpp"
 #include "visibility/fragment_alphas.hpp"
 #include "visibility/frame_context.hpp"
 #include "visibility/surface_shader.hpp"
@@ -68,7 +69,9 @@ RenderResult render_multisampled(const Scene& scene, const RenderOptions& option
     const int width = options.width, height = options.height;
     const int samples = n * n;
     const std::size_t pixels = std::size_t(width) * std::size_t(height);
-    tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+    detail::ThreadArena threads(options.threads > 0 ? options.threads
+                                                    : tbb::info::default_concurrency());
+    tbb::task_arena& arena = threads.arena();
 
     // What shading and alpha need of each polygon.
     const SurfaceShader shader(frame);

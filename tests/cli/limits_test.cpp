@@ -4,6 +4,9 @@
 // address space) within a 2 GiB address-space limit: no big allocation was attempted.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <thread>
+
 #include <chrono>
 #include <cstdint>
 #include <fstream>
@@ -99,6 +102,21 @@ TEST(CliLimits, NumbersOutOfRange) {
                    "zraster: --orbit: and --eye both place the camera");
     expect_refused(dir, "render builtin:cube -o out.png --clip-plane 0,0,0,-1",
                    "zraster: --clip-plane: the normal A,B,C of '0,0,0,-1' is zero");
+}
+
+// More threads than the hardware's (up to 4 times) are used as asked, without oneTBB's own
+// warning about its worker limit.
+TEST(CliLimits, MoreThreadsThanTheHardwareAreHonouredQuietly) {
+    const auto dir = temp_dir("cli-limits-threads");
+    const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+    for (const char* visibility : {"zbuffer", "abuffer"}) {
+        const CommandResult r =
+            run_limited(std::string("render builtin:cube --size 32x24 -o out.png --visibility ") +
+                            visibility + " --threads " + std::to_string(hardware + 1),
+                        dir);
+        EXPECT_EQ(r.exit_code, 0) << r.output;
+        EXPECT_EQ(r.output, "") << r.output;
+    }
 }
 
 // An empty value is refused, not taken as "not given" (CLI11 would draw with the default), for
