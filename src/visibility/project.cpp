@@ -21,7 +21,15 @@
 namespace zraster {
 
 Camera effective_camera(const Scene& scene, const RenderOptions& options) {
-    return options.camera ? *options.camera : fit_camera(scene.world_positions());
+    if (options.camera) return *options.camera;
+    // The fit reads every instanced vertex: within the vertex limit, checked before the copy
+    // (a mesh of a million vertices placed a thousand times would ask for 12 GB).
+    if (scene.vertex_count() > options.limits.max_vertices)
+        throw LimitExceeded(scene.name, "max_vertices",
+                            std::to_string(scene.vertex_count()) +
+                                " vertices over all instances, more than the limit of " +
+                                std::to_string(options.limits.max_vertices));
+    return fit_camera(scene.world_positions());
 }
 
 namespace visibility_detail {

@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <string>
 
@@ -102,6 +103,40 @@ TEST(CliLimits, NumbersOutOfRange) {
                    "zraster: --orbit: and --eye both place the camera");
     expect_refused(dir, "render builtin:cube -o out.png --clip-plane 0,0,0,-1",
                    "zraster: --clip-plane: the normal A,B,C of '0,0,0,-1' is zero");
+}
+
+// A mesh of 100,000 vertices placed 1,001 times: the camera fit would copy 100.1 million world
+// positions (1.2 GB; a million-vertex mesh placed a thousand times asked for 12 GB and ended in
+// "out of memory"). Refused before the copy, naming the limit, by render, bench and svg alike.
+TEST(CliLimits, InstancedVerticesPastTheLimitAreRefusedBeforeTheCameraFit) {
+    const auto dir = temp_dir("cli-limits-instanced");
+    constexpr int kVertices = 100'000;
+    std::string bin(std::size_t(kVertices) * 12 + 12, '\0');
+    const float corner[3] = {1.0f, 0.0f, 0.0f}, top[3] = {0.0f, 1.0f, 0.0f};
+    std::memcpy(&bin[std::size_t(kVertices - 2) * 12], corner, 12);
+    std::memcpy(&bin[std::size_t(kVertices - 1) * 12], top, 12);
+    const std::uint32_t indices[3] = {0, kVertices - 2, kVertices - 1};
+    std::memcpy(&bin[std::size_t(kVertices) * 12], indices, 12);
+    write(dir / "v.bin", bin);
+    std::string children = "0";
+    for (int i = 1; i < 1001; ++i) children += ",0";
+    write(dir / "m.gltf",
+          R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[1]}],)"
+          R"("nodes":[{"mesh":0},{"children":[)" +
+              children +
+              R"(]}],)"
+              R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],)"
+              R"("accessors":[{"bufferView":0,"componentType":5126,"count":100000,"type":"VEC3",)"
+              R"("min":[0,0,0],"max":[1,1,0]},{"bufferView":1,"componentType":5125,"count":3,)"
+              R"("type":"SCALAR"}],"bufferViews":[{"buffer":0,"byteLength":1200000},)"
+              R"({"buffer":0,"byteOffset":1200000,"byteLength":12}],)"
+              R"("buffers":[{"byteLength":1200012,"uri":"v.bin"}]})");
+    for (const char* command :
+         {"render m.gltf -o out.png --size 16x16",
+          "bench m.gltf --frames 1 --warmup 0 --size 16x16", "svg m.gltf -o out.svg --size 16x16"})
+        expect_refused(dir, command,
+                       "m.gltf: 100100000 vertices over all instances (the meshes times their "
+                       "placements), more than the renderer's limit of 100000000");
 }
 
 // More threads than the hardware's (up to 4 times) are used as asked, without oneTBB's own

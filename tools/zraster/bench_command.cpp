@@ -122,6 +122,7 @@ int run_bench(const BenchArguments& a) {
     options.strategy = shading_strategy(a.strategy);
     // The same fit_camera framing render() does for an unset camera, computed once: refitting
     // every frame would time a scan over all vertices that glbench does not do per frame.
+    check_instanced_vertices(scene);
     options.camera = fit_camera(scene.world_positions());
     const Camera& cam = *options.camera;
     const std::size_t tris = scene.triangle_count();

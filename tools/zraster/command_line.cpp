@@ -61,6 +61,16 @@ std::string limit_advice(const std::string& limit) {
     return "";
 }
 
+void check_instanced_vertices(const Scene& scene) {
+    const std::uint64_t limit = RenderLimits{}.max_vertices;
+    if (scene.vertex_count() > limit)
+        throw LimitExceeded(scene.name, "max_vertices",
+                            std::to_string(scene.vertex_count()) +
+                                " vertices over all instances (the meshes times their "
+                                "placements), more than the renderer's limit of " +
+                                std::to_string(limit));
+}
+
 glm::dvec3 parse_vec3(const std::string& option, const std::string& text) {
     const auto v = parse_numbers(option, text, 3, "X,Y,Z");
     return {v[0], v[1], v[2]};

@@ -21,6 +21,10 @@ inline constexpr int kExitSomeFilesFailed = 3;  // `zraster batch`: the others w
 // message ("; raise it with --max-bsp-polygons N"); empty for a limit without one.
 std::string limit_advice(const std::string& limit);
 
+// The instanced vertices of `scene` (what a camera fit copies) within the renderer's vertex limit
+// (RenderLimits::max_vertices), checked before anything is copied: LimitExceeded otherwise.
+void check_instanced_vertices(const Scene& scene);
+
 // Enough digits (17 significant) to read back the same double; -0 written as 0. For the flag
 // values the command makes and the numbers of the JSON it writes.
 std::string exact_number(double x);

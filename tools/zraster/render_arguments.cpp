@@ -250,6 +250,7 @@ RenderOptions make_render_options(const RenderArguments& a, const Scene& scene) 
     if (a.portal_cull != "off" && !scene.cells)
         throw InputError("--portal-cull",
                          "the scene has no cells (building:RxC or a .cells.json file)");
+    check_instanced_vertices(scene);
     const std::vector<glm::vec3> world = scene.world_positions();
     try {
         return make_render_options(a, world, std::nullopt);

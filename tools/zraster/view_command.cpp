@@ -56,6 +56,7 @@ int run_view(const ViewArguments& a) {
     std::vector<ScriptEvent> script;
     if (!a.script.empty()) script = read_view_script(a.script);
     const Scene scene = load_scene_or_procedural(a.render.scene);
+    check_instanced_vertices(scene);
     const std::vector<glm::vec3> world = scene.world_positions();
     std::optional<ViewState> state;
     try {
