@@ -176,7 +176,7 @@ TEST(ViewCommand, BadFilesAreExitTwoWithOneLine) {
     EXPECT_EQ(no_script.output, "zraster: none.txt: no such script file\n");
     const CommandResult shot = run_zraster("view sphere:20 --screenshot x.jpg", dir);
     EXPECT_EQ(shot.exit_code, 2);
-    EXPECT_EQ(shot.output, "zraster: --screenshot: x.jpg is not a .png file\n");
+    EXPECT_EQ(shot.output, "zraster: --screenshot: 'x.jpg' must end in .png\n");
     const CommandResult flags = run_zraster("view sphere:20 --visibility bsp --msaa --aa 4", dir);
     EXPECT_EQ(flags.exit_code, 2);
     EXPECT_TRUE(single_line(flags.output)) << flags.output;
