@@ -68,7 +68,8 @@ TEST(CommandOutputs, ANameOfTheLongestLengthIsWritten) {
 
 TEST(CommandOutputs, AnOutputMayNotOverwriteAnInput) {
     const auto dir = temp_dir("outputs-input");
-    for (const char* name : {"m.ply", "m.json", "m.png", "m.svg", "g.obj", "p.json"})
+    for (const char* name :
+         {"m.ply", "m.json", "m.png", "m.svg", "g.obj", "p.json", "bsp-tree.svg"})
         write_text(dir / name, kTriangle);
     const std::string tail = ": an output may not overwrite a file the run reads\n";
     struct Case {
@@ -89,16 +90,19 @@ TEST(CommandOutputs, AnOutputMayNotOverwriteAnInput) {
          "zraster: --out m.png: is the same file as the input m.png" + tail},
         {"batch g.obj -o out --size 8x8 --log g.obj",
          "zraster: --log g.obj: is the same file as the input g.obj" + tail},
+        {"explain bsp bsp-tree.svg -o .",
+         "zraster: -o ./bsp-tree.svg: is the same file as the input bsp-tree.svg" + tail},
     };
     for (const Case& c : cases) {
         const CommandResult r = run_zraster(c.arguments, dir);
         EXPECT_EQ(r.exit_code, 2) << c.arguments << ": " << r.output;
         EXPECT_EQ(r.output, c.message) << c.arguments;
     }
-    for (const char* name : {"m.ply", "m.json", "m.png", "m.svg", "g.obj", "p.json"})
+    for (const char* name :
+         {"m.ply", "m.json", "m.png", "m.svg", "g.obj", "p.json", "bsp-tree.svg"})
         EXPECT_EQ(read_text(dir / name), kTriangle) << name;
-    EXPECT_EQ(names_in(dir),
-              (std::vector<std::string>{"g.obj", "m.json", "m.ply", "m.png", "m.svg", "p.json"}));
+    EXPECT_EQ(names_in(dir), (std::vector<std::string>{"bsp-tree.svg", "g.obj", "m.json", "m.ply",
+                                                       "m.png", "m.svg", "p.json"}));
 }
 
 TEST(CommandOutputs, ABadLogLeavesNoOutputFolder) {
