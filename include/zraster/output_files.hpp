@@ -4,6 +4,7 @@
 //   OutputFiles out;
 //   out.check("a.png", "-o");               // before any work: a bad path fails the run early
 //   out.check("a-depth.npy", "--depth-out");
+//   out.check_input("model.ply", "");     // the files the run reads: no output may replace one
 //   ... render ...
 //   out.add("a.png", encode_png8(...));     // zraster/image_io.hpp's encoders
 //   out.add("a-depth.npy", encode_npy(...));
@@ -29,8 +30,15 @@ class ZRASTER_API OutputFiles {
     // (and `what`, the option or role that gave it) when the name is empty or longer than the
     // file system allows, its directory does not exist or cannot be written, it names a
     // directory or something other than a regular file, or it is the same file as a path
-    // checked before (also through another spelling or a symbolic link).
+    // checked before (also through another spelling or a symbolic link) or a file the run reads
+    // (check_input).
     void check(const std::filesystem::path& path, const std::string& what);
+
+    // Records a file the run reads (the model, a camera or list file): an output that is the
+    // same file, checked before or after, is refused, since replacing it would lose the input
+    // (`render m.png -o m.png`). Throws InputError naming the output when one already is. A
+    // path that does not exist (a procedural scene's spec) is no file and is ignored.
+    void check_input(const std::filesystem::path& path, const std::string& what);
 
     // The bytes of one output, kept until commit(). The path must have been checked.
     void add(const std::filesystem::path& path, std::vector<std::uint8_t> bytes);
@@ -47,7 +55,13 @@ class ZRASTER_API OutputFiles {
         std::vector<std::uint8_t> bytes;
         bool added = false;
     };
+    struct Input {
+        std::filesystem::path path;
+        std::string what;
+        std::filesystem::path identity;
+    };
     std::vector<Output> outputs_;
+    std::vector<Input> inputs_;
 };
 
 }  // namespace zraster

@@ -47,7 +47,42 @@ std::filesystem::path directory_of(const std::filesystem::path& path) {
     return parent.empty() ? std::filesystem::path(".") : parent;
 }
 
+// The path made absolute and free of links where it exists, for comparing spellings.
+std::filesystem::path identity_of(const std::filesystem::path& path) {
+    std::error_code error;
+    // Absolute first: weakly_canonical leaves a relative path whose first part does not exist
+    // as it is ("out.png"), but resolves "./out.png".
+    std::filesystem::path identity =
+        std::filesystem::weakly_canonical(std::filesystem::absolute(path, error), error);
+    if (error) identity = std::filesystem::absolute(path, error).lexically_normal();
+    return identity;
+}
+
+// Same spelling once resolved, or the same inode (a hard link, a bind mount).
+bool same_file(const std::filesystem::path& identity, const std::filesystem::path& path,
+               const std::filesystem::path& other_identity, const std::filesystem::path& other) {
+    std::error_code error;
+    return identity == other_identity || std::filesystem::equivalent(path, other, error);
+}
+
+template <class File>
+std::string described(const File& file) {
+    return file.what.empty() ? file.path.string() : file.what + " " + file.path.string();
+}
+
 }  // namespace
+
+void OutputFiles::check_input(const std::filesystem::path& path, const std::string& what) {
+    std::error_code error;
+    if (path.empty() || !std::filesystem::exists(path, error)) return;
+    Input input{path, what, identity_of(path)};
+    for (const Output& output : outputs_)
+        if (same_file(output.identity, output.path, input.identity, input.path))
+            throw InputError(described(output),
+                             "is the same file as the input " + described(input) +
+                                 ": an output may not overwrite a file the run reads");
+    inputs_.push_back(std::move(input));
+}
 
 void OutputFiles::check(const std::filesystem::path& path, const std::string& what) {
     const std::string label = what.empty() ? path.string() : what + " " + path.string();
@@ -78,23 +113,17 @@ void OutputFiles::check(const std::filesystem::path& path, const std::string& wh
         throw InputError(label, "cannot write: is a directory");
     if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
         throw InputError(label, "cannot write: exists and is not a regular file");
-    std::error_code canonical_error, equivalent_error;
-    // Absolute first: weakly_canonical leaves a relative path whose first part does not exist
-    // as it is ("out.png"), but resolves "./out.png".
-    std::filesystem::path identity = std::filesystem::weakly_canonical(
-        std::filesystem::absolute(path, canonical_error), canonical_error);
-    if (canonical_error)
-        identity = std::filesystem::absolute(path, canonical_error).lexically_normal();
-    for (const Output& earlier : outputs_) {
-        const bool same = identity == earlier.identity ||
-                          std::filesystem::equivalent(path, earlier.path, equivalent_error);
-        if (same)
-            throw InputError(
-                label, "is the same file as " +
-                           (earlier.what.empty() ? std::string("an earlier output")
-                                                 : earlier.what + " " + earlier.path.string()) +
-                           ": each output needs a path of its own");
-    }
+    const std::filesystem::path identity = identity_of(path);
+    for (const Input& input : inputs_)
+        if (same_file(identity, path, input.identity, input.path))
+            throw InputError(label, "is the same file as the input " + described(input) +
+                                        ": an output may not overwrite a file the run reads");
+    for (const Output& earlier : outputs_)
+        if (same_file(identity, path, earlier.identity, earlier.path))
+            throw InputError(label, "is the same file as " +
+                                        (earlier.what.empty() ? std::string("an earlier output")
+                                                              : described(earlier)) +
+                                        ": each output needs a path of its own");
     outputs_.push_back({path, what, identity, {}, false});
 }
 

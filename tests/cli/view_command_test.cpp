@@ -7,6 +7,8 @@
 #include <fstream>
 #include <string>
 
+#include <sys/stat.h>
+
 #include "support/test_support.hpp"
 
 namespace zraster::test {
@@ -55,6 +57,24 @@ TEST(ViewCommand, ScreenshotIsTheRenderCommandsImage) {
         ASSERT_EQ(r.exit_code, 0) << r.output;
         EXPECT_TRUE(same_image(dir / "view.png", dir / "r.png")) << scene;
     }
+}
+
+// --screenshot goes through OutputFiles as every output does: a 255-byte name is written (the
+// temporary's name does not grow with it), a FIFO at the path is refused before the window opens.
+TEST(ViewCommand, ScreenshotNamesOfTheLongestLengthAndFifos) {
+    const auto dir = temp_dir("view-screenshot-names");
+    ASSERT_EQ(::mkfifo((dir / "fifo.png").c_str(), 0600), 0);
+    const CommandResult fifo = run_zraster("view sphere:20 --screenshot fifo.png", dir);
+    EXPECT_EQ(fifo.exit_code, 2) << fifo.output;
+    EXPECT_EQ(fifo.output,
+              "zraster: --screenshot fifo.png: cannot write: exists and is not a regular file\n");
+    EXPECT_TRUE(std::filesystem::is_fifo(dir / "fifo.png"));
+    const std::string name = std::string(251, 'v') + ".png";
+    const CommandResult v =
+        run_viewer("sphere:20 --size 32x24 --no-hud --frames 1 --screenshot " + name, dir);
+    VIEWER_OR_SKIP(v);
+    EXPECT_EQ(v.exit_code, 0) << v.output;
+    EXPECT_TRUE(std::filesystem::is_regular_file(dir / name));
 }
 
 TEST(ViewCommand, HudDrawsOnlyItsBandAtTheTop) {
@@ -176,7 +196,7 @@ TEST(ViewCommand, BadFilesAreExitTwoWithOneLine) {
     EXPECT_EQ(no_script.output, "zraster: none.txt: no such script file\n");
     const CommandResult shot = run_zraster("view sphere:20 --screenshot x.jpg", dir);
     EXPECT_EQ(shot.exit_code, 2);
-    EXPECT_EQ(shot.output, "zraster: --screenshot: x.jpg is not a .png file\n");
+    EXPECT_EQ(shot.output, "zraster: --screenshot: 'x.jpg' must end in .png\n");
     const CommandResult flags = run_zraster("view sphere:20 --visibility bsp --msaa --aa 4", dir);
     EXPECT_EQ(flags.exit_code, 2);
     EXPECT_TRUE(single_line(flags.output)) << flags.output;

@@ -115,8 +115,13 @@ int run_batch(const BatchArguments& a) {
     try {
         totals = run_batch_jobs(inputs, settings, jobs, log, progress, signals.stop());
     } catch (const InputError& e) {
-        fmt::print(stderr, "zraster: {} (the batch stopped)\n", e.what());
-        return kExitInternal;
+        // The log could not be written (docs/batch.md, "Exit status"): the inputs finished
+        // before stay written, each all or nothing.
+        fmt::print(stderr,
+                   "zraster: {} (the batch stopped; the outputs of the inputs finished before "
+                   "stay, the same command again does the rest)\n",
+                   e.what());
+        return kExitBadInput;
     }
     // Wall time from the start: finding the inputs and checking their names included.
     const double seconds =

@@ -136,6 +136,7 @@ BatchRecord run_batch_job(const BatchInput& input, const BatchSettings& settings
                 std::filesystem::path(views.back().output).parent_path());
             check_render_outputs(views.back(), outputs);
         }
+        outputs.check_input(input.source, "");
 
         const Clock::time_point load_start = Clock::now();
         Scene scene;

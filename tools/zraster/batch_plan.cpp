@@ -2,6 +2,7 @@
 #include "batch_plan.hpp"
 
 #include <zraster/error.hpp>
+#include <zraster/output_files.hpp>
 #include <zraster/render.hpp>
 
 #include <algorithm>
@@ -55,13 +56,31 @@ BatchSettings batch_settings(const BatchArguments& a, int jobs) {
 
 namespace {
 
+// --log is appended to: checked as an output is (OutputFiles::check) while the plan is made, so
+// that a refused log leaves nothing (plan_batch removes the folders it made). A device or FIFO
+// there (/dev/stdout) is written as it is.
+void check_log(const BatchArguments& a, OutputFiles& log) {
+    if (a.log.empty()) return;
+    std::error_code ec;
+    const std::filesystem::file_status status = std::filesystem::status(a.log, ec);
+    if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&
+        !std::filesystem::is_directory(status))
+        return;
+    log.check(a.log, "--log");
+}
+
 // The inputs, their outputs checked for clashes, the shard's share of them, the log.
 void plan_inputs(const BatchArguments& a, std::istream& standard_input, const Shard& shard,
                  BatchPlan& plan) {
     check_batch_settings(plan.settings);
+    OutputFiles log;
+    check_log(a, log);
 
     std::vector<std::string> paths = a.inputs;
+    // The log may not be one of the files the run reads.
+    log.check_input(a.views_json, "--views-json");
     for (const std::string& list : a.lists) {
+        log.check_input(list, "--list");
         const std::vector<std::string> listed = read_path_list(list, standard_input);
         paths.insert(paths.end(), listed.begin(), listed.end());
     }
@@ -70,6 +89,7 @@ void plan_inputs(const BatchArguments& a, std::istream& standard_input, const Sh
     if (all.empty())
         throw InputError("batch", "no mesh files in the inputs given (" + paths.front() +
                                       (paths.size() > 1 ? ", ..." : "") + ")");
+    for (const BatchInput& input : all) log.check_input(input.source, "");
     check_output_clashes(
         all, [&](const BatchInput& input) { return planned_outputs(input, plan.settings); });
     std::copy_if(all.begin(), all.end(), std::back_inserter(plan.inputs),

@@ -5,6 +5,7 @@
 #include <zraster/camera.hpp>
 #include <zraster/error.hpp>
 #include <zraster/image_io.hpp>
+#include <zraster/output_files.hpp>
 #include <zraster/scenes.hpp>
 
 #include <fmt/format.h>
@@ -19,6 +20,7 @@
 
 #include "command_caps.hpp"
 #include "command_line.hpp"
+#include "output_maps.hpp"
 
 namespace zraster::cli {
 
@@ -65,29 +67,19 @@ double median(std::vector<double> v) {
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-void validate_png_output(const std::string& path) {
-    if (path.empty()) return;
-    std::string ext = std::filesystem::path(path).extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (ext != ".png") throw InputError(path, "--out must end in .png");
-    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-    if (!parent.empty() && !std::filesystem::is_directory(parent))
-        throw InputError(path, "cannot write: directory '" + parent.string() + "' does not exist");
-}
-
-void write_frame(const std::string& path, const RenderTargets& t, BenchMode mode) {
+// The saved frame's PNG: 16-bit depth in depth mode, else RGB.
+std::vector<std::uint8_t> encode_frame(const RenderTargets& t, BenchMode mode) {
     if (mode == BenchMode::Depth) {
         std::vector<std::uint16_t> gray(t.depth.size());
         for (std::size_t i = 0; i < gray.size(); ++i)
             gray[i] = static_cast<std::uint16_t>(
                 std::lround(std::clamp(t.depth[i], 0.0f, 1.0f) * 65535.0f));
-        write_png16_gray(path, t.width, t.height, gray);
-        return;
+        return encode_png16_gray(t.width, t.height, gray);
     }
     std::vector<std::uint8_t> rgb(std::size_t(t.width) * std::size_t(t.height) * 3);
     for (std::size_t i = 0, n = rgb.size() / 3; i < n; ++i)
         std::copy_n(&t.color[i * 4], 3, &rgb[i * 3]);
-    write_png8(path, t.width, t.height, 3, rgb);
+    return encode_png8(t.width, t.height, 3, rgb);
 }
 
 }  // namespace
@@ -108,7 +100,9 @@ int run_bench(const BenchArguments& a) {
                              std::to_string(command_caps().max_frames) + " this run allows");
     check_samples_cap("--size", size.x, size.y, 1);
     const int threads = capped_threads("--threads", checked_thread_count("--threads", a.threads));
-    validate_png_output(a.out);
+    OutputFiles outputs;  // --out, checked before any work
+    check_output(outputs, a.out, {".png"}, "--out");
+    outputs.check_input(a.scene, "");
     if (a.no_avx512) hwy::DisableTargets(HWY_AVX2 - 1);  // the targets better than AVX2
 
     // Loading, shading setup and framing stay outside the timed loop, as in glbench.
@@ -164,7 +158,10 @@ int run_bench(const BenchArguments& a) {
                 result.stats.clusters_culled, result.stats.vertices_skipped, result.stats.vertex_ms,
                 result.stats.assembly_ms, result.stats.binning_ms);
     }
-    if (!a.out.empty()) write_frame(a.out, last->targets, mode);
+    if (!a.out.empty()) {
+        outputs.add(a.out, encode_frame(last->targets, mode));
+        outputs.commit();
+    }
 
     fmt::print(
         "RESULT scene={} mode={} w={} h={} threads={} tris={} ms_median={:.3f} "

@@ -120,6 +120,7 @@ int run_explain(const ExplainArguments& a) {
         options = make_render_options(a.render, scene);
     }
     ExplainOutput out(a.output, algorithm.title, algorithm.introduction);
+    if (algorithm.uses_scene) out.check_input(a.render.scene, "");
     algorithm.make(ExplainInput{a.render, scene, options, a.step}, out);
     out.commit();
     const std::vector<std::string> files = out.file_names();

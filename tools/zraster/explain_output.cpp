@@ -25,10 +25,29 @@ ExplainOutput::ExplainOutput(std::filesystem::path folder, std::string title,
     std::error_code error;
     if (std::filesystem::exists(folder_, error) && !std::filesystem::is_directory(folder_, error))
         throw InputError("-o", folder_.string() + " exists and is not a folder");
+    for (std::filesystem::path p = folder_; !p.empty() && !std::filesystem::exists(p, error);
+         p = p.parent_path()) {
+        created_.push_back(p);
+        if (p == p.parent_path()) break;
+    }
     std::filesystem::create_directories(folder_, error);
-    if (error)
+    if (error) {
+        std::error_code ignored;
+        for (const std::filesystem::path& p : created_) std::filesystem::remove(p, ignored);
         throw InputError("-o",
                          "cannot make the folder " + folder_.string() + ": " + error.message());
+    }
+}
+
+ExplainOutput::~ExplainOutput() {
+    if (committed_) return;
+    // Only folders left empty go (remove() refuses others): those this run made.
+    std::error_code error;
+    for (const std::filesystem::path& p : created_) std::filesystem::remove(p, error);
+}
+
+void ExplainOutput::check_input(const std::filesystem::path& path, const std::string& what) {
+    outputs_.check_input(path, what);
 }
 
 void ExplainOutput::add(const std::string& file, std::vector<std::uint8_t> bytes) {
@@ -97,6 +116,7 @@ void ExplainOutput::commit() {
     add("index.html", std::vector<std::uint8_t>(html.begin(), html.end()));
     files_.pop_back();  // index.html is listed last by file_names()
     outputs_.commit();
+    committed_ = true;
 }
 
 }  // namespace zraster::cli

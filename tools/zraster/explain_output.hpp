@@ -15,8 +15,15 @@ namespace zraster::cli {
 
 class ExplainOutput {
   public:
-    // Creates `folder` when missing; throws InputError("-o", ...) when it cannot be one.
+    // Creates `folder` when missing; throws InputError("-o", ...) when it cannot be one. The
+    // folders it creates are removed again unless commit() succeeds: a failed run leaves nothing.
     ExplainOutput(std::filesystem::path folder, std::string title, std::string introduction);
+    ~ExplainOutput();
+    ExplainOutput(const ExplainOutput&) = delete;
+    ExplainOutput& operator=(const ExplainOutput&) = delete;
+
+    // A file the run reads (the model): no picture may replace it (OutputFiles::check_input).
+    void check_input(const std::filesystem::path& path, const std::string& what);
 
     void still(const std::string& name, const RgbaImage& image, const std::string& caption);
     // name.svg, and name.png rasterized from the same figure.
@@ -41,6 +48,8 @@ class ExplainOutput {
     std::vector<Entry> entries_;
     std::vector<std::string> files_;
     OutputFiles outputs_;
+    std::vector<std::filesystem::path> created_;  // deepest first
+    bool committed_ = false;
 };
 
 }  // namespace zraster::cli

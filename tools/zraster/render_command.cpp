@@ -15,6 +15,7 @@
 #include "progress.hpp"
 #include "pvs_command.hpp"
 #include "render_outputs.hpp"
+#include "run_inputs.hpp"
 
 namespace zraster::cli {
 
@@ -75,6 +76,7 @@ void print_portal_stats(const RenderStats& s, const Scene& scene) {
 int run_render(const RenderArguments& a) {
     OutputFiles outputs;  // written together at the end, or not at all
     check_render_outputs(a, outputs);
+    check_run_inputs(a, outputs);
     // Wall-clock times of the stages, for --stats.
     using Clock = std::chrono::steady_clock;
     const auto since = [](Clock::time_point start) {

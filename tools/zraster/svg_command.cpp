@@ -3,21 +3,21 @@
 #include "svg_command.hpp"
 
 #include <zraster/error.hpp>
+#include <zraster/output_files.hpp>
 #include <zraster/svg.hpp>
 
 #include <fmt/format.h>
 
-#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
-#include <span>
 
 #include "command_line.hpp"
-#include "io/atomic_write.hpp"
+#include "output_maps.hpp"
 #include "progress.hpp"
 #include "render/material_alpha.hpp"
 #include "render_outputs.hpp"
+#include "run_inputs.hpp"
 
 namespace zraster::cli {
 namespace {
@@ -72,15 +72,10 @@ void add_svg_command(CLI::App& app, SvgArguments& a) {
 
 int run_svg(const SvgArguments& a) {
     // Every option is checked before any work, so a bad one leaves no file.
-    std::string ext = std::filesystem::path(a.output).extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (ext != ".svg") throw InputError(a.output, "the output must end in .svg");
-    const std::filesystem::path parent = std::filesystem::path(a.output).parent_path();
-    if (!parent.empty() && !std::filesystem::is_directory(parent))
-        throw InputError(a.output,
-                         "cannot write: directory '" + parent.string() + "' does not exist");
-    if (std::filesystem::is_directory(a.output))
-        throw InputError(a.output, "cannot write: is a directory");
+    if (a.output.empty()) throw InputError("-o", "the output path is empty");
+    OutputFiles outputs;
+    check_output(outputs, a.output, {".svg"}, "-o");
+    check_run_inputs(a.render, outputs);
     if (a.precision < 0 || a.precision > 6)
         throw InputError("--precision", "must be 0..6, not " + std::to_string(a.precision));
     if (!std::isfinite(a.edge_width) || a.edge_width < 0.0f)
@@ -103,9 +98,8 @@ int run_svg(const SvgArguments& a) {
     svg.merge_coplanar = !a.no_merge;
     SvgStats stats;
     const std::string document = render_svg(scene, options, svg, &stats);
-    io::write_file_atomically(
-        a.output,
-        std::span(reinterpret_cast<const std::uint8_t*>(document.data()), document.size()));
+    outputs.add(a.output, std::vector<std::uint8_t>(document.begin(), document.end()));
+    outputs.commit();
     fmt::print("wrote {}: {} polygons ({} after merging, {} paths), {} bytes\n", a.output,
                stats.polygons_in, stats.polygons_out, stats.paths, stats.bytes);
     return kExitOk;

@@ -2,6 +2,7 @@
 #include "view_command.hpp"
 
 #include <zraster/error.hpp>
+#include <zraster/output_files.hpp>
 
 #include <fmt/format.h>
 
@@ -9,6 +10,8 @@
 #include <filesystem>
 
 #include "command_line.hpp"
+#include "output_maps.hpp"
+#include "run_inputs.hpp"
 #include "view_script.hpp"
 #include "view_state.hpp"
 #include "view_window.hpp"
@@ -24,13 +27,13 @@ double median(std::vector<double> values) {
     return values[values.size() / 2];
 }
 
-void check_screenshot_path(const std::string& path) {
-    if (path.empty()) return;
-    const std::filesystem::path p(path);
-    if (p.extension() != ".png") throw InputError("--screenshot", path + " is not a .png file");
-    const std::filesystem::path folder = p.parent_path();
-    if (!folder.empty() && !std::filesystem::is_directory(folder))
-        throw InputError("--screenshot", "no folder " + folder.string());
+// --screenshot is checked before any work as every output is (OutputFiles); the window writes
+// it at exit through write_png8, the same mechanism.
+void check_screenshot_path(const ViewArguments& a) {
+    OutputFiles outputs;
+    check_output(outputs, a.screenshot, {".png"}, "--screenshot");
+    check_run_inputs(a.render, outputs);
+    outputs.check_input(a.script, "--script");
 }
 
 }  // namespace
@@ -52,7 +55,7 @@ void add_view_command(CLI::App& app, ViewArguments& a) {
 
 int run_view(const ViewArguments& a) {
     check_frame_arguments(a.render);
-    check_screenshot_path(a.screenshot);
+    check_screenshot_path(a);
     std::vector<ScriptEvent> script;
     if (!a.script.empty()) script = read_view_script(a.script);
     const Scene scene = load_scene_or_procedural(a.render.scene);

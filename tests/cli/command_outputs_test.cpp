@@ -1,0 +1,192 @@
+// Every subcommand's outputs go through OutputFiles: checked before any work (name limits, a
+// FIFO or device in the way, an input of the run), written all or nothing with one temporary
+// naming scheme; a failed run is exit 2, one line on stderr, and leaves no file or folder.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <sys/stat.h>
+
+#include "support/test_support.hpp"
+
+namespace zraster::test {
+namespace {
+
+const char kTriangle[] =
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+    "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+    "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+
+void write_text(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+std::string read_text(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::vector<std::string> names_in(const std::filesystem::path& dir) {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+        names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+TEST(CommandOutputs, AnOutputNameOverTheLimitIsExitTwo) {
+    const auto dir = temp_dir("outputs-long-name");
+    const std::string name = std::string(252, 'n') + ".svg";
+    const CommandResult r = run_zraster("svg builtin:cube --size 16x16 -o " + name, dir);
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_EQ(r.output, "zraster: -o " + name +
+                            ": cannot write: the file name is 256 bytes long, more than the file "
+                            "system's limit of 255\n");
+    EXPECT_TRUE(names_in(dir).empty());
+}
+
+// The temporary is ".zraster-PID-N.tmp", whatever the output's name: a name of 255 bytes works
+// for every subcommand.
+TEST(CommandOutputs, ANameOfTheLongestLengthIsWritten) {
+    const auto dir = temp_dir("outputs-longest-name");
+    const std::string svg = std::string(251, 's') + ".svg";
+    const CommandResult a = run_zraster("svg builtin:cube --size 16x16 -o " + svg, dir);
+    EXPECT_EQ(a.exit_code, 0) << a.output;
+    const std::string png = std::string(251, 'b') + ".png";
+    const CommandResult b =
+        run_zraster("bench builtin:cube --size 16x16 --frames 1 --warmup 0 --out " + png, dir);
+    EXPECT_EQ(b.exit_code, 0) << b.output;
+    EXPECT_EQ(names_in(dir), (std::vector<std::string>{png, svg}));
+}
+
+TEST(CommandOutputs, AnOutputMayNotOverwriteAnInput) {
+    const auto dir = temp_dir("outputs-input");
+    for (const char* name :
+         {"m.ply", "m.json", "m.png", "m.svg", "g.obj", "p.json", "bsp-tree.svg"})
+        write_text(dir / name, kTriangle);
+    const std::string tail = ": an output may not overwrite a file the run reads\n";
+    struct Case {
+        std::string arguments, message;
+    };
+    const std::vector<Case> cases = {
+        {"render m.ply --size 8x8 --points-out m.ply",
+         "zraster: --points-out m.ply: is the same file as the input m.ply" + tail},
+        {"render m.json --size 8x8 --camera-json m.json",
+         "zraster: --camera-json m.json: is the same file as the input m.json" + tail},
+        {"render m.png --size 8x8 -o ./m.png",
+         "zraster: -o ./m.png: is the same file as the input m.png" + tail},
+        {"svg m.svg --size 8x8 -o m.svg",
+         "zraster: -o m.svg: is the same file as the input m.svg" + tail},
+        {"render building:2x2 --pvs p.json --size 8x8 --camera-json p.json",
+         "zraster: --camera-json p.json: is the same file as the input --pvs p.json" + tail},
+        {"bench m.png --size 8x8 --frames 1 --warmup 0 --out m.png",
+         "zraster: --out m.png: is the same file as the input m.png" + tail},
+        {"batch g.obj -o out --size 8x8 --log g.obj",
+         "zraster: --log g.obj: is the same file as the input g.obj" + tail},
+        {"explain bsp bsp-tree.svg -o .",
+         "zraster: -o ./bsp-tree.svg: is the same file as the input bsp-tree.svg" + tail},
+    };
+    for (const Case& c : cases) {
+        const CommandResult r = run_zraster(c.arguments, dir);
+        EXPECT_EQ(r.exit_code, 2) << c.arguments << ": " << r.output;
+        EXPECT_EQ(r.output, c.message) << c.arguments;
+    }
+    for (const char* name :
+         {"m.ply", "m.json", "m.png", "m.svg", "g.obj", "p.json", "bsp-tree.svg"})
+        EXPECT_EQ(read_text(dir / name), kTriangle) << name;
+    EXPECT_EQ(names_in(dir), (std::vector<std::string>{"bsp-tree.svg", "g.obj", "m.json", "m.ply",
+                                                       "m.png", "m.svg", "p.json"}));
+}
+
+TEST(CommandOutputs, ABadLogLeavesNoOutputFolder) {
+    const auto dir = temp_dir("outputs-batch-log");
+    write_text(dir / "m.ply", kTriangle);
+    std::filesystem::create_directory(dir / "folder");
+    const CommandResult missing =
+        run_zraster("batch m.ply -o out --size 8x8 --log nodir/l.jsonl", dir);
+    EXPECT_EQ(missing.exit_code, 2) << missing.output;
+    EXPECT_EQ(missing.output,
+              "zraster: --log nodir/l.jsonl: cannot write: directory 'nodir' does not exist\n");
+    const CommandResult folder = run_zraster("batch m.ply -o out --size 8x8 --log folder", dir);
+    EXPECT_EQ(folder.exit_code, 2) << folder.output;
+    EXPECT_EQ(folder.output, "zraster: --log folder: cannot write: is a directory\n");
+    EXPECT_EQ(names_in(dir), (std::vector<std::string>{"folder", "m.ply"}));
+}
+
+// docs/batch.md: the batch stops with exit 2; the inputs finished before keep their outputs.
+TEST(CommandOutputs, ALogThatCannotBeWrittenIsExitTwo) {
+    if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+    const auto dir = temp_dir("outputs-batch-full");
+    write_text(dir / "m.ply", kTriangle);
+    const CommandResult r =
+        run_zraster("batch m.ply -o out --size 8x8 --progress none --log /dev/full", dir);
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_EQ(r.output,
+              "zraster: /dev/full: cannot write the log: No space left on device (the batch "
+              "stopped; the outputs of the inputs finished before stay, the same command again "
+              "does the rest)\n");
+}
+
+// A BSP tree of 10^4 random intersecting triangles is past its automatic budget.
+TEST(CommandOutputs, AFailedExplainLeavesNoFolder) {
+    const auto dir = temp_dir("outputs-explain");
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> coordinate(-1.0f, 1.0f);
+    std::ostringstream ply;
+    ply << "ply\nformat ascii 1.0\nelement vertex 30000\nproperty float x\nproperty float y\n"
+           "property float z\nelement face 10000\nproperty list uchar int vertex_indices\n"
+           "end_header\n";
+    for (int i = 0; i < 30000; ++i)
+        ply << coordinate(random) << ' ' << coordinate(random) << ' ' << coordinate(random) << '\n';
+    for (int i = 0; i < 10000; ++i)
+        ply << "3 " << 3 * i << ' ' << 3 * i + 1 << ' ' << 3 * i + 2 << '\n';
+    write_text(dir / "soup.ply", ply.str());
+    const CommandResult r = run_zraster("explain bsp soup.ply -o ex/deeper", dir);
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_NE(r.output.find("BSP tree: more than"), std::string::npos) << r.output;
+    EXPECT_EQ(names_in(dir), std::vector<std::string>{"soup.ply"});
+}
+
+// Past `ulimit -f` a write fails with EFBIG (SIGXFSZ is ignored): exit 2, no temporary left.
+TEST(CommandOutputs, AFileSizeLimitIsExitTwoAndLeavesNoTemporary) {
+    const auto dir = temp_dir("outputs-ulimit");
+    for (const std::string arguments : {"render sphere:2000 --size 512x512 -o a.png",
+                                        "svg sphere:2000 --size 256x256 -o a.svg"}) {
+        const CommandResult r = run_shell_line("cd '" + dir.string() + "' && ulimit -f 8 && '" +
+                                               ZRASTER_CLI + "' " + arguments + " 2>&1");
+        EXPECT_EQ(r.exit_code, 2) << arguments << ": " << r.output;
+        EXPECT_NE(r.output.find("cannot write: File too large (no output of this run was "
+                                "written)\n"),
+                  std::string::npos)
+            << r.output;
+        EXPECT_TRUE(names_in(dir).empty()) << arguments;
+    }
+}
+
+TEST(CommandOutputs, AFifoAtTheOutputIsRefused) {
+    const auto dir = temp_dir("outputs-fifo");
+    ASSERT_EQ(::mkfifo((dir / "d.png").c_str(), 0600), 0);
+    ASSERT_EQ(::mkfifo((dir / "d.svg").c_str(), 0600), 0);
+    const CommandResult bench =
+        run_zraster("bench builtin:cube --size 16x16 --frames 1 --warmup 0 --out d.png", dir);
+    EXPECT_EQ(bench.exit_code, 2) << bench.output;
+    EXPECT_EQ(bench.output,
+              "zraster: --out d.png: cannot write: exists and is not a regular file\n");
+    const CommandResult svg = run_zraster("svg builtin:cube --size 16x16 -o d.svg", dir);
+    EXPECT_EQ(svg.exit_code, 2) << svg.output;
+    EXPECT_EQ(svg.output, "zraster: -o d.svg: cannot write: exists and is not a regular file\n");
+    EXPECT_TRUE(std::filesystem::is_fifo(dir / "d.png"));
+    EXPECT_TRUE(std::filesystem::is_fifo(dir / "d.svg"));
+    EXPECT_EQ(names_in(dir), (std::vector<std::string>{"d.png", "d.svg"}));
+}
+
+}  // namespace
+}  // namespace zraster::test
