@@ -47,25 +47,23 @@ std::optional<ObjFallback> read_statements(const std::filesystem::path& obj_path
                                            const std::vector<Chunk>& chunks,
                                            const ReferencePolicy& policy, Statements& out) {
     out.policy = policy;
-    std::map<std::filesystem::path, std::vector<std::string>> read;
+    std::set<std::filesystem::path> read;
     for (const Chunk& chunk : chunks) {
         for (const Event& e : chunk.events) {
             out.events.push_back(&e);
             if (e.kind != EventKind::Library) continue;
             const MaterialLibraryChoice choice = resolve_material_library(obj_path, e.text, policy);
             LibraryLoad l{e.text, choice.file, choice.substitute, choice.warning, {}};
-            if (l.file) {
-                auto it = read.find(*l.file);
-                if (it == read.end()) {
-                    std::optional<std::vector<std::string>> names = library_materials(*l.file);
-                    if (!names)
-                        return ObjFallback{chunk.first_line + e.line + 1,
-                                           "material library " + l.file->string() +
-                                               " that Assimp may read differently"};
-                    it = read.emplace(*l.file, std::move(*names)).first;
-                    out.dissolve.read(*l.file);
-                }
-                l.materials = it->second;
+            // A library named again keeps no copy of its names: the first entry holds them (a
+            // file may name one library thousands of times).
+            if (l.file && read.insert(*l.file).second) {
+                std::optional<std::vector<std::string>> names = library_materials(*l.file);
+                if (!names)
+                    return ObjFallback{chunk.first_line + e.line + 1,
+                                       "material library " + l.file->string() +
+                                           " that Assimp may read differently"};
+                l.materials = std::move(*names);
+                out.dissolve.read(*l.file);
             }
             out.libraries.push_back(std::move(l));
         }
@@ -123,15 +121,20 @@ std::optional<std::uint32_t> Materials::index_of(const std::optional<std::string
 }
 
 // The material as Assimp's OBJ importer makes it: it reads the libraries from a generated OBJ
-// that repeats the file's mtllib (resolved) and usemtl statements in order.
+// that repeats the file's mtllib (resolved, each library once) and usemtl statements in order.
 const aiMaterial* Materials::assimp_material(const std::string& name) {
     if (!importer_) {
         std::size_t library = 0;
         std::string text;
+        // Each library once: a file may name the same one thousands of times, and Assimp would
+        // read (and keep the materials of) every repetition.
+        std::set<std::string> named;
         for (const Event* e : events_) {
             if (e->kind == EventKind::Library) {
                 const LibraryLoad& l = libraries_[library++];
-                if (l.file) text += "mtllib " + std::filesystem::absolute(*l.file).string() + "\n";
+                if (!l.file) continue;
+                const std::string file = std::filesystem::absolute(*l.file).string();
+                if (named.insert(file).second) text += "mtllib " + file + "\n";
             } else if (e->kind == EventKind::Material) {
                 text += "usemtl " + e->text + "\n";
             }

@@ -39,9 +39,9 @@ namespace zraster::io::obj {
 struct LibraryLoad {
     std::string name;
     std::optional<std::filesystem::path> file;
-    bool substitute = false;  // file is "<obj name>.mtl"
-    std::string warning;      // when file is not the library named
-    std::vector<std::string> materials;
+    bool substitute = false;             // file is "<obj name>.mtl"
+    std::string warning;                 // when file is not the library named
+    std::vector<std::string> materials;  // its names; empty where an earlier entry read the file
 };
 
 // The o, g, usemtl and mtllib statements of the whole file, in order, and what each mtllib

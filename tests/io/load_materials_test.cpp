@@ -168,6 +168,33 @@ TEST(LoadMaterials, MissingMaterialLibraryIsAWarningAndTheDefaultMaterial) {
     EXPECT_EQ(scene.materials[0].base_color, Material{}.base_color);
 }
 
+// A library named thousands of times, under two names, is read as if named once: the same
+// materials and warnings (its names were copied, and Assimp re-read it, for every repetition: a
+// 6 MB library named 3,000 times ran out of memory).
+TEST(LoadMaterials, ALibraryNamedManyTimesIsReadOnce) {
+    const auto dir = test::temp_dir("io-materials-repeated-mtl");
+    test::write_bytes(dir / "m.mtl", "newmtl red\nKd 1 0 0\nnewmtl blue\nKd 0 0 1\n");
+    std::string repeated;
+    for (int i = 0; i < 3000; ++i) repeated += i % 2 == 0 ? "mtllib m.mtl\n" : "mtllib ./m.mtl\n";
+    const std::string body =
+        std::string(kQuadObj) + "o a\nusemtl blue\nf 1/1 2/2 3/3\no b\nusemtl red\nf 1/1 3/3 4/4\n";
+    test::write_bytes(dir / "many.obj", repeated + body);
+    test::write_bytes(dir / "once.obj", "mtllib m.mtl\n" + body);
+    for (const bool pentagon : {false, true}) {  // (pentagons: the files left to Assimp)
+        SCOPED_TRACE(pentagon);
+        const std::string extra = pentagon ? "v 2 2 0\nf 1 2 5 3 4\n" : "";
+        test::write_bytes(dir / "many.obj", repeated + body + extra);
+        test::write_bytes(dir / "once.obj", "mtllib m.mtl\n" + body + extra);
+        std::vector<std::string> many_warnings, once_warnings;
+        const Scene many = load_scene(dir / "many.obj", {}, &many_warnings);
+        const Scene once = load_scene(dir / "once.obj", {}, &once_warnings);
+        ASSERT_EQ(many.materials.size(), once.materials.size());
+        EXPECT_EQ(material_of(many, "a").base_color, glm::vec3(0, 0, 1));
+        EXPECT_EQ(material_of(many, "b").base_color, glm::vec3(1, 0, 0));
+        EXPECT_EQ(many_warnings.size(), once_warnings.size());
+    }
+}
+
 TEST(LoadMaterials, UndefinedMaterialNameIsAWarning) {
     const auto dir = test::temp_dir("io-materials-undefined");
     test::write_bytes(dir / "m.mtl", "newmtl known\nKd 1 0 0\n");
