@@ -87,6 +87,22 @@ TEST(BatchInputs, ListFilesAndStandardInput) {
     EXPECT_NE(missing.output.find("nolist.txt"), std::string::npos) << missing.output;
 }
 
+// A list is text of paths: a device or a binary file is refused at its first line that cannot be
+// a path, without reading on (/dev/zero was read until 4 GB), and no output folder is made.
+TEST(BatchInputs, AListThatIsNotTextIsRefusedAtItsFirstBadLine) {
+    const auto dir = temp_dir("batch-list-bad");
+    write_text(dir / "long.txt", "in/m0.obj\n" + std::string(5000, 'a') + "\n");
+    for (const auto& [list, cause] :
+         {std::pair{"/dev/zero", "line 1 holds a NUL byte: not a text list of paths"},
+          {"long.txt", "line 2 is longer than 4096 bytes: not a list of paths"}}) {
+        const CommandResult r =
+            run_zraster(std::string("batch --list ") + list + " -o out --progress none", dir);
+        EXPECT_EQ(r.exit_code, 2) << r.output;
+        EXPECT_EQ(r.output, std::string("zraster: --list ") + list + ": " + cause + "\n");
+        EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+    }
+}
+
 TEST(BatchInputs, RecordsHaveTheDocumentedFieldsInOrder) {
     const auto dir = temp_dir("batch-schema");
     write_sphere_obj(dir / "in" / "good.obj", 8, 1);

@@ -8,6 +8,7 @@
 #include <cctype>
 #include <charconv>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <set>
 #include <system_error>
@@ -102,13 +103,38 @@ std::vector<std::string> read_path_list(const std::string& list, std::istream& s
         if (!file) throw InputError("--list " + list, "cannot open the list");
     }
     std::istream& in = list == "-" ? standard_input : file;
+    // Lines read within bounds: a device (/dev/zero) or a binary file is one endless line.
+    constexpr std::size_t kMaxLine = 4096, kMaxPaths = 10'000'000;
     std::vector<std::string> paths;
     std::string line;
-    while (std::getline(in, line)) {
+    std::size_t number = 1;
+    const auto end_line = [&] {
         if (line.ends_with('\r')) line.pop_back();
-        if (line.find_first_not_of(" \t") == std::string::npos) continue;
-        paths.push_back(line);
+        if (line.find_first_not_of(" \t") != std::string::npos) {
+            if (paths.size() == kMaxPaths)
+                throw InputError("--list " + list, "more than " + std::to_string(kMaxPaths) +
+                                                       " paths: split the list (--shard)");
+            paths.push_back(line);
+        }
+        line.clear();
+        ++number;
+    };
+    for (std::istreambuf_iterator<char> it(in), end; it != end; ++it) {
+        const char c = *it;
+        if (c == '\n') {
+            end_line();
+            continue;
+        }
+        if (c == '\0')
+            throw InputError("--list " + list, "line " + std::to_string(number) +
+                                                   " holds a NUL byte: not a text list of paths");
+        if (line.size() == kMaxLine)
+            throw InputError("--list " + list, "line " + std::to_string(number) +
+                                                   " is longer than " + std::to_string(kMaxLine) +
+                                                   " bytes: not a list of paths");
+        line.push_back(c);
     }
+    if (!line.empty()) end_line();
     if (in.bad()) throw InputError("--list " + list, "cannot read the list");
     return paths;
 }
