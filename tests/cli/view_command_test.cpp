@@ -219,10 +219,15 @@ TEST(ViewCommand, ScriptNumbersOutOfRangeAreRefusedWithTheirLine) {
                "zraster: s.txt: line 1: drag by 0,-20000 pixels: DX and DY must be within "
                "+-16384\n"},
           Case{"# zoom\n0 wheel -1e300\n",
-               "zraster: s.txt: line 2: wheel by -1e300 notches: must be within +-100\n"}}) {
+               "zraster: s.txt: line 2: wheel by -1e300 notches: must be within +-100\n"},
+          // (A resize is a frame of that size: --max-pixels holds, set to 1000 here.)
+          Case{"0 resize 200 200\n1 quit\n",
+               "zraster: s.txt: a resize to 200x200 at frame 0 is more pixels than --max-pixels "
+               "1000\n"}}) {
         SCOPED_TRACE(c.script);
         write_view_script(dir / "s.txt", c.script);
-        const CommandResult r = run_zraster("view sphere:20 --script s.txt", dir);
+        const CommandResult r =
+            run_zraster("view sphere:20 --size 16x16 --max-pixels 1000 --script s.txt", dir);
         EXPECT_EQ(r.exit_code, 2);
         EXPECT_EQ(r.output, c.message);
     }

@@ -58,6 +58,15 @@ int run_view(const ViewArguments& a) {
     check_screenshot_path(a);
     std::vector<ScriptEvent> script;
     if (!a.script.empty()) script = read_view_script(a.script);
+    // A window resized by the script is a frame of that size: within --max-pixels, as --size is.
+    for (const ScriptEvent& e : script)
+        if (e.event.kind == InputEvent::Kind::Resize &&
+            std::uint64_t(e.event.width) * std::uint64_t(e.event.height) > a.render.max_pixels)
+            throw InputError(a.script, "a resize to " + std::to_string(e.event.width) + "x" +
+                                           std::to_string(e.event.height) + " at frame " +
+                                           std::to_string(e.frame) +
+                                           " is more pixels than --max-pixels " +
+                                           std::to_string(a.render.max_pixels));
     const Scene scene = load_scene_or_procedural(a.render.scene);
     check_instanced_vertices(scene);
     const std::vector<glm::vec3> world = scene.world_positions();
