@@ -168,14 +168,19 @@ std::shared_ptr<const Texture> texture_image(py::handle object, const std::strin
     return std::make_shared<const Texture>(int(width), int(height), rgba, max_side);
 }
 
-int image_side(py::handle object, const std::string& argument) {
+long long integer_in_range(py::handle object, const std::string& argument, long long lo,
+                           long long hi) {
     if (py::isinstance<py::bool_>(object) || !py::hasattr(object, "__index__"))
         type_error(argument, "an integer", object);
-    const long long v = py::int_(py::reinterpret_borrow<py::object>(object)).cast<long long>();
-    if (v < 1 || v > kMaxViewport)
-        input_error(argument,
-                    "must be in 1.." + std::to_string(kMaxViewport) + ", got " + std::to_string(v));
-    return int(v);
+    const py::int_ value(py::reinterpret_borrow<py::object>(object));
+    if (value < py::int_(lo) || value > py::int_(hi))
+        input_error(argument, "must be in " + std::to_string(lo) + ".." + std::to_string(hi) +
+                                  ", got " + std::string(py::str(py::handle(value))));
+    return value.cast<long long>();
+}
+
+int image_side(py::handle object, const std::string& argument) {
+    return int(integer_in_range(object, argument, 1, kMaxViewport));
 }
 
 double finite_number(py::handle object, const std::string& argument) {

@@ -55,6 +55,11 @@ py::array_t<double> to_numpy(const glm::dvec3& v);
 // the argument.
 int image_side(py::handle object, const std::string& argument);
 
+// An integer (not a bool) in lo..hi, else TypeError / InputError naming the argument; compared
+// as a Python int first, so that 2**64 or -2**70 is a range error, not a failed conversion.
+long long integer_in_range(py::handle object, const std::string& argument, long long lo,
+                           long long hi);
+
 // A finite number (int or float), else TypeError / InputError naming the argument.
 double finite_number(py::handle object, const std::string& argument);
 

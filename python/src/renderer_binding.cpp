@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstring>
+#include <limits>
 #include <mutex>
 
 #include "arrays.hpp"
@@ -49,20 +50,14 @@ std::unique_ptr<PyRenderer> make_renderer(const py::object& width, const py::obj
     auto r = std::make_unique<PyRenderer>();
     r->width = image_side(width, "width");
     r->height = image_side(height, "height");
-    if (py::isinstance<py::bool_>(threads) || !py::hasattr(threads, "__index__"))
-        type_error("threads", "an integer", threads);
-    const long long t = py::int_(py::reinterpret_borrow<py::object>(threads)).cast<long long>();
-    if (t < 0 || t > 1 << 20)
-        input_error("threads", "must be >= 0 (0: every hardware thread), not " + std::to_string(t));
+    // (0: every hardware thread.)
+    const long long t = integer_in_range(threads, "threads", 0, 1 << 20);
     r->threads = cli::checked_thread_count("threads", int(t));
     r->post_arena = std::make_unique<tbb::task_arena>(
         r->threads > 0 ? r->threads : int(tbb::task_arena::automatic));
     if (!max_pixels.is_none()) {
-        if (py::isinstance<py::bool_>(max_pixels) || !py::hasattr(max_pixels, "__index__"))
-            type_error("max_pixels", "an integer", max_pixels);
         const long long limit =
-            py::int_(py::reinterpret_borrow<py::object>(max_pixels)).cast<long long>();
-        if (limit < 1) input_error("max_pixels", "must be positive");
+            integer_in_range(max_pixels, "max_pixels", 1, std::numeric_limits<long long>::max());
         r->max_pixels = std::uint64_t(limit);
     }
     const std::uint64_t pixels = std::uint64_t(r->width) * std::uint64_t(r->height);

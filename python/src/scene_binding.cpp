@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <utility>
 
@@ -123,9 +124,9 @@ std::shared_ptr<PyScene> scene_from_owned(std::shared_ptr<const Scene> owned, st
 }
 
 std::shared_ptr<PyScene> load(const py::object& path_object, const std::string& isolation,
-                              bool allow_outside_references, std::size_t max_instances,
-                              std::size_t max_triangles, int max_texture_side,
-                              std::size_t max_texture_bytes) {
+                              bool allow_outside_references, const py::object& max_instances,
+                              const py::object& max_triangles, const py::object& max_texture_side,
+                              const py::object& max_texture_bytes) {
     if (!py::isinstance<py::str>(path_object) && !py::hasattr(path_object, "__fspath__"))
         type_error("path", "a str or os.PathLike", path_object);
     const auto path = py::module_::import("os").attr("fspath")(path_object);
@@ -138,14 +139,17 @@ std::shared_ptr<PyScene> load(const py::object& path_object, const std::string& 
         options.isolation = LoadIsolation::InProcess;
     else
         input_error("isolation", "expected 'worker' or 'in-process', got '" + isolation + "'");
-    if (max_instances < 1) input_error("max_instances", "must be at least 1");
-    if (max_triangles < 1) input_error("max_triangles", "must be at least 1");
-    if (max_texture_side < 1) input_error("max_texture_side", "must be at least 1");
+    // The command's ranges (docs/limits.md).
+    constexpr long long kMost = std::numeric_limits<long long>::max();
     options.allow_outside_references = allow_outside_references;
-    options.max_instances = max_instances;
-    options.max_triangles = max_triangles;
-    options.max_texture_side = max_texture_side;
-    options.max_texture_bytes = max_texture_bytes;
+    options.max_instances =
+        std::size_t(integer_in_range(max_instances, "max_instances", 1, 1'000'000'000));
+    options.max_triangles =
+        std::size_t(integer_in_range(max_triangles, "max_triangles", 1, 1LL << 40));
+    options.max_texture_side =
+        int(integer_in_range(max_texture_side, "max_texture_side", 1, 1 << 16));
+    options.max_texture_bytes =
+        std::size_t(integer_in_range(max_texture_bytes, "max_texture_bytes", 1, kMost));
     std::shared_ptr<const Scene> owned;
     std::vector<std::string> warnings;
     {
@@ -288,10 +292,10 @@ zraster.load() returns a Scene too (its meshes owned by zraster).)")
         });
 
     m.def("load", &load, "path"_a, "isolation"_a = "worker", "allow_outside_references"_a = false,
-          "max_instances"_a = LoadOptions{}.max_instances,
-          "max_triangles"_a = LoadOptions{}.max_triangles,
-          "max_texture_side"_a = LoadOptions{}.max_texture_side,
-          "max_texture_bytes"_a = LoadOptions{}.max_texture_bytes,
+          "max_instances"_a = py::int_(LoadOptions{}.max_instances),
+          "max_triangles"_a = py::int_(LoadOptions{}.max_triangles),
+          "max_texture_side"_a = py::int_(LoadOptions{}.max_texture_side),
+          "max_texture_bytes"_a = py::int_(LoadOptions{}.max_texture_bytes),
           R"(Loads a scene: a mesh file or a procedural spec, as `zraster render` reads it.
 
 path: a file (OBJ with MTL, PLY, STL, glTF 2.0 .gltf/.glb, 3DS, OFF and the other formats

@@ -106,10 +106,24 @@ def test_bad_sizes(width, height, fragment):
 def test_bad_renderer_arguments():
     with raises(TypeError, "width", "integer", "float"):
         zraster.Renderer(10.5, 10)
-    with raises(zraster.InputError, "threads", ">= 0"):
+    with raises(zraster.InputError, "threads", "must be in 0.."):
         zraster.Renderer(10, 10, threads=-1)
     with raises(zraster.InputError, "more than max_pixels 50"):
         zraster.Renderer(10, 10, max_pixels=50)
+    # Integers past any C++ type are range errors naming the argument, not failed conversions.
+    with raises(zraster.InputError, "width", "must be in 1..16384", str(2**64)):
+        zraster.Renderer(2**64, 1)
+    with raises(zraster.InputError, "max_pixels", str(-2**70)):
+        zraster.Renderer(10, 10, max_pixels=-2**70)
+
+
+def test_bad_load_budgets():
+    for name, value in (("max_instances", -1), ("max_instances", 2**70), ("max_triangles", 0),
+                        ("max_texture_side", 2**63), ("max_texture_bytes", -5)):
+        with raises(zraster.InputError, name, "must be in", str(value)):
+            zraster.load("builtin:cube", **{name: value})
+    with raises(TypeError, "max_texture_side", "integer", "float"):
+        zraster.load("builtin:cube", max_texture_side=float("nan"))
 
 
 @pytest.mark.parametrize("arguments,fragments", [
