@@ -2,12 +2,14 @@
 
 #include "io/gltf_schema_check.hpp"
 #include "io/reference_policy.hpp"
+#include "io/text_util.hpp"
 
 #include <zraster/error.hpp>
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <utility>
 
 #include <system_error>
@@ -114,6 +116,15 @@ class Checker {
                 if (i == 0) data = glb_binary_;
             } else if (uri->is_string()) {
                 const std::string text = uri->get<std::string>();
+                // Assimp joins a buffer's URI to the model's folder whatever it is: an absolute
+                // path or a file: URL names a file it never opens (and could not be allowed).
+                std::string scheme = text.substr(0, 5);
+                for (char& c : scheme) c = char(std::tolower(static_cast<unsigned char>(c)));
+                if (text.starts_with('/') || scheme == "file:")
+                    throw InputError(path_.string(),
+                                     "buffer " + std::to_string(i) + "'s URI '" + one_line(text) +
+                                         "' is an absolute path: glTF buffers are read relative "
+                                         "to the model's folder only");
                 if (text.starts_with("data:")) {
                     data = data_uri_bytes(text);
                 } else if (const auto file = path_.parent_path() / text;

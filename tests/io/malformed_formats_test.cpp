@@ -95,6 +95,14 @@ std::vector<Malformed> malformed_files() {
          "which zraster does not read"},
         {"child.gltf", R"({"asset":{"version":"2.0"},"nodes":[{"children":[-1]}]})",
          "malformed glTF file: glTF node 0: child -1 is not a node of the file's 1"},
+        {"absolute.gltf",
+         R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":4,"uri":"/etc/passwd"}]})",
+         "buffer 0's URI '/etc/passwd' is an absolute path: glTF buffers are read relative to "
+         "the model's folder only"},
+        {"url.gltf",
+         R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":4,"uri":"FILE:///dev/zero"}]})",
+         "buffer 0's URI 'FILE:///dev/zero' is an absolute path: glTF buffers are read relative "
+         "to the model's folder only"},
         {"scene.gltf", R"({"asset":{"version":"2.0"},"scene":5,"scenes":[{"nodes":[]}]})",
          "malformed glTF file: glTF \"scene\" 5 is not one of the file's 1 scenes"},
         // JSON under another name: Assimp's glTF importers would read it.
