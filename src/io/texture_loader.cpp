@@ -69,11 +69,17 @@ TextureLoader::TextureLoader(const aiScene& scene, const std::filesystem::path& 
 
 bool TextureLoader::may_decode(const std::string& reference, std::uint64_t width,
                                std::uint64_t height) {
+    // Against what is left of the budget, not all of it: a model of many large textures would
+    // otherwise decode each one (up to the whole budget) only to drop it.
     const std::uint64_t decoded = width * height * 4;
-    if (decoded <= max_bytes_) return true;
+    const std::uint64_t left = max_bytes_ - std::min<std::uint64_t>(used_bytes_, max_bytes_);
+    if (decoded <= left) return true;
     warnings_.push_back("texture '" + reference + "' is " + std::to_string(width) + "x" +
-                        std::to_string(height) + " (" + byte_size(decoded) +
-                        " decoded), more than the textures' budget of " + byte_size(max_bytes_) +
+                        std::to_string(height) + " (" + byte_size(decoded) + " decoded), more " +
+                        (used_bytes_ == 0
+                             ? "than the textures' budget of " + byte_size(max_bytes_)
+                             : "than the " + byte_size(left) + " left of the textures' budget of " +
+                                   byte_size(max_bytes_)) +
                         ": using the material color (" + kBudgetOption + ")");
     return false;
 }

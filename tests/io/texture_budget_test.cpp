@@ -99,6 +99,18 @@ TEST(TextureBudget, AModelsTexturesStayWithinTheBudget) {
                                     "their budget of 39 KiB"),
               std::string::npos)
         << both_warnings[0];
+
+    // The second one does not fit what is left of a smaller budget: refused before it is decoded
+    // (a model of many large textures decoded each in turn only to drop it).
+    options.max_texture_bytes = 30'000;
+    std::vector<std::string> left_warnings;
+    const Scene left = load_scene(small, options, &left_warnings);
+    EXPECT_EQ(textures_of(left).size(), 1u);
+    ASSERT_EQ(left_warnings.size(), 1u);
+    EXPECT_NE(left_warnings[0].find("is 64x64 (16 KiB decoded), more than the 8 KiB left of the "
+                                    "textures' budget of 29 KiB: using the material color"),
+              std::string::npos)
+        << left_warnings[0];
 }
 
 }  // namespace
