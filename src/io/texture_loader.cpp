@@ -229,6 +229,16 @@ std::shared_ptr<const Texture> TextureLoader::load_external(const std::string& r
         warnings_.push_back("texture '" + reference + "' not found, using the material color");
     } else {
         try {
+            // A file larger than the whole texture budget is not read at all: an image file
+            // compresses its texels, so its decoded size would be past the budget too (a 3 GB
+            // file was read whole before its size was looked at).
+            std::error_code size_error;
+            const std::uintmax_t file_bytes = std::filesystem::file_size(found, size_error);
+            if (!size_error && file_bytes > max_bytes_)
+                throw InputError(found.string(), "the file is " + byte_size(file_bytes) +
+                                                     ", more than the textures' budget of " +
+                                                     byte_size(max_bytes_) + " (" + kBudgetOption +
+                                                     ")");
             const std::vector<std::uint8_t> bytes = read_file_bytes(found);
             const std::optional<ImageSize> size = encoded_image_size(bytes);
             if (!size ||

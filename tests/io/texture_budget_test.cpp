@@ -113,5 +113,22 @@ TEST(TextureBudget, AModelsTexturesStayWithinTheBudget) {
         << left_warnings[0];
 }
 
+// A texture file larger than the whole budget is not read (a 3 GB file named as a texture was
+// read whole before its size was looked at): its image could not fit once decoded either.
+TEST(TextureBudget, AFileLargerThanTheBudgetIsNotRead) {
+    const auto path = write_model("io-texture-file-bytes", 8, 8);
+    test::write_bytes(path.parent_path() / "a.png", std::string(50'000, 'x'));
+    LoadOptions options;
+    options.max_texture_bytes = 30'000;
+    std::vector<std::string> warnings;
+    const Scene scene = load_scene(path, options, &warnings);
+    EXPECT_EQ(textures_of(scene).size(), 1u);  // b.png
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("texture 'a.png' cannot be read (the file is 49 KiB, more than the "
+                               "textures' budget of 29 KiB"),
+              std::string::npos)
+        << warnings[0];
+}
+
 }  // namespace
 }  // namespace zraster
