@@ -165,6 +165,14 @@ TEST(CliLimits, EmptyValuesAndNewlinesInNames) {
         expect_refused(dir, arguments, ": an empty value (give one, or leave the option out)");
     expect_refused(dir, "render builtin:cube -o out.png --fovy ''",
                    "zraster: after --fovy: an empty value");
+    // Flags that would silently overrule one another.
+    expect_refused(dir, "render builtin:cube -o out.png --msaa", "zraster: --msaa: needs --aa N");
+    expect_refused(dir, "render builtin:cube -o out.png --ortho --fovy 30",
+                   "zraster: --fovy: has no effect with --ortho");
+    expect_refused(dir, "render builtin:cube -o out.png --infinite-far --far 10",
+                   "zraster: --far: with --infinite-far the far plane is at infinity");
+    expect_refused(dir, "render builtin:cube -o out.png --no-cull --cull back",
+                   "zraster: --no-cull: and --cull back both set the culling");
     expect_refused(dir, "render builtin:cube -o out.png --size 3840x2160 --aa 8",
                    "zraster: --aa: 8 times --size 3840x2160 is more than 16384 pixels a side");
     expect_refused(dir, "render builtin:cube -o out.png --size 4000x4000 --aa 4",

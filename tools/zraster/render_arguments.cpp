@@ -404,6 +404,17 @@ void check_frame_arguments(const RenderArguments& a) {
     if (a.aa < 1 || a.aa > 16) throw InputError("--aa", "must be in 1..16");
     if (a.msaa && a.visibility != "zbuffer")
         throw InputError("--msaa", "works with --visibility zbuffer");
+    // Flags that would silently overrule one another.
+    if (a.msaa && a.aa == 1)
+        throw InputError("--msaa", "needs --aa N: the samples a pixel side (2, 4 or 8)");
+    if (a.ortho && a.fovy)
+        throw InputError("--fovy",
+                         "has no effect with --ortho (the view's height is "
+                         "--ortho-height)");
+    if (a.infinite_far && a.far)
+        throw InputError("--far", "with --infinite-far the far plane is at infinity: give one");
+    if (a.no_cull && a.cull != "auto" && a.cull != "none")
+        throw InputError("--no-cull", "and --cull " + a.cull + " both set the culling: give one");
     if ((a.wireframe || a.hidden_line) && (a.visibility != "zbuffer" || a.msaa))
         throw InputError(a.wireframe ? "--wireframe" : "--hidden-line",
                          "works with --visibility zbuffer, without --msaa");
