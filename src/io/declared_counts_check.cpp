@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <fstream>
 #include <iterator>
 #include <optional>
@@ -80,6 +81,13 @@ struct PlyProperty {
     bool list = false;
     std::uint64_t bytes = 1;       // the scalar, or the list's length
     std::uint64_t item_bytes = 1;  // list items
+    std::string name;
+    bool item_signed = false, item_float = false;
+    // A face's vertex indices: each checked against the vertex count (Assimp wraps a value past
+    // its integer type, 2^32 to 0, and clamps others, without a word).
+    bool vertex_indices() const {
+        return list && (name == "vertex_indices" || name == "vertex_index");
+    }
 };
 
 // PLY lists: Assimp resizes a list to its declared length (8 bytes per entry) before reading the
@@ -104,7 +112,23 @@ void check_ply_lists(const std::filesystem::path& path, std::size_t header_bytes
                                             " record holds a list of " + std::to_string(length) +
                                             " entries, more than the rest of the file can hold");
     };
+    // The vertices the faces' indices may name: the "vertex" element's count.
+    std::uint64_t vertices = 0;
+    bool have_vertices = false;
+    for (const DeclaredElement& element : elements)
+        if (element.name == "vertex") {
+            vertices = element.count;
+            have_vertices = true;
+        }
     for (std::size_t e = 0; e < elements.size(); ++e) {
+        const bool check_indices = have_vertices && elements[e].name == "face";
+        const auto refuse_index = [&](std::uint64_t record, const std::string& value) {
+            throw InputError(
+                path.string(),
+                "malformed PLY file: face " + std::to_string(record) + " names vertex " + value +
+                    ", but the file has " + std::to_string(vertices) + " vertices" +
+                    (vertices > 0 ? " (0 to " + std::to_string(vertices - 1) + ")" : ""));
+        };
         if (layout[e].empty()) continue;  // Assimp skips the records of such an element
         for (std::uint64_t r = 0; r < elements[e].count && at < end; ++r) {
             if (ascii) {
@@ -121,6 +145,13 @@ void check_ply_lists(const std::filesystem::path& path, std::size_t header_bytes
                     const std::uint64_t length = parse_count(token).value_or(0);
                     if (length > available / 2 + 1) refuse(elements[e].name, length);
                     for (std::uint64_t i = 0; i < length && words >> token; ++i) {
+                        if (!check_indices || !p.vertex_indices()) continue;
+                        long long index = -1;
+                        const auto [end_of, error] =
+                            std::from_chars(token.data(), token.data() + token.size(), index);
+                        if (error != std::errc{} || end_of != token.data() + token.size())
+                            index = -1;
+                        if (index < 0 || std::uint64_t(index) >= vertices) refuse_index(r, token);
                     }
                 }
                 continue;
@@ -139,6 +170,21 @@ void check_ply_lists(const std::filesystem::path& path, std::size_t header_bytes
                 }
                 at += p.bytes;
                 if (length > (end - at) / p.item_bytes) refuse(elements[e].name, length);
+                if (check_indices && p.vertex_indices() && !p.item_float && p.item_bytes <= 8)
+                    for (std::uint64_t i = 0; i < length; ++i) {
+                        std::uint64_t value = 0;
+                        for (std::uint64_t b = 0; b < p.item_bytes; ++b) {
+                            const auto byte =
+                                static_cast<std::uint8_t>(file[at + i * p.item_bytes + b]);
+                            const std::uint64_t shift =
+                                big_endian ? 8 * (p.item_bytes - 1 - b) : 8 * b;
+                            value |= std::uint64_t{byte} << shift;
+                        }
+                        const std::uint64_t sign = std::uint64_t{1} << (8 * p.item_bytes - 1);
+                        const bool negative = p.item_signed && (value & sign) != 0;
+                        if (negative || value >= vertices)
+                            refuse_index(r, negative ? "a negative index" : std::to_string(value));
+                    }
                 at += length * p.item_bytes;
             }
         }
@@ -246,7 +292,12 @@ void check_ply(const std::filesystem::path& path, const std::string& head,
                 words >> type >> item;  // the list's length type, then its items'
                 property.list = true;
                 property.item_bytes = ply_scalar_size(item);
+                property.item_float =
+                    item == "float" || item == "float32" || item == "double" || item == "float64";
+                property.item_signed = item == "char" || item == "int8" || item == "short" ||
+                                       item == "int16" || item == "int" || item == "int32";
             }
+            words >> property.name;
             property.bytes = ply_scalar_size(type);
             layout.back().push_back(property);
             property_bytes.back() += ply_scalar_size(type);

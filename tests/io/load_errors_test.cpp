@@ -84,7 +84,7 @@ TEST(LoadErrors, PlyFaceIndexBeyondTheVertices) {
                                      "property float y\nproperty float z\nelement face 1\n"
                                      "property list uchar int vertex_indices\nend_header\n"
                                      "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"),
-                      "out of range");
+                      "face 0 names vertex 7, but the file has 3 vertices");
 }
 
 TEST(LoadErrors, ObjNaNAndInfinity) {

@@ -193,7 +193,20 @@ std::vector<Malformed> malformed_files() {
          "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
          "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
          "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n",
-         "a face names a vertex past the mesh's vertices"},
+         "malformed PLY file: face 0 names vertex 7, but the file has 3 vertices (0 to 2)"},
+        // Past a 32-bit index: Assimp wrapped it to vertex 0 without a word.
+        {"wrap.ply",
+         "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+         "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+         "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 4294967296\n",
+         "malformed PLY file: face 0 names vertex 4294967296, but the file has 3 vertices (0 to "
+         "2)"},
+        {"binary-index.ply",
+         std::string("ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+                     "property float y\nproperty float z\nelement face 1\n"
+                     "property list uchar int vertex_indices\nend_header\n") +
+             std::string(36, '\0') + std::string("\x03\0\0\0\0\x01\0\0\0\x05\0\0\0", 13),
+         "malformed PLY file: face 0 names vertex 5, but the file has 3 vertices (0 to 2)"},
         {"garbage.xyzzy", pseudo_random(4096, 4, '\0'),
          "no importer recognises its contents as a XYZZY file (a wrong extension, or not a 3D "
          "model)"},
