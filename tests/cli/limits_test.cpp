@@ -165,6 +165,9 @@ TEST(CliLimits, EmptyValuesAndNewlinesInNames) {
         expect_refused(dir, arguments, ": an empty value (give one, or leave the option out)");
     expect_refused(dir, "render builtin:cube -o out.png --fovy ''",
                    "zraster: after --fovy: an empty value");
+    expect_refused(dir, "bench builtin:cube --frames 1 --size 16384x16384",
+                   "zraster: --size: 16384x16384 is 268435456 pixels, more than the renderer's "
+                   "limit of 67108864");
     // Flags that would silently overrule one another.
     expect_refused(dir, "render builtin:cube -o out.png --msaa", "zraster: --msaa: needs --aa N");
     expect_refused(dir, "render builtin:cube -o out.png --ortho --fovy 30",

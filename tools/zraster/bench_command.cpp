@@ -99,6 +99,14 @@ int run_bench(const BenchArguments& a) {
                              std::to_string(a.frames + a.warmup) + " frames, more than the " +
                              std::to_string(command_caps().max_frames) + " this run allows");
     check_samples_cap("--size", size.x, size.y, 1);
+    // The renderer's pixel limit (render's --max-pixels default), named here: bench times frames
+    // of an ordinary size and has no flag to raise it.
+    const std::uint64_t pixels = std::uint64_t(size.x) * std::uint64_t(size.y);
+    if (pixels > RenderLimits{}.max_pixels)
+        throw InputError("--size", a.size + " is " + std::to_string(pixels) +
+                                       " pixels, more than the renderer's limit of " +
+                                       std::to_string(RenderLimits{}.max_pixels) +
+                                       " (render --max-pixels raises it; bench does not)");
     const int threads = capped_threads("--threads", checked_thread_count("--threads", a.threads));
     OutputFiles outputs;  // --out, checked before any work
     check_output(outputs, a.out, {".png"}, "--out");
