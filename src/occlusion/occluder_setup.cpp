@@ -119,10 +119,18 @@ bool setup_projected(const std::array<WindowVertex, 3>& v, double area2, int wid
     }
     const double margin = occluder_setup::kMarginBase + double(subpixel_margin) +
                           max_abs * occluder_setup::kMarginPerCoordinate;
-    t.x0 = std::max(static_cast<int>(std::ceil(xmin - 0.5)), 0);
-    t.x1 = std::min(static_cast<int>(std::floor(xmax - 0.5)), width - 1);
-    t.y0 = std::max(static_cast<int>(std::ceil(ymin + margin - 0.5)), 0);
-    t.y1 = std::min(static_cast<int>(std::floor(ymax - margin - 0.5)), height - 1);
+    // Clamped in double before the conversion: a vertex may lie billions of pixels off screen.
+    if (!std::isfinite(xmin + xmax + ymin + ymax + margin)) return false;
+    const auto first = [](double v, int end) {
+        return int(std::clamp(std::ceil(v), 0.0, double(end)));
+    };
+    const auto last = [](double v, int end) {
+        return int(std::clamp(std::floor(v), -1.0, double(end - 1)));
+    };
+    t.x0 = first(xmin - 0.5, width);
+    t.x1 = last(xmax - 0.5, width);
+    t.y0 = first(ymin + margin - 0.5, height);
+    t.y1 = last(ymax - margin - 0.5, height);
     if (t.x0 > t.x1 || t.y0 > t.y1) return false;
 
     // Edge lines: x at the center of row y0, and its step per row.

@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <span>
+#include <vector>
 
 #include "occlusion/occlusion_test_util.hpp"
 
@@ -45,6 +47,20 @@ TEST(OcclusionBuffer, WallHidesWhatIsBehindOnly) {
     EXPECT_EQ(b.test_pixel_rect(3, 5, 200, 100, 0.7f), R::Occluded);
     b.clear();
     EXPECT_EQ(b.test_rect({-0.5f, -0.5f}, {0.5f, 0.5f}, 0.6f), R::Visible);
+}
+
+// An occluder whose coordinates near 1e38 and 1e30 come out of the near-plane clip as corners
+// billions of pixels off screen (found by fuzz_mesh_view under UBSan: a pixel bound of -4e9
+// converted to int). Conservative as ever: nothing in front of it is hidden.
+TEST(OcclusionBuffer, OccludersFarOffScreenAreClampedBeforeConversion) {
+    OcclusionBuffer b(48, 23);
+    const std::vector<glm::vec4> clip = {
+        {-2.89286649e+38f, 5.17346971e+36f, 8.22665689e+36f, 8.21022307e+36f},
+        {0.490345478f, -1.48394799f, 3.61410308f, 3.80668211f},
+        {6.03870801e+29f, 9.09587324e+29f, -1.48445346e+30f, -1.48148751e+30f}};
+    const std::vector<std::uint32_t> indices = {0, 1, 2, 0, 2, 1};  // either winding
+    b.render_occluders(std::span<const glm::vec4>(clip), indices);
+    EXPECT_EQ(b.test_rect({-1.0f, -1.0f}, {1.0f, 1.0f}, 0.0f), R::Visible);
 }
 
 TEST(OcclusionBuffer, HalfWallHidesOnlyItsHalf) {
