@@ -20,11 +20,11 @@ void Structure::faces_until(std::size_t face) {
 }
 
 void Structure::object(const std::string& name) {
-    for (std::uint32_t i = 0; i < objects.size(); ++i) {
-        if (objects[i].name == name) {
-            object_ = i;  // the current mesh stays
-            return;
-        }
+    // The first object of that name, found by a map: a file of hundreds of thousands of `o`
+    // lines made a search through every object per line quadratic.
+    if (const auto it = first_object_.find(name); it != first_object_.end()) {
+        object_ = it->second;  // the current mesh stays
+        return;
     }
     create_object(name);
 }
@@ -55,6 +55,7 @@ void Structure::load_library(const std::vector<std::string>& materials) {
 void Structure::create_object(const std::string& name) {
     objects.push_back(ObjectPlan{name, {}});
     object_ = static_cast<std::uint32_t>(objects.size() - 1);
+    first_object_.try_emplace(name, object_);
     create_mesh(name);
     if (material_) meshes[mesh_].material = material_;
 }

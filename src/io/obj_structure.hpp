@@ -14,6 +14,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace zraster::io::obj {
@@ -72,6 +73,7 @@ class Structure {
     std::optional<std::string> material_;
     std::string group_;
     std::set<std::string> known_;  // names Assimp has a material for, its default one too
+    std::unordered_map<std::string, std::uint32_t> first_object_;  // name -> its first object
 };
 
 // The statements of every chunk replayed in file order; `face_prefix[k]` is the number of faces
