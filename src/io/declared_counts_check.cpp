@@ -277,7 +277,11 @@ void check_ply(const std::filesystem::path& path, const std::string& head,
         } else if (keyword == "element") {
             std::string name, count;
             words >> name >> count;
-            // No digits: Assimp reads 0 (and the header must still end, below).
+            // Digits only: Assimp reads "-1" as 0 and "3abc" as 3, without a word.
+            if (count.empty() || count.find_first_not_of("0123456789") != std::string::npos)
+                throw InputError(path.string(), "malformed PLY file: element '" + one_line(name) +
+                                                    "' declares the count '" + one_line(count) +
+                                                    "', not a number of 0 or more");
             elements.push_back({name, parse_count(count).value_or(0), 1});
             property_bytes.push_back(0);
             property_count.push_back(0);

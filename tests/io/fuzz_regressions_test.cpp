@@ -74,11 +74,12 @@ TEST(FuzzRegressions, PlyHeaderWithoutEnd) {
     expect_refused("ply-end-typo", "typo.ply",
                    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_headerx\n0\n",
                    cause);
-    // A count without digits used to end the check early, before the end_header test.
+    // A count without digits used to end the check early, before the end_header test; it is
+    // refused itself now.
     expect_refused("ply-count-letters", "letters.ply",
                    "ply\nformat binary_little_endian 1.0\nelement face t x\nproperty float z\n"
                    "element face 1\npr\n",
-                   cause);
+                   "element 'face' declares the count 't', not a number of 0 or more");
 }
 
 // fuzz_load_ply: Assimp resizes a list to its declared length before reading it: a binary

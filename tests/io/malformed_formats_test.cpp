@@ -201,6 +201,14 @@ std::vector<Malformed> malformed_files() {
          "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 4294967296\n",
          "malformed PLY file: face 0 names vertex 4294967296, but the file has 3 vertices (0 to "
          "2)"},
+        {"negative-count.ply",
+         "ply\nformat ascii 1.0\nelement vertex -1\nproperty float x\nend_header\n",
+         "malformed PLY file: element 'vertex' declares the count '-1', not a number of 0 or "
+         "more"},
+        {"letters-count.ply",
+         "ply\nformat ascii 1.0\nelement vertex 3abc\nproperty float x\nend_header\n",
+         "malformed PLY file: element 'vertex' declares the count '3abc', not a number of 0 or "
+         "more"},
         {"binary-index.ply",
          std::string("ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
                      "property float y\nproperty float z\nelement face 1\n"
