@@ -221,16 +221,27 @@ void check_glb(const std::filesystem::path& path, std::uintmax_t file_size,
         if (chunk == 0 && std::string_view(header + 4, 4) == "JSON") {
             json.resize(static_cast<std::size_t>(length));
             if (!in.read(json.data(), static_cast<std::streamsize>(length))) return;
-        } else if (chunk == 1 && std::string_view(header + 4, 4) == std::string_view("BIN\0", 4)) {
+        } else if (chunk > 0 && std::string_view(header + 4, 4) == std::string_view("BIN\0", 4)) {
+            // The specification allows one, right after the JSON chunk; Assimp reads only that
+            // one and would take buffer bytes from the wrong place otherwise. (A first chunk that
+            // is not JSON is the structure check's to name.)
+            if (chunk != 1 || binary)
+                throw InputError(path.string(),
+                                 "malformed GLB file: a BIN chunk as chunk " +
+                                     std::to_string(chunk) +
+                                     " (GLB allows one, right after the JSON chunk)");
             binary = length;
         }
         at += 8 + length;
     }
-    if (declared_size > file_size)
+    // The header's length is the whole file's (a shorter one made Assimp read past it and report
+    // a face past the vertices).
+    if (declared_size != file_size)
         throw InputError(path.string(),
                          "truncated or malformed GLB file: the GLB header declares " +
                              std::to_string(declared_size) + " bytes, the file holds " +
-                             std::to_string(file_size) + " (truncated?)");
+                             std::to_string(file_size) +
+                             (declared_size > file_size ? " (truncated?)" : ""));
     check_gltf_bounds(path, json, binary, options);
 }
 

@@ -73,6 +73,10 @@ std::vector<Malformed> malformed_files() {
          "not valid JSON: line 1, column 37: unexpected end of input; expected '[', '{', or a "
          "literal"},
         {"array.gltf", "[1, 2]", "not a glTF file: the JSON is not an object (a glTF file's is)"},
+        {"short-header.glb",
+         std::string("glTF\x02\0\0\0\x14\0\0\0\x1c\0\0\0JSON", 20) +
+             R"({"asset":{"version":"2.0"}} )",
+         "truncated or malformed GLB file: the GLB header declares 20 bytes, the file holds 48"},
         {"overflow.gltf", R"({"asset":{"version":"2.0"},"accessors":[{"count":1e400}]})",
          "not valid JSON: a number too large for a double ('1e400')"},
         // glTF rules Assimp does not check (gltf_schema_check.hpp).
