@@ -173,9 +173,15 @@ class Painter {
             }
             if (progress_ != nullptr && stats_.comparisons >= next_report_) {
                 next_report_ = stats_.comparisons + kReportEvery;
-                // Polygons drawn of those known (split pieces join as they are made).
-                reported_ =
-                    std::max(reported_, double(result.order.size()) / double(items_.size()));
+                // Polygons drawn of those known (split pieces join as they are made), or the
+                // comparison budget used where that is further: a first polygon overlapping
+                // a million others draws nothing for a long time, and the run ends at the
+                // budget at the latest.
+                const double drawn = double(result.order.size()) / double(items_.size());
+                const double budget = max_comparisons_ > 0
+                                          ? double(stats_.comparisons) / double(max_comparisons_)
+                                          : 0.0;
+                reported_ = std::max({reported_, drawn, std::min(budget, 1.0)});
                 progress_->report("painter's algorithm", reported_);
             }
         }
