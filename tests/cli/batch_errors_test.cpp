@@ -117,6 +117,8 @@ TEST(BatchErrors, BadUsageIsExitTwoWithNothingWritten) {
     write_sphere_obj(dir / "in" / "a.obj", 8, 1);
     write_text(dir / "empty" / "notes.txt", "no meshes here\n");
     write_text(dir / "bad-views.json", "[{\"eye\": [0, 0, 3]}]");
+    write_text(dir / "typo-views.json",
+               "[{\"eye\": [0, 0, 3], \"target\": [0, 0, 0], \"fov\": 30}]");
     const std::pair<std::string, std::string> cases[] = {
         {"in -o out --shard 3/3", "--shard"},
         {"in -o out --shard two", "--shard"},
@@ -125,6 +127,8 @@ TEST(BatchErrors, BadUsageIsExitTwoWithNothingWritten) {
         {"in -o out --views 0", "--views"},
         {"in -o out --views 2 --eye 1,2,3", "--views"},
         {"in -o out --views-json bad-views.json", "bad-views.json: camera 0: \"target\""},
+        {"in -o out --views-json typo-views.json",
+         "typo-views.json: camera 0: \"fov\": is not a camera field"},
         {"in -o out --views-json missing.json", "missing.json"},
         {"in -o out --intrinsics 50,50,8,8 --fovy 40", "--intrinsics"},
         {"in -o out --size 0x10", "--size"},

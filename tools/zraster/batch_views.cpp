@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <set>
 #include <fstream>
 #include <numbers>
 
@@ -162,6 +163,31 @@ void read_orthographic(const CameraReader& r, BatchView& view) {
 
 BatchView read_camera(const std::filesystem::path& file, std::size_t index, const Json& camera) {
     const CameraReader r(file, index, camera);
+    // The fields read here and those --camera-json writes; anything else is a typo ("fov") that
+    // would silently leave the default in place.
+    static const std::set<std::string> kFields = {"eye",
+                                                  "target",
+                                                  "up",
+                                                  "orbit",
+                                                  "fovy",
+                                                  "near",
+                                                  "far",
+                                                  "projection",
+                                                  "K",
+                                                  "camera_to_world",
+                                                  "width",
+                                                  "height",
+                                                  "convention",
+                                                  "convention_note",
+                                                  "pixels_per_unit",
+                                                  "principal_point",
+                                                  "depth"};
+    if (camera.is_object())
+        for (const auto& [key, value] : camera.items())
+            if (!kFields.contains(key))
+                r.fail(key,
+                       "is not a camera field (eye, target, up, orbit, fovy, near, far, K, "
+                       "camera_to_world, projection: docs/batch.md)");
     BatchView view;
     // ("projection": "orthographic" is what --camera-json writes for --ortho.)
     if (r.has("projection") && r.at("projection") != "orthographic" &&
