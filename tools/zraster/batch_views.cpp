@@ -9,9 +9,9 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <set>
 #include <fstream>
 #include <numbers>
+#include <set>
 
 #include "camera_ranges.hpp"
 #include "command_line.hpp"
