@@ -67,10 +67,14 @@ void check_attribute(const SceneView& scene, std::string_view source, std::size_
                " elements passes the end of the address space");
 }
 
-// The least vertex alpha of a mesh's colors; a non-finite component is refused (by its index:
-// shading would spread a NaN over the triangle, and the alpha mode could not be decided).
-float least_vertex_alpha(const SceneView& scene, std::string_view source, std::size_t m) {
+}  // namespace
+
+// A non-finite component is refused by its index: shading would spread a NaN over the triangle,
+// and the alpha mode could not be decided.
+float checked_vertex_colors(const SceneView& scene, std::string_view source, std::size_t m) {
     const AttributeView& colors = scene.meshes[m].colors;
+    check_attribute(scene, source, m, colors, "colors", "a color", kColorBytes,
+                    scene.meshes[m].positions.count);
     float least = 1.0f;
     for (std::size_t i = 0; i < colors.count; ++i) {
         const glm::vec4 c = load_vec4(colors, i);
@@ -81,6 +85,8 @@ float least_vertex_alpha(const SceneView& scene, std::string_view source, std::s
     }
     return least;
 }
+
+namespace {
 
 void check_indices_view(const SceneView& scene, std::string_view source, std::size_t m) {
     const IndexView& v = scene.meshes[m].indices;
@@ -239,14 +245,13 @@ void validate_scene(Frame& frame, const SceneView& scene, std::string_view sourc
                         n);
         check_attribute(scene, source, m, mesh.normals, "normals", "a normal", kPositionBytes, n);
         check_attribute(scene, source, m, mesh.uvs, "uvs", "a uv", kUvBytes, n);
-        check_attribute(scene, source, m, mesh.colors, "colors", "a color", kColorBytes, n);
         check_indices_view(scene, source, m);
         if (mesh.material >= scene.materials.size())
             refuse(mesh_label(scene, m) + ": material " + std::to_string(mesh.material) +
                    " past the scene's " + std::to_string(scene.materials.size()) + " materials");
         FrameMesh& frame_mesh = frame.meshes[m];
         frame_mesh = detail::frame_mesh(mesh);
-        frame_mesh.least_vertex_alpha = least_vertex_alpha(scene, source, m);
+        frame_mesh.least_vertex_alpha = checked_vertex_colors(scene, source, m);
         if ((!mesh.bounds || mesh.bounds->empty()) && n > 0)
             frame_mesh.bounds = position_bounds(frame_mesh);
     }

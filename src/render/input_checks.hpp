@@ -18,6 +18,11 @@ namespace zraster::detail {
 void validate_scene(Frame& frame, const SceneView& scene, std::string_view source,
                     const RenderOptions& options);
 
+// Mesh m's vertex colors, checked as validate_scene checks them (none or one per position,
+// every component finite; an InputError naming the mesh and the color otherwise): their least
+// alpha (1 without colors). The classic visibility algorithms check an owning Scene's with it.
+float checked_vertex_colors(const SceneView& scene, std::string_view source, std::size_t m);
+
 // The caller's targets with their pitches resolved (0: tightly packed), after checking their
 // size against the options, each pitch against a row and their alignment.
 TargetViews resolve_targets(const TargetViews& targets, const RenderOptions& options);

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <string>
 
+#include "render/input_checks.hpp"
 #include "render/material_sides.hpp"
 #include "visibility/frame_context.hpp"
 
@@ -85,21 +86,15 @@ FrameContext make_frame_context(const Scene& scene, const RenderOptions& options
         throw InputError("", "at most " + std::to_string(kMaxUserClipPlanes) +
                                  " user clip planes are supported");
     if (options.camera) check_camera(*options.camera, options.width, options.height);
-    // Vertex colors as the renderer takes them (render/input_checks.cpp): shading reads them
-    // by vertex, and a NaN would spread over whole triangles.
-    for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
-        const Mesh& mesh = scene.meshes[m];
-        if (mesh.colors.empty()) continue;
-        const std::string label = "mesh " + std::to_string(m) + " '" + mesh.name + "'";
-        if (mesh.colors.size() != mesh.positions.size())
-            throw InputError("", label + ": " + std::to_string(mesh.colors.size()) +
-                                     " colors for " + std::to_string(mesh.positions.size()) +
-                                     " positions (colors must be empty or one per position)");
-        for (std::size_t i = 0; i < mesh.colors.size(); ++i) {
-            const glm::vec4& c = mesh.colors[i];
-            if (!std::isfinite(c.x + c.y + c.z + c.w))
-                throw InputError("", label + ": colors[" + std::to_string(i) + "] is not finite");
-        }
+    // Vertex colors as the renderer checks them: shading reads them by vertex, and a NaN would
+    // spread over whole triangles.
+    if (std::any_of(scene.meshes.begin(), scene.meshes.end(),
+                    [](const Mesh& m) { return !m.colors.empty(); })) {
+        std::vector<MeshView> meshes;
+        std::vector<InstanceView> instances;
+        const SceneView view = view_of(scene, meshes, instances);
+        for (std::size_t m = 0; m < meshes.size(); ++m)
+            if (meshes[m].colors.count > 0) (void)detail::checked_vertex_colors(view, "", m);
     }
     FrameContext f;
     f.scene = &scene;
