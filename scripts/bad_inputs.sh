@@ -168,6 +168,13 @@ awk 'BEGIN { srand(7); print "ply\nformat ascii 1.0\nelement vertex 30000\nprope
              print "property list uchar int vertex_indices\nend_header";
              for (i = 0; i < 30000; ++i) print 2 * rand() - 1, 2 * rand() - 1, 2 * rand() - 1;
              for (i = 0; i < 10000; ++i) print 3, 3 * i, 3 * i + 1, 3 * i + 2 }' >soup10k.ply
+# A model's own texture (an output must not replace it), triangles without area, cameras that
+# cannot be built.
+"$zraster" render builtin:cube --size 4x4 -o self-texture.png >/dev/null 2>&1
+printf 'newmtl m\nKd 1 1 1\nmap_Kd self-texture.png\n' >selftex.mtl
+printf "mtllib selftex.mtl\n${tri}vt 0 0\nusemtl m\nf 1/1 2/1 3/1\n" >selftex.obj
+printf "${tri}f 1 1 1\nf 2 2 2\nf 3 3 3\n" >degenerate.obj
+printf '[{"eye": [1, 1, 1], "target": [1, 1, 1]}]' >same.views.json
 printf '#!/usr/bin/env bash\nulimit -f 8\nexec "%s" "$@"\n' "$zraster" >file-size-limit.sh
 chmod +x file-size-limit.sh
 
@@ -396,6 +403,10 @@ unchanged_row "--camera-json naming the model" self.json render self.json --size
 unchanged_row "-o naming the model (a model named .png)" self.png render self.png --size 8x8 -o self.png
 unchanged_row "svg -o naming the model" self.svg svg self.svg --size 8x8 -o self.svg
 unchanged_row "batch --log naming an input" self.obj batch self.obj -o out.d --size 8x8 --log self.obj
+unchanged_row "-o naming the model's own texture" self-texture.png render selftex.obj --size 8x8 -o self-texture.png
+row "OBJ whose every triangle has zero area" render degenerate.obj -o out.png
+row "--views-json camera whose eye is its target" batch tri.off -o out.d --size 8x8 --views-json same.views.json
+row "--sensor-max-range below the default minimum" render builtin:cube -o out.png --z-out out.npy --sensor kinect --sensor-max-range 0.2
 row "batch --log in a missing folder" batch tri.off -o out.d --size 8x8 --log nodir/l.jsonl
 row "batch --log naming a folder" batch tri.off -o out.d --size 8x8 --log folder.obj
 expected_left="./out.d "
