@@ -175,6 +175,9 @@ printf 'newmtl m\nKd 1 1 1\nmap_Kd self-texture.png\n' >selftex.mtl
 printf "mtllib selftex.mtl\n${tri}vt 0 0\nusemtl m\nf 1/1 2/1 3/1\n" >selftex.obj
 printf "${tri}f 1 1 1\nf 2 2 2\nf 3 3 3\n" >degenerate.obj
 printf '[{"eye": [1, 1, 1], "target": [1, 1, 1]}]' >same.views.json
+ones="$(printf '1,%.0s' $(seq 399))1"
+zeros="$(printf '0,%.0s' $(seq 399))0"
+printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"%s"}],"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"children":[%s]},{"mesh":0}],"scenes":[{"nodes":[%s]}],"scene":0}' "$b64" "$ones" "$zeros" >overdraw.gltf
 printf '#!/usr/bin/env bash\nulimit -f 8\nexec "%s" "$@"\n' "$zraster" >file-size-limit.sh
 chmod +x file-size-limit.sh
 
@@ -405,6 +408,7 @@ unchanged_row "svg -o naming the model" self.svg svg self.svg --size 8x8 -o self
 unchanged_row "batch --log naming an input" self.obj batch self.obj -o out.d --size 8x8 --log self.obj
 unchanged_row "-o naming the model's own texture" self-texture.png render selftex.obj --size 8x8 -o self-texture.png
 row "OBJ whose every triangle has zero area" render degenerate.obj -o out.png
+row "6 KB glTF drawing one screen-sized triangle 160,000 times" render overdraw.gltf -o out.png
 row "--views-json camera whose eye is its target" batch tri.off -o out.d --size 8x8 --views-json same.views.json
 row "--sensor-max-range below the default minimum" render builtin:cube -o out.png --z-out out.npy --sensor kinect --sensor-max-range 0.2
 row "batch --log in a missing folder" batch tri.off -o out.d --size 8x8 --log nodir/l.jsonl

@@ -99,6 +99,11 @@ struct RenderLimits {
     // max_vertices cannot usefully exceed 2^32 - 1.
     std::uint64_t max_triangles = 100'000'000;
     std::uint64_t max_vertices = 100'000'000;
+    // Binning's records: each triangle once per 64x64-pixel tile it overlaps (tens of bytes each).
+    // Small triangles need a few hundred MB at 100 million; large ones drawn over each other need
+    // far more (a 6 KB glTF placing one screen-sized triangle a million times: 20 GB), refused
+    // past this before the records are allocated (LimitExceeded "max_bin_bytes").
+    std::uint64_t max_bin_bytes = std::uint64_t{2} << 30;
 
     // The object-space visibility algorithms (visibility.hpp, and the SVG writer): their work
     // grows faster than their input (random, interpenetrating triangles split without end), so

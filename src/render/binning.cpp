@@ -1,6 +1,8 @@
 // Binning (binning.hpp).
 #include "render/binning.hpp"
 
+#include <zraster/error.hpp>
+
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -112,6 +114,15 @@ void bin_offsets(Frame& frame) {
     });
     // Grown empty (nothing of the old records is worth copying, and new storage is advised),
     // never shrunk (a smaller frame then a larger one would zero the difference again).
+    if (tile_base[tiles] > frame.options->limits.max_bin_bytes)
+        throw LimitExceeded(
+            "", "max_bin_bytes",
+            "binning needs " + std::to_string(tile_base[tiles]) +
+                " bytes of tile records (triangles times the tiles each covers), more than the "
+                "limit of " +
+                std::to_string(frame.options->limits.max_bin_bytes) +
+                " (RenderLimits::max_bin_bytes): large triangles drawn over each other many "
+                "times, or a frame too large for them");
     frame.bin_bytes = tile_base[tiles];
     const std::size_t bytes = tile_base[tiles] + kCacheLine;
     if (bytes > frame.bin_storage.capacity()) frame.bin_storage = {};

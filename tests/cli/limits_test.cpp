@@ -72,6 +72,14 @@ TEST(CliLimits, ImageSizes) {
         "out.png",
         dir);
     EXPECT_EQ(ok.exit_code, 0) << ok.output;
+    // The frame's tile records, named with the scene and the flag.
+    std::filesystem::remove(dir / "out.png");
+    expect_refused(dir, "render soup:2000 --size 64x64 --max-bin-bytes 4096 -o out.png",
+                   "(RenderLimits::max_bin_bytes): large triangles drawn over each other many "
+                   "times, or a frame too large for them; raise it with --max-bin-bytes N");
+    const CommandResult bins =
+        run_zraster("render soup:2000 --size 64x64 --max-bin-bytes 4096 -o out.png", dir);
+    EXPECT_EQ(bins.output.rfind("zraster: soup:2000: binning needs ", 0), 0u) << bins.output;
 }
 
 // Every numeric option has a range: past it, a clear refusal (or, for thread counts, a clamp

@@ -96,6 +96,42 @@ TEST(Limits, TrianglesAndVerticesOverInstances) {
     EXPECT_NO_THROW(render(scene, o));
 }
 
+// A screen-sized triangle drawn over itself many times: binning's records (one per triangle and
+// tile) are counted before they are allocated; exactly what the frame needs passes.
+TEST(Limits, BinRecordsOfLargeTrianglesDrawnOverEachOther) {
+    Scene scene = triangle_scene();
+    scene.instances[0].transform = glm::scale(glm::mat4(1.0f), glm::vec3(50.0f, 50.0f, 1.0f));
+    for (int i = 0; i < 999; ++i) scene.instances.push_back(scene.instances[0]);
+    Camera camera;
+    camera.eye = {0.5, 0.5, 3};
+    camera.target = {0.5, 0.5, 0};
+    RenderOptions o;
+    o.width = 512;
+    o.height = 512;
+    o.camera = camera;
+    o.limits.max_bin_bytes = 1 << 20;
+    std::uint64_t needed = 0;
+    try {
+        render(scene, o);
+        ADD_FAILURE() << "no LimitExceeded";
+    } catch (const LimitExceeded& e) {
+        EXPECT_EQ(e.limit(), "max_bin_bytes");
+        EXPECT_EQ(e.file(), "");  // (the caller names the scene: the command does)
+        const std::string cause = e.cause();
+        ASSERT_EQ(cause.rfind("binning needs ", 0), 0u) << cause;
+        needed = std::stoull(cause.substr(14));
+        EXPECT_NE(cause.find("more than the limit of 1048576 (RenderLimits::max_bin_bytes)"),
+                  std::string::npos)
+            << cause;
+    }
+    // 1000 triangles over every tile of the frame: tens of MB, not a small multiple of 1000.
+    EXPECT_GT(needed, std::uint64_t{1000} * 64 * 48);
+    o.limits.max_bin_bytes = needed - 1;
+    EXPECT_THROW(render(scene, o), LimitExceeded);
+    o.limits.max_bin_bytes = needed;
+    EXPECT_NO_THROW(render(scene, o));
+}
+
 // Millions of instances of one mesh: counted before the vertex stage sizes its arrays (whose
 // 32-bit vertex count would otherwise wrap).
 TEST(Limits, InstanceCountCannotWrapTheVertexCount) {

@@ -52,6 +52,7 @@ std::string limit_advice(const std::string& limit) {
         {"max_warnock_classifications", "--max-warnock-classifications"},
         {"max_abuffer_fragments", "--max-abuffer-fragments"},
         {"max_pixels", "--max-pixels"},
+        {"max_bin_bytes", "--max-bin-bytes"},
         {"max_instances", "--max-instances"},
         {"max_triangles", "--max-triangles"},
         {"max_memory", "--max-memory"},

@@ -80,6 +80,11 @@ void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
                    "Refuse images of more pixels than this (width * height)")
         ->check(whole_number(false))
         ->capture_default_str();
+    cmd.add_option("--max-bin-bytes", a.max_bin_bytes,
+                   "Refuse frames whose tile records (triangles times the tiles each covers) take "
+                   "more bytes than this")
+        ->check(whole_number(false))
+        ->capture_default_str();
     cmd.add_option("--threads", a.threads, "Worker threads (0: all cores)")->capture_default_str();
     cmd.add_option("--eye", a.eye, "Camera position X,Y,Z (default: frame the bounding sphere)");
     cmd.add_option("--target", a.target, "Point looked at X,Y,Z");
@@ -292,6 +297,7 @@ RenderOptions make_render_options(const RenderArguments& a,
     o.width = size.x;
     o.height = size.y;
     o.limits.max_pixels = a.max_pixels;
+    o.limits.max_bin_bytes = a.max_bin_bytes;
     o.limits.max_painter_comparisons = a.max_painter_comparisons;
     o.limits.max_bsp_polygons = a.max_bsp_polygons;
     o.limits.max_warnock_classifications = a.max_warnock_classifications;

@@ -45,14 +45,22 @@ RenderedFrame render_outputs(const RenderArguments& a, const Scene& scene, Outpu
     check_frame_arguments(a);
     RenderResult own;
     const RenderResult* result = &own;
-    if (renderer != nullptr && renders_with_pipeline(a)) {
-        // The renderer draws one scene after another: cluster bounds kept for one mesh would be
-        // matched to the next by its address and hash only, and are never reused anyway (the
-        // image is the same without them).
-        options.cluster_culling = false;
-        result = &renderer->render(scene, options);
-    } else {
-        own = render_frame(a, scene, options, &frame.visibility, &frame.abuffer);
+    try {
+        if (renderer != nullptr && renders_with_pipeline(a)) {
+            // The renderer draws one scene after another: cluster bounds kept for one mesh would
+            // be matched to the next by its address and hash only, and are never reused anyway
+            // (the image is the same without them).
+            options.cluster_culling = false;
+            result = &renderer->render(scene, options);
+        } else {
+            own = render_frame(a, scene, options, &frame.visibility, &frame.abuffer);
+        }
+    } catch (const LimitExceeded& e) {
+        if (!e.file().empty()) throw;
+        throw LimitExceeded(scene.name, e.limit(), e.cause());  // (a frame's limit: the scene's)
+    } catch (const InputError& e) {
+        if (!e.file().empty()) throw;
+        throw InputError(scene.name, e.cause());
     }
     const RenderTargets& t = result->targets;
     frame.stats = result->stats;
