@@ -1,0 +1,121 @@
+// Values a loader used to read a prefix of or skip without a word (issue 27's hostile runs):
+// OBJ and MTL words that are not numbers, OBJ faces past Assimp's corner limit and indices past
+// 2^31, glTF versions that are not 2.N, unusable normals, unknown cells file fields. Each is
+// refused with one line naming the file and the cause, or warned about saying what is assumed;
+// in zraster's OBJ reader and the Assimp path alike, in process and through the worker.
+#include <zraster/load.hpp>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "io/io_test_util.hpp"
+#include "io/load_with_warnings.hpp"
+#include "support/test_support.hpp"
+
+namespace zraster {
+namespace {
+
+constexpr LoadIsolation kIsolations[] = {LoadIsolation::InProcess, LoadIsolation::WorkerProcess};
+
+LoadOptions isolated(LoadIsolation isolation) {
+    LoadOptions o;
+    o.isolation = isolation;
+    return o;
+}
+
+// A line zraster's reader leaves to Assimp (a pentagon): put first, the file takes the Assimp
+// path, whose pre-scan must refuse what the reader refuses.
+const std::string kPentagon = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv -1 0 0\nf 1 2 3 4 5\n";
+
+struct Refusal {
+    std::string body;   // after the vertices
+    std::string cause;  // "{N}" stands for the file's vertex count
+    std::size_t line;   // counted from the body's first line as 1
+};
+
+// `body` after three vertices, read by the reader (the file as is) and by the Assimp path (the
+// pentagon first): the same cause, at the line it is on.
+void expect_obj_refused_both_ways(const std::string& test, const Refusal& r) {
+    SCOPED_TRACE(r.body);
+    const auto dir = test::temp_dir(test);
+    const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    struct Variant {
+        std::string name, text;
+        std::size_t first_line;
+        std::string vertices;
+    };
+    for (const Variant& v : {Variant{"reader.obj", tri + r.body, 4, "3"},
+                             Variant{"assimp.obj", kPentagon + tri + r.body, 10, "8"}}) {
+        SCOPED_TRACE(v.name);
+        const auto path = dir / v.name;
+        test::write_bytes(path, v.text);
+        std::string cause = r.cause;
+        if (const std::size_t at = cause.find("{N}"); at != std::string::npos)
+            cause.replace(at, 3, v.vertices);
+        for (const LoadIsolation isolation : kIsolations) {
+            try {
+                load_scene(path, isolated(isolation));
+                ADD_FAILURE() << "loaded";
+            } catch (const InputError& e) {
+                EXPECT_EQ(e.file(), path.string());
+                EXPECT_EQ(e.cause(),
+                          "line " + std::to_string(v.first_line + r.line - 1) + ": " + cause);
+            }
+        }
+    }
+}
+
+TEST(LoaderNonsense, ObjWordsThatAreNotNumbersAreRefusedByName) {
+    const std::vector<Refusal> cases = {
+        {"v 1e5x 0 0\nf 1 2 3\n", "'1e5x' is not a number", 1},
+        {"v 0x10 0 0\nf 1 2 3\n", "'0x10' is not a number", 1},
+        {"v 1,5 0 0\nf 1 2 3\n", "'1,5' is not a number", 1},
+        {"v 1.#INF 0 0\nf 1 2 3\n", "'1.#INF' is not a number", 1},
+        {"v 1 2 3#c\nf 1 2 3\n", "'3#c' is not a number", 1},
+        {"vt 0.5x 0\nf 1/1 2/1 3/1\n", "'0.5x' is not a number", 1},
+        {"vn 0 0 1e\nf 1//1 2//1 3//1\n", "'1e' is not a number", 1},
+        {"f 1x 2 3\n", "'1x' is not a number", 1},
+        {"f 1 2 0x3\n", "'0x3' is not a number", 1},
+        {"vt 0 0\nf 1/1 2/1x 3/1\n", "'1x' is not a number", 2},
+        {"f 1.5 2 3\n", "'1.5' is not a number", 1},
+    };
+    for (const Refusal& r : cases) expect_obj_refused_both_ways("nonsense-obj-numbers", r);
+}
+
+TEST(LoaderNonsense, ObjNumbersStillRead) {
+    // Comments, signs, exponents, a trailing point, nan and inf (a non-finite position is an
+    // error only when a face uses it).
+    const auto path = test::write_fixture("nonsense-obj-good", "good.obj",
+                                          "v +1 0 0 # a comment\nv 0 1.5E+0 0\nv 0 0 -2.\n"
+                                          "v nan inf -INF\nvn 0 0 1\nf 1//1 2//1 3//1\n");
+    for (const LoadIsolation isolation : kIsolations)
+        EXPECT_EQ(load_scene(path, isolated(isolation)).meshes.at(0).indices.size(), 3u);
+}
+
+TEST(LoaderNonsense, ObjFacesPastAssimpsCornerLimitAreRefusedInOurTerms) {
+    for (const std::size_t corners : {std::size_t{40'000}, std::size_t{100'000}}) {
+        std::string face = "f";
+        for (std::size_t k = 0; k < corners; ++k) face += " " + std::to_string(1 + k % 3);
+        expect_obj_refused_both_ways(
+            "nonsense-obj-corners",
+            {face + "\n", "a face of " + std::to_string(corners) + " corners; at most 32767", 1});
+    }
+}
+
+TEST(LoaderNonsense, ObjIndicesPast2To31NameTheIndex) {
+    expect_obj_refused_both_ways(
+        "nonsense-obj-2e31",
+        {"f 1 2 2147483648\n", "vertex index out of range (2147483648; the file has {N} vertices)",
+         1});
+    expect_obj_refused_both_ways(
+        "nonsense-obj-2e64",
+        {"f 1 2 18446744073709551617\n",
+         "vertex index out of range (18446744073709551617; the file has {N} vertices)", 1});
+}
+
+}  // namespace
+}  // namespace zraster
