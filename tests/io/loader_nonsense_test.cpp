@@ -117,5 +117,34 @@ TEST(LoaderNonsense, ObjIndicesPast2To31NameTheIndex) {
          "vertex index out of range (18446744073709551617; the file has {N} vertices)", 1});
 }
 
+TEST(LoaderNonsense, MtlWordsThatAreNotNumbersAreRefusedNamingTheLibrary) {
+    struct Case {
+        std::string statement, word;
+    };
+    for (const Case& c : {Case{"Kd 0.5abc 0 0", "0.5abc"}, Case{"Ns 1e5x", "1e5x"},
+                          Case{"d 0.5,", "0.5,"}, Case{"Ka 0 0 0x1", "0x1"}}) {
+        SCOPED_TRACE(c.statement);
+        const auto dir = test::temp_dir("nonsense-mtl");
+        const auto mtl = dir / "m.mtl";
+        test::write_bytes(mtl, "newmtl red\n" + c.statement + "\n");
+        const std::string body = "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n";
+        for (const std::string& text :
+             {"mtllib m.mtl\n" + body, "mtllib m.mtl\n" + kPentagon + body}) {
+            const auto obj = dir / "m.obj";
+            test::write_bytes(obj, text);
+            for (const LoadIsolation isolation : kIsolations)
+                test::expect_input_error(
+                    [&] { load_scene(obj, isolated(isolation)); }, obj,
+                    "material library m.mtl: line 2: '" + c.word + "' is not a number");
+        }
+    }
+    // Comments end a statement.
+    const auto dir = test::temp_dir("nonsense-mtl-good");
+    test::write_bytes(dir / "m.mtl", "newmtl red\nKd 1 0 0 # red\nd 0.5\nNs 10 #\n");
+    test::write_bytes(dir / "m.obj",
+                      "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n");
+    EXPECT_EQ(load_scene(dir / "m.obj").materials.size(), 2u);
+}
+
 }  // namespace
 }  // namespace zraster
