@@ -146,5 +146,17 @@ TEST(LoaderNonsense, MtlWordsThatAreNotNumbersAreRefusedNamingTheLibrary) {
     EXPECT_EQ(load_scene(dir / "m.obj").materials.size(), 2u);
 }
 
+TEST(LoaderNonsense, GltfVersionsThatAreNot2NAreRefused) {
+    const auto dir = test::temp_dir("nonsense-gltf-version");
+    for (const std::string version : {"2.0abc", "2", "02.0", "2.0.0", " 2.0", "2."}) {
+        SCOPED_TRACE(version);
+        const auto path = dir / "v.gltf";
+        test::write_bytes(path, R"({"asset":{"version":")" + version + R"("}})");
+        test::expect_input_error(
+            [&] { load_scene(path); }, path,
+            "glTF version '" + version + "' is not supported, only glTF 2.N (such as 2.0) is");
+    }
+}
+
 }  // namespace
 }  // namespace zraster

@@ -117,7 +117,7 @@ std::vector<Malformed> malformed_files() {
         {"noversion.gltf", R"({"asset": {}})",
          "not a glTF file: its \"asset\" has no \"version\" string"},
         {"v3.gltf", R"({"asset": {"version": "3.0"}})",
-         "glTF version '3.0' is not supported (2.x is)"},
+         "glTF version '3.0' is not supported, only glTF 2.N (such as 2.0) is"},
         // glTF 1.0, which Assimp would read as far as its importer goes.
         {"v1.gltf", R"({"asset": {"version": "1.0"}, "meshes": {}})",
          "glTF 1.0 is not supported, only glTF 2.0 is (convert the file to 2.0)"},
