@@ -12,6 +12,7 @@
 #include "io/confined_io_system.hpp"
 #include "io/declared_counts_check.hpp"
 #include "io/format_structure_check.hpp"
+#include "io/gltf_material_types.hpp"
 #include "io/input_file_check.hpp"
 #include "io/load_worker.hpp"
 #include "io/mtl_dissolve.hpp"
@@ -263,6 +264,8 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
         for (const std::string& refusal : refusals)
             warnings.push_back(io::refusal_text(refusal, "not read"));
     for (std::string& warning : assimp_warnings.take()) warnings.push_back(std::move(warning));
+    for (std::string& warning : io::gltf_material_type_warnings(path))
+        warnings.push_back(std::move(warning));
     MaterialTable materials(*ai, path, policy, options, scene, warnings);
     // (The document is read again only when a mesh has vertex colors.)
     bool any_colors = false;
