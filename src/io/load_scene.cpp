@@ -19,6 +19,7 @@
 #include "io/obj_index_scan.hpp"
 #include "io/obj_material_libraries.hpp"
 #include "io/obj_parser.hpp"
+#include "io/recomputed_normals.hpp"
 #include "io/reference_policy.hpp"
 #include "io/text_util.hpp"
 #include "io/texture_loader.hpp"
@@ -275,16 +276,22 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
         any_colors ? io::gltf_color_alpha(path) : io::GltfColorAlpha::AsRead;
     std::vector<unsigned> our_mesh(ai->mNumMeshes, kUnset);
     std::vector<std::string> labels(ai->mNumMeshes);
+    std::optional<std::string> recomputed;  // the first mesh whose normals were replaced
     for (unsigned m = 0; m < ai->mNumMeshes; ++m) {
         if (!referenced[m]) continue;
         labels[m] = mesh_label(*ai->mMeshes[m], m);
-        Mesh mesh = io::convert_mesh(
-            *ai->mMeshes[m], {labels[m], file, is_obj(path), color_alpha, !is_obj(path)}, warnings);
+        bool normals_recomputed = false;
+        Mesh mesh = io::convert_mesh(*ai->mMeshes[m],
+                                     {labels[m], file, is_obj(path), color_alpha, !is_obj(path)},
+                                     warnings, &normals_recomputed);
         if (mesh.indices.empty()) continue;
+        if (normals_recomputed && !recomputed) recomputed = labels[m];
         mesh.material = materials.index_of(ai->mMeshes[m]->mMaterialIndex);
         our_mesh[m] = static_cast<unsigned>(scene.meshes.size());
         scene.meshes.push_back(std::move(mesh));
     }
+
+    if (recomputed) warnings.push_back(io::recomputed_normals_warning(*recomputed));
 
     for (const io::NodeMesh& p : placements) {
         if (our_mesh[p.mesh] == kUnset) continue;

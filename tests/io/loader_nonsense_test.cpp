@@ -158,5 +158,70 @@ TEST(LoaderNonsense, GltfVersionsThatAreNot2NAreRefused) {
     }
 }
 
+// Every normal of a loaded scene is of unit length.
+void expect_unit_normals(const Scene& scene) {
+    for (const Mesh& mesh : scene.meshes)
+        for (const glm::vec3& n : mesh.normals) {
+            ASSERT_TRUE(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z));
+            ASSERT_NEAR(glm::length(n), 1.0f, 1e-5f);
+        }
+}
+
+TEST(LoaderNonsense, UnusableNormalsAreRecomputedWithOneWarningPerFile) {
+    const auto dir = test::temp_dir("nonsense-normals");
+    const std::string tris = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
+    const std::string obj_body =
+        "vn nan 0 0\nvn 0 0 0\nvn 0 0 1\nf 1//1 2//2 3//3\nf 1//3 2//3 4//1\n";
+    std::vector<std::filesystem::path> files;
+    files.push_back(dir / "reader.obj");
+    test::write_bytes(files.back(), tris + obj_body);
+    files.push_back(dir / "assimp.obj");
+    test::write_bytes(files.back(), kPentagon + tris + obj_body);
+    files.push_back(dir / "n.ply");
+    test::write_bytes(files.back(),
+                      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                      "property float y\nproperty float z\nproperty float nx\nproperty float ny\n"
+                      "property float nz\nelement face 1\nproperty list uchar int vertex_indices\n"
+                      "end_header\n0 0 0 nan 0 0\n1 0 0 0 0 1\n0 1 0 0 0 0\n3 0 1 2\n");
+    // glTF: positions then NORMALs with a NaN and a zero one.
+    const float data[18] = {0, 0, 0, 1, 0, 0, 0, 1, 0, std::nanf(""), 0, 0, 0, 0, 1, 0, 0, 0};
+    files.push_back(dir / "n.gltf");
+    test::write_bytes(
+        files.back(),
+        R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
+        R"("meshes":[{"name":"tri","primitives":[{"attributes":{"POSITION":0,"NORMAL":1}}]}],)"
+        R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3",)"
+        R"("min":[0,0,0],"max":[1,1,0]},{"bufferView":0,"byteOffset":36,"componentType":5126,)"
+        R"("count":3,"type":"VEC3"}],"bufferViews":[{"buffer":0,"byteLength":72}],)"
+        R"("buffers":[{"byteLength":72,"uri":"data:application/octet-stream;base64,)" +
+            test::base64(std::string(reinterpret_cast<const char*>(data), sizeof data)) +
+            R"("}]})");
+    for (const auto& path : files) {
+        SCOPED_TRACE(path.string());
+        for (const LoadIsolation isolation : kIsolations) {
+            const io::LoadedScene loaded = test::load_with_warnings(path, isolated(isolation));
+            expect_unit_normals(loaded.scene);
+            std::size_t count = 0;
+            for (const std::string& w : loaded.warnings) {
+                if (w.find("normals that are missing, not finite or of zero length") ==
+                    std::string::npos)
+                    continue;
+                ++count;
+                EXPECT_EQ(w.rfind(path.string() + ": normals that are missing, not finite or of "
+                                                  "zero length (first in mesh ",
+                                  0),
+                          0u)
+                    << w;
+                EXPECT_NE(w.find(") recomputed from the faces"), std::string::npos) << w;
+            }
+            EXPECT_EQ(count, 1u);
+        }
+    }
+    // Usable normals: no warning.
+    const auto good = dir / "good.obj";
+    test::write_bytes(good, tris + "vn 0 0 2\nf 1//1 2//1 3//1\n");
+    EXPECT_TRUE(test::load_with_warnings(good).warnings.empty());
+}
+
 }  // namespace
 }  // namespace zraster
