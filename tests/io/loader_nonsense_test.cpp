@@ -223,5 +223,39 @@ TEST(LoaderNonsense, UnusableNormalsAreRecomputedWithOneWarningPerFile) {
     EXPECT_TRUE(test::load_with_warnings(good).warnings.empty());
 }
 
+TEST(LoaderNonsense, CellsFileFieldsItDoesNotHaveAreRefusedByName) {
+    const auto dir = test::temp_dir("nonsense-cells");
+    test::write_bytes(dir / "t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    struct Case {
+        std::string top, instance, cell, portal, cause;
+    };
+    const std::string box = R"("box":[[-5,-5,-5],[5,5,5]])";
+    for (const Case& c : {
+             Case{R"(,"portal":[])", "", "", "",
+                  "(top level): \"portal\" is not a field of the file (zraster_cells, meshes, "
+                  "instances, cells, portals: docs/portals.md)"},
+             Case{"", R"(,"translation":[1,0,0])", "", "",
+                  "instances[0]: \"translation\" is not a field of an instance (name, mesh, "
+                  "matrix, translate, rotate_y_degrees, scale: docs/portals.md)"},
+             Case{"", "", R"(,"bbox":1)", "",
+                  "cells[0]: \"bbox\" is not a field of a cell (name, box, planes, instances: "
+                  "docs/portals.md)"},
+             Case{"", "", "", R"(,"name":"door")",
+                  "portals[0]: \"name\" is not a field of a portal (cells, corners: "
+                  "docs/portals.md)"},
+         }) {
+        SCOPED_TRACE(c.cause);
+        const auto path = dir / "two.cells.json";
+        test::write_bytes(
+            path,
+            R"({"zraster_cells":1,"meshes":{"t":"t.obj"},"instances":[{"name":"i","mesh":"t")" +
+                c.instance + R"(}],"cells":[{"name":"a",)" + box + R"(,"instances":["i"])" +
+                c.cell + R"(},{"name":"b","box":[[5,-5,-5],[6,5,5]],"instances":[]}],)" +
+                R"("portals":[{"cells":["a","b"],"corners":[[5,0,0],[5,1,0],[5,1,1]])" + c.portal +
+                "}]" + c.top + "}");
+        test::expect_input_error([&] { load_scene(path); }, path, c.cause);
+    }
+}
+
 }  // namespace
 }  // namespace zraster
