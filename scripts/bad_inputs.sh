@@ -172,14 +172,16 @@ printf "${tri}vn nan 0 0\nf 1//1 2//1 3//1\n" >normal-nan.obj
 printf "${ply_head}element face 1\nproperty list int int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n-3 0 1 2\n" >corners-negative.ply
 { printf "${ply_head}element face 1\nproperty list uint uint vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n40000"
   for k in $(seq 40000); do printf ' %d' $((k % 3)); done; echo; } >corners.ply
-# A million vertices (12 MB of zeros) and one triangle's indices after them.
+# A million vertices (all at the origin but the last two) and the indices of one triangle (the
+# first vertex and the last two) after them.
 mkdir -p million
-{ head -c 12000000 /dev/zero; printf '\0\0\0\0\x01\0\0\0\x02\0\0\0'; } >million/v.bin
+{ head -c 11999976 /dev/zero; printf '\0\0\x80\x3f\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x80\x3f\0\0\0\0'
+  printf '\0\0\0\0\x3e\x42\x0f\0\x3f\x42\x0f\0'; } >million/v.bin
 million_gltf() {  # PRIMITIVES NODES
     local primitives nodes
     primitives=$(printf '{"attributes":{"POSITION":0},"indices":1},%.0s' $(seq "$1"))
     nodes=$(printf '0,%.0s' $(seq "$2"))
-    printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":12000012,"uri":"v.bin"}],"bufferViews":[{"buffer":0,"byteLength":12000000},{"buffer":0,"byteOffset":12000000,"byteLength":12}],"accessors":[{"bufferView":0,"componentType":5126,"count":1000000,"type":"VEC3","min":[0,0,0],"max":[0,0,0]},{"bufferView":1,"componentType":5125,"count":3,"type":"SCALAR"}],"meshes":[{"primitives":[%s]}],"nodes":[{"mesh":0},{"children":[%s]}],"scenes":[{"nodes":[1]}],"scene":0}' "${primitives%,}" "${nodes%,}"
+    printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":12000012,"uri":"v.bin"}],"bufferViews":[{"buffer":0,"byteLength":12000000},{"buffer":0,"byteOffset":12000000,"byteLength":12}],"accessors":[{"bufferView":0,"componentType":5126,"count":1000000,"type":"VEC3","min":[0,0,0],"max":[1,1,0]},{"bufferView":1,"componentType":5125,"count":3,"type":"SCALAR"}],"meshes":[{"primitives":[%s]}],"nodes":[{"mesh":0},{"children":[%s]}],"scenes":[{"nodes":[1]}],"scene":0}' "${primitives%,}" "${nodes%,}"
 }
 million_gltf 300 1 >million/primitives300.gltf
 million_gltf 1 100000 >million/placed100k.gltf
@@ -196,6 +198,13 @@ awk 'BEGIN { srand(7); print "ply\nformat ascii 1.0\nelement vertex 30000\nprope
              print "property list uchar int vertex_indices\nend_header";
              for (i = 0; i < 30000; ++i) print 2 * rand() - 1, 2 * rand() - 1, 2 * rand() - 1;
              for (i = 0; i < 10000; ++i) print 3, 3 * i, 3 * i + 1, 3 * i + 2 }' >soup10k.ply
+# A model's own texture (an output must not replace it), triangles without area, cameras that
+# cannot be built.
+"$zraster" render builtin:cube --size 4x4 -o self-texture.png >/dev/null 2>&1
+printf 'newmtl m\nKd 1 1 1\nmap_Kd self-texture.png\n' >selftex.mtl
+printf "mtllib selftex.mtl\n${tri}vt 0 0\nusemtl m\nf 1/1 2/1 3/1\n" >selftex.obj
+printf "${tri}f 1 1 1\nf 2 2 2\nf 3 3 3\n" >degenerate.obj
+printf '[{"eye": [1, 1, 1], "target": [1, 1, 1]}]' >same.views.json
 printf '#!/usr/bin/env bash\nulimit -f 8\nexec "%s" "$@"\n' "$zraster" >file-size-limit.sh
 chmod +x file-size-limit.sh
 
@@ -440,6 +449,10 @@ unchanged_row "--camera-json naming the model" self.json render self.json --size
 unchanged_row "-o naming the model (a model named .png)" self.png render self.png --size 8x8 -o self.png
 unchanged_row "svg -o naming the model" self.svg svg self.svg --size 8x8 -o self.svg
 unchanged_row "batch --log naming an input" self.obj batch self.obj -o out.d --size 8x8 --log self.obj
+unchanged_row "-o naming the model's own texture" self-texture.png render selftex.obj --size 8x8 -o self-texture.png
+row "OBJ whose every triangle has zero area" render degenerate.obj -o out.png
+row "--views-json camera whose eye is its target" batch tri.off -o out.d --size 8x8 --views-json same.views.json
+row "--sensor-max-range below the default minimum" render builtin:cube -o out.png --z-out out.npy --sensor kinect --sensor-max-range 0.2
 row "batch --log in a missing folder" batch tri.off -o out.d --size 8x8 --log nodir/l.jsonl
 row "batch --log naming a folder" batch tri.off -o out.d --size 8x8 --log folder.obj
 expected_left="./out.d "

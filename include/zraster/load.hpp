@@ -83,13 +83,17 @@ struct LoadOptions {
 // material's color is used; a texture reduced to fit the limits; an unknown glTF alpha mode or a
 // material member of the wrong type; unusable normals) are
 // appended to *warnings when it is given, one line each, starting with the file name.
+// The other files the model named and the loader read (glTF buffers and images, material
+// libraries, textures, a cells file's mesh files and theirs), canonical and sorted, are appended
+// to *files_read when it is given: a caller that writes files must not replace them.
 // Throws InputError (one line naming the file and the cause) for a missing or unreadable file,
 // an unknown format, malformed or truncated content (an OBJ or MTL word that is not a number
-// included), no triangles, or NaN/Inf coordinates; LimitExceeded past a LoadOptions budget; and
-// with LoadIsolation::WorkerProcess when the importer process crashes, times out or runs out of
-// memory.
+// included), no triangles (or none with an area), or NaN/Inf coordinates; LimitExceeded past a
+// LoadOptions budget; and with LoadIsolation::WorkerProcess when the importer process crashes,
+// times out or runs out of memory.
 ZRASTER_API Scene load_scene(const std::filesystem::path& path, const LoadOptions& options = {},
-                             std::vector<std::string>* warnings = nullptr);
+                             std::vector<std::string>* warnings = nullptr,
+                             std::vector<std::filesystem::path>* files_read = nullptr);
 
 // Potentially visible sets as `zraster pvs` writes them (docs/portals.md): {"zraster_pvs": 1,
 // "scene", "method", "slack", "cells", "steps", "sets": [{"cell": name, "bounded": bool,

@@ -61,7 +61,12 @@ class CellsReader {
         }
         validate_cell_graph(graph_, boxes, names, file_);
         scene_.cells = std::make_shared<const CellGraph>(std::move(graph_));
-        return {std::move(scene_), std::move(warnings_)};
+        // The mesh files themselves, and what their loaders read.
+        std::vector<std::filesystem::path> files_read = policy_.files_read();
+        files_read.insert(files_read.end(), files_read_.begin(), files_read_.end());
+        std::sort(files_read.begin(), files_read.end());
+        files_read.erase(std::unique(files_read.begin(), files_read.end()), files_read.end());
+        return {std::move(scene_), std::move(warnings_), std::move(files_read)};
     }
 
   private:
@@ -141,7 +146,7 @@ class CellsReader {
                 fail(at, check.reason + ": refused" + check.advice());
             if (is_cells_file(file)) fail(at, "a cells file cannot place another cells file");
             LoadedScene& loaded = meshes_[name];
-            loaded.scene = load_scene(file, options_, &loaded.warnings);
+            loaded.scene = load_scene(file, options_, &loaded.warnings, &files_read_);
         }
     }
 
@@ -342,6 +347,7 @@ class CellsReader {
     std::vector<std::string> warnings_;  // of the meshes placed
     CellGraph graph_;
     std::map<std::string, LoadedScene> meshes_;
+    std::vector<std::filesystem::path> files_read_;  // by the mesh files' loaders
     std::vector<std::size_t> placed_by_;  // per scene instance: its element of "instances"
     std::map<std::string, std::pair<std::uint32_t, std::uint32_t>> instance_ranges_;
     std::map<std::string, std::uint32_t> cell_index_;

@@ -11,6 +11,7 @@
 #include "io/cells_file.hpp"
 #include "io/confined_io_system.hpp"
 #include "io/declared_counts_check.hpp"
+#include "io/drawable_check.hpp"
 #include "io/format_structure_check.hpp"
 #include "io/gltf_material_types.hpp"
 #include "io/input_file_check.hpp"
@@ -171,10 +172,14 @@ io::LoadedScene load_any(const std::filesystem::path& path, const LoadOptions& o
 }  // namespace
 
 Scene load_scene(const std::filesystem::path& path, const LoadOptions& options,
-                 std::vector<std::string>* warnings) {
+                 std::vector<std::string>* warnings,
+                 std::vector<std::filesystem::path>* files_read) {
     io::LoadedScene loaded = load_any(path, options);
+    io::check_some_triangle_has_area(loaded.scene, path.string());
     if (warnings != nullptr)
         warnings->insert(warnings->end(), loaded.warnings.begin(), loaded.warnings.end());
+    if (files_read != nullptr)
+        files_read->insert(files_read->end(), loaded.files_read.begin(), loaded.files_read.end());
     return std::move(loaded.scene);
 }
 
@@ -305,6 +310,7 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
     }
     // One line each: they quote names and paths from the file.
     for (const std::string& w : warnings) loaded.warnings.push_back(file + ": " + io::one_line(w));
+    loaded.files_read = policy.files_read();
     return loaded;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 #include <zraster/scene.hpp>
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,8 @@ namespace zraster::io {
 struct LoadedScene {
     Scene scene;
     std::vector<std::string> warnings;  // one line each, starting with the file name
+    // The files besides the model the reader read, canonical (ReferencePolicy::files_read).
+    std::vector<std::filesystem::path> files_read;
 };
 
 }  // namespace zraster::io

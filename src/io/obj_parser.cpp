@@ -263,7 +263,11 @@ std::variant<LoadedScene, ObjFallback> read_obj(const std::filesystem::path& pat
     std::vector<obj::MeshOutcome> built =
         obj::build_meshes(chunks, offsets.faces, attributes, structure.meshes, output.meshes);
     obj::check_finite_positions(built, chunks, offsets, structure, output.meshes, file);
-    return obj::assemble_scene(path, built, structure, output.meshes, statements, options);
+    std::variant<LoadedScene, ObjFallback> result =
+        obj::assemble_scene(path, built, structure, output.meshes, statements, options);
+    if (LoadedScene* loaded = std::get_if<LoadedScene>(&result))
+        loaded->files_read = policy.files_read();
+    return result;
 }
 
 }  // namespace zraster::io

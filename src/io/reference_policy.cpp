@@ -9,14 +9,14 @@
 namespace zraster::io {
 
 ReferencePolicy::ReferencePolicy(const std::filesystem::path& model_path, bool allow_outside) {
-    if (allow_outside) return;
     std::error_code ec;
+    model_ = std::filesystem::canonical(model_path, ec);
+    if (allow_outside) return;
     const std::filesystem::path folder =
         model_path.parent_path().empty() ? std::filesystem::path(".") : model_path.parent_path();
     root_ = std::filesystem::canonical(folder, ec);
     // A model whose folder cannot be resolved reads nothing besides itself.
     if (ec) root_ = "/nonexistent-zraster-model-folder";
-    model_ = std::filesystem::canonical(model_path, ec);
 }
 
 ReferencePolicy::Check ReferencePolicy::check(const std::filesystem::path& file) const {
@@ -47,7 +47,16 @@ ReferencePolicy::Check ReferencePolicy::check(const std::filesystem::path& file)
     if (::access(resolved.c_str(), R_OK) != 0)
         return {Verdict::Refused,
                 "cannot be read (" + std::generic_category().message(errno) + ")"};
+    if (resolved != model_) {
+        const std::lock_guard lock(read_->mutex);
+        read_->files.insert(resolved);
+    }
     return {Verdict::Readable, {}};
+}
+
+std::vector<std::filesystem::path> ReferencePolicy::files_read() const {
+    const std::lock_guard lock(read_->mutex);
+    return {read_->files.begin(), read_->files.end()};
 }
 
 std::string ReferencePolicy::Check::advice() const {

@@ -5,7 +5,11 @@
 // symbolic links are followed (LoadOptions::allow_outside_references lifts the folder rule).
 #pragma once
 #include <filesystem>
+#include <memory>
+#include <mutex>
+#include <set>
 #include <string>
+#include <vector>
 
 namespace zraster::io {
 
@@ -37,7 +41,17 @@ class ReferencePolicy {
     // The advice appended to a refusal's message.
     static const char* how_to_allow();
 
+    // The files besides the model that check() found readable, canonical and sorted: what the
+    // loader read, which a command's outputs must not replace. Copies of a policy share the list
+    // (the texture loader holds one).
+    std::vector<std::filesystem::path> files_read() const;
+
   private:
+    struct ReadLog {
+        std::mutex mutex;
+        std::set<std::filesystem::path> files;
+    };
+    std::shared_ptr<ReadLog> read_ = std::make_shared<ReadLog>();
     std::filesystem::path root_;   // the model's folder, canonical; empty: anywhere
     std::filesystem::path model_;  // the model itself, canonical (readable wherever it is)
 };

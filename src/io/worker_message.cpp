@@ -149,6 +149,14 @@ LoadedScene decode_scene(Reader& in, const LoadOptions& options) {
     const std::uint32_t warnings = in.get_count(4, "warnings");
     for (std::uint32_t i = 0; i < warnings; ++i)
         loaded.warnings.push_back(InputError("", in.get_string("a warning")).cause());
+    const std::uint32_t files_read = in.get_count(4, "files read");
+    for (std::uint32_t i = 0; i < files_read; ++i) {
+        std::string file = in.get_string("a file read");
+        // (Used only to keep outputs off them: a hostile child can at most refuse an output.)
+        check(file.starts_with('/') && file.find('\0') == std::string::npos,
+              "file read " + std::to_string(i) + " is not an absolute path");
+        loaded.files_read.emplace_back(std::move(file));
+    }
 
     const std::uint32_t texture_count = in.get_count(8, "textures");
     std::vector<std::shared_ptr<const Texture>> textures;
@@ -274,6 +282,8 @@ std::string encode_scene_message(const LoadedScene& loaded) {
     out.put_string(scene.name);
     out.put(static_cast<std::uint32_t>(loaded.warnings.size()));
     for (const std::string& w : loaded.warnings) out.put_string(w);
+    out.put(static_cast<std::uint32_t>(loaded.files_read.size()));
+    for (const std::filesystem::path& f : loaded.files_read) out.put_string(f.string());
 
     std::map<const Texture*, std::uint32_t> texture_index;
     std::vector<const Texture*> textures;

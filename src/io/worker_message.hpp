@@ -7,14 +7,16 @@
 //
 // Version 2 added the materials' alpha (alpha_mode, alpha_cutoff, the opacity texture); version 3
 // their double_sided flag; version 4 the limit-exceeded kind (a LoadOptions budget's refusal
-// keeps the budget's name); version 5 the meshes' vertex colors.
+// keeps the budget's name); version 5 the meshes' vertex colors; version 6 the files the child
+// read besides the model.
 //
 // Layout, all integers and floats little-endian (the host's; parent and child are the same
 // binary), no padding:
 //
-//   header   "ZRWM" | u32 version (5) | u32 kind | u32 0 | u64 payload bytes | payload
+//   header   "ZRWM" | u32 version (6) | u32 kind | u32 0 | u64 payload bytes | payload
 //   kind 1   scene:
 //              string source | u32 n, n strings (warnings)
+//              u32 n, n strings (files read besides the model: absolute paths)
 //              u32 n, n textures: u32 width | u32 height | width*height*4 bytes (RGBA8, level 0)
 //              u32 n >= 1, n materials: string name | f32 base_color[3] | f32 ambient | f32
 //                diffuse | f32 specular[3] | f32 shininess | f32 opacity (in [0, 1]) |
@@ -44,7 +46,7 @@
 
 namespace zraster::io {
 
-inline constexpr std::uint32_t kWorkerMessageVersion = 5;
+inline constexpr std::uint32_t kWorkerMessageVersion = 6;
 inline constexpr std::size_t kWorkerHeaderBytes = 24;
 inline constexpr std::size_t kMaxWorkerString = 65536;
 inline constexpr int kMaxWorkerTextureSide = 16384;

@@ -119,7 +119,28 @@ TEST(BatchErrors, BadUsageIsExitTwoWithNothingWritten) {
     write_text(dir / "bad-views.json", "[{\"eye\": [0, 0, 3]}]");
     write_text(dir / "typo-views.json",
                "[{\"eye\": [0, 0, 3], \"target\": [0, 0, 0], \"fov\": 30}]");
+    // Cameras the library would refuse later, in the flags' terms: refused here in the file's.
+    write_text(dir / "same-views.json", "[{\"eye\": [1, 1, 1], \"target\": [1, 1, 1]}]");
+    write_text(dir / "up-views.json",
+               "[{\"eye\": [0, 3, 0], \"target\": [0, 0, 0], \"up\": [0, 2, 0]}]");
+    const std::string pose = "\"near\": 0.1, \"far\": 10, \"width\": 8, \"height\": 8";
+    write_text(dir / "k-views.json",
+               "[{\"K\": [[0, 0, 0], [0, 0, 0], [0, 0, 1]], \"camera_to_world\": [[1, 0, 0, 0], "
+               "[0, 1, 0, 0], [0, 0, 1, 5], [0, 0, 0, 1]], " +
+                   pose + "}]");
+    write_text(dir / "pose-views.json",
+               "[{\"K\": [[8, 0, 4], [0, 8, 4], [0, 0, 1]], \"camera_to_world\": [[0, 0, 0, 0], "
+               "[0, 0, 0, 0], [0, 0, 0, 5], [0, 0, 0, 1]], " +
+                   pose + "}]");
     const std::pair<std::string, std::string> cases[] = {
+        {"in -o out --views-json same-views.json",
+         "same-views.json: camera 0: \"target\": the eye and the target are the same point"},
+        {"in -o out --views-json up-views.json",
+         "up-views.json: camera 0: \"up\": the up direction is parallel"},
+        {"in -o out --views-json k-views.json",
+         "k-views.json: camera 0: \"K\": fx must be in 0.001..1e9 pixels, not 0"},
+        {"in -o out --views-json pose-views.json",
+         "pose-views.json: camera 0: \"camera_to_world\": the rotation's forward (z)"},
         {"in -o out --shard 3/3", "--shard"},
         {"in -o out --shard two", "--shard"},
         {"in -o out --depth tiff", "--depth"},

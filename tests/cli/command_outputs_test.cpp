@@ -105,6 +105,56 @@ TEST(CommandOutputs, AnOutputMayNotOverwriteAnInput) {
                                                        "m.png", "m.svg", "p.json"}));
 }
 
+// The files a model names (textures, buffers, material libraries) are inputs of the run too, read
+// in process or by the loader's worker process alike.
+TEST(CommandOutputs, AnOutputMayNotOverwriteAFileTheModelReads) {
+    const auto dir = temp_dir("outputs-model-files");
+    ASSERT_EQ(run_zraster("render builtin:cube --size 4x4 -o m.png", dir).exit_code, 0);
+    std::filesystem::copy_file(dir / "m.png", dir / "img.png");
+    const std::string texture = read_text(dir / "m.png");
+    write_text(dir / "m.mtl", "newmtl t\nKd 1 1 1\nmap_Kd m.png\n");
+    write_text(dir / "m.obj",
+               "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nusemtl t\nf 1/1 2/1 3/1\n");
+    const float xyz[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    write_text(dir / "g.bin", std::string(reinterpret_cast<const char*>(xyz), sizeof xyz));
+    write_text(
+        dir / "g.gltf",
+        R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
+        R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],)"
+        R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3",)"
+        R"("min":[0,0,0],"max":[1,1,0]}],"bufferViews":[{"buffer":0,"byteLength":36}],)"
+        R"("buffers":[{"uri":"g.bin","byteLength":36}],)"
+        R"("materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}}],)"
+        R"("textures":[{"source":0}],"images":[{"uri":"img.png"}]})");
+    const std::string canonical = std::filesystem::canonical(dir).string();
+    const std::string tail = ": an output may not overwrite a file the run reads\n";
+    const std::pair<std::string, std::string> cases[] = {
+        {"render m.obj --size 8x8 -o m.png",
+         "zraster: -o m.png: is the same file as the input file named by m.obj " + canonical +
+             "/m.png" + tail},
+        {"--load-in-process render m.obj --size 8x8 -o c.png --normal-out ./m.png",
+         "zraster: --normal-out ./m.png: is the same file as the input file named by m.obj " +
+             canonical + "/m.png" + tail},
+        {"render g.gltf --size 8x8 -o img.png",
+         "zraster: -o img.png: is the same file as the input file named by g.gltf " + canonical +
+             "/img.png" + tail},
+    };
+    for (const auto& [arguments, message] : cases) {
+        SCOPED_TRACE(arguments);
+        const CommandResult r = run_zraster(arguments, dir);
+        EXPECT_EQ(r.exit_code, 2) << r.output;
+        EXPECT_EQ(r.output, message);
+    }
+    // batch: m.obj's image would be ./m.png, its own texture: that file fails, the rest is kept.
+    const CommandResult batch = run_zraster("batch m.obj -o . --size 8x8 --progress none", dir);
+    EXPECT_EQ(batch.exit_code, 3) << batch.output;
+    EXPECT_NE(read_text(dir / "batch.jsonl").find("is the same file as the input file named by"),
+              std::string::npos)
+        << read_text(dir / "batch.jsonl");
+    EXPECT_EQ(read_text(dir / "m.png"), texture);
+    EXPECT_EQ(read_text(dir / "img.png"), texture);
+}
+
 TEST(CommandOutputs, ABadLogLeavesNoOutputFolder) {
     const auto dir = temp_dir("outputs-batch-log");
     write_text(dir / "m.ply", kTriangle);

@@ -312,6 +312,8 @@ TEST(DepthCameraCommand, BadFlagsExitTwoNamingTheOptionWithoutWritingAnything) {
         EXPECT_NE(r.output.find(c.option), std::string::npos) << r.output;
         EXPECT_EQ(r.output.find('\n'), r.output.size() - 1) << r.output;
         EXPECT_TRUE(std::filesystem::is_empty(dir)) << r.output;
+        // Only the command's own names: no library field name ("min_range") in a message.
+        EXPECT_EQ(r.output.find('_'), std::string::npos) << r.output;
     }
 }
 

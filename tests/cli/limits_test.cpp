@@ -201,6 +201,10 @@ TEST(CliLimits, CameraNumbersHaveRanges) {
          "--ortho-height: must be in 1e-20..1e30 scene units, not 1e+31"},
         {"--up 1e-40,0,0", "--up: the direction is zero (or shorter than 1e-30)"},
         {"--up 1e31,0,0", "--up: 1e+31 is beyond the +-1e30 a direction may use"},
+        {"--eye 1,2,3 --target 1,2,3", "--target: the eye and the target are the same point"},
+        {"--eye 0,0,3 --target 0,0,0 --up 0,0,-2",
+         "--target: the up direction is parallel to the view direction (from the eye to the "
+         "target)"},
         {"--light-dir 1e300,0,0", "--light-dir: 1e+300 is beyond the +-1e30 a direction may use"},
         {"--point-light 1e39,0,0",
          "--point-light: 1e+39 is beyond the +-1e32 a camera or light may use"},

@@ -125,7 +125,8 @@ TEST(FuzzRegressions, GlbHeaderLongerThanTheFile) {
 // view: 72 VEC3 floats from byte 1 of an 864-byte view read one byte past the buffer
 // (heap-buffer-overflow in Assimp's memcpy).
 TEST(FuzzRegressions, GltfAccessorPastItsBufferView) {
-    const std::string buffer(36, '\0');
+    const float xyz[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};  // a triangle with an area
+    const std::string buffer(reinterpret_cast<const char*>(xyz), sizeof xyz);
     const auto gltf = [&](const std::string& accessor_offset, const std::string& view_length) {
         return R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":)"
                R"("data:application/octet-stream;base64,)" +

@@ -151,6 +151,35 @@ TEST(LoadErrors, OnlyPointsAndLines) {
                       "no triangles");
 }
 
+TEST(LoadErrors, EveryTriangleWithoutArea) {
+    const std::string cause = "every one of its 3 triangles has zero area";
+    // Repeated corners, collinear corners, one point: in zraster's OBJ reader and through Assimp.
+    const char* const objs[] = {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 1 1\nf 2 2 2\nf 3 3 3\n",
+                                "v 0 0 0\nv 1 1 1\nv 2 2 2\nf 1 2 3\nf 3 2 1\nf 1 3 2\n",
+                                "v 5 5 5\nv 5 5 5\nv 5 5 5\nf 1 2 3\nf 2 3 1\nf 3 1 2\n"};
+    for (const char* obj : objs)
+        expect_load_error(errors_fixture("degenerate", "d.obj", obj), cause);
+    const std::string ply =
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+        "property float z\nelement face 3\nproperty list uchar int vertex_indices\nend_header\n"
+        "0 0 0\n1 1 1\n2 2 2\n3 0 1 2\n3 2 1 0\n3 0 0 1\n";
+    for (const LoadIsolation isolation : {LoadIsolation::InProcess, LoadIsolation::WorkerProcess}) {
+        LoadOptions options;
+        options.isolation = isolation;
+        const auto path = errors_fixture("degenerate-ply", "d.ply", ply);
+        test::expect_input_error([&] { load_scene(path, options); }, path, cause);
+    }
+    // One triangle with an area among them is a scene (the rasterizer skips the others).
+    EXPECT_EQ(load_scene(errors_fixture("degenerate-one", "d.obj",
+                                        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 1 1\nf 1 2 3\n"))
+                  .meshes.at(0)
+                  .indices.size(),
+              6u);
+    // Corners a float apart near 1e-30 still make an area.
+    EXPECT_NO_THROW(load_scene(errors_fixture("degenerate-tiny", "t.obj",
+                                              "v 0 0 0\nv 1e-30 0 0\nv 0 1e-30 0\nf 1 2 3\n")));
+}
+
 TEST(LoadErrors, TooManyTriangles) {
     const auto path = errors_fixture("limit-triangles", "two.obj",
                                      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n");

@@ -136,6 +136,31 @@ TEST(LoadReferences, ObjLibrariesAndTexturesOutsideAreNotReadWithAWarning) {
     EXPECT_EQ(t.materials.at(1).base_color_texture, nullptr);
 }
 
+// What the loader read besides the model is reported (canonical), so that a command can keep its
+// outputs off it; what it refused is not.
+TEST(LoadReferences, FilesReadAreReported) {
+    const auto dir = fixture("refs-files-read");
+    const auto folder = std::filesystem::canonical(dir / "model");
+    test::write_bytes(dir / "model" / "m.gltf", triangle_gltf("inside.bin"));
+    test::write_bytes(dir / "model" / "in.mtl", "newmtl red\nKd 1 0 0\n");
+    test::write_bytes(
+        dir / "model" / "m.obj",
+        "mtllib in.mtl\nmtllib ../outside.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\n"
+        "f 1 2 3\n");
+    for (const LoadIsolation isolation : {LoadIsolation::InProcess, LoadIsolation::WorkerProcess}) {
+        LoadOptions options;
+        options.isolation = isolation;
+        std::vector<std::filesystem::path> gltf_files, obj_files;
+        load_scene(dir / "model" / "m.gltf", options, nullptr, &gltf_files);
+        EXPECT_EQ(gltf_files, std::vector<std::filesystem::path>{folder / "inside.bin"});
+        load_scene(dir / "model" / "m.obj", options, nullptr, &obj_files);
+        EXPECT_EQ(obj_files, std::vector<std::filesystem::path>{folder / "in.mtl"});
+    }
+    // Assimp's OBJ path reports the same as zraster's reader.
+    EXPECT_EQ(io::load_scene_with_assimp(dir / "model" / "m.obj", in_process()).files_read,
+              std::vector<std::filesystem::path>{folder / "in.mtl"});
+}
+
 // The triangle of triangle_gltf("inside.bin") with a base-color texture whose image is `uri`.
 std::string textured_gltf(const std::string& uri) {
     std::string text = triangle_gltf("inside.bin");

@@ -333,7 +333,7 @@ std::string quad_message() {
     update_bounds(quad);
     Scene scene = scene_from_meshes({quad});
     scene.instances[0].name.clear();
-    return io::encode_scene_message({scene, {}});
+    return io::encode_scene_message({scene, {}, {}});
 }
 
 template <typename T>
@@ -346,6 +346,7 @@ std::string huge_count_message() {
     std::string payload;
     append(payload, std::uint32_t{0});  // source
     append(payload, std::uint32_t{0});  // warnings
+    append(payload, std::uint32_t{0});  // files read
     append(payload, std::uint32_t{0});  // textures
     append(payload, std::uint32_t{1});  // materials
     append(payload, std::uint32_t{0});  // name
@@ -406,8 +407,8 @@ TEST(WorkerMessage, RefusesMalformedMessages) {
     expect_invalid("", "invalid result: truncated header");
     expect_invalid("XRWM" + good.substr(4), "invalid result: bad magic");
     std::string version = good;
-    version[4] = 4;  // a child of a zraster before vertex colors
-    expect_invalid(version, "format version 4, expected 5");
+    version[4] = 5;  // a child of a zraster before the files read
+    expect_invalid(version, "format version 5, expected 6");
     expect_invalid(good.substr(0, good.size() - 1), "the header says");
     std::string longer = good + "x";
     expect_invalid(longer, "the header says");
@@ -421,7 +422,7 @@ TEST(WorkerMessage, RefusesMalformedMessages) {
     bare.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     bare.indices = {0, 1, 2};
     update_bounds(bare);
-    expect_invalid(io::encode_scene_message({scene_from_meshes({bare}), {}}),
+    expect_invalid(io::encode_scene_message({scene_from_meshes({bare}), {}, {}}),
                    "mesh 0: normals not one per position");
     // A count of 2^60 positions is refused before anything is allocated.
     expect_invalid(huge_count_message(), "positions: 1152921504606846976 elements do not fit");
@@ -478,10 +479,14 @@ TEST(WorkerMessage, RoundTripKeepsMaterialAlpha) {
     blend.opacity_texture = shared;
     blend.double_sided = true;
     scene.materials.insert(scene.materials.end(), {opaque, mask, blend});
-    const io::LoadedScene sent{scene, {"m.ply: a warning"}};
+    const io::LoadedScene sent{scene, {"m.ply: a warning"}, {"/models/a b.png", "/models/m.bin"}};
     const std::string message = io::encode_scene_message(sent);
     const io::LoadedScene received = io::decode_worker_message(byte_span(message), "m.ply", {});
     expect_same_scene(sent, received, "alpha");
+    EXPECT_EQ(received.files_read, sent.files_read);
+    // A file read must be an absolute path (the parent keeps outputs off it).
+    expect_invalid(io::encode_scene_message({scene, {}, {"relative.png"}}),
+                   "file read 0 is not an absolute path");
     const Scene& decoded = received.scene;
     ASSERT_EQ(decoded.materials.size(), scene.materials.size());
     const std::size_t n = decoded.materials.size();
@@ -505,7 +510,7 @@ TEST(WorkerMessage, RefusesBadMaterialAlpha) {
     const auto message_with = [&](auto change) {
         Scene scene = scene_from_meshes({tri});
         change(scene.materials.at(0));
-        return io::encode_scene_message({scene, {}});
+        return io::encode_scene_message({scene, {}, {}});
     };
     expect_invalid(message_with([](Material& m) { m.alpha_mode = static_cast<AlphaMode>(3); }),
                    "material 0: unknown alpha mode 3");
@@ -545,13 +550,13 @@ TEST(WorkerMessage, VertexColors) {
     tri.colors = {{1, 0, 0, 0.25f}, {0, 1, 0, 0.5f}, {0, 0, 1, 1}};
     compute_angle_weighted_normals(tri);
     update_bounds(tri);
-    const io::LoadedScene sent{scene_from_meshes({tri}), {}};
+    const io::LoadedScene sent{scene_from_meshes({tri}), {}, {}};
     const std::string message = io::encode_scene_message(sent);
     expect_same_scene(sent, io::decode_worker_message(byte_span(message), "m.ply", {}), "colors");
     const auto message_with = [&](auto change) {
         Scene scene = scene_from_meshes({tri});
         change(scene.meshes.at(0).colors);
-        return io::encode_scene_message({scene, {}});
+        return io::encode_scene_message({scene, {}, {}});
     };
     expect_invalid(message_with([](std::vector<glm::vec4>& c) { c.pop_back(); }),
                    "mesh 0: colors not one per position");

@@ -44,9 +44,10 @@ std::string error_line(const std::string& input, const std::string& what) {
 // The loader refuses a file over LoadOptions::max_triangles before reading its geometry; that
 // limit is the batch's --max-triangles, or what --max-memory leaves room for.
 Scene load_within_limits(const BatchInput& input, const LoadOptions& options,
-                         std::vector<std::string>& warnings) {
+                         std::vector<std::string>& warnings,
+                         std::vector<std::filesystem::path>& files_read) {
     try {
-        return load_scene(input.source, options, &warnings);
+        return load_scene(input.source, options, &warnings, &files_read);
     } catch (const LimitExceeded& e) {
         if (e.limit() != "max_triangles") throw;
         // The advice in full: a plain InputError, so that no other advice is appended.
@@ -140,13 +141,16 @@ BatchRecord run_batch_job(const BatchInput& input, const BatchSettings& settings
 
         const Clock::time_point load_start = Clock::now();
         Scene scene;
+        std::vector<std::filesystem::path> files_read;
         try {
-            scene = load_within_limits(input, settings.load, record.warnings);
+            scene = load_within_limits(input, settings.load, record.warnings, files_read);
         } catch (...) {
             record.load_ms = ms_since(load_start);
             throw;
         }
         record.load_ms = ms_since(load_start);
+        for (const std::filesystem::path& file : files_read)
+            outputs.check_input(file, file_named_by(input.source.string()));
         record.triangles = scene.triangle_count();
         check_batch_limits(scene, views, settings.limits);
 

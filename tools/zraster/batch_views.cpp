@@ -98,6 +98,8 @@ void read_pinhole(const CameraReader& r, BatchView& view) {
                               k2 = r.numbers(k[2], "K", 3);
     if (k0[1] != 0.0 || k1[0] != 0.0 || k2 != std::vector<double>{0.0, 0.0, 1.0})
         r.fail("K", "expected [[fx, 0, cx], [0, fy, cy], [0, 0, 1]] (no skew), got " + k.dump());
+    if (const std::string p = intrinsics_problem({k0[0], k1[1], k0[2], k1[2]}); !p.empty())
+        r.fail("K", p);
     view.intrinsics = exact_number(k0[0]) + "," + exact_number(k1[1]) + "," + exact_number(k0[2]) +
                       "," + exact_number(k1[2]);
     read_pose_and_size(r, view, "K");
@@ -116,6 +118,10 @@ void read_pose_and_size(const CameraReader& r, BatchView& view, const char* need
         const std::vector<double> values = r.numbers(pose[row], "camera_to_world", 4);
         for (std::size_t col = 0; col < 4; ++col) m[row][col] = values[col];
     }
+    // The forward (z) and down (y) columns give the view direction and the up direction.
+    if (!pose_problem({0, 0, 0}, {m[0][2], m[1][2], m[2][2]}, {m[0][1], m[1][1], m[2][1]}).empty())
+        r.fail("camera_to_world",
+               "the rotation's forward (z) and down (y) columns must be nonzero and not parallel");
     const double eye[3] = {m[0][3], m[1][3], m[2][3]};
     view.eye = exact_number(eye[0]) + "," + exact_number(eye[1]) + "," + exact_number(eye[2]);
     view.target = exact_number(eye[0] + m[0][2]) + "," + exact_number(eye[1] + m[1][2]) + "," +
@@ -191,6 +197,14 @@ BatchView read_camera(const std::filesystem::path& file, std::size_t index, cons
         view.eye = r.vec3("eye", position_problem);
         view.target = r.vec3("target", position_problem);
         if (r.has("up")) view.up = r.vec3("up", direction_problem);
+        const std::vector<double> e = r.numbers(r.at("eye"), "eye", 3),
+                                  t = r.numbers(r.at("target"), "target", 3),
+                                  u = r.has("up") ? r.numbers(r.at("up"), "up", 3)
+                                                  : std::vector<double>{0.0, 1.0, 0.0};
+        if (const std::string p =
+                pose_problem({e[0], e[1], e[2]}, {t[0], t[1], t[2]}, {u[0], u[1], u[2]});
+            !p.empty())
+            r.fail(r.has("up") ? "up" : "target", p);
     } else if (r.has("orbit")) {
         const std::vector<double> o = r.numbers(r.at("orbit"), "orbit", 3);
         if (const std::string p = orbit_problem({o[0], o[1], o[2]}); !p.empty()) r.fail("orbit", p);

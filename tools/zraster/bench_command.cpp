@@ -114,7 +114,7 @@ int run_bench(const BenchArguments& a) {
     if (a.no_avx512) hwy::DisableTargets(HWY_AVX2 - 1);  // the targets better than AVX2
 
     // Loading, shading setup and framing stay outside the timed loop, as in glbench.
-    Scene scene = load_scene_or_procedural(a.scene);
+    Scene scene = load_scene_or_procedural(a.scene, nullptr, &outputs);
     apply_bench_shading(scene, mode);
     RenderOptions options = bench_render_options(mode, size.x, size.y, threads, !a.no_cull);
     options.hierarchical_z = !a.no_hierarchical_z;

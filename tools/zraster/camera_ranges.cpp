@@ -44,4 +44,23 @@ std::string orbit_problem(const glm::dvec3& orbit) {
     return "";
 }
 
+std::string intrinsics_problem(const glm::dvec4& k) {
+    static const char* const kNames[] = {"fx", "fy", "cx", "cy"};
+    for (int i = 0; i < 4; ++i) {
+        const bool focal = i < 2;
+        if (focal && !(k[i] >= 1e-3 && k[i] <= 1e9))
+            return fmt::format("{} must be in 0.001..1e9 pixels, not {}", kNames[i], k[i]);
+        if (!focal && !(std::abs(k[i]) <= 1e9))
+            return fmt::format("{} must be within +-1e9 pixels, not {}", kNames[i], k[i]);
+    }
+    return "";
+}
+
+std::string pose_problem(const glm::dvec3& eye, const glm::dvec3& target, const glm::dvec3& up) {
+    if (glm::length(target - eye) == 0.0) return "the eye and the target are the same point";
+    if (glm::length(glm::cross(target - eye, up)) == 0.0)
+        return "the up direction is parallel to the view direction (from the eye to the target)";
+    return "";
+}
+
 }  // namespace zraster::cli

@@ -33,5 +33,12 @@ std::string direction_problem(const glm::dvec3& d);
 std::string fovy_problem(double degrees);
 std::string distance_problem(double distance);
 std::string orbit_problem(const glm::dvec3& orbit);
+// Pinhole intrinsics FX,FY,CX,CY (--intrinsics, a --views-json "K"): focal lengths of a
+// thousandth of a pixel to 10^9 pixels (a field of view from 180 degrees down to 10^-6 of a degree
+// at 16384 pixels), principal points within +-10^9 pixels.
+std::string intrinsics_problem(const glm::dvec4& fx_fy_cx_cy);
+// A look-at pose the camera can be built from: the eye away from the target, the up direction not
+// along the view direction (the same tests the library's camera makes, in the command's terms).
+std::string pose_problem(const glm::dvec3& eye, const glm::dvec3& target, const glm::dvec3& up);
 
 }  // namespace zraster::cli

@@ -161,13 +161,25 @@ LoadOptions command_load_options() {
     return options;
 }
 
-Scene load_scene_or_procedural(const std::string& spec, std::vector<std::string>* warnings) {
+std::string file_named_by(const std::string& model) {
+    return "file named by " + model;
+}
+
+Scene load_scene_or_procedural(const std::string& spec, std::vector<std::string>* warnings,
+                               OutputFiles* outputs,
+                               std::vector<std::filesystem::path>* files_read_out) {
     if (is_procedural_spec(spec)) {
         check_scene_cap(spec);
         return make_procedural_scene(spec);
     }
     std::vector<std::string> found;
-    Scene scene = load_scene(spec, command_load_options(), &found);
+    std::vector<std::filesystem::path> files_read;
+    Scene scene = load_scene(spec, command_load_options(), &found, &files_read);
+    if (outputs != nullptr)
+        for (const std::filesystem::path& file : files_read)
+            outputs->check_input(file, file_named_by(spec));
+    if (files_read_out != nullptr)
+        files_read_out->insert(files_read_out->end(), files_read.begin(), files_read.end());
     for (const std::string& w : found) fmt::print(stderr, "warning: {}\n", w);
     if (warnings != nullptr) *warnings = std::move(found);
     return scene;

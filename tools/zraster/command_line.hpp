@@ -2,6 +2,7 @@
 #pragma once
 #include <zraster/error.hpp>
 #include <zraster/load.hpp>
+#include <zraster/output_files.hpp>
 #include <zraster/render.hpp>
 #include <zraster/scene.hpp>
 
@@ -46,9 +47,16 @@ ShadingStrategy shading_strategy(const std::string& name);
 // A mesh file path, or a procedural spec (builtin:NAME, sphere:N, city:N[:SEED], soup:N[:SEED]).
 // Assimp runs in a worker process (LoadIsolation::WorkerProcess) unless set_load_in_process(true)
 // (the --load-in-process flag; run_zraster sets it for every run). The loader's warnings are
-// printed to stderr ("warning: ..."), and kept in *warnings when it is given.
+// printed to stderr ("warning: ..."), and kept in *warnings when it is given. The files the model
+// names and the loader read (textures, buffers, material libraries) are made inputs of *outputs
+// when it is given, so that no output of the run replaces them (an InputError names both), and
+// appended to *files_read when that is given.
 Scene load_scene_or_procedural(const std::string& spec,
-                               std::vector<std::string>* warnings = nullptr);
+                               std::vector<std::string>* warnings = nullptr,
+                               OutputFiles* outputs = nullptr,
+                               std::vector<std::filesystem::path>* files_read = nullptr);
+// What an output is called when it would replace a file the model names.
+std::string file_named_by(const std::string& model);
 void set_load_in_process(bool in_process);
 // The --allow-outside-references flag: a model's external files may be read from anywhere
 // (LoadOptions::allow_outside_references).

@@ -15,11 +15,13 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <limits>
 #include <map>
 #include <vector>
 
+#include "camera_ranges.hpp"
 #include "command_line.hpp"
 #include "output_maps.hpp"
 
@@ -78,7 +80,15 @@ StructuredLightSensor sensor_of(const DepthCameraArguments& a) {
             {"sensor.max_incidence_degrees", "--sensor-max-incidence"},
             {"sensor.noise", "--sensor-noise"}};
         const auto found = option.find(e.file());
-        throw InputError(found != option.end() ? found->second : "--sensor", e.cause());
+        // A cause may name another field ("must be greater than min_range"): in the flags' terms.
+        std::string cause = e.cause();
+        for (const auto& [field, flag] : option) {
+            const std::string bare = field.substr(field.find('.') + 1);
+            for (std::size_t at = cause.find(bare); at != std::string::npos;
+                 at = cause.find(bare, at + std::strlen(flag)))
+                cause.replace(at, bare.size(), flag);
+        }
+        throw InputError(found != option.end() ? found->second : "--sensor", cause);
     }
     return s;
 }
@@ -254,19 +264,8 @@ Camera apply_intrinsics(const DepthCameraArguments& a, const Camera& camera, int
         throw InputError("--intrinsics",
                          "expected FX,FY,CX,CY (finite, in pixels), got '" + a.intrinsics + "'");
     }
-    // Focal lengths of a thousandth of a pixel to 10^9 pixels (a field of view from 180 degrees
-    // down to 10^-6 of a degree at 16384 pixels), principal points within +-10^9 pixels.
-    for (int i = 0; i < 4; ++i) {
-        const bool focal = i < 2;
-        if ((focal && !(v[i] >= 1e-3 && v[i] <= 1e9)) || (!focal && !(std::abs(v[i]) <= 1e9)))
-            throw InputError("--intrinsics", std::string(i == 0   ? "fx"
-                                                         : i == 1 ? "fy"
-                                                         : i == 2 ? "cx"
-                                                                  : "cy") +
-                                                 (focal ? " must be in 0.001..1e9 pixels, not "
-                                                        : " must be within +-1e9 pixels, not ") +
-                                                 exact_number(v[i]));
-    }
+    if (const std::string problem = intrinsics_problem(v); !problem.empty())
+        throw InputError("--intrinsics", problem);
     Intrinsics k;
     k.fx = v.x;
     k.fy = v.y;

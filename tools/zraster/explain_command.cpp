@@ -115,12 +115,15 @@ int run_explain(const ExplainArguments& a) {
     const ExplainedAlgorithm& algorithm = find_algorithm(a.algorithm);
     Scene scene;
     RenderOptions options;
+    std::vector<std::filesystem::path> files_read;  // besides the model: textures, buffers
     if (algorithm.uses_scene) {
-        scene = load_scene_or_procedural(a.render.scene);
+        scene = load_scene_or_procedural(a.render.scene, nullptr, nullptr, &files_read);
         options = make_render_options(a.render, scene);
     }
     ExplainOutput out(a.output, algorithm.title, algorithm.introduction);
     if (algorithm.uses_scene) out.check_input(a.render.scene, "");
+    for (const std::filesystem::path& file : files_read)
+        out.check_input(file, file_named_by(a.render.scene));
     algorithm.make(ExplainInput{a.render, scene, options, a.step}, out);
     out.commit();
     const std::vector<std::string> files = out.file_names();

@@ -207,6 +207,12 @@ Camera place_camera(const RenderArguments& a, Camera camera, const BoundingSpher
     camera.up = parse_vec3("--up", a.up);
     if (const std::string problem = direction_problem(camera.up); !problem.empty())
         throw InputError("--up", problem);
+    if (const std::string problem = pose_problem(camera.eye, camera.target, camera.up);
+        !problem.empty())
+        throw InputError(!a.target.empty() ? "--target"
+                         : !a.eye.empty()  ? "--eye"
+                                           : "--up",
+                         problem);
     if (!a.eye.empty() || !a.target.empty()) {
         // Near/far from the bounding sphere as seen from the new eye, unless given.
         const double d = glm::length(sphere.center - camera.eye);

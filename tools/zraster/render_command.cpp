@@ -83,7 +83,7 @@ int run_render(const RenderArguments& a) {
         return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     };
     const Clock::time_point load_start = Clock::now();
-    Scene scene = load_scene_or_procedural(a.scene);
+    Scene scene = load_scene_or_procedural(a.scene, nullptr, &outputs);
     if (!a.pvs.empty()) attach_pvs(a.pvs, scene);
     const double load_ms = since(load_start);
     const RenderedFrame frame = render_outputs(a, scene, outputs, stderr_progress(), stderr);

@@ -84,7 +84,7 @@ int run_svg(const SvgArguments& a) {
         throw InputError(a.render.wireframe ? "--wireframe" : "--hidden-line",
                          "not available for svg (use --edges)");
 
-    const Scene scene = load_scene_or_procedural(a.render.scene);
+    const Scene scene = load_scene_or_procedural(a.render.scene, nullptr, &outputs);
     RenderOptions options = make_render_options(a.render, scene);
     options.progress = stderr_progress();
     note_varying_alpha(scene, options);

@@ -28,12 +28,16 @@ double median(std::vector<double> values) {
 }
 
 // --screenshot is checked before any work as every output is (OutputFiles); the window writes
-// it at exit through write_png8, the same mechanism.
-void check_screenshot_path(const ViewArguments& a) {
+// it at exit through write_png8, the same mechanism. Checked again once the model is loaded, with
+// the files it named.
+void check_screenshot_path(const ViewArguments& a,
+                           const std::vector<std::filesystem::path>& files_read = {}) {
     OutputFiles outputs;
     check_output(outputs, a.screenshot, {".png"}, "--screenshot");
     check_run_inputs(a.render, outputs);
     outputs.check_input(a.script, "--script");
+    for (const std::filesystem::path& file : files_read)
+        outputs.check_input(file, file_named_by(a.render.scene));
 }
 
 }  // namespace
@@ -67,7 +71,9 @@ int run_view(const ViewArguments& a) {
                                            std::to_string(e.frame) +
                                            " is more pixels than --max-pixels " +
                                            std::to_string(a.render.max_pixels));
-    const Scene scene = load_scene_or_procedural(a.render.scene);
+    std::vector<std::filesystem::path> files_read;
+    const Scene scene = load_scene_or_procedural(a.render.scene, nullptr, nullptr, &files_read);
+    check_screenshot_path(a, files_read);
     check_instanced_vertices(scene);
     const std::vector<glm::vec3> world = scene.world_positions();
     std::optional<ViewState> state;

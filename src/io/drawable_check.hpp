@@ -1,0 +1,14 @@
+// A loaded scene must have something to draw: a file whose every triangle has zero area (all
+// corners repeated or collinear) would render an empty image without a word.
+#pragma once
+#include <zraster/scene.hpp>
+
+#include <string>
+
+namespace zraster::io {
+
+// Throws InputError(file, ...) when no triangle of any placed mesh has a nonzero area in its
+// mesh's own coordinates.
+void check_some_triangle_has_area(const Scene& scene, const std::string& file);
+
+}  // namespace zraster::io
