@@ -158,6 +158,36 @@ printf 'newmtl m\nKd 2 -1 nan\nNs -5\nd nan\n' >colors.mtl
 printf "mtllib colors.mtl\n${tri}usemtl m\nf 1 2 3\n" >colors.obj
 printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"%s"}],"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],"materials":[{"name":"m","alphaMode":"MASK","alphaCutoff":7,"pbrMetallicRoughness":{"baseColorFactor":[2,0.5,-1,-0.5],"roughnessFactor":3}}],"meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0}' "$b64" >factors.gltf
 printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nproperty float red\nproperty float green\nproperty float blue\nproperty float alpha\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0 2.5 0 0 1\n1 0 0 0 -1 0 1\n0 1 0 0 0 1 7\n3 0 1 2\n' >colors.ply
+# Words that are not numbers (Assimp read their numeric prefix), faces past Assimp's corner
+# limit, an index past 2^31, unusable normals, an accessor read by many primitives, glTF members
+# of the wrong type, a version that is not 2.N, a field a cells file does not have.
+printf 'v 1e5x 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' >word.obj
+printf "${tri}f 1x 2 3\n" >word-index.obj
+printf "${tri}v 0.5 -1 0\nv 1 1 0\nf 1 4 2 5 3\nv 1.#INF 0 0\n" >word-pentagon.obj
+printf 'newmtl m\nKd 0.5abc 0 0\n' >word.mtl
+printf "mtllib word.mtl\n${tri}usemtl m\nf 1 2 3\n" >word-mtl.obj
+{ printf "$tri"; printf 'f'; for k in $(seq 40000); do printf ' %d' $((k % 3 + 1)); done; echo; } >corners.obj
+printf "${tri}f 1 2 2147483648\n" >index2e31.obj
+printf "${tri}vn nan 0 0\nf 1//1 2//1 3//1\n" >normal-nan.obj
+printf "${ply_head}element face 1\nproperty list int int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n-3 0 1 2\n" >corners-negative.ply
+{ printf "${ply_head}element face 1\nproperty list uint uint vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n40000"
+  for k in $(seq 40000); do printf ' %d' $((k % 3)); done; echo; } >corners.ply
+# A million vertices (all at the origin but the last two) and the indices of one triangle (the
+# first vertex and the last two) after them.
+mkdir -p million
+{ head -c 11999976 /dev/zero; printf '\0\0\x80\x3f\0\0\0\0\0\0\0\0\0\0\0\0\0\0\x80\x3f\0\0\0\0'
+  printf '\0\0\0\0\x3e\x42\x0f\0\x3f\x42\x0f\0'; } >million/v.bin
+million_gltf() {  # PRIMITIVES NODES
+    local primitives nodes
+    primitives=$(printf '{"attributes":{"POSITION":0},"indices":1},%.0s' $(seq "$1"))
+    nodes=$(printf '0,%.0s' $(seq "$2"))
+    printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":12000012,"uri":"v.bin"}],"bufferViews":[{"buffer":0,"byteLength":12000000},{"buffer":0,"byteOffset":12000000,"byteLength":12}],"accessors":[{"bufferView":0,"componentType":5126,"count":1000000,"type":"VEC3","min":[0,0,0],"max":[1,1,0]},{"bufferView":1,"componentType":5125,"count":3,"type":"SCALAR"}],"meshes":[{"primitives":[%s]}],"nodes":[{"mesh":0},{"children":[%s]}],"scenes":[{"nodes":[1]}],"scene":0}' "${primitives%,}" "${nodes%,}"
+}
+million_gltf 300 1 >million/primitives300.gltf
+million_gltf 1 100000 >million/placed100k.gltf
+printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"%s"}],"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],"materials":[{"name":"m","alphaMode":7,"alphaCutoff":"x","doubleSided":1,"pbrMetallicRoughness":{"baseColorFactor":[1,0,0]}}],"meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0}' "$b64" >types.gltf
+printf '{"asset":{"version":"2.0abc"}}' >version2abc.gltf
+sed 's/"translate": \[1, 0, 0\]/"translation": [1, 0, 0]/' cells/two.cells.json >cells/unknown-field.cells.json
 # Outputs against the run's inputs, the file system's limits and special files: models named as
 # their outputs would be, a FIFO at an output path, a command under a file size limit.
 printf "${tri}f 1 2 3\n" >self.obj
@@ -379,6 +409,22 @@ row "glTF baseColorFactor, alpha, roughness and alphaCutoff out of range (warnin
 rm -f out.png
 row "PLY vertex colors 2.5, -1 and alpha 7 (a warning)" render colors.ply --size 8x8 -o out.png
 rm -f out.png
+row "OBJ coordinate 1e5x (not a number)" render word.obj -o out.png
+row "OBJ face index 1x (not a number)" render word-index.obj -o out.png
+row "OBJ read by Assimp (a pentagon) with a coordinate 1.#INF" render word-pentagon.obj -o out.png
+row "MTL color 0.5abc (not a number)" render word-mtl.obj -o out.png
+row "OBJ face of 40000 corners" render corners.obj -o out.png
+row "OBJ face index 2^31" render index2e31.obj -o out.png
+row "OBJ normal NaN (a warning: recomputed)" render normal-nan.obj --size 8x8 -o out.png
+rm -f out.png
+row "PLY face with a negative corner count" render corners-negative.ply -o out.png
+row "PLY face of 40000 corners" render corners.ply -o out.png
+row "glTF: a million-vertex accessor read by 300 primitives" render million/primitives300.gltf -o out.png
+row "glTF: a million-vertex mesh of one triangle placed 10^5 times" render million/placed100k.gltf -o out.png
+row "glTF material members of the wrong types (warnings)" render types.gltf --size 8x8 -o out.png
+rm -f out.png
+row "glTF version 2.0abc" render version2abc.gltf -o out.png
+cells_row "cells file: a field it does not have (\"translation\")" cells/unknown-field.cells.json "instances[1]" render cells/unknown-field.cells.json -o out.png
 long_name=$(printf 'n%.0s' $(seq 251))
 row "svg output name over the file system's limit" svg builtin:cube --size 16x16 -o "${long_name}n.svg"
 row "svg output name of 255 bytes (renders)" svg builtin:cube --size 16x16 -o "$long_name.svg"

@@ -35,7 +35,9 @@ enum class LoadIsolation {
 };
 
 struct LoadOptions {
-    // Larger files are refused before their geometry is allocated.
+    // Larger files are refused before their geometry is allocated. A glTF file is also held to
+    // it before Assimp reads it: its primitives may decode at most max_triangles faces and
+    // 3 x max_triangles vertices (Assimp copies an accessor into every primitive that reads it).
     std::size_t max_triangles = 50'000'000;
     std::size_t max_file_bytes = std::size_t{4} << 30;
     // Meshes placed by the node hierarchy (instances). Nodes that share children multiply: a
@@ -75,15 +77,19 @@ struct LoadOptions {
 // gives), vertex colors (glTF COLOR_0, PLY red/green/blue/alpha: Mesh::colors, clamped to
 // [0, 1]) and the node hierarchy as instances (node transforms applied). Computes
 // angle-weighted normals when the file has none, and bounds.
+// Normals the file gives that are not finite or of zero length are recomputed from the faces
+// (every normal of the scene is of unit length).
 // Non-fatal problems (a missing material library or texture: the default material or the
-// material's color is used; a texture reduced to fit the limits; an unknown glTF alpha mode) are
+// material's color is used; a texture reduced to fit the limits; an unknown glTF alpha mode or a
+// material member of the wrong type; unusable normals) are
 // appended to *warnings when it is given, one line each, starting with the file name.
 // The other files the model named and the loader read (glTF buffers and images, material
 // libraries, textures, a cells file's mesh files and theirs), canonical and sorted, are appended
 // to *files_read when it is given: a caller that writes files must not replace them.
 // Throws InputError (one line naming the file and the cause) for a missing or unreadable file,
-// an unknown format, malformed or truncated content, no triangles (or none with an area), or
-// NaN/Inf coordinates, and with LoadIsolation::WorkerProcess when the importer process crashes,
+// an unknown format, malformed or truncated content (an OBJ or MTL word that is not a number
+// included), no triangles (or none with an area), or NaN/Inf coordinates; LimitExceeded past a
+// LoadOptions budget; and with LoadIsolation::WorkerProcess when the importer process crashes,
 // times out or runs out of memory.
 ZRASTER_API Scene load_scene(const std::filesystem::path& path, const LoadOptions& options = {},
                              std::vector<std::string>* warnings = nullptr,

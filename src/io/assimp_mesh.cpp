@@ -72,7 +72,7 @@ void copy_colors(const aiMesh& source, const MeshConversion& how, Mesh& mesh,
 }  // namespace
 
 Mesh convert_mesh(const aiMesh& source, const MeshConversion& how,
-                  std::vector<std::string>& warnings) {
+                  std::vector<std::string>& warnings, bool* normals_recomputed) {
     const std::string& label = how.label;
     const std::string& file = how.file;
     Mesh mesh;
@@ -118,6 +118,7 @@ Mesh convert_mesh(const aiMesh& source, const MeshConversion& how,
 
     if (source.HasNormals()) {
         if (!copy_normals(source, mesh)) {
+            if (normals_recomputed != nullptr) *normals_recomputed = true;
             const std::vector<glm::vec3> computed = normals_over_shared_positions(mesh);
             for (std::size_t v = 0; v < mesh.normals.size(); ++v)
                 if (std::isnan(mesh.normals[v].x)) mesh.normals[v] = computed[v];

@@ -26,8 +26,9 @@ struct MeshConversion {
 };
 
 // Throws InputError for non-finite positions or indices out of range; non-finite uvs are zeroed
-// with a warning cause appended to `warnings`.
+// with a warning cause appended to `warnings`. Unusable normals (not finite, zero) are replaced by
+// computed ones; *normals_recomputed (when given) is set to whether any were.
 Mesh convert_mesh(const aiMesh& source, const MeshConversion& how,
-                  std::vector<std::string>& warnings);
+                  std::vector<std::string>& warnings, bool* normals_recomputed = nullptr);
 
 }  // namespace zraster::io

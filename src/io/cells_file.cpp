@@ -15,6 +15,7 @@
 
 #include "io/input_file_check.hpp"
 #include "io/json_errors.hpp"
+#include "io/json_fields.hpp"
 #include "io/read_file.hpp"
 #include "io/reference_policy.hpp"
 
@@ -43,6 +44,8 @@ class CellsReader {
         if (!document.is_object()) fail("", "expected a JSON object");
         if (!document.contains("zraster_cells") || document["zraster_cells"] != 1)
             fail("zraster_cells", "expected 1 (the format's version)");
+        known_fields(document, "", "the file",
+                     {"zraster_cells", "meshes", "instances", "cells", "portals"});
         scene_.name = file_;
         read_meshes(member(document, "meshes", "", json::value_t::object));
         read_instances(member(document, "instances", "", json::value_t::array));
@@ -73,6 +76,20 @@ class CellsReader {
     // A refusal by LoadOptions::max_instances, the budget's name kept for the front end.
     [[noreturn]] void over_limit(const std::string& where, const std::string& cause) const {
         throw LimitExceeded(file_, "max_instances", where + ": " + cause);
+    }
+
+    // A field the format does not have (docs/portals.md): a typo such as "translation" would
+    // leave the instance where it is without a word.
+    void known_fields(const json& object, const std::string& where, const char* what,
+                      std::initializer_list<std::string_view> known) const {
+        if (const auto field = unknown_field(object, known)) {
+            std::string list;
+            for (const std::string_view k : known)
+                list += (list.empty() ? "" : ", ") + std::string(k);
+            fail(where.empty() ? "(top level)" : where, "\"" + *field + "\" is not a field of " +
+                                                            what + " (" + list +
+                                                            ": docs/portals.md)");
+        }
     }
 
     const json& member(const json& object, const char* key, const std::string& where,
@@ -174,6 +191,8 @@ class CellsReader {
             const std::string at = "instances[" + std::to_string(k) + "]";
             const json& instance = instances[k];
             if (!instance.is_object()) fail(at, "expected an object");
+            known_fields(instance, at, "an instance",
+                         {"name", "mesh", "matrix", "translate", "rotate_y_degrees", "scale"});
             const std::string name =
                 member(instance, "name", at, json::value_t::string).get<std::string>();
             const std::string mesh =
@@ -239,6 +258,7 @@ class CellsReader {
             const std::string at = "cells[" + std::to_string(k) + "]";
             const json& value = cells[k];
             if (!value.is_object()) fail(at, "expected an object");
+            known_fields(value, at, "a cell", {"name", "box", "planes", "instances"});
             Cell cell;
             cell.name = member(value, "name", at, json::value_t::string).get<std::string>();
             if (cell_index_.contains(cell.name))
@@ -295,6 +315,7 @@ class CellsReader {
             const std::string at = "portals[" + std::to_string(k) + "]";
             const json& value = portals[k];
             if (!value.is_object()) fail(at, "expected an object");
+            known_fields(value, at, "a portal", {"cells", "corners"});
             Portal portal;
             const json& cells = member(value, "cells", at, json::value_t::array);
             if (cells.size() != 2) fail(at + ".cells", "expected the names of two cells");

@@ -20,6 +20,9 @@ namespace zraster::io {
 
 namespace {
 
+// The most corners Assimp keeps in a face (AI_MAX_FACE_INDICES).
+constexpr std::uint64_t kMaxPlyFaceCorners = 0x7fff;
+
 struct DeclaredElement {
     std::string name;
     std::uint64_t count = 0;
@@ -83,6 +86,7 @@ struct PlyProperty {
     std::uint64_t item_bytes = 1;  // list items
     std::string name;
     bool item_signed = false, item_float = false;
+    bool length_signed = false;  // the list length's type (binary: "int" can hold -3)
     // A face's vertex indices: each checked against the vertex count (Assimp wraps a value past
     // its integer type, 2^32 to 0, and clamps others, without a word).
     bool vertex_indices() const {
@@ -129,6 +133,23 @@ void check_ply_lists(const std::filesystem::path& path, std::size_t header_bytes
                     ", but the file has " + std::to_string(vertices) + " vertices" +
                     (vertices > 0 ? " (0 to " + std::to_string(vertices - 1) + ")" : ""));
         };
+        // A face's corner count, in the user's terms: Assimp reads a negative one as a huge
+        // length (std::bad_alloc) and refuses a face of more than 0x7fff corners in its
+        // validation ("Face 0 has too many faces").
+        const auto check_corners = [&](std::uint64_t record, const PlyProperty& p, bool negative,
+                                       const std::string& written) {
+            if (!check_indices || !p.vertex_indices()) return;
+            if (negative)
+                throw InputError(path.string(),
+                                 "malformed PLY file: face " + std::to_string(record) +
+                                     " has a negative corner count (" + written + ")");
+            const std::uint64_t corners = parse_count(written).value_or(0);
+            if (corners > kMaxPlyFaceCorners)
+                throw InputError(path.string(), "malformed PLY file: face " +
+                                                    std::to_string(record) + " has " + written +
+                                                    " corners; at most " +
+                                                    std::to_string(kMaxPlyFaceCorners));
+        };
         if (layout[e].empty()) continue;  // Assimp skips the records of such an element
         for (std::uint64_t r = 0; r < elements[e].count && at < end; ++r) {
             if (ascii) {
@@ -142,8 +163,20 @@ void check_ply_lists(const std::filesystem::path& path, std::size_t header_bytes
                     std::string token;
                     if (!(words >> token)) break;
                     if (!p.list) continue;
+                    // A length that is not digits: Assimp reads "-3" as a huge length.
+                    if (token.find_first_not_of("0123456789") != std::string::npos) {
+                        if (token.size() > 1 && token[0] == '-' &&
+                            token.find_first_not_of("0123456789", 1) == std::string::npos)
+                            check_corners(r, p, true, token);
+                        throw InputError(path.string(), "malformed PLY file: a " +
+                                                            elements[e].name +
+                                                            " record's list length '" +
+                                                            one_line(token.substr(0, 40)) +
+                                                            "' is not a whole number of 0 or more");
+                    }
                     const std::uint64_t length = parse_count(token).value_or(0);
                     if (length > available / 2 + 1) refuse(elements[e].name, length);
+                    check_corners(r, p, false, token);
                     for (std::uint64_t i = 0; i < length && words >> token; ++i) {
                         if (!check_indices || !p.vertex_indices()) continue;
                         long long index = -1;
@@ -169,7 +202,16 @@ void check_ply_lists(const std::filesystem::path& path, std::size_t header_bytes
                     length |= std::uint64_t{byte} << shift;
                 }
                 at += p.bytes;
+                const std::uint64_t length_sign = std::uint64_t{1} << (8 * p.bytes - 1);
+                if (p.length_signed && (length & length_sign) != 0) {
+                    check_corners(r, p, true,
+                                  std::to_string(static_cast<std::int64_t>(
+                                      length | ~(length_sign | (length_sign - 1)))));
+                    throw InputError(path.string(), "malformed PLY file: a " + elements[e].name +
+                                                        " record's list has a negative length");
+                }
                 if (length > (end - at) / p.item_bytes) refuse(elements[e].name, length);
+                check_corners(r, p, false, std::to_string(length));
                 if (check_indices && p.vertex_indices() && !p.item_float && p.item_bytes <= 8)
                     for (std::uint64_t i = 0; i < length; ++i) {
                         std::uint64_t value = 0;
@@ -309,8 +351,12 @@ void check_ply(const std::filesystem::path& path, const std::string& head,
                 property.item_bytes = ply_scalar_size(item);
                 property.item_float =
                     item == "float" || item == "float32" || item == "double" || item == "float64";
-                property.item_signed = item == "char" || item == "int8" || item == "short" ||
-                                       item == "int16" || item == "int" || item == "int32";
+                const auto is_signed = [](const std::string& t) {
+                    return t == "char" || t == "int8" || t == "short" || t == "int16" ||
+                           t == "int" || t == "int32";
+                };
+                property.item_signed = is_signed(item);
+                property.length_signed = is_signed(type);
             }
             words >> property.name;
             property.bytes = ply_scalar_size(type);

@@ -61,7 +61,7 @@ std::string hex16(std::uint16_t id) {
 }
 
 // A glTF document (the .gltf text, or a GLB's JSON chunk: `chunk`): JSON, an object, an asset
-// of version 2.x. glTF 1.0 (2015, superseded in 2017) is refused although Assimp has an importer
+// of version 2.N. glTF 1.0 (2015, superseded in 2017) is refused although Assimp has an importer
 // for it: that importer reports a malformed file as "no suitable reader" and checks little, and
 // zraster's own checks (gltf_bounds_check.cpp) read the 2.0 layout only.
 void check_gltf_json(const std::string& file, std::string_view text, bool chunk) {
@@ -87,9 +87,19 @@ void check_gltf_json(const std::string& file, std::string_view text, bool chunk)
     if (v.starts_with("1.") || v == "1")
         throw InputError(file, "glTF " + one_line(v.substr(0, 32)) +
                                    " is not supported, only glTF 2.0 is (convert the file to 2.0)");
-    if (!v.starts_with("2.") && v != "2")
+    // The specification's form is MAJOR.MINOR, digits only: "2.0abc", "2" or "02.0" is not a
+    // version Assimp should be left to guess at.
+    const bool two_dot_n =
+        v.size() > 2 && v.starts_with("2.") &&
+        std::all_of(v.begin() + 2, v.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (!two_dot_n) {
+        // Quoted as written, blanks included (" 2.0" is not "2.0").
+        std::string shown = v.substr(0, 32);
+        for (char& c : shown)
+            if ((c >= 0 && c < ' ') || c == 0x7f) c = '?';
         throw InputError(
-            file, "glTF version '" + one_line(v.substr(0, 32)) + "' is not supported (2.x is)");
+            file, "glTF version '" + shown + "' is not supported, only glTF 2.N (such as 2.0) is");
+    }
 }
 
 void check_glb_structure(const std::string& file, const std::string& bytes) {

@@ -1,5 +1,6 @@
 #include "io/gltf_bounds_check.hpp"
 
+#include "io/gltf_decode_budget.hpp"
 #include "io/gltf_schema_check.hpp"
 #include "io/reference_policy.hpp"
 #include "io/text_util.hpp"
@@ -296,6 +297,7 @@ void check_gltf_bounds(const std::filesystem::path& path, const std::string& jso
     if (document.is_discarded() || !document.is_object()) return;
     check_gltf_schema(path, document);
     Checker(path, document, glb_binary, options).run();
+    check_gltf_decode_budget(path, document, options);
 }
 
 }  // namespace zraster::io

@@ -13,12 +13,14 @@
 #include "io/declared_counts_check.hpp"
 #include "io/drawable_check.hpp"
 #include "io/format_structure_check.hpp"
+#include "io/gltf_material_types.hpp"
 #include "io/input_file_check.hpp"
 #include "io/load_worker.hpp"
 #include "io/mtl_dissolve.hpp"
 #include "io/obj_index_scan.hpp"
 #include "io/obj_material_libraries.hpp"
 #include "io/obj_parser.hpp"
+#include "io/recomputed_normals.hpp"
 #include "io/reference_policy.hpp"
 #include "io/text_util.hpp"
 #include "io/texture_loader.hpp"
@@ -268,6 +270,8 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
         for (const std::string& refusal : refusals)
             warnings.push_back(io::refusal_text(refusal, "not read"));
     for (std::string& warning : assimp_warnings.take()) warnings.push_back(std::move(warning));
+    for (std::string& warning : io::gltf_material_type_warnings(path))
+        warnings.push_back(std::move(warning));
     MaterialTable materials(*ai, path, policy, options, scene, warnings);
     // (The document is read again only when a mesh has vertex colors.)
     bool any_colors = false;
@@ -277,16 +281,22 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
         any_colors ? io::gltf_color_alpha(path) : io::GltfColorAlpha::AsRead;
     std::vector<unsigned> our_mesh(ai->mNumMeshes, kUnset);
     std::vector<std::string> labels(ai->mNumMeshes);
+    std::optional<std::string> recomputed;  // the first mesh whose normals were replaced
     for (unsigned m = 0; m < ai->mNumMeshes; ++m) {
         if (!referenced[m]) continue;
         labels[m] = mesh_label(*ai->mMeshes[m], m);
-        Mesh mesh = io::convert_mesh(
-            *ai->mMeshes[m], {labels[m], file, is_obj(path), color_alpha, !is_obj(path)}, warnings);
+        bool normals_recomputed = false;
+        Mesh mesh = io::convert_mesh(*ai->mMeshes[m],
+                                     {labels[m], file, is_obj(path), color_alpha, !is_obj(path)},
+                                     warnings, &normals_recomputed);
         if (mesh.indices.empty()) continue;
+        if (normals_recomputed && !recomputed) recomputed = labels[m];
         mesh.material = materials.index_of(ai->mMeshes[m]->mMaterialIndex);
         our_mesh[m] = static_cast<unsigned>(scene.meshes.size());
         scene.meshes.push_back(std::move(mesh));
     }
+
+    if (recomputed) warnings.push_back(io::recomputed_normals_warning(*recomputed));
 
     for (const io::NodeMesh& p : placements) {
         if (our_mesh[p.mesh] == kUnset) continue;

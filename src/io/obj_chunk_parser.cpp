@@ -5,11 +5,13 @@
 
 #include <zraster/mesh.hpp>
 
+#include "io/obj_number_token.hpp"
 #include "io/obj_numbers.hpp"
 #include "io/obj_scan.hpp"
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string_view>
@@ -28,6 +30,46 @@ int parse_floats(const char* q, const char* e, float* out, int max) {
         if (count == max || !parse_float(q, e, out[count])) return -1;
         ++count;
     }
+}
+
+// The first word of a v, vt or vn statement that is not a number at all ("1e5x", "1.#INF"), which
+// Assimp would read a prefix of; empty when every word is one (a count or a form the reader
+// leaves to Assimp) or the line holds a control character (Assimp breaks lines at a lone CR).
+[[gnu::noinline]] std::string_view first_non_number(const char* q, const char* e) {
+    if (has_control(q, e)) return {};
+    while (true) {
+        q = skip_blanks(q, e);
+        if (q == e || *q == '#') return {};
+        const char* word = q;
+        q = skip_word(q, e);
+        const std::string_view w(word, static_cast<std::size_t>(q - word));
+        if (!is_number_word(w)) return w;
+    }
+}
+
+// The same for a face corner (v, v/vt, v//vn, v/vt/vn, or a form left to Assimp): the first
+// part between slashes that is not a whole number ("1x", "1.5"). A word starting with '#' is a
+// comment Assimp refuses its own way.
+[[gnu::noinline]] std::string_view non_number_index(const char* q, const char* e) {
+    if (has_control(q, e) || *q == '#') return {};
+    const std::string_view word(q, static_cast<std::size_t>(skip_word(q, e) - q));
+    std::size_t at = 0;
+    while (at <= word.size()) {
+        const std::size_t slash = std::min(word.find('/', at), word.size());
+        const std::string_view part = word.substr(at, slash - at);
+        if (!part.empty() && !is_index_word(part)) return part;
+        at = slash + 1;
+    }
+    return {};
+}
+
+// Assimp keeps at most 0x7fff corners in a face (AI_MAX_FACE_INDICES) and refuses the scene in
+// its validation otherwise.
+constexpr std::size_t kMaxFaceCorners = 0x7fff;
+
+[[gnu::noinline]] std::string too_many_corners(std::size_t corners) {
+    return "a face of " + std::to_string(corners) + " corners; at most " +
+           std::to_string(kMaxFaceCorners);
 }
 
 class ChunkParser {
@@ -141,6 +183,9 @@ class ChunkParser {
             v[1] = v[1] / v[3];
             v[2] = v[2] / v[3];
         } else if (n != 3 && n != 6) {  // 6: with a colour, which zraster does not use
+            if (n < 0)
+                if (const std::string_view w = first_non_number(q, e); !w.empty())
+                    return error(line, not_a_number(w));
             return leave(line, n < 0 ? "vertex coordinate that is not a plain number"
                                      : "vertex with " + std::to_string(n) + " numbers");
         }
@@ -157,7 +202,12 @@ class ChunkParser {
     [[gnu::always_inline]] bool uv(const char* q, const char* e, std::uint32_t line) {
         float t[3];
         const int n = parse_floats(q, e, t, 3);
-        if (n != 2 && n != 3) return leave(line, "texture coordinate that is not 2 or 3 numbers");
+        if (n != 2 && n != 3) {
+            if (n < 0)
+                if (const std::string_view w = first_non_number(q, e); !w.empty())
+                    return error(line, not_a_number(w));
+            return leave(line, "texture coordinate that is not 2 or 3 numbers");
+        }
         // Assimp reads a non-finite texture coordinate as 0.
         c_.uvs.push_back(std::isfinite(t[0]) ? t[0] : 0.0f);
         c_.uvs.push_back(1.0f - (std::isfinite(t[1]) ? t[1] : 0.0f));
@@ -167,7 +217,12 @@ class ChunkParser {
 
     [[gnu::always_inline]] bool normal(const char* q, const char* e, std::uint32_t line) {
         float n[3];
-        if (parse_floats(q, e, n, 3) != 3) return leave(line, "normal that is not 3 numbers");
+        if (const int count = parse_floats(q, e, n, 3); count != 3) {
+            if (count < 0)
+                if (const std::string_view w = first_non_number(q, e); !w.empty())
+                    return error(line, not_a_number(w));
+            return leave(line, "normal that is not 3 numbers");
+        }
         // Exactly as convert_mesh's copy_normals: normalised in double, usable when finite
         // with a finite, non-zero length.
         const glm::dvec3 d(n[0], n[1], n[2]);
@@ -192,6 +247,7 @@ class ChunkParser {
         while (true) {
             while (is_blank(*q)) ++q;
             if (q == e) break;
+            const char* corner_start = q;
             std::int32_t index[3] = {0, 0, 0};
             int this_form = 0;
             IndexParse parsed = parse_index(q, index[0]);
@@ -211,13 +267,21 @@ class ChunkParser {
                     }
                 }
             }
-            if (parsed == IndexParse::Zero)
+            if (parsed == IndexParse::Zero) {
+                if (const std::string_view w = non_number_index(corner_start, e); !w.empty())
+                    return error(line, not_a_number(w));  // "0x10"
                 return error(line, "invalid face index 0 (OBJ indices start at 1)");
-            if (parsed == IndexParse::Bad || (q != e && !is_blank(*q)))
+            }
+            if (parsed == IndexParse::Bad || (q != e && !is_blank(*q))) {
+                if (const std::string_view w = non_number_index(corner_start, e); !w.empty())
+                    return error(line, not_a_number(w));
                 return leave(line, "face element that is not v, v/vt, v//vn or v/vt/vn");
+            }
             if (form < 0) form = this_form;
             if (this_form != form) return leave(line, "face whose corners have different forms");
-            if (++corners > 0xFFFF) return leave(line, "face with more than 65535 corners");
+            // (Past 0x7fff a face is refused below; lines and points are left to Assimp.)
+            if (++corners > 0xFFFF && keyword != 'f')
+                return leave(line, "line or point element with more than 65535 corners");
             c_.corner_v.push_back(encode_index(index[0], positions_));
             if (form & kHasUv) {
                 if (c_.corner_t.size() + 1 < c_.corner_v.size())
@@ -232,6 +296,8 @@ class ChunkParser {
         }
         if (corners == 0) return true;  // an empty face: Assimp ignores it
         const auto kind = keyword == 'f' ? kPolygon : keyword == 'l' ? kLineElement : kPointElement;
+        if (kind == kPolygon && corners > kMaxFaceCorners)
+            return error(line, too_many_corners(corners));
         if (kind == kPolygon && corners < 3)
             return leave(line, "face with " + std::to_string(corners) + " corners");
         if (kind == kPolygon && corners > 4)

@@ -3,6 +3,8 @@
 
 #include <zraster/error.hpp>
 
+#include "io/obj_number_token.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -39,21 +41,24 @@ void words(std::string_view line, std::vector<std::string_view>& out) {
     }
 }
 
-// An optional '-' and 1 to 9 digits without a leading zero, as the reader takes an index.
+// An optional '-' and digits without a leading zero, as the reader takes an index. Past 10^15
+// the value stays 10^15: out of range either way, and the message quotes the written digits.
 std::optional<std::int64_t> plain_index(std::string_view text) {
     const bool negative = text.starts_with('-');
     if (negative) text.remove_prefix(1);
-    if (text.empty() || text.size() > 9 || text[0] == '0') return std::nullopt;
+    if (text.empty() || text[0] == '0') return std::nullopt;
+    constexpr std::int64_t kCap = 1'000'000'000'000'000;
     std::int64_t value = 0;
     for (const char c : text) {
         if (c < '0' || c > '9') return std::nullopt;
-        value = value * 10 + (c - '0');
+        value = std::min(kCap, value * 10 + (c - '0'));
     }
     return negative ? -value : value;
 }
 
 struct Corner {
     std::optional<std::int64_t> index[3];
+    std::string_view text[3];
 };
 
 // v, v/vt, v//vn or v/vt/vn; nullopt for anything else.
@@ -71,8 +76,52 @@ std::optional<Corner> corner(std::string_view token) {
     for (std::size_t k = 0; k < n; ++k) {
         if (parts[k].empty() && k == 1 && n == 3) continue;  // v//vn
         if (!(c.index[k] = plain_index(parts[k]))) return std::nullopt;
+        c.text[k] = parts[k];
     }
     return c;
+}
+
+// Control characters other than tab: Assimp breaks lines at a lone CR, so such a line's words
+// are not judged (zraster's reader leaves it to Assimp too).
+bool has_control(std::string_view line) {
+    return std::any_of(line.begin(), line.end(),
+                       [](char c) { return static_cast<unsigned char>(c) < 0x20 && c != '\t'; });
+}
+
+// The words of a v, vt or vn statement before a comment (a word starting with '#') that are not
+// numbers, and the parts of face, line and point corners that are not whole numbers, refused as
+// zraster's reader refuses them (Assimp would read their numeric prefix). Statements start in
+// the line's first column, as both readers take them.
+void check_numbers(std::string_view line, const std::string& file, std::size_t number) {
+    const auto refuse = [&](std::string_view w) {
+        throw InputError(file, "line " + std::to_string(number) + ": " + not_a_number(w));
+    };
+    const auto word_end = [&](std::size_t at) {
+        while (at < line.size() && !is_blank(line[at])) ++at;
+        return at;
+    };
+    const std::string_view keyword = line.substr(0, word_end(0));
+    const bool values = keyword == "v" || keyword == "vt" || keyword == "vn";
+    const bool corners = keyword == "f" || keyword == "l" || keyword == "p";
+    if ((!values && !corners) || has_control(line)) return;
+    for (std::size_t at = keyword.size(); at < line.size();) {
+        while (at < line.size() && is_blank(line[at])) ++at;
+        if (at == line.size() || line[at] == '#') return;
+        const std::size_t end = word_end(at);
+        if (values) {
+            const std::string_view w = line.substr(at, end - at);
+            if (!is_number_word(w)) refuse(w);
+        } else {
+            const std::string_view w = line.substr(at, end - at);
+            for (std::size_t from = 0; from <= w.size();) {
+                const std::size_t slash = std::min(w.find('/', from), w.size());
+                const std::string_view part = w.substr(from, slash - from);
+                if (!part.empty() && !is_index_word(part)) refuse(part);
+                from = slash + 1;
+            }
+        }
+        at = end;
+    }
 }
 
 }  // namespace
@@ -108,12 +157,18 @@ void check_obj_indices(const std::filesystem::path& path) {
     std::vector<std::string_view> w;
     std::vector<Corner> corners;
     for (std::size_t l = 0; l < lines.size(); ++l) {
+        check_numbers(lines[l], path.string(), l + 1);
         words(lines[l], w);
         if (w.empty()) continue;
         if (w[0] == "v") ++before[kVertex];
         if (w[0] == "vt") ++before[kUv];
         if (w[0] == "vn") ++before[kNormal];
         if (w[0] != "f") continue;
+        // As zraster's reader refuses it: Assimp's validation would, in its own words.
+        if (w.size() - 1 > 0x7fff)
+            throw InputError(path.string(), "line " + std::to_string(l + 1) + ": a face of " +
+                                                std::to_string(w.size() - 1) +
+                                                " corners; at most 32767");
         corners.clear();
         for (std::size_t i = 1; i < w.size(); ++i) {
             const std::optional<Corner> c = corner(w[i]);
@@ -133,9 +188,9 @@ void check_obj_indices(const std::filesystem::path& path) {
                 if (i > 0 && i <= total[kind]) continue;
                 if (i < 0 && -i <= before[kind]) continue;
                 const std::string cause =
-                    i > 0 ? std::string(kWhat[kind]) + " index out of range (" + std::to_string(i) +
-                                "; the file has " + std::to_string(total[kind]) + " " +
-                                kValues[kind] + ")"
+                    i > 0 ? std::string(kWhat[kind]) + " index out of range (" +
+                                std::string(c.text[kind]) + "; the file has " +
+                                std::to_string(total[kind]) + " " + kValues[kind] + ")"
                           : std::string(kWhat[kind]) +
                                 " index out of range (a negative index before the first " +
                                 kWhat[kind] + ")";

@@ -13,7 +13,9 @@
 namespace zraster::io {
 
 // Throws InputError("FILE: line N: texture coordinate index out of range (I; the file has N
-// texture coordinates)", and likewise for vertex and normal indices) for the first such index.
+// texture coordinates)", and likewise for vertex and normal indices) for the first such index,
+// "FILE: line N: 'WORD' is not a number" for a coordinate or index that is not one (as the reader
+// refuses it: obj_number_token.hpp), and "FILE: line N: a face of C corners; at most 32767".
 void check_obj_indices(const std::filesystem::path& path);
 
 }  // namespace zraster::io

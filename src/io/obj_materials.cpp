@@ -2,6 +2,7 @@
 #include "io/obj_materials.hpp"
 
 #include "io/confined_io_system.hpp"
+#include "io/mtl_numbers_check.hpp"
 #include "io/obj_material_libraries.hpp"
 
 #include "io/assimp_material.hpp"
@@ -63,6 +64,7 @@ std::optional<ObjFallback> read_statements(const std::filesystem::path& obj_path
                                        "material library " + l.file->string() +
                                            " that Assimp may read differently"};
                 l.materials = std::move(*names);
+                check_mtl_numbers(obj_path, *l.file);
                 out.dissolve.read(*l.file);
             }
             out.libraries.push_back(std::move(l));

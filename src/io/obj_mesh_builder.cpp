@@ -126,18 +126,21 @@ class VertexTable {
 // same whether computed on Assimp's per-corner vertices or these). Vertices that become equal
 // are then welded, as welding after that replacement does; so are vertices that got zero uvs or
 // normals for corners without them (`reweld`). Texture coordinates are always finite here (the
-// line parser reads a non-finite one as 0).
-void finish_mesh(Mesh& mesh, bool reweld) {
+// line parser reads a non-finite one as 0). Returns whether normals were replaced.
+bool finish_mesh(Mesh& mesh, bool reweld) {
+    bool replaced = false;
     if (std::any_of(mesh.normals.begin(), mesh.normals.end(),
                     [](const glm::vec3& n) { return std::isnan(n.x); })) {
         const std::vector<glm::vec3> computed = normals_over_shared_positions(mesh);
         for (std::size_t i = 0; i < mesh.normals.size(); ++i)
             if (std::isnan(mesh.normals[i].x)) mesh.normals[i] = computed[i];
         reweld = true;
+        replaced = true;
     }
     if (reweld) weld_identical_vertices(mesh);
     if (mesh.normals.empty()) mesh.normals = normals_over_shared_positions(mesh);
     update_bounds(mesh);
+    return replaced;
 }
 
 class MeshBuilder {
@@ -223,7 +226,7 @@ class MeshBuilder {
                     mesh.indices.push_back(ids[k % 4]);
             }
         }
-        finish_mesh(mesh, absent);
+        out.normals_recomputed = finish_mesh(mesh, absent);
         return out;
     }
 

@@ -37,6 +37,7 @@ struct MeshOutcome {
     Mesh mesh;
     // A non-finite position (convert_mesh's error): the global position and the mesh vertex.
     std::optional<std::pair<std::uint32_t, std::uint32_t>> non_finite;
+    bool normals_recomputed = false;  // unusable file normals replaced (recomputed_normals.hpp)
 };
 
 // The meshes `output` lists (indices into `meshes`, with their triangles counted), in that order.

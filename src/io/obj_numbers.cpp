@@ -44,7 +44,7 @@ bool parse_float_slowly(const char*& q, const char* e, float& out) {
     } else if (ec != std::errc()) {
         return false;
     }
-    if (ptr != e && !is_blank(*ptr) && *ptr != '#') return false;
+    if (ptr != e && !is_blank(*ptr)) return false;
     out = negative ? -value : value;
     q = ptr;
     return true;

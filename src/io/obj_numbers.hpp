@@ -7,8 +7,9 @@
 // std::from_chars, out of line (obj_numbers.cpp). Floats are correctly rounded, where Assimp's
 // fast_atof is sometimes one unit in the last place off.
 //
-// A token ends at a blank, a '#' or the end of the line: the byte at the line's end is its '\n',
-// the '\r' before it, or the zero padding, never part of a token.
+// A token ends at a blank or the end of the line: the byte at the line's end is its '\n', the
+// '\r' before it, or the zero padding, never part of a token. A '#' starts a comment only at the
+// start of a word: "1.#INF" and "3#c" are not numbers (Assimp would read 1 and 3).
 #pragma once
 #include "io/obj_scan.hpp"
 
@@ -104,7 +105,7 @@ inline constexpr double kDoublePowers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1
         for (; is_digit(*s); ++s) written = std::min(written * 10 + (*s - '0'), 100000);
         exponent += negative_exponent ? -written : written;
     }
-    if (s != e && !is_blank(*s) && *s != '#') return false;
+    if (s != e && !is_blank(*s)) return false;
     float value = 0.0f;
     if (digits == 0) {
         value = 0.0f;
@@ -130,7 +131,7 @@ inline constexpr double kDoublePowers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1
 [[gnu::noinline]] bool parse_float_slowly(const char*& q, const char* e, float& out);
 
 // One number: an optional sign, then what std::from_chars reads (decimal, exponent, nan, inf),
-// correctly rounded. The token must end at a blank, a '#' or the end of the line. A token
+// correctly rounded. The token must end at a blank or the end of the line. A token
 // starting with '.' is refused: Assimp does not count it as a component.
 [[gnu::always_inline]] inline bool parse_float(const char*& q, const char* e, float& out) {
     if (*q == '.') return false;

@@ -20,6 +20,7 @@
 #include "io/obj_numbers.hpp"
 #include "io/obj_scan.hpp"
 #include "io/obj_structure.hpp"
+#include "io/recomputed_normals.hpp"
 #include "io/text_util.hpp"
 
 #include <tbb/parallel_for.h>
@@ -211,12 +212,15 @@ std::variant<LoadedScene, ObjFallback> assemble_scene(const std::filesystem::pat
     scene.name = file;
     std::vector<std::string> warnings;
     Materials materials(path, statements, options, scene, warnings);
+    std::optional<std::string> recomputed;  // the first mesh whose normals were replaced
     for (std::size_t i = 0; i < built.size(); ++i) {
         const MeshPlan& plan = structure.meshes[output[i]];
         const std::optional<std::uint32_t> material = materials.index_of(plan.material);
         if (!material) return ObjFallback{0, "Assimp cannot read the material libraries"};
         Mesh& mesh = built[i].mesh;
         mesh.material = *material;
+        if (built[i].normals_recomputed && !recomputed)
+            recomputed = mesh.name.empty() ? "#" + std::to_string(i) : mesh.name;
         Instance instance;
         instance.mesh = static_cast<std::uint32_t>(scene.meshes.size());
         const std::string& object = structure.objects[plan.object].name;
@@ -224,6 +228,7 @@ std::variant<LoadedScene, ObjFallback> assemble_scene(const std::filesystem::pat
         scene.meshes.push_back(std::move(mesh));
         scene.instances.push_back(std::move(instance));
     }
+    if (recomputed) warnings.push_back(recomputed_normals_warning(*recomputed));
     // One line each, as load_scene_with_assimp makes them.
     for (const std::string& w : warnings) loaded.warnings.push_back(file + ": " + one_line(w));
     return loaded;

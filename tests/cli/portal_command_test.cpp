@@ -4,7 +4,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "support/test_support.hpp"
@@ -134,6 +136,25 @@ TEST(PortalCommand, CellsFileErrorsNameTheElement) {
     EXPECT_NE(r.output.find("two.cells.json: portals[0].cells[1]: no cell named 'c'"),
               std::string::npos)
         << r.output;
+}
+
+// A field the format does not have (a misspelt "translate") is refused by name, not skipped.
+TEST(PortalCommand, CellsFileUnknownFieldIsRefusedByName) {
+    const auto dir = temp_dir("portal_cells_unknown_field");
+    write_cells_file(dir, "b");
+    std::ifstream in(dir / "two.cells.json");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    text.replace(text.find("\"translate\": [1, 0, 0]"), 11, "\"translation\"");
+    std::ofstream(dir / "typo.cells.json") << text;
+    const CommandResult r = run_zraster("render typo.cells.json -o x.png", dir);
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_TRUE(single_line(r.output)) << r.output;
+    EXPECT_NE(r.output.find("typo.cells.json: instances[1]: \"translation\" is not a field of an "
+                            "instance (name, mesh, matrix, translate, rotate_y_degrees, scale: "
+                            "docs/portals.md)"),
+              std::string::npos)
+        << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
 }
 
 TEST(PortalCommand, InstanceInNoCellNamesItsElement) {

@@ -103,6 +103,50 @@ TEST(LoadBudgets, BudgetRefusalsNameTheirLimitInProcessAndThroughTheWorker) {
     }
 }
 
+// One accessor read by many primitives: Assimp copies it into each, so what it decodes is counted
+// per primitive against the triangle budget (3 x max_triangles vertices, max_triangles faces)
+// before it reads the file. A 1 KB document naming one million-vertex accessor 3000 times asked
+// for tens of gigabytes and ended in std::bad_alloc inside Assimp.
+std::string shared_accessor_gltf(int primitives, const std::string& extra_accessors = "",
+                                 const std::string& attributes = R"("POSITION":0)") {
+    std::string list;
+    for (int p = 0; p < primitives; ++p)
+        list += std::string(p ? "," : "") + R"({"attributes":{)" + attributes + "}}";
+    return R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],)"
+           R"("nodes":[{"mesh":0}],"meshes":[{"primitives":[)" +
+           list +
+           R"(]}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3",)"
+           R"("min":[0,0,0],"max":[1,1,0]})" +
+           extra_accessors +
+           R"(],"bufferViews":[{"buffer":0,"byteLength":36}],)"
+           R"("buffers":[{"uri":"data:application/octet-stream;base64,)"
+           R"(AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA","byteLength":36}]})";
+}
+
+TEST(LoadBudgets, AnAccessorReadByManyPrimitivesIsCountedForEach) {
+    const auto dir = test::temp_dir("budgets-shared-accessor");
+    const auto model = dir / "shared.gltf";
+    test::write_bytes(model, shared_accessor_gltf(10));  // 30 vertices, 10 triangles decoded
+    EXPECT_EQ(load_scene(model).meshes.size(), 10u);
+    for (const LoadIsolation isolation : {LoadIsolation::InProcess, LoadIsolation::WorkerProcess}) {
+        SCOPED_TRACE(isolation == LoadIsolation::InProcess ? "in process" : "worker");
+        LoadOptions o;
+        o.isolation = isolation;
+        o.max_triangles = 9;
+        test::expect_limit_exceeded(
+            [&] { load_scene(model, o); }, model, "max_triangles",
+            "the meshes' 10 primitives decode to more than 27 vertices, 3 x max_triangles (the "
+            "importer copies an accessor into every primitive that reads it)");
+        // Faces: an index accessor of 3 indices read by 10 primitives of points (a face each).
+        o.max_triangles = 20;
+        const auto points = dir / "points.gltf";
+        test::write_bytes(points, shared_accessor_gltf(10, "", R"("POSITION":0},"mode":0,"x":{)"));
+        test::expect_limit_exceeded(
+            [&] { load_scene(points, o); }, points, "max_triangles",
+            "the meshes' 10 primitives decode to more than 20 faces, max_triangles");
+    }
+}
+
 TEST(LoadBudgets, ACycleOfNodesIsRefusedByName) {
     const auto dir = test::temp_dir("budgets-cycle");
     const auto model = dir / "cycle.gltf";

@@ -117,7 +117,7 @@ std::vector<Malformed> malformed_files() {
         {"noversion.gltf", R"({"asset": {}})",
          "not a glTF file: its \"asset\" has no \"version\" string"},
         {"v3.gltf", R"({"asset": {"version": "3.0"}})",
-         "glTF version '3.0' is not supported (2.x is)"},
+         "glTF version '3.0' is not supported, only glTF 2.N (such as 2.0) is"},
         // glTF 1.0, which Assimp would read as far as its importer goes.
         {"v1.gltf", R"({"asset": {"version": "1.0"}, "meshes": {}})",
          "glTF 1.0 is not supported, only glTF 2.0 is (convert the file to 2.0)"},
@@ -219,6 +219,36 @@ std::vector<Malformed> malformed_files() {
                      "property list uchar int vertex_indices\nend_header\n") +
              std::string(36, '\0') + std::string("\x03\0\0\0\0\x01\0\0\0\x05\0\0\0", 13),
          "malformed PLY file: face 0 names vertex 5, but the file has 3 vertices (0 to 2)"},
+        // Corner counts Assimp reads as a huge length (std::bad_alloc) or refuses in its
+        // validation ("Face 0 has too many faces").
+        {"negative-corners.ply",
+         "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+         "property float z\nelement face 1\nproperty list int int vertex_indices\n"
+         "end_header\n0 0 0\n1 0 0\n0 1 0\n-3 0 1 2\n",
+         "malformed PLY file: face 0 has a negative corner count (-3)"},
+        {"binary-negative-corners.ply",
+         std::string("ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+                     "property float y\nproperty float z\nelement face 1\n"
+                     "property list int int vertex_indices\nend_header\n") +
+             std::string(36, '\0') + std::string("\xfd\xff\xff\xff\0\0\0\0\x01\0\0\0", 12),
+         "malformed PLY file: face 0 has a negative corner count (-3)"},
+        {"many-corners.ply",
+         "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+         "property float z\nelement face 1\nproperty list uint uint vertex_indices\n"
+         "end_header\n0 0 0\n1 0 0\n0 1 0\n40000" +
+             [] {
+                 std::string corners;
+                 for (int k = 0; k < 40000; ++k) corners += k % 2 ? " 1" : " 0";
+                 return corners;
+             }() +
+             "\n",
+         "malformed PLY file: face 0 has 40000 corners; at most 32767"},
+        {"letters-length.ply",
+         "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+         "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+         "end_header\n0 0 0\n1 0 0\n0 1 0\n3x 0 1 2\n",
+         "malformed PLY file: a face record's list length '3x' is not a whole number of 0 or "
+         "more"},
         {"garbage.xyzzy", pseudo_random(4096, 4, '\0'),
          "no importer recognises its contents as a XYZZY file (a wrong extension, or not a 3D "
          "model)"},

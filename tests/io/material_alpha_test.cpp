@@ -162,6 +162,38 @@ TEST(MaterialAlpha, GltfCutoffOutsideZeroToOneIsClampedWithAWarning) {
     EXPECT_EQ(only_material(blend).alpha_cutoff, 0.0f);
 }
 
+// Members of the wrong JSON type, which Assimp skips for the default: a warning each saying the
+// value used, as for an alphaMode string outside OPAQUE, MASK and BLEND.
+TEST(MaterialAlpha, GltfMembersOfTheWrongTypeWarnWithTheDefaultUsed) {
+    const auto path = write_alpha_gltf(
+        "types", R"({"name":"m","alphaMode":7,"alphaCutoff":"x","doubleSided":1,)"
+                 R"("pbrMetallicRoughness":{"baseColorFactor":[1,0,0],"roughnessFactor":"r"}})");
+    std::vector<std::string> warnings;
+    const Scene scene = load_alpha_both_ways(path, &warnings);
+    const Material& m = only_material(scene);
+    EXPECT_EQ(m.alpha_mode, AlphaMode::Opaque);
+    EXPECT_EQ(m.alpha_cutoff, 0.5f);
+    EXPECT_FALSE(m.double_sided);
+    EXPECT_EQ(m.base_color, glm::vec3(1.0f));
+    const std::string prefix = path.string() + ": material 'm': ";
+    EXPECT_EQ(
+        warnings,
+        (std::vector<std::string>{
+            prefix + "alphaMode 7 is not a string (OPAQUE, MASK or BLEND), drawn opaque (glTF's "
+                     "default)",
+            prefix + "alphaCutoff \"x\" is not a number, using 0.5 (glTF's default)",
+            prefix + "doubleSided 1 is not true or false, using false (glTF's default)",
+            prefix + "baseColorFactor [1,0,0] is not 4 numbers, using 1, 1, 1, 1 (glTF's "
+                     "default)",
+            prefix + "roughnessFactor \"r\" is not a number, using 1 (glTF's default)"}));
+    // Members of the right types: no warning.
+    std::vector<std::string> none;
+    load_alpha_both_ways(write_alpha_gltf("types-ok", R"({"alphaMode":"MASK","alphaCutoff":0.2,)"
+                                                      R"("doubleSided":true})"),
+                         &none);
+    EXPECT_TRUE(none.empty()) << none.front();
+}
+
 // glTF factors outside their ranges (docs/limits.md): clamped, one warning each naming the
 // material, the value and what is used; a factor too large for a float is infinite and the
 // default color is used. roughnessFactor is checked itself (Assimp turns it into a shininess).

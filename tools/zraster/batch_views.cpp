@@ -2,6 +2,7 @@
 #include "batch_views.hpp"
 
 #include "io/json_errors.hpp"
+#include "io/json_fields.hpp"
 
 #include <zraster/error.hpp>
 
@@ -11,7 +12,6 @@
 #include <cmath>
 #include <fstream>
 #include <numbers>
-#include <set>
 
 #include "camera_ranges.hpp"
 #include "command_line.hpp"
@@ -171,29 +171,13 @@ BatchView read_camera(const std::filesystem::path& file, std::size_t index, cons
     const CameraReader r(file, index, camera);
     // The fields read here and those --camera-json writes; anything else is a typo ("fov") that
     // would silently leave the default in place.
-    static const std::set<std::string> kFields = {"eye",
-                                                  "target",
-                                                  "up",
-                                                  "orbit",
-                                                  "fovy",
-                                                  "near",
-                                                  "far",
-                                                  "projection",
-                                                  "K",
-                                                  "camera_to_world",
-                                                  "width",
-                                                  "height",
-                                                  "convention",
-                                                  "convention_note",
-                                                  "pixels_per_unit",
-                                                  "principal_point",
-                                                  "depth"};
-    if (camera.is_object())
-        for (const auto& [key, value] : camera.items())
-            if (!kFields.contains(key))
-                r.fail(key,
-                       "is not a camera field (eye, target, up, orbit, fovy, near, far, K, "
-                       "camera_to_world, projection: docs/batch.md)");
+    if (const auto field = io::unknown_field(
+            camera, {"eye", "target", "up", "orbit", "fovy", "near", "far", "projection", "K",
+                     "camera_to_world", "width", "height", "convention", "convention_note",
+                     "pixels_per_unit", "principal_point", "depth"}))
+        r.fail(*field,
+               "is not a camera field (eye, target, up, orbit, fovy, near, far, K, "
+               "camera_to_world, projection: docs/batch.md)");
     BatchView view;
     // ("projection": "orthographic" is what --camera-json writes for --ortho.)
     if (r.has("projection") && r.at("projection") != "orthographic" &&

@@ -1,0 +1,93 @@
+// See gltf_decode_budget.hpp.
+#include "io/gltf_decode_budget.hpp"
+
+#include <zraster/error.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+
+namespace zraster::io {
+
+namespace {
+
+using nlohmann::json;
+
+const json& array_member(const json& object, const char* key) {
+    static const json empty = json::array();
+    const auto it = object.is_object() ? object.find(key) : object.end();
+    return it != object.end() && it->is_array() ? *it : empty;
+}
+
+// The count of the accessor `index` names; 0 when it names none.
+std::uint64_t accessor_count(const json& accessors, const json& index) {
+    if (!index.is_number_unsigned() || index.get<std::uint64_t>() >= accessors.size()) return 0;
+    const json& accessor = accessors[index.get<std::size_t>()];
+    const auto count = accessor.is_object() ? accessor.find("count") : accessor.end();
+    return count != accessor.end() && count->is_number_unsigned() ? count->get<std::uint64_t>() : 0;
+}
+
+// Faces Assimp makes of `n` indices (or vertices) drawn in `mode`: points, lines, loops, strips,
+// triangles, strips, fans.
+std::uint64_t faces(std::uint64_t mode, std::uint64_t n) {
+    switch (mode) {
+        case 0:
+            return n;
+        case 1:
+            return n / 2;
+        case 2:
+            return n;
+        case 3:
+            return n > 0 ? n - 1 : 0;
+        case 5:
+        case 6:
+            return n > 2 ? n - 2 : 0;
+        default:
+            return n / 3;
+    }
+}
+
+}  // namespace
+
+void check_gltf_decode_budget(const std::filesystem::path& path, const json& document,
+                              const LoadOptions& options) {
+    const json& accessors = array_member(document, "accessors");
+    // Saturated past the limits: a count can be up to 2^64 - 1.
+    const std::uint64_t max_faces = options.max_triangles;
+    const std::uint64_t max_vertices =
+        max_faces > UINT64_MAX / 3 ? UINT64_MAX : 3 * std::uint64_t{max_faces};
+    std::uint64_t vertices = 0, face_total = 0, primitives = 0;
+    for (const json& mesh : array_member(document, "meshes")) {
+        for (const json& primitive : array_member(mesh, "primitives")) {
+            if (!primitive.is_object()) continue;
+            ++primitives;
+            std::uint64_t n = 0;
+            const auto attributes = primitive.find("attributes");
+            if (attributes != primitive.end() && attributes->is_object())
+                for (const auto& [name, index] : attributes->items())
+                    n = std::max(n, accessor_count(accessors, index));
+            const auto indices = primitive.find("indices");
+            const std::uint64_t drawn =
+                indices != primitive.end() ? accessor_count(accessors, *indices) : n;
+            const auto mode = primitive.find("mode");
+            const std::uint64_t m = mode != primitive.end() && mode->is_number_unsigned()
+                                        ? mode->get<std::uint64_t>()
+                                        : 4;
+            vertices = std::min(max_vertices + 1, vertices + std::min(n, max_vertices + 1));
+            face_total =
+                std::min(max_faces + 1, face_total + std::min(faces(m, drawn), max_faces + 1));
+        }
+    }
+    const std::string where = "the meshes' " + std::to_string(primitives) + " primitives";
+    const std::string why = " (the importer copies an accessor into every primitive that reads it)";
+    if (vertices > max_vertices)
+        throw LimitExceeded(path.string(), "max_triangles",
+                            where + " decode to more than " + std::to_string(max_vertices) +
+                                " vertices, 3 x max_triangles" + why);
+    if (face_total > max_faces)
+        throw LimitExceeded(path.string(), "max_triangles",
+                            where + " decode to more than " + std::to_string(max_faces) +
+                                " faces, max_triangles" + why);
+}
+
+}  // namespace zraster::io

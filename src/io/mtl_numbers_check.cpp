@@ -1,0 +1,58 @@
+// See mtl_numbers_check.hpp.
+#include "io/mtl_numbers_check.hpp"
+
+#include <zraster/error.hpp>
+
+#include "io/obj_number_token.hpp"
+
+#include <algorithm>
+#include <array>
+#include <fstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace zraster::io {
+
+namespace {
+
+constexpr std::array<std::string_view, 17> kNumeric = {"Ka", "Kd", "Ks",  "Ke",    "Tf",    "Ns",
+                                                       "Ni", "d",  "Tr",  "illum", "Pr",    "Pm",
+                                                       "Ps", "Pc", "Pcr", "aniso", "anisor"};
+
+bool blank(char c) {
+    return c == ' ' || c == '\t' || c == '\r';
+}
+
+}  // namespace
+
+void check_mtl_numbers(const std::filesystem::path& obj, const std::filesystem::path& library) {
+    std::ifstream in(library, std::ios::binary);
+    std::string line;
+    std::vector<std::string_view> words;
+    for (std::size_t number = 1; std::getline(in, line); ++number) {
+        words.clear();
+        const std::string_view text(line);
+        for (std::size_t at = 0; at < text.size();) {
+            while (at < text.size() && blank(text[at])) ++at;
+            std::size_t end = at;
+            while (end < text.size() && !blank(text[end])) ++end;
+            if (end > at) words.push_back(text.substr(at, end - at));
+            at = end;
+        }
+        if (words.empty() ||
+            std::find(kNumeric.begin(), kNumeric.end(), words[0]) == kNumeric.end())
+            continue;
+        for (std::size_t k = 1; k < words.size(); ++k) {
+            const std::string_view w = words[k];
+            if (w.starts_with('#')) break;
+            if (!is_number_word(w))
+                throw InputError(obj.string(),
+                                 "material library " +
+                                     library.lexically_relative(obj.parent_path()).string() +
+                                     ": line " + std::to_string(number) + ": " + not_a_number(w));
+        }
+    }
+}
+
+}  // namespace zraster::io

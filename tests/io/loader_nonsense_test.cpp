@@ -1,0 +1,261 @@
+// Values a loader used to read a prefix of or skip without a word (issue 27's hostile runs):
+// OBJ and MTL words that are not numbers, OBJ faces past Assimp's corner limit and indices past
+// 2^31, glTF versions that are not 2.N, unusable normals, unknown cells file fields. Each is
+// refused with one line naming the file and the cause, or warned about saying what is assumed;
+// in zraster's OBJ reader and the Assimp path alike, in process and through the worker.
+#include <zraster/load.hpp>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "io/io_test_util.hpp"
+#include "io/load_with_warnings.hpp"
+#include "support/test_support.hpp"
+
+namespace zraster {
+namespace {
+
+constexpr LoadIsolation kIsolations[] = {LoadIsolation::InProcess, LoadIsolation::WorkerProcess};
+
+LoadOptions isolated(LoadIsolation isolation) {
+    LoadOptions o;
+    o.isolation = isolation;
+    return o;
+}
+
+// A line zraster's reader leaves to Assimp (a pentagon): put first, the file takes the Assimp
+// path, whose pre-scan must refuse what the reader refuses.
+const std::string kPentagon = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv -1 0 0\nf 1 2 3 4 5\n";
+
+struct Refusal {
+    std::string body;   // after the vertices
+    std::string cause;  // "{N}" stands for the file's vertex count
+    std::size_t line;   // counted from the body's first line as 1
+};
+
+// `body` after three vertices, read by the reader (the file as is) and by the Assimp path (the
+// pentagon first): the same cause, at the line it is on.
+void expect_obj_refused_both_ways(const std::string& test, const Refusal& r) {
+    SCOPED_TRACE(r.body);
+    const auto dir = test::temp_dir(test);
+    const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    struct Variant {
+        std::string name, text;
+        std::size_t first_line;
+        std::string vertices;
+    };
+    for (const Variant& v : {Variant{"reader.obj", tri + r.body, 4, "3"},
+                             Variant{"assimp.obj", kPentagon + tri + r.body, 10, "8"}}) {
+        SCOPED_TRACE(v.name);
+        const auto path = dir / v.name;
+        test::write_bytes(path, v.text);
+        std::string cause = r.cause;
+        if (const std::size_t at = cause.find("{N}"); at != std::string::npos)
+            cause.replace(at, 3, v.vertices);
+        for (const LoadIsolation isolation : kIsolations) {
+            try {
+                load_scene(path, isolated(isolation));
+                ADD_FAILURE() << "loaded";
+            } catch (const InputError& e) {
+                EXPECT_EQ(e.file(), path.string());
+                EXPECT_EQ(e.cause(),
+                          "line " + std::to_string(v.first_line + r.line - 1) + ": " + cause);
+            }
+        }
+    }
+}
+
+TEST(LoaderNonsense, ObjWordsThatAreNotNumbersAreRefusedByName) {
+    const std::vector<Refusal> cases = {
+        {"v 1e5x 0 0\nf 1 2 3\n", "'1e5x' is not a number", 1},
+        {"v 0x10 0 0\nf 1 2 3\n", "'0x10' is not a number", 1},
+        {"v 1,5 0 0\nf 1 2 3\n", "'1,5' is not a number", 1},
+        {"v 1.#INF 0 0\nf 1 2 3\n", "'1.#INF' is not a number", 1},
+        {"v 1 2 3#c\nf 1 2 3\n", "'3#c' is not a number", 1},
+        {"vt 0.5x 0\nf 1/1 2/1 3/1\n", "'0.5x' is not a number", 1},
+        {"vn 0 0 1e\nf 1//1 2//1 3//1\n", "'1e' is not a number", 1},
+        {"f 1x 2 3\n", "'1x' is not a number", 1},
+        {"f 1 2 0x3\n", "'0x3' is not a number", 1},
+        {"vt 0 0\nf 1/1 2/1x 3/1\n", "'1x' is not a number", 2},
+        {"f 1.5 2 3\n", "'1.5' is not a number", 1},
+    };
+    for (const Refusal& r : cases) expect_obj_refused_both_ways("nonsense-obj-numbers", r);
+}
+
+TEST(LoaderNonsense, ObjNumbersStillRead) {
+    // Comments, signs, exponents, a trailing point, nan and inf (a non-finite position is an
+    // error only when a face uses it).
+    const auto path = test::write_fixture("nonsense-obj-good", "good.obj",
+                                          "v +1 0 0 # a comment\nv 0 1.5E+0 0\nv 0 0 -2.\n"
+                                          "v nan inf -INF\nvn 0 0 1\nf 1//1 2//1 3//1\n");
+    for (const LoadIsolation isolation : kIsolations)
+        EXPECT_EQ(load_scene(path, isolated(isolation)).meshes.at(0).indices.size(), 3u);
+}
+
+TEST(LoaderNonsense, ObjFacesPastAssimpsCornerLimitAreRefusedInOurTerms) {
+    for (const std::size_t corners : {std::size_t{40'000}, std::size_t{100'000}}) {
+        std::string face = "f";
+        for (std::size_t k = 0; k < corners; ++k) face += " " + std::to_string(1 + k % 3);
+        expect_obj_refused_both_ways(
+            "nonsense-obj-corners",
+            {face + "\n", "a face of " + std::to_string(corners) + " corners; at most 32767", 1});
+    }
+}
+
+TEST(LoaderNonsense, ObjIndicesPast2To31NameTheIndex) {
+    expect_obj_refused_both_ways(
+        "nonsense-obj-2e31",
+        {"f 1 2 2147483648\n", "vertex index out of range (2147483648; the file has {N} vertices)",
+         1});
+    expect_obj_refused_both_ways(
+        "nonsense-obj-2e64",
+        {"f 1 2 18446744073709551617\n",
+         "vertex index out of range (18446744073709551617; the file has {N} vertices)", 1});
+}
+
+TEST(LoaderNonsense, MtlWordsThatAreNotNumbersAreRefusedNamingTheLibrary) {
+    struct Case {
+        std::string statement, word;
+    };
+    for (const Case& c : {Case{"Kd 0.5abc 0 0", "0.5abc"}, Case{"Ns 1e5x", "1e5x"},
+                          Case{"d 0.5,", "0.5,"}, Case{"Ka 0 0 0x1", "0x1"}}) {
+        SCOPED_TRACE(c.statement);
+        const auto dir = test::temp_dir("nonsense-mtl");
+        const auto mtl = dir / "m.mtl";
+        test::write_bytes(mtl, "newmtl red\n" + c.statement + "\n");
+        const std::string body = "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n";
+        for (const std::string& text :
+             {"mtllib m.mtl\n" + body, "mtllib m.mtl\n" + kPentagon + body}) {
+            const auto obj = dir / "m.obj";
+            test::write_bytes(obj, text);
+            for (const LoadIsolation isolation : kIsolations)
+                test::expect_input_error(
+                    [&] { load_scene(obj, isolated(isolation)); }, obj,
+                    "material library m.mtl: line 2: '" + c.word + "' is not a number");
+        }
+    }
+    // Comments end a statement.
+    const auto dir = test::temp_dir("nonsense-mtl-good");
+    test::write_bytes(dir / "m.mtl", "newmtl red\nKd 1 0 0 # red\nd 0.5\nNs 10 #\n");
+    test::write_bytes(dir / "m.obj",
+                      "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n");
+    EXPECT_EQ(load_scene(dir / "m.obj").materials.size(), 2u);
+}
+
+TEST(LoaderNonsense, GltfVersionsThatAreNot2NAreRefused) {
+    const auto dir = test::temp_dir("nonsense-gltf-version");
+    for (const std::string version : {"2.0abc", "2", "02.0", "2.0.0", " 2.0", "2."}) {
+        SCOPED_TRACE(version);
+        const auto path = dir / "v.gltf";
+        test::write_bytes(path, R"({"asset":{"version":")" + version + R"("}})");
+        test::expect_input_error(
+            [&] { load_scene(path); }, path,
+            "glTF version '" + version + "' is not supported, only glTF 2.N (such as 2.0) is");
+    }
+}
+
+// Every normal of a loaded scene is of unit length.
+void expect_unit_normals(const Scene& scene) {
+    for (const Mesh& mesh : scene.meshes)
+        for (const glm::vec3& n : mesh.normals) {
+            ASSERT_TRUE(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z));
+            ASSERT_NEAR(glm::length(n), 1.0f, 1e-5f);
+        }
+}
+
+TEST(LoaderNonsense, UnusableNormalsAreRecomputedWithOneWarningPerFile) {
+    const auto dir = test::temp_dir("nonsense-normals");
+    const std::string tris = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
+    const std::string obj_body =
+        "vn nan 0 0\nvn 0 0 0\nvn 0 0 1\nf 1//1 2//2 3//3\nf 1//3 2//3 4//1\n";
+    std::vector<std::filesystem::path> files;
+    files.push_back(dir / "reader.obj");
+    test::write_bytes(files.back(), tris + obj_body);
+    files.push_back(dir / "assimp.obj");
+    test::write_bytes(files.back(), kPentagon + tris + obj_body);
+    files.push_back(dir / "n.ply");
+    test::write_bytes(files.back(),
+                      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                      "property float y\nproperty float z\nproperty float nx\nproperty float ny\n"
+                      "property float nz\nelement face 1\nproperty list uchar int vertex_indices\n"
+                      "end_header\n0 0 0 nan 0 0\n1 0 0 0 0 1\n0 1 0 0 0 0\n3 0 1 2\n");
+    // glTF: positions then NORMALs with a NaN and a zero one.
+    const float data[18] = {0, 0, 0, 1, 0, 0, 0, 1, 0, std::nanf(""), 0, 0, 0, 0, 1, 0, 0, 0};
+    files.push_back(dir / "n.gltf");
+    test::write_bytes(
+        files.back(),
+        R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
+        R"("meshes":[{"name":"tri","primitives":[{"attributes":{"POSITION":0,"NORMAL":1}}]}],)"
+        R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3",)"
+        R"("min":[0,0,0],"max":[1,1,0]},{"bufferView":0,"byteOffset":36,"componentType":5126,)"
+        R"("count":3,"type":"VEC3"}],"bufferViews":[{"buffer":0,"byteLength":72}],)"
+        R"("buffers":[{"byteLength":72,"uri":"data:application/octet-stream;base64,)" +
+            test::base64(std::string(reinterpret_cast<const char*>(data), sizeof data)) +
+            R"("}]})");
+    for (const auto& path : files) {
+        SCOPED_TRACE(path.string());
+        for (const LoadIsolation isolation : kIsolations) {
+            const io::LoadedScene loaded = test::load_with_warnings(path, isolated(isolation));
+            expect_unit_normals(loaded.scene);
+            std::size_t count = 0;
+            for (const std::string& w : loaded.warnings) {
+                if (w.find("normals that are missing, not finite or of zero length") ==
+                    std::string::npos)
+                    continue;
+                ++count;
+                EXPECT_EQ(w.rfind(path.string() + ": normals that are missing, not finite or of "
+                                                  "zero length (first in mesh ",
+                                  0),
+                          0u)
+                    << w;
+                EXPECT_NE(w.find(") recomputed from the faces"), std::string::npos) << w;
+            }
+            EXPECT_EQ(count, 1u);
+        }
+    }
+    // Usable normals: no warning.
+    const auto good = dir / "good.obj";
+    test::write_bytes(good, tris + "vn 0 0 2\nf 1//1 2//1 3//1\n");
+    EXPECT_TRUE(test::load_with_warnings(good).warnings.empty());
+}
+
+TEST(LoaderNonsense, CellsFileFieldsItDoesNotHaveAreRefusedByName) {
+    const auto dir = test::temp_dir("nonsense-cells");
+    test::write_bytes(dir / "t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    struct Case {
+        std::string top, instance, cell, portal, cause;
+    };
+    const std::string box = R"("box":[[-5,-5,-5],[5,5,5]])";
+    for (const Case& c : {
+             Case{R"(,"portal":[])", "", "", "",
+                  "(top level): \"portal\" is not a field of the file (zraster_cells, meshes, "
+                  "instances, cells, portals: docs/portals.md)"},
+             Case{"", R"(,"translation":[1,0,0])", "", "",
+                  "instances[0]: \"translation\" is not a field of an instance (name, mesh, "
+                  "matrix, translate, rotate_y_degrees, scale: docs/portals.md)"},
+             Case{"", "", R"(,"bbox":1)", "",
+                  "cells[0]: \"bbox\" is not a field of a cell (name, box, planes, instances: "
+                  "docs/portals.md)"},
+             Case{"", "", "", R"(,"name":"door")",
+                  "portals[0]: \"name\" is not a field of a portal (cells, corners: "
+                  "docs/portals.md)"},
+         }) {
+        SCOPED_TRACE(c.cause);
+        const auto path = dir / "two.cells.json";
+        test::write_bytes(
+            path,
+            R"({"zraster_cells":1,"meshes":{"t":"t.obj"},"instances":[{"name":"i","mesh":"t")" +
+                c.instance + R"(}],"cells":[{"name":"a",)" + box + R"(,"instances":["i"])" +
+                c.cell + R"(},{"name":"b","box":[[5,-5,-5],[6,5,5]],"instances":[]}],)" +
+                R"("portals":[{"cells":["a","b"],"corners":[[5,0,0],[5,1,0],[5,1,1]])" + c.portal +
+                "}]" + c.top + "}");
+        test::expect_input_error([&] { load_scene(path); }, path, c.cause);
+    }
+}
+
+}  // namespace
+}  // namespace zraster
