@@ -246,6 +246,7 @@ class Renderer:
         outputs: OutputName | Sequence[OutputName] = ("color", "depth"),
         sensor: Sensor = None,
         *,
+        max_bin_bytes: int = ...,
         eye: Vec3 = ...,
         target: Vec3 = ...,
         up: Vec3 = ...,
