@@ -357,7 +357,7 @@ row "GLB whose JSON chunk is not valid JSON" render badjson.glb -o out.png
 row "3DS of text" render text.3ds -o out.png
 row "3DS chunk declaring bytes past the end" render pastend.3ds -o out.png
 row "3DS chunk smaller than its header" render tinychunk.3ds -o out.png
-row "OBJ face of one corner (Assimp: a POINT)" render point.obj -o out.png
+row "OBJ face of one corner" render point.obj -o out.png
 row "PLY of random bytes" render random.ply -o out.png
 row "OFF of random bytes" render random.off -o out.png
 row "COLLADA of random bytes" render random.dae -o out.png

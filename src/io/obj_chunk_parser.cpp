@@ -186,6 +186,10 @@ class ChunkParser {
             if (n < 0)
                 if (const std::string_view w = first_non_number(q, e); !w.empty())
                     return error(line, not_a_number(w));
+            // (Assimp reads the next line's numbers into a short vertex, or fails far away.)
+            if (n >= 0 && n < 3)
+                return error(line, "a vertex of " + std::to_string(n) +
+                                       (n == 1 ? " number" : " numbers") + "; x y z are needed");
             return leave(line, n < 0 ? "vertex coordinate that is not a plain number"
                                      : "vertex with " + std::to_string(n) + " numbers");
         }
@@ -298,8 +302,10 @@ class ChunkParser {
         const auto kind = keyword == 'f' ? kPolygon : keyword == 'l' ? kLineElement : kPointElement;
         if (kind == kPolygon && corners > kMaxFaceCorners)
             return error(line, too_many_corners(corners));
-        if (kind == kPolygon && corners < 3)
-            return leave(line, "face with " + std::to_string(corners) + " corners");
+        if (kind == kPolygon && corners < 3)  // (Assimp's validation fails in its own terms)
+            return error(line, "a face of " + std::to_string(corners) +
+                                   (corners == 1 ? " corner" : " corners") +
+                                   "; a face needs at least 3");
         if (kind == kPolygon && corners > 4)
             return leave(line, "polygon with " + std::to_string(corners) +
                                    " corners (Assimp triangulates those by ear clipping)");

@@ -160,6 +160,17 @@ void check_obj_indices(const std::filesystem::path& path) {
         check_numbers(lines[l], path.string(), l + 1);
         words(lines[l], w);
         if (w.empty()) continue;
+        const auto refuse = [&](const std::string& cause) {
+            throw InputError(path.string(), "line " + std::to_string(l + 1) + ": " + cause);
+        };
+        // Faces of one or two corners and short vertices, in zraster's reader's words: Assimp
+        // fails on them in its own, or reads the next line into the vertex.
+        if (w[0] == "v" && w.size() < 4)
+            refuse("a vertex of " + std::to_string(w.size() - 1) +
+                   (w.size() == 2 ? " number" : " numbers") + "; x y z are needed");
+        if (w[0] == "f" && w.size() > 1 && w.size() < 4)  // ("f" alone: ignored by both)
+            refuse("a face of " + std::to_string(w.size() - 1) +
+                   (w.size() == 2 ? " corner" : " corners") + "; a face needs at least 3");
         if (w[0] == "v") ++before[kVertex];
         if (w[0] == "vt") ++before[kUv];
         if (w[0] == "vn") ++before[kNormal];

@@ -159,7 +159,17 @@ std::vector<Malformed> malformed_files() {
         {"random.ply", pseudo_random(300, 2, 'p'), "not a PLY file: it does not start with 'ply'"},
         {"random.off", "this is not an OFF file\n1 2 3\n",
          "not an OFF file: the header (OFF, then the vertex, face and edge counts) is invalid"},
-        {"point.obj", tri + "f 1 2 3\nf 1\n", "malformed OBJ file: line 5: face with 1 corners"},
+        {"point.obj", tri + "f 1 2 3\nf 1\n",
+         "line 5: a face of 1 corner; a face needs at least 3"},
+        {"line.obj", tri + "f 1 2\nf 1 2 3\n",
+         "line 4: a face of 2 corners; a face needs at least 3"},
+        {"short-vertex.obj", "v 0 0\n" + tri + "f 2 3 4\n",
+         "line 1: a vertex of 2 numbers; x y z are needed"},
+        // The same in a file zraster's reader leaves to Assimp (a polygon of 5 corners first).
+        {"point-assimp.obj", tri + "v 1 1 0\nv 2 0 0\nf 1 2 5 4 3\nf 1\n",
+         "line 7: a face of 1 corner; a face needs at least 3"},
+        {"short-vertex-assimp.obj", tri + "v 1 1 0\nv 2 0 0\nf 1 2 5 4 3\nv 0 0\n",
+         "line 7: a vertex of 2 numbers; x y z are needed"},
         // OBJ texture and normal indices, which Assimp would clamp or drop without a word.
         {"uv.obj", tri + "vt 0 0\nf 1/99 2/1 3/1\n",
          "line 5: texture coordinate index out of range (99; the file has 1 texture coordinates)"},
