@@ -264,6 +264,16 @@ std::vector<std::uint32_t> BspTree::back_to_front(const glm::dvec4& eye) const {
     return order;
 }
 
+void check_bsp_budget(const Scene& scene, const RenderLimits& limits) {
+    const std::uint64_t triangles = scene.triangle_count();
+    const std::uint64_t budget = bsp_polygon_budget(limits, triangles);
+    if (triangles > budget)
+        throw LimitExceeded(scene.name, "max_bsp_polygons",
+                            "BSP tree: " + std::to_string(triangles) +
+                                " input triangles, more than the budget of " +
+                                std::to_string(budget) + " polygons");
+}
+
 std::vector<BspPolygon> bsp_polygons_from_scene(const Scene& scene) {
     std::vector<BspPolygon> out;
     out.reserve(scene.triangle_count());
