@@ -112,6 +112,11 @@ struct RenderLimits {
     // input triangle + 65,536, at most 2^22 (about 1 GB; the meshes measured need about 2 per
     // triangle). A scene of more triangles than the budget is refused before the tree is built.
     std::uint64_t max_bsp_polygons = 0;
+    // BSP tree: polygon-plane classifications while building (15 to 20 ns each). Automatic:
+    // 16 per pair of input triangles (16 n^2) + 10^7, at most 5 x 10^8 (about 10 s; the meshes
+    // measured need 680 to 1,440 per triangle, a convex mesh, whose tree is a chain, about
+    // 6.5 n^2).
+    std::uint64_t max_bsp_classifications = 0;
     // Polygons kept by projection, the input of the painter's and Warnock's algorithms, the
     // A-buffer and the multisampled path (visibility.hpp's project_scene), counted as they are
     // made: about 0.7 KB each through the painter's sort, 2 KB in the A-buffer. Automatic:

@@ -188,6 +188,10 @@ struct BspOptions {
     // A pool (input and split pieces) growing past this many polygons throws LimitExceeded
     // ("max_bsp_polygons"). 0: bsp_polygon_budget(RenderLimits{}, input polygons).
     std::uint64_t max_polygons = 0;
+    // Past this many polygon-plane classifications (scoring included) the build throws
+    // LimitExceeded ("max_bsp_classifications"). 0: bsp_classification_budget(RenderLimits{},
+    // input polygons).
+    std::uint64_t max_classifications = 0;
     ProgressReporter* progress = nullptr;  // stage "BSP tree"; not owned
 };
 
@@ -317,6 +321,8 @@ ZRASTER_API std::uint64_t painter_comparison_budget(const RenderLimits& limits,
                                                     std::size_t polygons);
 ZRASTER_API std::uint64_t bsp_polygon_budget(const RenderLimits& limits,
                                              std::size_t input_polygons);
+ZRASTER_API std::uint64_t bsp_classification_budget(const RenderLimits& limits,
+                                                    std::size_t input_polygons);
 ZRASTER_API std::uint64_t projected_polygon_budget(const RenderLimits& limits);
 ZRASTER_API std::uint64_t painted_fragment_budget(const RenderLimits& limits, int width,
                                                   int height);

@@ -284,6 +284,7 @@ class Renderer:
         edge_color: Vec3 = ...,
         max_painter_comparisons: int = ...,
         max_bsp_polygons: int = ...,
+        max_bsp_classifications: int = ...,
         max_projected_polygons: int = ...,
         max_painted_fragments: int = ...,
         max_warnock_classifications: int = ...,

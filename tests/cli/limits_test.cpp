@@ -404,6 +404,20 @@ TEST(CliLimits, VisibilityAlgorithmBudgets) {
         expect_refused(dir, cube + visibility + flag + std::to_string(filled - 1),
                        "; raise it with --max-painted-fragments N");
     }
+    const CommandResult bsp = run_limited(cube + "bsp --stats", dir);
+    ASSERT_EQ(bsp.exit_code, 0) << bsp.output;
+    std::filesystem::remove(dir / "out.png");
+    // ("bsp: 12 input polygons, 6 nodes, depth 6, 0 splits, 405 classifications")
+    const unsigned long long tests = number_after(bsp.output, "splits, ");
+    ASSERT_GT(tests, 1u);
+    EXPECT_EQ(
+        run_limited(cube + "bsp --max-bsp-classifications " + std::to_string(tests), dir).exit_code,
+        0);
+    std::filesystem::remove(dir / "out.png");
+    expect_refused(dir, cube + "bsp --max-bsp-classifications " + std::to_string(tests - 1),
+                   "polygon-plane classifications");
+    expect_refused(dir, cube + "bsp --max-bsp-classifications " + std::to_string(tests - 1),
+                   "; raise it with --max-bsp-classifications N");
     expect_refused(dir, cube + "painter --max-painted-fragments 1.5", "--max-painted-fragments");
     expect_refused(dir, cube + "painter --max-projected-polygons -1", "--max-projected-polygons");
 }

@@ -6,6 +6,7 @@
 #include <zraster/abuffer.hpp>
 #include <zraster/error.hpp>
 #include <zraster/load.hpp>
+#include <zraster/scenes.hpp>
 #include <zraster/svg.hpp>
 #include <zraster/visibility.hpp>
 
@@ -59,6 +60,8 @@ TEST(Budgets, AutomaticValuesScaleWithTheInput) {
     EXPECT_EQ(bsp_polygon_budget(automatic, 200'000), 3'265'536u);
     EXPECT_EQ(bsp_polygon_budget(automatic, 1'000'000), std::uint64_t{1} << 22);
     EXPECT_EQ(bsp_polygon_budget(automatic, 20'000'000), std::uint64_t{1} << 22);
+    EXPECT_EQ(bsp_classification_budget(automatic, 1000), 16u * 1000u * 1000u + 10'000'000u);
+    EXPECT_EQ(bsp_classification_budget(automatic, 1'000'000), 500'000'000u);
     EXPECT_EQ(projected_polygon_budget(automatic), std::uint64_t{1} << 19);
     EXPECT_EQ(painted_fragment_budget(automatic, 1920, 1080),
               16u * 1920u * 1080u + (std::uint64_t{1} << 24));
@@ -72,10 +75,12 @@ TEST(Budgets, AutomaticValuesScaleWithTheInput) {
     set.max_bsp_polygons = 6;
     set.max_warnock_classifications = 7;
     set.max_projected_polygons = 8;
+    set.max_bsp_classifications = 10;
     set.max_painted_fragments = 9;
     EXPECT_EQ(painter_comparison_budget(set, 1000), 5u);
     EXPECT_EQ(bsp_polygon_budget(set, 1000), 6u);
     EXPECT_EQ(projected_polygon_budget(set), 8u);
+    EXPECT_EQ(bsp_classification_budget(set, 1000), 10u);
     EXPECT_EQ(painted_fragment_budget(set, 1920, 1080), 9u);
     EXPECT_EQ(warnock_classification_budget(set, 1000, 1920, 1080), 7u);
 }
@@ -117,6 +122,7 @@ TEST(Budgets, ExplicitLimitsAreHonouredExactly) {
     const std::uint64_t splits = stats.bsp.splits;
     const std::uint64_t pool = stats.bsp.input_polygons + 2 * splits;
     const std::uint64_t bsp_fills = bsp_painted.stats.fragments_shaded;
+    const std::uint64_t bsp_classifications = stats.bsp.classifications;
     render_with_visibility(soup, options, VisibilityAlgorithm::Warnock, &stats);
     std::uint64_t classifications = 0;
     for (const std::uint64_t c : stats.warnock.classifications) classifications += c;
@@ -132,6 +138,7 @@ TEST(Budgets, ExplicitLimitsAreHonouredExactly) {
     options.limits.max_warnock_classifications = classifications;
     options.limits.max_projected_polygons = projected;
     options.limits.max_painted_fragments = std::max(painter_fills, bsp_fills);
+    options.limits.max_bsp_classifications = bsp_classifications;
     EXPECT_NO_THROW(render_with_visibility(soup, options, VisibilityAlgorithm::Painter));
     EXPECT_NO_THROW(render_with_visibility(soup, options, VisibilityAlgorithm::Bsp));
     EXPECT_NO_THROW(render_with_visibility(soup, options, VisibilityAlgorithm::Warnock));
@@ -152,6 +159,14 @@ TEST(Budgets, ExplicitLimitsAreHonouredExactly) {
     refusal([&] { render_with_visibility(soup, exact, VisibilityAlgorithm::Bsp); },
             "max_painted_fragments");
     exact.limits.max_painted_fragments = 0;
+    exact.limits.max_bsp_classifications = bsp_classifications - 1;
+    message = refusal([&] { render_with_visibility(soup, exact, VisibilityAlgorithm::Bsp); },
+                      "max_bsp_classifications");
+    EXPECT_NE(message.find("BSP tree: more than " + std::to_string(bsp_classifications - 1) +
+                           " polygon-plane classifications"),
+              std::string::npos)
+        << message;
+    exact.limits.max_bsp_classifications = 0;
     exact.limits.max_projected_polygons = projected - 1;
     message = refusal([&] { render_with_visibility(soup, exact, VisibilityAlgorithm::Warnock); },
                       "max_projected_polygons");
@@ -180,6 +195,16 @@ TEST(Budgets, ExplicitLimitsAreHonouredExactly) {
     EXPECT_NE(message.find("BSP tree: 200 input triangles, more than the budget of 199"),
               std::string::npos)
         << message;
+}
+
+// A convex mesh makes the BSP tree a chain: n^2 classifications, refused by their budget (a
+// 100,000-triangle sphere ran for minutes; now about 4 s).
+TEST(Budgets, AConvexMeshsChainIsRefusedByItsClassifications) {
+    const Scene sphere = scene_from_meshes({make_uv_sphere(1.0f, 100, 50)});
+    RenderOptions options = soup_options();
+    options.limits.max_bsp_classifications = 2'000'000;
+    refusal([&] { render_with_visibility(sphere, options, VisibilityAlgorithm::Bsp); },
+            "max_bsp_classifications");
 }
 
 // The A-buffer's budget is its fragments (24 bytes each): exactly what a frame stores passes.

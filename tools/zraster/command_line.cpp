@@ -51,6 +51,7 @@ std::string limit_advice(const std::string& limit) {
         {"max_bsp_polygons", "--max-bsp-polygons"},
         {"max_warnock_classifications", "--max-warnock-classifications"},
         {"max_abuffer_fragments", "--max-abuffer-fragments"},
+        {"max_bsp_classifications", "--max-bsp-classifications"},
         {"max_projected_polygons", "--max-projected-polygons"},
         {"max_painted_fragments", "--max-painted-fragments"},
         {"max_pixels", "--max-pixels"},

@@ -115,6 +115,7 @@ void explain_bsp(const ExplainInput& in, ExplainOutput& out) {
     std::vector<BspPolygon> polygons = bsp_polygons_from_scene(in.scene);
     BspOptions options;
     options.max_polygons = bsp_polygon_budget(in.options.limits, polygons.size());
+    options.max_classifications = bsp_classification_budget(in.options.limits, polygons.size());
     const BspTree tree = BspTree::build(std::move(polygons), options);
     const TreeLayout t = layout(tree);
     const Camera camera = effective_camera(in.scene, in.options);

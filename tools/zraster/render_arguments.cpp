@@ -174,6 +174,11 @@ void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
                    "(0: 16 per triangle + 65536, at most 2^22)")
         ->check(whole_number(true))
         ->capture_default_str();
+    cmd.add_option("--max-bsp-classifications", a.max_bsp_classifications,
+                   "Budget of --visibility bsp (and svg --order bsp): polygon-plane tests while "
+                   "building (0: 16 x triangles^2 + 10^7, at most 5 x 10^8)")
+        ->check(whole_number(true))
+        ->capture_default_str();
     cmd.add_option("--max-projected-polygons", a.max_projected_polygons,
                    "Budget of --visibility painter, warnock, abuffer, --msaa and svg: polygons in "
                    "view after projection (0: 2^19)")
@@ -300,6 +305,7 @@ RenderOptions make_render_options(const RenderArguments& a,
     o.limits.max_painter_comparisons = a.max_painter_comparisons;
     o.limits.max_bsp_polygons = a.max_bsp_polygons;
     o.limits.max_warnock_classifications = a.max_warnock_classifications;
+    o.limits.max_bsp_classifications = a.max_bsp_classifications;
     o.limits.max_projected_polygons = a.max_projected_polygons;
     o.limits.max_painted_fragments = a.max_painted_fragments;
     o.threads = capped_threads("--threads", checked_thread_count("--threads", a.threads));
