@@ -410,7 +410,8 @@ row "svg under ulimit -f 8 (8 KiB)" svg sphere:2000 --size 256x256 -o out.svg
 run_zraster=
 # The object-space algorithms' budgets: 1,600 coincident triangles (a glTF whose node places one
 # triangle 40 times, placed 40 times), a frame past the A-buffer's default, a raised A-buffer
-# budget under a 2 GiB address space, and explain's folder after a refusal.
+# budget under a 2 GiB address space, explain's folder after a refusal, and a convex mesh, whose
+# BSP tree is a chain.
 children=$(printf '1,%.0s' $(seq 39))1
 roots=$(printf '0,%.0s' $(seq 39))0
 printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"%s"}],"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"children":[%s]},{"mesh":0}],"scenes":[{"nodes":[%s]}],"scene":0}' "$b64" "$children" "$roots" >coincident.gltf
@@ -425,6 +426,7 @@ run_zraster=./address-space-limit.sh
 row "A-buffer budget raised past a 2 GiB address space (ulimit -v)" render soup.ply --size 4096x4096 --no-cull --aa 2 --visibility abuffer --max-abuffer-fragments 4000000000 -o out.png
 run_zraster=
 row "explain past the BSP budget into a new folder" explain bsp soup10k.ply -o out.ex
+row "BSP tree of a convex 20,000-triangle sphere (a chain) past --max-bsp-classifications" render sphere:20000 --size 64x64 --visibility bsp --max-bsp-classifications 10000000 -o out.png
 echo
 echo "$n inputs; $failures broke the contract (exit 2, one line, nothing left)."
 [ "$failures" -eq 0 ]
