@@ -205,8 +205,10 @@ std::vector<PixelCoverage> polygon_coverage(const ScreenPolygon& polygon, const 
     return out;
 }
 
-RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
-                            const ABufferOptions& abuffer, ABufferStats* stats) {
+namespace {
+
+RenderResult abuffer_frame(const Scene& scene, const RenderOptions& options,
+                           const ABufferOptions& abuffer, ABufferStats* stats) {
     using visibility_detail::SurfaceShader;
     const auto start = std::chrono::steady_clock::now();
     visibility_detail::check_samples_per_side(abuffer.samples_per_side, "A-buffer");
@@ -420,6 +422,24 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
     result.stats.pixels_blended = blended_pixels_total.load();
     visibility_detail::finish_stats(result.stats, camera, scene, start);
     return result;
+}
+
+}  // namespace
+
+RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
+                            const ABufferOptions& abuffer, ABufferStats* stats) {
+    try {
+        return abuffer_frame(scene, options, abuffer, stats);
+    } catch (const std::bad_alloc&) {
+        // Past the pool (which names its own count), the polygons' shading data and the
+        // per-pixel lists are what can fail: name the budgets that bound them.
+        throw InputError(scene.name,
+                         "A-buffer: out of memory for " + std::to_string(options.width) + "x" +
+                             std::to_string(options.height) +
+                             " pixels and their polygons: render fewer pixels or polygons, or "
+                             "lower the budgets max_projected_polygons and max_abuffer_fragments "
+                             "to what this machine can hold");
+    }
 }
 
 }  // namespace zraster
