@@ -469,6 +469,25 @@ run_zraster=./file-size-limit.sh
 row "render under ulimit -f 8 (8 KiB)" render sphere:2000 --size 512x512 -o out.png
 row "svg under ulimit -f 8 (8 KiB)" svg sphere:2000 --size 256x256 -o out.svg
 run_zraster=
+# The object-space algorithms' budgets: 1,600 coincident triangles (a glTF whose node places one
+# triangle 40 times, placed 40 times), a frame past the A-buffer's default, a raised A-buffer
+# budget under a 2 GiB address space, explain's folder after a refusal, and a convex mesh, whose
+# BSP tree is a chain.
+children=$(printf '1,%.0s' $(seq 39))1
+roots=$(printf '0,%.0s' $(seq 39))0
+printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"%s"}],"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"children":[%s]},{"mesh":0}],"scenes":[{"nodes":[%s]}],"scene":0}' "$b64" "$children" "$roots" >coincident.gltf
+printf '#!/usr/bin/env bash\nulimit -v 2097152\nexec "%s" "$@"\n' "$zraster" >address-space-limit.sh
+chmod +x address-space-limit.sh
+row "painter's algorithm: 1,600 coincident triangles past --max-projected-polygons" render coincident.gltf --size 64x64 --visibility painter --max-projected-polygons 1000 -o out.png
+row "painter's algorithm: 1,600 coincident triangles past --max-painter-comparisons" render coincident.gltf --size 64x64 --visibility painter --max-painter-comparisons 100000 -o out.png
+row "BSP drawing: 1,600 coincident triangles past --max-painted-fragments" render coincident.gltf --size 64x64 --visibility bsp --max-painted-fragments 100000 -o out.png
+row "BSP input past --max-bsp-polygons (refused before the tree is made)" render soup.ply --no-cull --visibility bsp --max-bsp-polygons 100 -o out.png
+row "A-buffer at 8192x8192 with 8x8 samples (past the default of 2^24 fragments)" render builtin:cube --size 8192x8192 --aa 8 --visibility abuffer -o out.png
+run_zraster=./address-space-limit.sh
+row "A-buffer budget raised past a 2 GiB address space (ulimit -v)" render soup.ply --size 4096x4096 --no-cull --aa 2 --visibility abuffer --max-abuffer-fragments 4000000000 -o out.png
+run_zraster=
+row "explain past the BSP budget into a new folder" explain bsp soup10k.ply -o out.ex
+row "BSP tree of a convex 20,000-triangle sphere (a chain) past --max-bsp-classifications" render sphere:20000 --size 64x64 --visibility bsp --max-bsp-classifications 10000000 -o out.png
 echo
 echo "$n inputs; $failures broke the contract (exit 2, one line, nothing left)."
 [ "$failures" -eq 0 ]

@@ -41,11 +41,13 @@ struct ABufferOptions {
     // Sample (i, j) of pixel (px, py) sits at (px + (i + 0.5) / n, py + (j + 0.5) / n), exactly on
     // the rasterizer's 1/256-pixel grid. Other values throw InputError.
     int samples_per_side = 4;
-    // Fragments over the whole frame (the memory bound: 24 bytes each, so 1.5 GiB at the
-    // default). Exceeding it throws LimitExceeded ("max_abuffer_fragments")
-    // while the lists are built, before anything past the limit is allocated (the pool grows
-    // by doubling, so its capacity may transiently reach twice the fragments stored).
-    std::size_t max_fragments = std::size_t{64} << 20;
+    // Fragments over the whole frame: the memory bound. Each takes 24 bytes, allocated 64 Ki
+    // (1.5 MiB) at a time, so the pool never holds more than 24 x max_fragments bytes rounded up
+    // to a block: 384 MiB at the default of 2^24 (besides 4 bytes per pixel for the lists' heads
+    // and about 2 KB per projected polygon). Exceeding it throws LimitExceeded
+    // ("max_abuffer_fragments") before the fragment past it is stored; memory the system refuses
+    // below it is an InputError naming the budget.
+    std::size_t max_fragments = std::size_t{1} << 24;
 };
 
 struct ABufferStats {

@@ -109,12 +109,28 @@ struct RenderLimits {
     // grows faster than their input (random, interpenetrating triangles split without end), so
     // each has a budget, scaled to the input unless set here (0: automatic, as stated; the
     // budget functions in visibility.hpp compute it). Exceeding one throws LimitExceeded.
-    // Painter's algorithm: polygon-pair comparisons (about 0.2 us each). Automatic: 2048 per
-    // polygon + 10^7 (the meshes measured need 10 to 420 per polygon).
+    // Painter's algorithm: polygon-pair comparisons (0.1 to 0.2 us each). Automatic: 2048 per
+    // polygon + 10^7, at most 10^8 (10 to 20 s on one core; the meshes measured need 10 to 420
+    // per polygon, so a mesh of more than about 250,000 visible polygons may need it raised).
     std::uint64_t max_painter_comparisons = 0;
     // BSP tree: polygons in its pool after splitting (about 250 bytes each). Automatic: 16 per
-    // input triangle + 65,536, at most 2^24 (the meshes measured need about 2 per triangle).
+    // input triangle + 65,536, at most 2^22 (about 1 GB; the meshes measured need about 2 per
+    // triangle). A scene of more triangles than the budget is refused before the tree is built.
     std::uint64_t max_bsp_polygons = 0;
+    // BSP tree: polygon-plane classifications while building (15 to 20 ns each). Automatic:
+    // 16 per pair of input triangles (16 n^2) + 10^7, at most 5 x 10^8 (about 10 s; the meshes
+    // measured need 680 to 1,440 per triangle, a convex mesh, whose tree is a chain, about
+    // 6.5 n^2).
+    std::uint64_t max_bsp_classifications = 0;
+    // Polygons kept by projection, the input of the painter's and Warnock's algorithms, the
+    // A-buffer and the multisampled path (visibility.hpp's project_scene), counted as they are
+    // made: about 0.7 KB each through the painter's sort, 2 KB in the A-buffer. Automatic:
+    // 2^19 = 524,288 (at most about 1 GB).
+    std::uint64_t max_projected_polygons = 0;
+    // Pixels filled by the painter's and the BSP tree's back-to-front drawing: every polygon is
+    // filled, hidden or not (overdraw), and each filled pixel is shaded (about 0.2 us).
+    // Automatic: 16 per pixel + 2^24, at most 2^26 (about 13 s; 10 s at 1920x1080).
+    std::uint64_t max_painted_fragments = 0;
     // Warnock: polygon-region classifications. Automatic: 64 per polygon per level of the
     // region quadtree + 4 per pixel + 10^7.
     std::uint64_t max_warnock_classifications = 0;

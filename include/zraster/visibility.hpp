@@ -73,7 +73,10 @@ ZRASTER_API Camera effective_camera(const Scene& scene, const RenderOptions& opt
 // keep_subpixel: keep polygons that cover no pixel center but may cover points between them
 // (those whose snapped bounding box meets the viewport): what the A-buffer's subsamples need;
 // the list-priority algorithms and Warnock sample pixel centers only and leave it off.
-// Throws InputError for an image size out of range or too many user clip planes.
+// Throws InputError for an image size out of range or too many user clip planes, and
+// LimitExceeded ("max_projected_polygons") as soon as more polygons than
+// projected_polygon_budget(options.limits) are kept. options.progress hears of the triangles
+// done (stage "projecting triangles").
 ZRASTER_API std::vector<ScreenPolygon> project_scene(const Scene& scene,
                                                      const RenderOptions& options,
                                                      bool keep_subpixel = false);
@@ -185,6 +188,10 @@ struct BspOptions {
     // A pool (input and split pieces) growing past this many polygons throws LimitExceeded
     // ("max_bsp_polygons"). 0: bsp_polygon_budget(RenderLimits{}, input polygons).
     std::uint64_t max_polygons = 0;
+    // Past this many polygon-plane classifications (scoring included) the build throws
+    // LimitExceeded ("max_bsp_classifications"). 0: bsp_classification_budget(RenderLimits{},
+    // input polygons).
+    std::uint64_t max_classifications = 0;
     ProgressReporter* progress = nullptr;  // stage "BSP tree"; not owned
 };
 
@@ -223,6 +230,10 @@ class ZRASTER_API BspTree {
     std::vector<Node> nodes_;  // nodes_[0] is the root when not empty
     BspStats stats_;
 };
+
+// Refuses (LimitExceeded, "max_bsp_polygons") a scene of more triangles than the tree's pool may
+// hold (bsp_polygon_budget), before bsp_polygons_from_scene makes them (250 bytes each).
+ZRASTER_API void check_bsp_budget(const Scene& scene, const RenderLimits& limits);
 
 // Every triangle of every instance in world space (degenerate ones dropped), in submission order.
 ZRASTER_API std::vector<BspPolygon> bsp_polygons_from_scene(const Scene& scene);
@@ -310,6 +321,11 @@ ZRASTER_API std::uint64_t painter_comparison_budget(const RenderLimits& limits,
                                                     std::size_t polygons);
 ZRASTER_API std::uint64_t bsp_polygon_budget(const RenderLimits& limits,
                                              std::size_t input_polygons);
+ZRASTER_API std::uint64_t bsp_classification_budget(const RenderLimits& limits,
+                                                    std::size_t input_polygons);
+ZRASTER_API std::uint64_t projected_polygon_budget(const RenderLimits& limits);
+ZRASTER_API std::uint64_t painted_fragment_budget(const RenderLimits& limits, int width,
+                                                  int height);
 ZRASTER_API std::uint64_t warnock_classification_budget(const RenderLimits& limits,
                                                         std::size_t polygons, int width,
                                                         int height);

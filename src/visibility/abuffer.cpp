@@ -23,8 +23,9 @@
 //
 // Cost: masks O(touched pixels x (edges + samples)) per polygon; resolve O(f log f + f x samples)
 // per pixel with f fragments, plus one shading per contributing fragment. Memory: 24 bytes per
-// fragment plus 8 per pixel, bounded by ABufferOptions::max_fragments (InputError beyond it,
-// checked before each fragment is added).
+// fragment (allocated 64 Ki at a time) plus 4 per pixel, bounded by ABufferOptions::max_fragments
+// (LimitExceeded beyond it, checked before each fragment is added; an allocation the system
+// refuses below it is an InputError naming the budget).
 //
 // When to use: transparent surfaces submitted in any order (order-independent transparency), and
 // antialiased edges with one shading per fragment instead of per subsample (compare with
@@ -41,6 +42,8 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <new>
 #include <string>
 #include <tuple>
 
@@ -154,6 +157,42 @@ struct Fragment {
     std::uint32_t next;  // next fragment of the same pixel, kEnd at the end
 };
 
+// The fragments of a frame, in blocks of kBlock: memory grows by one block at a time, never to
+// twice what is stored as a doubling vector's does, and never past the budget's blocks.
+class FragmentPool {
+  public:
+    std::size_t size() const { return size_; }
+    const Fragment& operator[](std::uint32_t i) const { return blocks_[i >> kShift][i & kMask]; }
+
+    // Stores f and returns its index. A block the system refuses ends the run with a message
+    // naming the budget (the command's "out of memory" would name nothing).
+    std::uint32_t add(const Fragment& f, const std::string& file, std::size_t limit) {
+        if ((size_ & kMask) == 0) {
+            try {
+                blocks_.emplace_back(std::make_unique_for_overwrite<Fragment[]>(kBlock));
+            } catch (const std::bad_alloc&) {
+                throw InputError(
+                    file, "A-buffer: out of memory after " + std::to_string(size_) +
+                              " fragments (" + std::to_string(size_ * sizeof(Fragment) >> 20) +
+                              " MiB at " + std::to_string(sizeof(Fragment)) +
+                              " bytes each; the budget max_abuffer_fragments is " +
+                              std::to_string(limit) +
+                              "): render fewer pixels or polygons, or lower the budget to what "
+                              "this machine can hold");
+            }
+        }
+        blocks_.back()[size_ & kMask] = f;
+        return static_cast<std::uint32_t>(size_++);
+    }
+
+  private:
+    static constexpr unsigned kShift = 16;  // 64 Ki fragments (1.5 MiB) a block
+    static constexpr std::size_t kBlock = std::size_t{1} << kShift;
+    static constexpr std::size_t kMask = kBlock - 1;
+    std::vector<std::unique_ptr<Fragment[]>> blocks_;
+    std::size_t size_ = 0;
+};
+
 }  // namespace
 
 std::vector<PixelCoverage> polygon_coverage(const ScreenPolygon& polygon, const Viewport& viewport,
@@ -166,8 +205,10 @@ std::vector<PixelCoverage> polygon_coverage(const ScreenPolygon& polygon, const 
     return out;
 }
 
-RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
-                            const ABufferOptions& abuffer, ABufferStats* stats) {
+namespace {
+
+RenderResult abuffer_frame(const Scene& scene, const RenderOptions& options,
+                           const ABufferOptions& abuffer, ABufferStats* stats) {
     using visibility_detail::SurfaceShader;
     const auto start = std::chrono::steady_clock::now();
     visibility_detail::check_samples_per_side(abuffer.samples_per_side, "A-buffer");
@@ -200,29 +241,30 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
     const std::size_t limit = std::min<std::size_t>(abuffer.max_fragments, std::size_t{kEnd} - 1);
     const std::size_t pixels = std::size_t(width) * std::size_t(height);
     std::vector<std::uint32_t> head(pixels, kEnd);
-    std::vector<std::uint32_t> length(pixels, 0);
-    std::vector<Fragment> pool;
+    FragmentPool pool;
     for (std::size_t i = 0; i < polygons.size(); ++i) {
         const DepthPlane& plane = planes[i];
         for_each_mask(polygons[i], viewport, n, [&](int px, int py, std::uint64_t mask) {
             if (pool.size() >= limit)
                 throw LimitExceeded(scene.name, "max_abuffer_fragments",
                                     "A-buffer: more than " + std::to_string(limit) +
-                                        " fragments (polygon-pixel pairs, the limit): render "
-                                        "fewer pixels or polygons, or raise the limit");
+                                        " fragments (polygon-pixel pairs of " +
+                                        std::to_string(sizeof(Fragment)) +
+                                        " bytes, the limit): render fewer pixels or polygons, or "
+                                        "raise the limit");
             const std::size_t p = std::size_t(py) * std::size_t(width) + std::size_t(px);
             const double depth = plane.at(px + 0.5, py + 0.5);
-            pool.push_back({depth, mask, std::uint32_t(i), head[p]});
-            head[p] = std::uint32_t(pool.size() - 1);
-            ++length[p];
+            head[p] = pool.add({depth, mask, std::uint32_t(i), head[p]}, scene.name, limit);
         });
     }
 
     ABufferStats local;
     local.fragments = pool.size();
     for (std::size_t p = 0; p < pixels; ++p) {
-        local.max_list_length = std::max<std::uint64_t>(local.max_list_length, length[p]);
-        local.pixels_with_fragments += length[p] != 0;
+        std::uint64_t length = 0;
+        for (std::uint32_t f = head[p]; f != kEnd; f = pool[f].next) ++length;
+        local.max_list_length = std::max(local.max_list_length, length);
+        local.pixels_with_fragments += length != 0;
     }
 
     // Targets.
@@ -266,12 +308,27 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
     };
     std::atomic<std::uint64_t> shaded_total{0}, discarded_total{0}, blended_total{0},
         blended_pixels_total{0};
+    // A pixel without fragments: the background, composited as below with no fragment (the same
+    // sums, so the same bytes), once instead of per sample of every empty pixel.
+    std::uint8_t empty_color[3] = {};
+    {
+        glm::dvec3 sum(0.0);
+        for (int s = 0; s < samples; ++s) sum += glm::dvec3(0.0) + 1.0 * background;
+        sum /= double(samples);
+        for (int c = 0; c < 3; ++c) empty_color[c] = visibility_detail::to_unorm8(float(sum[c]));
+    }
     auto resolve_rows = [&](const tbb::blocked_range<int>& rows) {
         std::vector<Entry> list;
         std::uint64_t shaded = 0, discarded = 0, blended = 0, blended_pixels = 0;
         for (int py = rows.begin(); py < rows.end(); ++py) {
             for (int px = 0; px < width; ++px) {
                 const std::size_t p = std::size_t(py) * std::size_t(width) + std::size_t(px);
+                if (head[p] == kEnd) {
+                    if (options.color_target)
+                        for (int c = 0; c < 3; ++c)
+                            t.color[p * 4 + std::size_t(c)] = empty_color[c];
+                    continue;
+                }
                 list.clear();
                 // Fragments whose alpha is 0 (cut out by the alpha test, or fully transparent)
                 // are dropped: they show nothing and hide nothing.
@@ -365,6 +422,24 @@ RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
     result.stats.pixels_blended = blended_pixels_total.load();
     visibility_detail::finish_stats(result.stats, camera, scene, start);
     return result;
+}
+
+}  // namespace
+
+RenderResult render_abuffer(const Scene& scene, const RenderOptions& options,
+                            const ABufferOptions& abuffer, ABufferStats* stats) {
+    try {
+        return abuffer_frame(scene, options, abuffer, stats);
+    } catch (const std::bad_alloc&) {
+        // Past the pool (which names its own count), the polygons' shading data and the
+        // per-pixel lists are what can fail: name the budgets that bound them.
+        throw InputError(scene.name,
+                         "A-buffer: out of memory for " + std::to_string(options.width) + "x" +
+                             std::to_string(options.height) +
+                             " pixels and their polygons: render fewer pixels or polygons, or "
+                             "lower the budgets max_projected_polygons and max_abuffer_fragments "
+                             "to what this machine can hold");
+    }
 }
 
 }  // namespace zraster

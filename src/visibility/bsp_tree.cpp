@@ -92,6 +92,24 @@ BspTree BspTree::build(std::vector<BspPolygon> polygons, const BspOptions& optio
                                 std::to_string(max_polygons));
     tree.polygons_ = std::move(polygons);
     if (tree.polygons_.empty()) return tree;
+    const std::uint64_t max_classifications =
+        options.max_classifications
+            ? options.max_classifications
+            : bsp_classification_budget(RenderLimits{}, tree.polygons_.size());
+    // Every classification is counted: a convex mesh (each plane has every other polygon behind
+    // it) builds a chain of n nodes, n^2 classifications (a 100,000-triangle sphere ran for
+    // minutes before the depth limit stopped it).
+    auto classified = [&] {
+        if (++tree.stats_.classifications > max_classifications)
+            throw LimitExceeded(
+                "", "max_bsp_classifications",
+                "BSP tree: more than " + std::to_string(max_classifications) +
+                    " polygon-plane classifications for " +
+                    std::to_string(tree.stats_.input_polygons) +
+                    " input polygons (the budget; depth " + std::to_string(tree.stats_.depth) +
+                    " so far): the input's planes divide it badly for a BSP tree (a convex "
+                    "shape makes a chain)");
+    };
     std::size_t placed = 0;  // polygons stored in nodes so far (progress)
     std::uint64_t next_report = 0;
     double reported = 0.0;
@@ -144,7 +162,7 @@ BspTree BspTree::build(std::vector<BspPolygon> polygons, const BspOptions& optio
                 std::size_t front = 0, back = 0, spanning = 0;
                 bool abandoned = false;
                 for (const std::uint32_t i : set) {
-                    ++tree.stats_.classifications;
+                    classified();
                     switch (classify(tree.polygons_[i], plane, eps)) {
                         case Side::Front:
                             ++front;
@@ -176,7 +194,7 @@ BspTree BspTree::build(std::vector<BspPolygon> polygons, const BspOptions& optio
         const glm::dvec4 plane = tree.polygons_[splitter].plane;
         std::vector<std::uint32_t> front_set, back_set, here;
         for (const std::uint32_t i : set) {
-            ++tree.stats_.classifications;
+            classified();
             switch (classify(tree.polygons_[i], plane, eps)) {
                 case Side::Coplanar:
                     here.push_back(i);
@@ -213,7 +231,9 @@ BspTree BspTree::build(std::vector<BspPolygon> polygons, const BspOptions& optio
             next_report = tree.stats_.classifications + (1 << 16);
             // Of the live polygons (a split retires one and adds two).
             const std::size_t live = tree.polygons_.size() - tree.stats_.splits;
-            reported = std::max(reported, double(placed) / double(live));
+            // Or the classification budget used, where that is further.
+            const double used = double(tree.stats_.classifications) / double(max_classifications);
+            reported = std::max({reported, double(placed) / double(live), std::min(used, 1.0)});
             options.progress->report("BSP tree", reported);
         }
         Node& node = tree.nodes_[static_cast<std::size_t>(task.node)];
@@ -262,6 +282,16 @@ std::vector<std::uint32_t> BspTree::back_to_front(const glm::dvec4& eye) const {
         if (far >= 0) stack.emplace_back(far, false);
     }
     return order;
+}
+
+void check_bsp_budget(const Scene& scene, const RenderLimits& limits) {
+    const std::uint64_t triangles = scene.triangle_count();
+    const std::uint64_t budget = bsp_polygon_budget(limits, triangles);
+    if (triangles > budget)
+        throw LimitExceeded(scene.name, "max_bsp_polygons",
+                            "BSP tree: " + std::to_string(triangles) +
+                                " input triangles, more than the budget of " +
+                                std::to_string(budget) + " polygons");
 }
 
 std::vector<BspPolygon> bsp_polygons_from_scene(const Scene& scene) {

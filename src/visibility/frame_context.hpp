@@ -68,6 +68,7 @@ inline PainterOptions painter_options(const RenderOptions& options, std::size_t 
 inline BspOptions bsp_options(const RenderOptions& options, std::size_t input_polygons) {
     BspOptions o;
     o.max_polygons = bsp_polygon_budget(options.limits, input_polygons);
+    o.max_classifications = bsp_classification_budget(options.limits, input_polygons);
     o.progress = options.progress;
     return o;
 }

@@ -378,19 +378,36 @@ std::vector<ScreenPolygon> project_scene(const Scene& scene, const RenderOptions
     using namespace visibility_detail;
     FrameContext frame = make_frame_context(scene, options);
     frame.keep_subpixel = keep_subpixel;
+    // The polygons are counted as they are kept: their memory (0.7 to 2 KB each in the
+    // algorithms that take them) is bounded before it is spent, not after.
+    const std::uint64_t budget = projected_polygon_budget(options.limits);
+    const std::uint64_t triangles = scene.triangle_count();
+    std::uint64_t done = 0, next_report = 0;
     std::vector<ScreenPolygon> out;
     ScreenPolygon polygon;
     std::size_t current = scene.instances.size();
     InstanceProjection projection;
     for_each_scene_triangle(scene, [&](std::size_t i, const Instance& instance, const Mesh& mesh,
                                        std::size_t t, const std::array<std::uint32_t, 3>& index) {
+        if (options.progress != nullptr && ++done >= next_report) {
+            next_report = done + (1 << 16);
+            options.progress->report("projecting triangles", double(done) / double(triangles));
+        }
         if (i != current) {
             current = i;
             projection = InstanceProjection(frame, instance);
         }
         const TriangleSource source = projection.source(mesh, i, t, index);
         if (source.plane == glm::dvec4(0.0)) return;  // no area: nothing to see
-        if (project_triangle(frame, source, polygon)) out.push_back(polygon);
+        if (!project_triangle(frame, source, polygon)) return;
+        if (out.size() >= budget)
+            throw LimitExceeded(scene.name, "max_projected_polygons",
+                                "more than " + std::to_string(budget) +
+                                    " polygons in view after projecting " + std::to_string(done) +
+                                    " of " + std::to_string(triangles) +
+                                    " triangles (the budget of the object-space algorithms' "
+                                    "input): draw fewer triangles, or use the z-buffer");
+        out.push_back(polygon);
     });
     return out;
 }

@@ -6,6 +6,7 @@
 // Cost: that of the chosen algorithm plus projection (O(triangles)) and filling (O(fragments)).
 #include <chrono>
 
+#include "visibility/back_to_front.hpp"
 #include "visibility/canvas.hpp"
 #include "visibility/frame_context.hpp"
 
@@ -53,7 +54,8 @@ RenderResult render_bsp(const BspTree& tree, const Scene& scene, const RenderOpt
     const auto start = std::chrono::steady_clock::now();
     const FrameContext frame = make_frame_context(scene, options);
     Canvas canvas(options, frame.camera, &scene);
-    for_each_bsp_piece(tree, frame, [&](const ScreenPolygon& piece) { canvas.draw(piece); });
+    BackToFront painting(canvas, options, "BSP tree", tree.stats().polygons);
+    for_each_bsp_piece(tree, frame, [&](const ScreenPolygon& piece) { painting.draw(piece); });
     RenderResult result;
     result.targets = canvas.take();
     canvas.count_fragments(result.stats);
@@ -83,13 +85,16 @@ RenderResult render_frame(const Scene& scene, const RenderOptions& options,
                 painter_sort(std::move(polygons), Viewport{options.width, options.height}, painter);
             out.painter = sorted.stats;
             visibility_detail::Canvas canvas(options, camera, &scene);
-            for (const ScreenPolygon& polygon : sorted.order) canvas.draw(polygon);
+            visibility_detail::BackToFront painting(canvas, options, "painter's algorithm",
+                                                    sorted.order.size());
+            for (const ScreenPolygon& polygon : sorted.order) painting.draw(polygon);
             result.targets = canvas.take();
             canvas.count_fragments(result.stats);
             result.stats.camera = camera;
             break;
         }
         case VisibilityAlgorithm::Bsp: {
+            check_bsp_budget(scene, options.limits);
             std::vector<BspPolygon> polygons = bsp_polygons_from_scene(scene);
             const BspOptions bsp = visibility_detail::bsp_options(options, polygons.size());
             const BspTree tree = BspTree::build(std::move(polygons), bsp);

@@ -301,12 +301,21 @@ std::string number(float v) {
 std::vector<ScreenPolygon> bsp_order(const Scene& scene, const RenderOptions& options) {
     using namespace visibility_detail;
     const FrameContext frame = make_frame_context(scene, options);
+    check_bsp_budget(scene, options.limits);
     std::vector<BspPolygon> polygons = bsp_polygons_from_scene(scene);
     const BspOptions bsp = bsp_options(options, polygons.size());
     const BspTree tree = BspTree::build(std::move(polygons), bsp);
-    // The pieces render_bsp fills.
+    // The pieces render_bsp fills, kept as projection keeps polygons: within the same budget.
+    const std::uint64_t budget = projected_polygon_budget(options.limits);
     std::vector<ScreenPolygon> out;
-    for_each_bsp_piece(tree, frame, [&](const ScreenPolygon& piece) { out.push_back(piece); });
+    for_each_bsp_piece(tree, frame, [&](const ScreenPolygon& piece) {
+        if (out.size() >= budget)
+            throw LimitExceeded(scene.name, "max_projected_polygons",
+                                "BSP tree: more than " + std::to_string(budget) +
+                                    " polygons in view (the budget of the object-space "
+                                    "algorithms' output): draw fewer triangles");
+        out.push_back(piece);
+    });
     return out;
 }
 

@@ -364,9 +364,9 @@ TEST(CliLimits, VisibilityAlgorithmBudgets) {
                    "zraster: soup.ply: Warnock's algorithm: more than 5000 polygon-region "
                    "classifications for ");
     expect_refused(dir, render + "--visibility abuffer --max-abuffer-fragments 100",
-                   "zraster: soup.ply: A-buffer: more than 100 fragments (polygon-pixel pairs, "
-                   "the limit): render fewer pixels or polygons, or raise the limit; raise it "
-                   "with --max-abuffer-fragments N");
+                   "zraster: soup.ply: A-buffer: more than 100 fragments (polygon-pixel pairs of "
+                   "24 bytes, the limit): render fewer pixels or polygons, or raise the limit; "
+                   "raise it with --max-abuffer-fragments N");
     expect_refused(dir, render + "--visibility bsp --max-bsp-polygons -3", "--max-bsp-polygons");
     expect_refused(dir, render + "--visibility painter --max-painter-comparisons 1e9",
                    "expected a whole number, got '1e9'");
@@ -381,6 +381,93 @@ TEST(CliLimits, VisibilityAlgorithmBudgets) {
     const CommandResult ok =
         run_limited(render + "--visibility warnock --max-warnock-classifications 0", dir);
     EXPECT_EQ(ok.exit_code, 0) << ok.output;
+
+    // The polygons kept by projection and the pixels the back-to-front orders fill: exactly
+    // what the run needs passes, one less is refused naming the flag.
+    const std::string cube = "render builtin:cube --size 64x64 -o out.png --visibility ";
+    const CommandResult counted = run_limited(cube + "painter --stats", dir);
+    ASSERT_EQ(counted.exit_code, 0) << counted.output;
+    const auto number_after = [&](const std::string& text, const std::string& key) {
+        const std::size_t at = text.find(key);
+        EXPECT_NE(at, std::string::npos) << text;
+        return at == std::string::npos ? 0ull : std::stoull(text.substr(at + key.size()));
+    };
+    const unsigned long long polygons = number_after(counted.output, "painter: ");
+    const unsigned long long filled = number_after(counted.output, "fragments shaded ");
+    ASSERT_GT(polygons, 1u);
+    ASSERT_GT(filled, 1u);
+    std::filesystem::remove(dir / "out.png");
+    for (const char* visibility : {"painter", "warnock", "abuffer"}) {
+        const std::string flag = " --max-projected-polygons ";
+        EXPECT_EQ(run_limited(cube + visibility + flag + std::to_string(polygons), dir).exit_code,
+                  0);
+        std::filesystem::remove(dir / "out.png");
+        expect_refused(dir, cube + visibility + flag + std::to_string(polygons - 1),
+                       "more than " + std::to_string(polygons - 1) + " polygons in view");
+        expect_refused(dir, cube + visibility + flag + std::to_string(polygons - 1),
+                       "; raise it with --max-projected-polygons N");
+    }
+    for (const char* visibility : {"painter", "bsp"}) {
+        const std::string flag = " --max-painted-fragments ";
+        EXPECT_EQ(run_limited(cube + visibility + flag + std::to_string(filled), dir).exit_code, 0);
+        std::filesystem::remove(dir / "out.png");
+        expect_refused(dir, cube + visibility + flag + std::to_string(filled - 1),
+                       "more than " + std::to_string(filled - 1) + " pixels filled drawing ");
+        expect_refused(dir, cube + visibility + flag + std::to_string(filled - 1),
+                       "; raise it with --max-painted-fragments N");
+    }
+    const CommandResult bsp = run_limited(cube + "bsp --stats", dir);
+    ASSERT_EQ(bsp.exit_code, 0) << bsp.output;
+    std::filesystem::remove(dir / "out.png");
+    // ("bsp: 12 input polygons, 6 nodes, depth 6, 0 splits, 405 classifications")
+    const unsigned long long tests = number_after(bsp.output, "splits, ");
+    ASSERT_GT(tests, 1u);
+    EXPECT_EQ(
+        run_limited(cube + "bsp --max-bsp-classifications " + std::to_string(tests), dir).exit_code,
+        0);
+    std::filesystem::remove(dir / "out.png");
+    expect_refused(dir, cube + "bsp --max-bsp-classifications " + std::to_string(tests - 1),
+                   "polygon-plane classifications");
+    expect_refused(dir, cube + "bsp --max-bsp-classifications " + std::to_string(tests - 1),
+                   "; raise it with --max-bsp-classifications N");
+    expect_refused(dir, cube + "painter --max-painted-fragments 1.5", "--max-painted-fragments");
+    expect_refused(dir, cube + "painter --max-projected-polygons -1", "--max-projected-polygons");
+}
+
+// A fragment budget raised past what the machine holds: the A-buffer's allocation fails under
+// the 2 GiB address-space limit and the run ends naming the budget (exit 2), not with "out of
+// memory" (exit 1). Before, the pool doubled to 3.3 GB and the command said "out of memory".
+TEST(CliLimits, AnABufferPastTheMachinesMemoryNamesTheBudget) {
+    if (kSanitized) GTEST_SKIP() << "no address-space limit in sanitizer builds";
+    const auto dir = temp_dir("cli-limits-abuffer-memory");
+    std::string ply =
+        "ply\nformat ascii 1.0\nelement vertex 1200\nproperty float x\n"
+        "property float y\nproperty float z\nelement face 400\n"
+        "property list uchar int vertex_indices\nend_header\n";
+    std::uint64_t state = 12345;
+    const auto next = [&] {
+        state = state * 6364136223846793005u + 1442695040888963407u;
+        return double(state >> 11) / double(std::uint64_t{1} << 53) * 2.0 - 1.0;
+    };
+    for (int v = 0; v < 1200; ++v) {
+        const double x = next(), y = next(), z = next();
+        ply += std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z) + "\n";
+    }
+    for (int f = 0; f < 400; ++f)
+        ply += "3 " + std::to_string(3 * f) + " " + std::to_string(3 * f + 1) + " " +
+               std::to_string(3 * f + 2) + "\n";
+    write(dir / "soup.ply", ply);
+    const CommandResult r = run_limited(
+        "render soup.ply --size 4096x4096 --no-cull --aa 2 --visibility abuffer "
+        "--max-abuffer-fragments 4000000000 -o out.png",
+        dir);
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_EQ(r.output.find('\n'), r.output.size() - 1) << r.output;
+    EXPECT_NE(r.output.find("zraster: soup.ply: A-buffer: out of memory after "), std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("the budget max_abuffer_fragments is 4000000000"), std::string::npos)
+        << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
 }
 
 // Coordinates beyond what single-precision matrices can frame: a triangle at 3e38 (the fitted

@@ -1,15 +1,19 @@
 // The budgets of the object-space algorithms (RenderLimits' max_painter_comparisons,
-// max_bsp_polygons, max_warnock_classifications; ABufferOptions::max_fragments): what they are
+// max_bsp_polygons, max_projected_polygons, max_painted_fragments, max_warnock_classifications;
+// ABufferOptions::max_fragments): what they are
 // by default, that random interpenetrating triangles are refused by name long before they cost
 // minutes or gigabytes, that real meshes stay far inside them, and the progress reports.
+#include <zraster/abuffer.hpp>
 #include <zraster/error.hpp>
 #include <zraster/load.hpp>
+#include <zraster/scenes.hpp>
 #include <zraster/svg.hpp>
 #include <zraster/visibility.hpp>
 
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -49,11 +53,20 @@ std::string refusal(const F& f, const std::string& limit) {
 TEST(Budgets, AutomaticValuesScaleWithTheInput) {
     const RenderLimits automatic;
     EXPECT_EQ(painter_comparison_budget(automatic, 1000), 2048u * 1000u + 10'000'000u);
+    // Capped for time: 10^8 comparisons are 10 to 20 s.
+    EXPECT_EQ(painter_comparison_budget(automatic, 1'000'000), 100'000'000u);
     EXPECT_EQ(bsp_polygon_budget(automatic, 1000), 16u * 1000u + 65'536u);
-    // Capped for memory, yet never below what an unsplit input needs.
-    EXPECT_EQ(bsp_polygon_budget(automatic, 1'000'000), 16'065'536u);
-    EXPECT_EQ(bsp_polygon_budget(automatic, 2'000'000), std::uint64_t{1} << 24);
-    EXPECT_EQ(bsp_polygon_budget(automatic, 20'000'000), 40'000'000u);
+    // Capped for memory (about 1 GB); a larger input is refused before its tree is built.
+    EXPECT_EQ(bsp_polygon_budget(automatic, 200'000), 3'265'536u);
+    EXPECT_EQ(bsp_polygon_budget(automatic, 1'000'000), std::uint64_t{1} << 22);
+    EXPECT_EQ(bsp_polygon_budget(automatic, 20'000'000), std::uint64_t{1} << 22);
+    EXPECT_EQ(bsp_classification_budget(automatic, 1000), 16u * 1000u * 1000u + 10'000'000u);
+    EXPECT_EQ(bsp_classification_budget(automatic, 1'000'000), 500'000'000u);
+    EXPECT_EQ(projected_polygon_budget(automatic), std::uint64_t{1} << 19);
+    EXPECT_EQ(painted_fragment_budget(automatic, 1920, 1080),
+              16u * 1920u * 1080u + (std::uint64_t{1} << 24));
+    EXPECT_EQ(painted_fragment_budget(automatic, 8192, 8192), std::uint64_t{1} << 26);
+    EXPECT_EQ(ABufferOptions{}.max_fragments, std::size_t{1} << 24);  // 384 MiB of fragments
     // 1920 is 11 bits: 12 levels of quadtree.
     EXPECT_EQ(warnock_classification_budget(automatic, 1000, 1920, 1080),
               64u * 1000u * 12u + 4u * 1920u * 1080u + 10'000'000u);
@@ -61,8 +74,14 @@ TEST(Budgets, AutomaticValuesScaleWithTheInput) {
     set.max_painter_comparisons = 5;
     set.max_bsp_polygons = 6;
     set.max_warnock_classifications = 7;
+    set.max_projected_polygons = 8;
+    set.max_bsp_classifications = 10;
+    set.max_painted_fragments = 9;
     EXPECT_EQ(painter_comparison_budget(set, 1000), 5u);
     EXPECT_EQ(bsp_polygon_budget(set, 1000), 6u);
+    EXPECT_EQ(projected_polygon_budget(set), 8u);
+    EXPECT_EQ(bsp_classification_budget(set, 1000), 10u);
+    EXPECT_EQ(painted_fragment_budget(set, 1920, 1080), 9u);
     EXPECT_EQ(warnock_classification_budget(set, 1000, 1920, 1080), 7u);
 }
 
@@ -93,24 +112,70 @@ TEST(Budgets, ExplicitLimitsAreHonouredExactly) {
     const Scene soup = wild_soup(200);
     RenderOptions options = soup_options();
     VisibilityStats stats;
-    render_with_visibility(soup, options, VisibilityAlgorithm::Painter, &stats);
+    const RenderResult painted =
+        render_with_visibility(soup, options, VisibilityAlgorithm::Painter, &stats);
     const std::uint64_t comparisons = stats.painter.comparisons;
-    render_with_visibility(soup, options, VisibilityAlgorithm::Bsp, &stats);
+    const std::uint64_t projected = stats.polygons;
+    const std::uint64_t painter_fills = painted.stats.fragments_shaded;
+    const RenderResult bsp_painted =
+        render_with_visibility(soup, options, VisibilityAlgorithm::Bsp, &stats);
     const std::uint64_t splits = stats.bsp.splits;
     const std::uint64_t pool = stats.bsp.input_polygons + 2 * splits;
+    const std::uint64_t bsp_fills = bsp_painted.stats.fragments_shaded;
+    const std::uint64_t bsp_classifications = stats.bsp.classifications;
     render_with_visibility(soup, options, VisibilityAlgorithm::Warnock, &stats);
     std::uint64_t classifications = 0;
     for (const std::uint64_t c : stats.warnock.classifications) classifications += c;
     ASSERT_GT(comparisons, 1000u);
     ASSERT_GT(splits, 100u);
+    ASSERT_GT(projected, 100u);
+    ASSERT_GT(painter_fills, 10'000u);
+    ASSERT_GT(bsp_fills, 10'000u);
 
     // Exactly what the run needs passes; one less is refused.
     options.limits.max_painter_comparisons = comparisons;
     options.limits.max_bsp_polygons = pool;
     options.limits.max_warnock_classifications = classifications;
+    options.limits.max_projected_polygons = projected;
+    options.limits.max_painted_fragments = std::max(painter_fills, bsp_fills);
+    options.limits.max_bsp_classifications = bsp_classifications;
     EXPECT_NO_THROW(render_with_visibility(soup, options, VisibilityAlgorithm::Painter));
     EXPECT_NO_THROW(render_with_visibility(soup, options, VisibilityAlgorithm::Bsp));
     EXPECT_NO_THROW(render_with_visibility(soup, options, VisibilityAlgorithm::Warnock));
+    RenderOptions exact = options;
+    exact.limits.max_painted_fragments = painter_fills;
+    EXPECT_NO_THROW(render_with_visibility(soup, exact, VisibilityAlgorithm::Painter));
+    exact.limits.max_painted_fragments = bsp_fills;
+    EXPECT_NO_THROW(render_with_visibility(soup, exact, VisibilityAlgorithm::Bsp));
+    exact.limits.max_painted_fragments = painter_fills - 1;
+    std::string message =
+        refusal([&] { render_with_visibility(soup, exact, VisibilityAlgorithm::Painter); },
+                "max_painted_fragments");
+    EXPECT_NE(message.find("painter's algorithm: more than " + std::to_string(painter_fills - 1) +
+                           " pixels filled"),
+              std::string::npos)
+        << message;
+    exact.limits.max_painted_fragments = bsp_fills - 1;
+    refusal([&] { render_with_visibility(soup, exact, VisibilityAlgorithm::Bsp); },
+            "max_painted_fragments");
+    exact.limits.max_painted_fragments = 0;
+    exact.limits.max_bsp_classifications = bsp_classifications - 1;
+    message = refusal([&] { render_with_visibility(soup, exact, VisibilityAlgorithm::Bsp); },
+                      "max_bsp_classifications");
+    EXPECT_NE(message.find("BSP tree: more than " + std::to_string(bsp_classifications - 1) +
+                           " polygon-plane classifications"),
+              std::string::npos)
+        << message;
+    exact.limits.max_bsp_classifications = 0;
+    exact.limits.max_projected_polygons = projected - 1;
+    message = refusal([&] { render_with_visibility(soup, exact, VisibilityAlgorithm::Warnock); },
+                      "max_projected_polygons");
+    EXPECT_NE(message.find("more than " + std::to_string(projected - 1) + " polygons in view"),
+              std::string::npos)
+        << message;
+    refusal([&] { render_with_visibility(soup, exact, VisibilityAlgorithm::Painter); },
+            "max_projected_polygons");
+
     options.limits.max_painter_comparisons = comparisons - 1;
     options.limits.max_bsp_polygons = pool - 1;
     options.limits.max_warnock_classifications = classifications - 1;
@@ -118,10 +183,46 @@ TEST(Budgets, ExplicitLimitsAreHonouredExactly) {
             "max_painter_comparisons");
     refusal([&] { render_with_visibility(soup, options, VisibilityAlgorithm::Bsp); },
             "max_bsp_polygons");
-    const std::string message =
-        refusal([&] { render_with_visibility(soup, options, VisibilityAlgorithm::Warnock); },
-                "max_warnock_classifications");
+    message = refusal([&] { render_with_visibility(soup, options, VisibilityAlgorithm::Warnock); },
+                      "max_warnock_classifications");
     EXPECT_NE(message.find("Warnock's algorithm: more than " + std::to_string(classifications - 1)),
+              std::string::npos)
+        << message;
+    // A scene of more triangles than the BSP pool may hold is refused before its tree is made.
+    options.limits.max_bsp_polygons = 199;
+    message = refusal([&] { render_with_visibility(soup, options, VisibilityAlgorithm::Bsp); },
+                      "max_bsp_polygons");
+    EXPECT_NE(message.find("BSP tree: 200 input triangles, more than the budget of 199"),
+              std::string::npos)
+        << message;
+}
+
+// A convex mesh makes the BSP tree a chain: n^2 classifications, refused by their budget (a
+// 100,000-triangle sphere ran for minutes; now about 4 s).
+TEST(Budgets, AConvexMeshsChainIsRefusedByItsClassifications) {
+    const Scene sphere = scene_from_meshes({make_uv_sphere(1.0f, 100, 50)});
+    RenderOptions options = soup_options();
+    options.limits.max_bsp_classifications = 2'000'000;
+    refusal([&] { render_with_visibility(sphere, options, VisibilityAlgorithm::Bsp); },
+            "max_bsp_classifications");
+}
+
+// The A-buffer's budget is its fragments (24 bytes each): exactly what a frame stores passes.
+TEST(Budgets, ABufferFragmentsExactly) {
+    const Scene soup = wild_soup(50);
+    const RenderOptions options = soup_options();
+    ABufferOptions abuffer;
+    ABufferStats stats;
+    const RenderResult full = render_abuffer(soup, options, abuffer, &stats);
+    ASSERT_GT(stats.fragments, 1000u);
+    abuffer.max_fragments = stats.fragments;
+    const RenderResult exact = render_abuffer(soup, options, abuffer);
+    EXPECT_EQ(exact.targets.color, full.targets.color);
+    abuffer.max_fragments = stats.fragments - 1;
+    const std::string message =
+        refusal([&] { render_abuffer(soup, options, abuffer); }, "max_abuffer_fragments");
+    EXPECT_NE(message.find("A-buffer: more than " + std::to_string(stats.fragments - 1) +
+                           " fragments (polygon-pixel pairs of 24 bytes"),
               std::string::npos)
         << message;
 }
@@ -139,6 +240,8 @@ TEST(Budgets, MeshesFitWithAMargin) {
         options.limits.max_bsp_polygons = bsp_polygon_budget({}, triangles) / 5;
         options.limits.max_warnock_classifications =
             warnock_classification_budget({}, polygons, 640, 480) / 5;
+        options.limits.max_projected_polygons = projected_polygon_budget({}) / 5;
+        options.limits.max_painted_fragments = painted_fragment_budget({}, 640, 480) / 5;
         for (const VisibilityAlgorithm a :
              {VisibilityAlgorithm::Painter, VisibilityAlgorithm::Bsp, VisibilityAlgorithm::Warnock})
             EXPECT_NO_THROW(render_with_visibility(scene, options, a));
@@ -175,16 +278,43 @@ TEST(Budgets, LongWorkReportsProgress) {
         } catch (const LimitExceeded&) {
             // (Past the low budget: progress was reported on the way.)
         }
-        ASSERT_GE(recorder.reports.size(), 2u);
-        double last = 0.0;
+        // Each stage's fractions in [0, 1], never decreasing; the algorithm's own stage moves.
+        std::map<std::string, double> last;
         for (const auto& [name, fraction] : recorder.reports) {
-            EXPECT_EQ(name, stage);
-            EXPECT_GE(fraction, last);
+            EXPECT_TRUE(name == stage || name == "projecting triangles" ||
+                        name == "drawing back to front")
+                << name;
+            EXPECT_GE(fraction, last[name]);
             EXPECT_LE(fraction, 1.0);
-            last = fraction;
+            last[name] = fraction;
         }
-        EXPECT_GT(last, 0.0);
+        EXPECT_GT(last[stage], 0.0);
+        if (algorithm != VisibilityAlgorithm::Bsp) {
+            EXPECT_TRUE(last.count("projecting triangles"));
+        }
     }
+}
+
+// The stages outside the algorithms report too: projection (a scene of many triangles took
+// Warnock's run 25 s before its first report) and the back-to-front drawing (a million
+// coincident triangles took the BSP tree's frame 50 s without a word).
+TEST(Budgets, ProjectionAndDrawingReportProgress) {
+    // Small triangles: few cross, so the automatic budgets hold.
+    const Scene soup = scene_from_meshes({make_interpenetrating_soup(5000, 0.02, 3)});
+    RenderOptions options = soup_options();
+    Recorder recorder;
+    options.progress = &recorder;
+    render_with_visibility(soup, options, VisibilityAlgorithm::Bsp);
+    double projecting = -1.0, drawing = -1.0;
+    for (const auto& [name, fraction] : recorder.reports) {
+        if (name == "drawing back to front") drawing = fraction;
+    }
+    EXPECT_GT(drawing, 0.0);
+    recorder.reports.clear();
+    render_with_visibility(soup, options, VisibilityAlgorithm::Warnock);
+    for (const auto& [name, fraction] : recorder.reports)
+        if (name == "projecting triangles") projecting = std::max(projecting, fraction);
+    EXPECT_GE(projecting, 0.0);
 }
 
 }  // namespace

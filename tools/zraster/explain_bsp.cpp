@@ -111,9 +111,11 @@ RgbaImage paint(const BspTree& tree, const std::vector<std::uint32_t>& order, st
 }  // namespace
 
 void explain_bsp(const ExplainInput& in, ExplainOutput& out) {
+    check_bsp_budget(in.scene, in.options.limits);
     std::vector<BspPolygon> polygons = bsp_polygons_from_scene(in.scene);
     BspOptions options;
     options.max_polygons = bsp_polygon_budget(in.options.limits, polygons.size());
+    options.max_classifications = bsp_classification_budget(in.options.limits, polygons.size());
     const BspTree tree = BspTree::build(std::move(polygons), options);
     const TreeLayout t = layout(tree);
     const Camera camera = effective_camera(in.scene, in.options);

@@ -124,7 +124,13 @@ int run_explain(const ExplainArguments& a) {
     if (algorithm.uses_scene) out.check_input(a.render.scene, "");
     for (const std::filesystem::path& file : files_read)
         out.check_input(file, file_named_by(a.render.scene));
-    algorithm.make(ExplainInput{a.render, scene, options, a.step}, out);
+    try {
+        algorithm.make(ExplainInput{a.render, scene, options, a.step}, out);
+    } catch (const LimitExceeded& e) {
+        // The algorithms see polygons, not files: name the model, as render does.
+        if (!e.file().empty() || scene.name.empty()) throw;
+        throw LimitExceeded(scene.name, e.limit(), e.cause());
+    }
     out.commit();
     const std::vector<std::string> files = out.file_names();
     fmt::print("explain {}: {} files in {}\n", algorithm.name, files.size(), a.output);

@@ -171,12 +171,27 @@ void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
     cmd.add_option("--edge-color", a.edge_color, "Edge color R,G,B (0-255)")->capture_default_str();
     cmd.add_option("--max-painter-comparisons", a.max_painter_comparisons,
                    "Budget of --visibility painter (and svg --order painter): polygon-pair "
-                   "comparisons (0: 2048 per polygon + 10^7)")
+                   "comparisons (0: 2048 per polygon + 10^7, at most 10^8)")
         ->check(whole_number(true))
         ->capture_default_str();
     cmd.add_option("--max-bsp-polygons", a.max_bsp_polygons,
                    "Budget of --visibility bsp (and svg --order bsp): polygons after splitting "
-                   "(0: 16 per triangle + 65536, at most 2^24)")
+                   "(0: 16 per triangle + 65536, at most 2^22)")
+        ->check(whole_number(true))
+        ->capture_default_str();
+    cmd.add_option("--max-bsp-classifications", a.max_bsp_classifications,
+                   "Budget of --visibility bsp (and svg --order bsp): polygon-plane tests while "
+                   "building (0: 16 x triangles^2 + 10^7, at most 5 x 10^8)")
+        ->check(whole_number(true))
+        ->capture_default_str();
+    cmd.add_option("--max-projected-polygons", a.max_projected_polygons,
+                   "Budget of --visibility painter, warnock, abuffer, --msaa and svg: polygons in "
+                   "view after projection (0: 2^19)")
+        ->check(whole_number(true))
+        ->capture_default_str();
+    cmd.add_option("--max-painted-fragments", a.max_painted_fragments,
+                   "Budget of --visibility painter and bsp: pixels filled back to front, overdraw "
+                   "included (0: 16 per pixel + 2^24, at most 2^26)")
         ->check(whole_number(true))
         ->capture_default_str();
     cmd.add_option("--max-warnock-classifications", a.max_warnock_classifications,
@@ -185,7 +200,8 @@ void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
         ->check(whole_number(true))
         ->capture_default_str();
     cmd.add_option("--max-abuffer-fragments", a.max_abuffer_fragments,
-                   "Budget of --visibility abuffer: polygon-pixel fragments (24 bytes each)")
+                   "Budget of --visibility abuffer: polygon-pixel fragments (24 bytes each: "
+                   "384 MiB at the default)")
         ->check(whole_number(false))
         ->capture_default_str();
 }
@@ -301,6 +317,9 @@ RenderOptions make_render_options(const RenderArguments& a,
     o.limits.max_painter_comparisons = a.max_painter_comparisons;
     o.limits.max_bsp_polygons = a.max_bsp_polygons;
     o.limits.max_warnock_classifications = a.max_warnock_classifications;
+    o.limits.max_bsp_classifications = a.max_bsp_classifications;
+    o.limits.max_projected_polygons = a.max_projected_polygons;
+    o.limits.max_painted_fragments = a.max_painted_fragments;
     o.threads = capped_threads("--threads", checked_thread_count("--threads", a.threads));
     if (camera) {
         o.camera = *camera;

@@ -30,6 +30,8 @@ struct RenderArguments {
     // Budgets of the object-space algorithms (0: automatic, scaled to the input).
     std::uint64_t max_painter_comparisons = 0, max_bsp_polygons = 0;
     std::uint64_t max_warnock_classifications = 0;
+    std::uint64_t max_bsp_classifications = 0;
+    std::uint64_t max_projected_polygons = 0, max_painted_fragments = 0;
     std::uint64_t max_abuffer_fragments = ABufferOptions{}.max_fragments;
     int threads = 0;
     std::string eye, target, up = "0,1,0", orbit;
