@@ -332,14 +332,14 @@ TEST(CliLimits, LoaderBudgetsNameTheirFlags) {
     EXPECT_EQ(r.exit_code, 0) << r.output;
 }
 
-TEST(CliLimits, VisibilityAlgorithmBudgets) {
-    const auto dir = temp_dir("cli-limits-budgets");
+// 400 random triangles in [-1, 1]^3 as ASCII PLY, the same file everywhere (a 64-bit LCG).
+void write_random_soup(const std::filesystem::path& path) {
     std::string ply =
         "ply\nformat ascii 1.0\nelement vertex 1200\nproperty float x\n"
         "property float y\nproperty float z\nelement face 400\n"
         "property list uchar int vertex_indices\nend_header\n";
     std::uint64_t state = 12345;
-    const auto next = [&] {  // (a 64-bit LCG: the same file everywhere)
+    const auto next = [&] {
         state = state * 6364136223846793005u + 1442695040888963407u;
         return double(state >> 11) / double(std::uint64_t{1} << 53) * 2.0 - 1.0;
     };
@@ -350,7 +350,12 @@ TEST(CliLimits, VisibilityAlgorithmBudgets) {
     for (int f = 0; f < 400; ++f)
         ply += "3 " + std::to_string(3 * f) + " " + std::to_string(3 * f + 1) + " " +
                std::to_string(3 * f + 2) + "\n";
-    write(dir / "soup.ply", ply);
+    write(path, ply);
+}
+
+TEST(CliLimits, VisibilityAlgorithmBudgets) {
+    const auto dir = temp_dir("cli-limits-budgets");
+    write_random_soup(dir / "soup.ply");
     const std::string render = "render soup.ply --size 160x120 --no-cull -o out.png ";
     expect_refused(dir, render + "--visibility bsp",
                    "zraster: soup.ply: BSP tree: more than 71936 polygons after");
@@ -440,23 +445,7 @@ TEST(CliLimits, VisibilityAlgorithmBudgets) {
 TEST(CliLimits, AnABufferPastTheMachinesMemoryNamesTheBudget) {
     if (kSanitized) GTEST_SKIP() << "no address-space limit in sanitizer builds";
     const auto dir = temp_dir("cli-limits-abuffer-memory");
-    std::string ply =
-        "ply\nformat ascii 1.0\nelement vertex 1200\nproperty float x\n"
-        "property float y\nproperty float z\nelement face 400\n"
-        "property list uchar int vertex_indices\nend_header\n";
-    std::uint64_t state = 12345;
-    const auto next = [&] {
-        state = state * 6364136223846793005u + 1442695040888963407u;
-        return double(state >> 11) / double(std::uint64_t{1} << 53) * 2.0 - 1.0;
-    };
-    for (int v = 0; v < 1200; ++v) {
-        const double x = next(), y = next(), z = next();
-        ply += std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z) + "\n";
-    }
-    for (int f = 0; f < 400; ++f)
-        ply += "3 " + std::to_string(3 * f) + " " + std::to_string(3 * f + 1) + " " +
-               std::to_string(3 * f + 2) + "\n";
-    write(dir / "soup.ply", ply);
+    write_random_soup(dir / "soup.ply");
     const CommandResult r = run_limited(
         "render soup.ply --size 4096x4096 --no-cull --aa 2 --visibility abuffer "
         "--max-abuffer-fragments 4000000000 -o out.png",
