@@ -151,6 +151,21 @@ TEST(CommandOutputs, AnOutputMayNotOverwriteAFileTheModelReads) {
     EXPECT_NE(read_text(dir / "batch.jsonl").find("is the same file as the input file named by"),
               std::string::npos)
         << read_text(dir / "batch.jsonl");
+    // The log is appended to: not over a file that is not a log (the texture, which the plan
+    // cannot know of before the model is read), nor where an output goes.
+    std::filesystem::remove(dir / "batch.jsonl");
+    const CommandResult log = run_zraster("batch g.gltf -o out --size 8x8 --log img.png", dir);
+    EXPECT_EQ(log.exit_code, 2) << log.output;
+    EXPECT_EQ(log.output,
+              "zraster: --log img.png: the file exists and is not a batch log (JSON Lines): the "
+              "log is appended to; choose another path\n");
+    const CommandResult at_output =
+        run_zraster("batch g.gltf -o out --size 8x8 --log out/g.png", dir);
+    EXPECT_EQ(at_output.exit_code, 2) << at_output.output;
+    EXPECT_EQ(at_output.output,
+              "zraster: --log out/g.png: is where g.gltf's output out/g.png goes: each output "
+              "needs a path of its own\n");
+    EXPECT_FALSE(std::filesystem::exists(dir / "out"));
     EXPECT_EQ(read_text(dir / "m.png"), texture);
     EXPECT_EQ(read_text(dir / "img.png"), texture);
 }

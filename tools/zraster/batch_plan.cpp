@@ -6,6 +6,7 @@
 #include <zraster/render.hpp>
 
 #include <algorithm>
+#include <fstream>
 #include <iterator>
 #include <string>
 #include <system_error>
@@ -69,6 +70,38 @@ void check_log(const BatchArguments& a, OutputFiles& log) {
     log.check(a.log, "--log");
 }
 
+// An existing file is appended to only if it is a log (empty, or JSON Lines): anything else there
+// (a model's texture, which no plan can know of before the model is read) would be corrupted.
+// Checked after the run's inputs, whose message is the more telling.
+void check_existing_log(const BatchArguments& a) {
+    std::error_code ec;
+    if (a.log.empty() || !std::filesystem::is_regular_file(a.log, ec)) return;
+    std::ifstream in(a.log, std::ios::binary);
+    char first = '{';
+    if (in.get(first) && first != '{')
+        throw InputError("--log " + a.log,
+                         "the file exists and is not a batch log (JSON Lines): the log is "
+                         "appended to; choose another path");
+}
+
+// The log may not be where an input's output goes (the output would be skipped as up to date,
+// or the log replaced).
+void check_log_against_outputs(const std::filesystem::path& log_path,
+                               const std::vector<BatchInput>& inputs,
+                               const BatchSettings& settings) {
+    std::error_code ec;
+    const std::filesystem::path log = std::filesystem::weakly_canonical(log_path, ec);
+    if (ec) return;
+    for (const BatchInput& input : inputs)
+        for (const std::filesystem::path& output : planned_outputs(input, settings))
+            if (output.filename() == log.filename() &&  // (cheap first: most names differ)
+                std::filesystem::weakly_canonical(output, ec) == log && !ec)
+                throw InputError("--log " + log_path.string(),
+                                 "is where " + input.source.string() + "'s output " +
+                                     output.string() +
+                                     " goes: each output needs a path of its own");
+}
+
 // The inputs, their outputs checked for clashes, the shard's share of them, the log.
 void plan_inputs(const BatchArguments& a, std::istream& standard_input, const Shard& shard,
                  BatchPlan& plan) {
@@ -90,12 +123,14 @@ void plan_inputs(const BatchArguments& a, std::istream& standard_input, const Sh
         throw InputError("batch", "no mesh files in the inputs given (" + paths.front() +
                                       (paths.size() > 1 ? ", ..." : "") + ")");
     for (const BatchInput& input : all) log.check_input(input.source, "");
+    check_existing_log(a);
     check_output_clashes(
         all, [&](const BatchInput& input) { return planned_outputs(input, plan.settings); });
     std::copy_if(all.begin(), all.end(), std::back_inserter(plan.inputs),
                  [&](const BatchInput& input) { return in_shard(input, shard); });
     plan.log = a.log.empty() ? std::filesystem::path(a.out_dir) / "batch.jsonl"
                              : std::filesystem::path(a.log);
+    check_log_against_outputs(plan.log, all, plan.settings);
 }
 
 }  // namespace
