@@ -157,6 +157,9 @@ io::LoadedScene load_any(const std::filesystem::path& path, const LoadOptions& o
     // ("vertex index out of range" for a coordinate that is not a number).
     const io::ObjFallback& fallback = std::get<io::ObjFallback>(fast);
     io::check_obj_indices(path);  // what Assimp would clamp or drop without a word
+    // Its material libraries' numbers too: Assimp fails on a short color in its own words.
+    io::scan_obj_material_libraries(path,
+                                    io::ReferencePolicy(path, options.allow_outside_references));
     try {
         return io::load_scene_with_assimp(path, options);
     } catch (const LimitExceeded&) {

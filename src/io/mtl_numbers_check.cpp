@@ -43,15 +43,25 @@ void check_mtl_numbers(const std::filesystem::path& obj, const std::filesystem::
         if (words.empty() ||
             std::find(kNumeric.begin(), kNumeric.end(), words[0]) == kNumeric.end())
             continue;
+        const auto refuse = [&](const std::string& cause) {
+            throw InputError(obj.string(),
+                             "material library " +
+                                 library.lexically_relative(obj.parent_path()).string() +
+                                 ": line " + std::to_string(number) + ": " + cause);
+        };
+        std::size_t numbers = 0;
         for (std::size_t k = 1; k < words.size(); ++k) {
             const std::string_view w = words[k];
             if (w.starts_with('#')) break;
-            if (!is_number_word(w))
-                throw InputError(obj.string(),
-                                 "material library " +
-                                     library.lexically_relative(obj.parent_path()).string() +
-                                     ": line " + std::to_string(number) + ": " + not_a_number(w));
+            if (!is_number_word(w)) refuse(not_a_number(w));
+            ++numbers;
         }
+        // Assimp's reader fails on these in its own words ("Cannot parse string \"\"").
+        const bool color = words[0].size() == 2 && (words[0][0] == 'K' || words[0] == "Tf");
+        if (color && numbers == 2)
+            refuse("'" + std::string(words[0]) + "' of 2 numbers; a color is 1 or 3");
+        if (color && numbers == 0)
+            refuse("'" + std::string(words[0]) + "' without a number; a color is 1 or 3");
     }
 }
 

@@ -119,10 +119,14 @@ TEST(LoaderNonsense, ObjIndicesPast2To31NameTheIndex) {
 
 TEST(LoaderNonsense, MtlWordsThatAreNotNumbersAreRefusedNamingTheLibrary) {
     struct Case {
-        std::string statement, word;
+        std::string statement, cause;
     };
-    for (const Case& c : {Case{"Kd 0.5abc 0 0", "0.5abc"}, Case{"Ns 1e5x", "1e5x"},
-                          Case{"d 0.5,", "0.5,"}, Case{"Ka 0 0 0x1", "0x1"}}) {
+    for (const Case& c :
+         {Case{"Kd 0.5abc 0 0", "'0.5abc' is not a number"},
+          Case{"Ns 1e5x", "'1e5x' is not a number"}, Case{"d 0.5,", "'0.5,' is not a number"},
+          Case{"Ka 0 0 0x1", "'0x1' is not a number"},
+          Case{"Kd 0.5 0.5", "'Kd' of 2 numbers; a color is 1 or 3"},
+          Case{"Ks", "'Ks' without a number; a color is 1 or 3"}}) {
         SCOPED_TRACE(c.statement);
         const auto dir = test::temp_dir("nonsense-mtl");
         const auto mtl = dir / "m.mtl";
@@ -133,9 +137,8 @@ TEST(LoaderNonsense, MtlWordsThatAreNotNumbersAreRefusedNamingTheLibrary) {
             const auto obj = dir / "m.obj";
             test::write_bytes(obj, text);
             for (const LoadIsolation isolation : kIsolations)
-                test::expect_input_error(
-                    [&] { load_scene(obj, isolated(isolation)); }, obj,
-                    "material library m.mtl: line 2: '" + c.word + "' is not a number");
+                test::expect_input_error([&] { load_scene(obj, isolated(isolation)); }, obj,
+                                         "material library m.mtl: line 2: " + c.cause);
         }
     }
     // Comments end a statement.
