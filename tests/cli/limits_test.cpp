@@ -199,6 +199,7 @@ TEST(CliLimits, CameraNumbersHaveRanges) {
     const auto dir = temp_dir("cli-limits-ranges");
     const std::pair<const char*, const char*> cases[] = {
         {"--orbit 0,0,1e30", "--orbit: distance must be in (0, 1e6] scene radii, not 1e+30"},
+        {"--orbit 0,0,1e-300", "--orbit: the eye and the target are the same point"},
         {"--orbit 0,95,1", "--orbit: elevation must be in -90..90 degrees, not 95"},
         {"--orbit 1e7,0,1", "--orbit: azimuth must be in -1e6..1e6 degrees, not 10000000"},
         {"--fovy 1e-9", "--fovy: must be in 0.001..179.999 degrees, not 1e-09"},

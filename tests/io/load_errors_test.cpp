@@ -169,6 +169,16 @@ TEST(LoadErrors, EveryTriangleWithoutArea) {
         const auto path = errors_fixture("degenerate-ply", "d.ply", ply);
         test::expect_input_error([&] { load_scene(path, options); }, path, cause);
     }
+    // Flattened by its placement: a glTF node scaled by 0.
+    const std::string gltf =
+        R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],)"
+        R"("nodes":[{"mesh":0,"scale":[0,0,0]}],"meshes":[{"primitives":[{"attributes":)"
+        R"({"POSITION":0}}]}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,)"
+        R"("type":"VEC3","min":[0,0,0],"max":[1,1,0]}],"bufferViews":[{"buffer":0,)"
+        R"("byteLength":36}],"buffers":[{"byteLength":36,"uri":"data:application/)"
+        R"(octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]})";
+    expect_load_error(errors_fixture("degenerate-placed", "flat.gltf", gltf),
+                      "every one of its 1 triangles has zero area as placed");
     // One triangle with an area among them is a scene (the rasterizer skips the others).
     EXPECT_EQ(load_scene(errors_fixture("degenerate-one", "d.obj",
                                         "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 1 1\nf 1 2 3\n"))

@@ -232,7 +232,9 @@ Camera place_camera(const RenderArguments& a, Camera camera, const BoundingSpher
         !problem.empty())
         throw InputError(!a.target.empty() ? "--target"
                          : !a.eye.empty()  ? "--eye"
-                                           : "--up",
+                         : !a.orbit.empty() && problem.find("same point") != std::string::npos
+                             ? "--orbit"
+                             : "--up",
                          problem);
     if (!a.eye.empty() || !a.target.empty()) {
         // Near/far from the bounding sphere as seen from the new eye, unless given.
