@@ -26,7 +26,16 @@ class InputError : public std::runtime_error {
 
     // Causes quote the input (names, texture paths, a library's message): line breaks and other
     // control characters there would break the one-line contract; they become spaces and '?'.
+    // A quote of megabytes (a 10 MB field name) is cut, at a character boundary.
+    static constexpr std::size_t kMaxCauseBytes = 4096;
     static std::string one_line(std::string text) {
+        if (text.size() > kMaxCauseBytes) {
+            std::size_t keep = kMaxCauseBytes - 64;
+            while (keep > 0 && (static_cast<unsigned char>(text[keep]) & 0xC0) == 0x80) --keep;
+            const std::size_t cut = text.size() - keep;
+            text.resize(keep);
+            text += "... (" + std::to_string(cut) + " more bytes)";
+        }
         for (char& c : text) {
             if (c == '\n' || c == '\r')
                 c = ' ';

@@ -1,5 +1,7 @@
 // Small string helpers for messages and line-based formats.
 #pragma once
+#include <zraster/error.hpp>
+
 #include <string>
 #include <string_view>
 
@@ -17,6 +19,9 @@ inline std::string_view trim(std::string_view s) {
 // Messages are one line ("FILE: cause"): Assimp's may span several, and stb_image's can quote
 // bytes of the file ("\x89\n\x1a\n PNG chunk not known"): other control characters become '?'.
 inline std::string one_line(std::string_view s) {
+    // (Warnings quote the input too: a name of megabytes is cut as InputError cuts a cause.)
+    constexpr std::size_t kMaxBytes = 4096;
+    if (s.size() > kMaxBytes) return one_line(InputError("", std::string(s)).cause());
     std::string out;
     bool space = false;
     for (char c : trim(s)) {

@@ -260,5 +260,29 @@ TEST(LoaderNonsense, CellsFileFieldsItDoesNotHaveAreRefusedByName) {
     }
 }
 
+// A cause or warning quoting megabytes of the input (a field name, a material name) is cut: the
+// one line stays a line.
+TEST(LoaderNonsense, QuotesOfMegabytesAreCut) {
+    const auto dir = test::temp_dir("nonsense-long-quotes");
+    const std::string huge(10 << 20, 'x');
+    test::write_bytes(dir / "t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const auto cells = dir / "long.cells.json";
+    test::write_bytes(cells, R"({"zraster_cells":1,")" + huge + R"(":1})");
+    try {
+        load_scene(cells);
+        ADD_FAILURE() << "no InputError";
+    } catch (const InputError& e) {
+        EXPECT_LT(std::string(e.what()).size(), 4096 + cells.string().size() + 2);
+        EXPECT_NE(e.cause().find("xxx... ("), std::string::npos);
+        EXPECT_NE(e.cause().find(" more bytes)"), std::string::npos);
+    }
+    const auto obj = dir / "long-name.obj";
+    test::write_bytes(obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl " + huge + "\nf 1 2 3\n");
+    std::vector<std::string> warnings;
+    load_scene(obj, {}, &warnings);
+    ASSERT_FALSE(warnings.empty());
+    for (const std::string& w : warnings) EXPECT_LT(w.size(), 4096 + obj.string().size() + 2);
+}
+
 }  // namespace
 }  // namespace zraster
