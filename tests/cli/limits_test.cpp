@@ -195,6 +195,21 @@ TEST(CliLimits, EmptyValuesAndNewlinesInNames) {
 
 // Every camera and lighting number has a range (docs/limits.md), the same for the flags and for
 // the cameras of a --views-json file, whose messages name the file, camera and field.
+// Whole numbers are decimal: CLI11 alone read "010" as octal 8 and "0x10" as 16.
+TEST(CliLimits, WholeNumbersAreReadInDecimal) {
+    const auto dir = temp_dir("cli-limits-decimal");
+    const CommandResult ten =
+        run_limited("render builtin:cube --size 3x3 --max-pixels 010 -o out.png", dir);
+    EXPECT_EQ(ten.exit_code, 0) << ten.output;  // 9 pixels <= 10 (octal 010 is 8)
+    std::filesystem::remove(dir / "out.png");
+    expect_refused(dir, "render builtin:cube --size 3x3 --max-pixels 0010 --aa 02 -o out.png",
+                   "zraster: --aa: 2 times --size 3x3 is 36 pixels, more than --max-pixels 10\n");
+    expect_refused(dir, "render builtin:cube --size 3x3 --threads 0x10 -o out.png",
+                   "zraster: --threads: expected a whole number in decimal, got '0x10'\n");
+    expect_refused(dir, "svg builtin:cube --precision 010 -o out.svg",
+                   "zraster: --precision: must be 0..6, not 10\n");
+}
+
 TEST(CliLimits, CameraNumbersHaveRanges) {
     const auto dir = temp_dir("cli-limits-ranges");
     const std::pair<const char*, const char*> cases[] = {

@@ -17,6 +17,7 @@
 #include "batch_limits.hpp"
 #include "bench_command.hpp"
 #include "command_line.hpp"
+#include "decimal_integers.hpp"
 #include "explain_command.hpp"
 #include "info_command.hpp"
 #include "io/text_util.hpp"
@@ -82,6 +83,7 @@ int run_zraster(std::vector<std::string> args) {
                    "texture past it is not used, with a warning")
         ->capture_default_str();
     for (CLI::App* sub : app.get_subcommands({})) sub->fallthrough();
+    read_integers_in_decimal(app);
 
     // `zraster -o x.png --size ...` means `zraster render -o x.png --size ...`. The flags above
     // may come first (`zraster --load-in-process render FILE`, `zraster --load-in-process -o

@@ -1,0 +1,35 @@
+// See decimal_integers.hpp.
+#include "decimal_integers.hpp"
+
+#include <string>
+
+namespace zraster::cli {
+namespace {
+
+CLI::Validator decimal() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            const std::size_t sign = !text.empty() && (text[0] == '+' || text[0] == '-') ? 1 : 0;
+            std::size_t zeros = sign;
+            while (zeros + 1 < text.size() && text[zeros] == '0') ++zeros;
+            if (zeros > sign && text.find_first_of("xXbBoO", zeros) == zeros)
+                return "expected a whole number in decimal, got '" + text + "'";
+            text.erase(sign, zeros - sign);
+            return {};
+        },
+        "", "decimal");
+}
+
+}  // namespace
+
+void read_integers_in_decimal(CLI::App& app) {
+    for (CLI::Option* option : app.get_options()) {
+        // ("UINT:POSITIVE": the type, then what a check added to it.)
+        const std::string type = option->get_type_name();
+        const std::string base = type.substr(0, type.find(':'));
+        if (base == "INT" || base == "UINT") option->transform(decimal());
+    }
+    for (CLI::App* sub : app.get_subcommands({})) read_integers_in_decimal(*sub);
+}
+
+}  // namespace zraster::cli
