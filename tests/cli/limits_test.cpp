@@ -160,6 +160,14 @@ TEST(CliLimits, MoreThreadsThanTheHardwareAreHonouredQuietly) {
         EXPECT_EQ(r.exit_code, 0) << r.output;
         EXPECT_EQ(r.output, "") << r.output;
     }
+    // batch: one job of them all (a oneTBB warning leaked there).
+    write(dir / "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const CommandResult batch =
+        run_limited("batch tri.obj --size 8x8 -o out.batch --progress none --jobs 1 --threads " +
+                        std::to_string(hardware * 4),
+                    dir);
+    EXPECT_EQ(batch.exit_code, 0) << batch.output;
+    EXPECT_EQ(batch.output.find("TBB"), std::string::npos) << batch.output;
 }
 
 // An empty value is refused, not taken as "not given" (CLI11 would draw with the default), for

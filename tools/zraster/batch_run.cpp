@@ -7,8 +7,11 @@
 #include <chrono>
 #include <exception>
 #include <mutex>
+#include <optional>
 #include <thread>
 
+#include <tbb/global_control.h>
+#include <tbb/info.h>
 #include <tbb/task_arena.h>
 
 namespace zraster::cli {
@@ -25,6 +28,12 @@ BatchTotals run_batch_jobs(const std::vector<BatchInput>& inputs, const BatchSet
         std::min<std::size_t>(std::size_t(std::max(jobs, 1)), inputs.size());
     BatchSettings job_settings = settings;
     job_settings.render.threads = batch_job_threads(settings.render.threads, int(threads));
+    // oneTBB keeps hardware_concurrency - 1 workers unless told otherwise: more threads asked for
+    // (up to 4 per hardware thread) would run with fewer, and oneTBB says so on stderr.
+    const std::size_t all_threads = threads * std::size_t(std::max(job_settings.render.threads, 1));
+    std::optional<tbb::global_control> parallelism;
+    if (all_threads > std::size_t(tbb::info::default_concurrency()))
+        parallelism.emplace(tbb::global_control::max_allowed_parallelism, all_threads);
     const auto work = [&] {
         Renderer renderer;  // its memory and thread arena serve every file of this thread
         // This thread's files run in an arena of its share of the threads (batch_job_threads).
