@@ -193,7 +193,12 @@ TEST(ViewCommand, BadFilesAreExitTwoWithOneLine) {
     EXPECT_EQ(order.output,
               "zraster: late.txt: line 2: frame 1 is negative or before the previous event's\n");
     const CommandResult no_script = run_zraster("view sphere:20 --script none.txt", dir);
-    EXPECT_EQ(no_script.output, "zraster: none.txt: no such script file\n");
+    EXPECT_EQ(no_script.output, "zraster: none.txt: file not found\n");
+    // A FIFO or device is not read (it would block, or never end).
+    ASSERT_EQ(::mkfifo((dir / "fifo.txt").c_str(), 0600), 0);
+    const CommandResult fifo = run_zraster("view sphere:20 --script fifo.txt", dir);
+    EXPECT_EQ(fifo.exit_code, 2);
+    EXPECT_EQ(fifo.output, "zraster: fifo.txt: not a regular file\n");
     const CommandResult shot = run_zraster("view sphere:20 --screenshot x.jpg", dir);
     EXPECT_EQ(shot.exit_code, 2);
     EXPECT_EQ(shot.output, "zraster: --screenshot: 'x.jpg' must end in .png\n");

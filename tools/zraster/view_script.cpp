@@ -1,6 +1,8 @@
 // Parsing of the viewer's input scripts.
 #include "view_script.hpp"
 
+#include "io/input_file_check.hpp"
+
 #include <zraster/error.hpp>
 
 #include <charconv>
@@ -122,8 +124,9 @@ std::vector<ScriptEvent> parse_view_script(const std::string& text, const std::s
 }
 
 std::vector<ScriptEvent> read_view_script(const std::filesystem::path& path) {
-    if (!std::filesystem::is_regular_file(path))
-        throw InputError(path.string(), "no such script file");
+    // As a model is checked: missing, a FIFO or device, unreadable, empty; and at most 16 MiB
+    // (a script of a few events is a few hundred bytes; it is read whole).
+    io::check_input_file(path, std::uintmax_t{16} << 20, nullptr);
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path.string(), "cannot read the script");
     std::ostringstream text;
