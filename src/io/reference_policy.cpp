@@ -30,6 +30,12 @@ ReferencePolicy::Check ReferencePolicy::check(const std::filesystem::path& file)
             return {Verdict::Refused, "is a loop of symbolic links"};
         return {Verdict::Missing, {}};
     }
+    // What no option allows first: the hint to allow outside references would not help.
+    const std::filesystem::file_status status = std::filesystem::status(resolved, ec);
+    if (ec) return {Verdict::Missing, {}};
+    if (std::filesystem::is_directory(status)) return {Verdict::Refused, "is a directory"};
+    if (!std::filesystem::is_regular_file(status))
+        return {Verdict::Refused, "is not a regular file (a FIFO, socket or device)"};
     if (!root_.empty() && resolved != model_) {
         const auto [end, _] =
             std::mismatch(root_.begin(), root_.end(), resolved.begin(), resolved.end());
@@ -39,11 +45,6 @@ ReferencePolicy::Check ReferencePolicy::check(const std::filesystem::path& file)
                         root_.string() + ")",
                     true};
     }
-    const std::filesystem::file_status status = std::filesystem::status(resolved, ec);
-    if (ec) return {Verdict::Missing, {}};
-    if (std::filesystem::is_directory(status)) return {Verdict::Refused, "is a directory"};
-    if (!std::filesystem::is_regular_file(status))
-        return {Verdict::Refused, "is not a regular file (a FIFO, socket or device)"};
     if (::access(resolved.c_str(), R_OK) != 0)
         return {Verdict::Refused,
                 "cannot be read (" + std::generic_category().message(errno) + ")"};

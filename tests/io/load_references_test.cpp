@@ -182,6 +182,8 @@ TEST(LoadReferences, EachRefusalSaysItsCauseAndOnlyOutsideNamesTheFlag) {
     std::filesystem::create_symlink("loop-a", model_dir / "loop-b");
     ASSERT_EQ(::mkfifo((model_dir / "fifo").c_str(), 0600), 0);
     std::filesystem::create_directory(model_dir / "folder");
+    // Outside the folder and a device: the flag would not help, so it is not named.
+    std::filesystem::create_symlink("/dev/zero", model_dir / "zero");
     struct Case {
         std::string name, cause;
         bool advice;
@@ -189,6 +191,7 @@ TEST(LoadReferences, EachRefusalSaysItsCauseAndOnlyOutsideNamesTheFlag) {
     const Case cases[] = {
         {"loop-a", "is a loop of symbolic links", false},
         {"fifo", "is not a regular file (a FIFO, socket or device)", false},
+        {"zero", "is not a regular file (a FIFO, socket or device)", false},
         {"folder", "is a directory", false},
         {"../outside.bin", "is outside the model's folder", true},
     };
