@@ -4,6 +4,7 @@
 #include <zraster/error.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace zraster::io {
@@ -63,6 +64,8 @@ class SchemaChecker {
         attributes();
         nodes();
         scene();
+        cameras();
+        material_references();
     }
 
   private:
@@ -157,6 +160,84 @@ class SchemaChecker {
         if (!scene->is_number_unsigned() || scene->get<std::uint64_t>() >= scenes)
             refuse("\"scene\" " + scene->dump() + " is not one of the file's " +
                    std::to_string(scenes) + " scenes");
+    }
+
+    // zraster ignores a file's cameras, but its importer validates them and would refuse the
+    // file in its own terms.
+    void cameras() const {
+        const json& cameras = array_of(document_, "cameras");
+        for (std::size_t c = 0; c < cameras.size(); ++c) {
+            if (!cameras[c].is_object()) continue;
+            for (const char* kind : {"perspective", "orthographic"}) {
+                const auto p = cameras[c].find(kind);
+                if (p == cameras[c].end() || !p->is_object()) continue;
+                const auto number = [&](const char* name) -> std::optional<double> {
+                    const auto v = p->find(name);
+                    if (v == p->end()) return std::nullopt;
+                    if (!v->is_number())
+                        refuse("camera " + std::to_string(c) + ": " + name + " " + v->dump() +
+                               " is not a number");
+                    return v->get<double>();
+                };
+                const std::optional<double> znear = number("znear"), zfar = number("zfar");
+                const bool perspective = std::string(kind) == "perspective";
+                if (znear && !(perspective ? *znear > 0.0 : *znear >= 0.0))
+                    refuse("camera " + std::to_string(c) + ": znear " + p->at("znear").dump() +
+                           (perspective ? " is not above 0" : " is negative"));
+                if (znear && zfar && !(*zfar > *znear))
+                    refuse("camera " + std::to_string(c) + ": zfar " + p->at("zfar").dump() +
+                           " is not beyond znear " + p->at("znear").dump());
+                if (perspective)
+                    if (const std::optional<double> yfov = number("yfov"); yfov && !(*yfov > 0.0))
+                        refuse("camera " + std::to_string(c) + ": yfov " + p->at("yfov").dump() +
+                               " is not above 0");
+            }
+        }
+    }
+
+    // A primitive's material and a material's textures name elements the file has.
+    void material_references() const {
+        const std::size_t materials = array_of(document_, "materials").size();
+        const json& meshes = array_of(document_, "meshes");
+        for (std::size_t m = 0; m < meshes.size(); ++m) {
+            if (!meshes[m].is_object()) continue;
+            const json& primitives = array_of(meshes[m], "primitives");
+            for (std::size_t p = 0; p < primitives.size(); ++p) {
+                if (!primitives[p].is_object()) continue;
+                const auto material = primitives[p].find("material");
+                if (material == primitives[p].end()) continue;
+                if (!material->is_number_unsigned() || material->get<std::uint64_t>() >= materials)
+                    refuse("mesh " + std::to_string(m) + ", primitive " + std::to_string(p) +
+                           ": material " + material->dump() + " is not one of the file's " +
+                           std::to_string(materials) + " materials");
+            }
+        }
+        const std::size_t textures = array_of(document_, "textures").size();
+        const json& all = array_of(document_, "materials");
+        for (std::size_t m = 0; m < all.size(); ++m) {
+            if (!all[m].is_object())
+                refuse("material " + std::to_string(m) + " is not a JSON object");
+            const auto check = [&](const json& owner, const char* name) {
+                const auto info = owner.find(name);
+                if (info == owner.end() || !info->is_object()) return;
+                const auto index = info->find("index");
+                if (index != info->end() &&
+                    (!index->is_number_unsigned() || index->get<std::uint64_t>() >= textures))
+                    refuse("material " + std::to_string(m) + ": " + name + " index " +
+                           index->dump() + " is not one of the file's " + std::to_string(textures) +
+                           " textures");
+            };
+            for (const char* name : {"normalTexture", "occlusionTexture", "emissiveTexture"})
+                check(all[m], name);
+            const auto pbr = all[m].find("pbrMetallicRoughness");
+            if (pbr != all[m].end() && !pbr->is_object())
+                refuse("material " + std::to_string(m) +
+                       ": pbrMetallicRoughness is not a JSON "
+                       "object");
+            if (pbr != all[m].end())
+                for (const char* name : {"baseColorTexture", "metallicRoughnessTexture"})
+                    check(*pbr, name);
+        }
     }
 
     const std::filesystem::path& path_;

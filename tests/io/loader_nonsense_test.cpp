@@ -161,6 +161,46 @@ TEST(LoaderNonsense, GltfVersionsThatAreNot2NAreRefused) {
     }
 }
 
+// What Assimp's validation would refuse in its own terms ("aiCamera::mClipPlaneFar must be >=
+// ...", "Member \"index\" was not of type \"uint\""), refused in the file's.
+TEST(LoaderNonsense, GltfCamerasAndMaterialReferencesAreCheckedInTheFilesTerms) {
+    const auto dir = test::temp_dir("nonsense-gltf-references");
+    const std::string triangle =
+        R"("asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
+        R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3",)"
+        R"("min":[0,0,0],"max":[1,1,0]}],"bufferViews":[{"buffer":0,"byteLength":36}],)"
+        R"("buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,)"
+        R"(AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}])";
+    const std::string primitive = R"("meshes":[{"primitives":[{"attributes":{"POSITION":0})";
+    struct Case {
+        std::string members, cause;
+    };
+    for (const Case& c : {
+             Case{primitive + R"(}]}],"cameras":[{"type":"perspective","perspective":)"
+                              R"({"yfov":0.5,"znear":-1,"zfar":-2}}])",
+                  "glTF camera 0: znear -1 is not above 0"},
+             Case{primitive + R"(}]}],"cameras":[{"type":"perspective","perspective":)"
+                              R"({"yfov":0.5,"znear":2,"zfar":1}}])",
+                  "glTF camera 0: zfar 1 is not beyond znear 2"},
+             Case{primitive + R"(,"material":99}]}],"materials":[{}])",
+                  "glTF mesh 0, primitive 0: material 99 is not one of the file's 1 materials"},
+             Case{primitive + R"(,"material":0}]}],"materials":[null])",
+                  "glTF material 0 is not a JSON object"},
+             Case{primitive + R"(,"material":0}]}],"materials":[{"pbrMetallicRoughness":[]}])",
+                  "glTF material 0: pbrMetallicRoughness is not a JSON object"},
+             Case{primitive + R"(,"material":0}]}],"materials":[{"pbrMetallicRoughness":)"
+                              R"({"baseColorTexture":{"index":-1}}}])",
+                  "glTF material 0: baseColorTexture index -1 is not one of the file's 0 "
+                  "textures"},
+         }) {
+        SCOPED_TRACE(c.cause);
+        const auto path = dir / "r.gltf";
+        test::write_bytes(path, "{" + triangle + "," + c.members + "}");
+        for (const LoadIsolation isolation : kIsolations)
+            test::expect_input_error([&] { load_scene(path, isolated(isolation)); }, path, c.cause);
+    }
+}
+
 // Every normal of a loaded scene is of unit length.
 void expect_unit_normals(const Scene& scene) {
     for (const Mesh& mesh : scene.meshes)
