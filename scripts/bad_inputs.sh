@@ -205,6 +205,7 @@ printf 'newmtl m\nKd 1 1 1\nmap_Kd self-texture.png\n' >selftex.mtl
 printf "mtllib selftex.mtl\n${tri}vt 0 0\nusemtl m\nf 1/1 2/1 3/1\n" >selftex.obj
 printf "${tri}f 1 1 1\nf 2 2 2\nf 3 3 3\n" >degenerate.obj
 printf '[{"eye": [1, 1, 1], "target": [1, 1, 1]}]' >same.views.json
+printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"%s"}],"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0,"cameras":[{"type":"perspective","perspective":{"yfov":0.5,"znear":-1,"zfar":-2}}]}' "$b64" >camera.gltf
 ones="$(printf '1,%.0s' $(seq 399))1"
 zeros="$(printf '0,%.0s' $(seq 399))0"
 printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"%s"}],"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"children":[%s]},{"mesh":0}],"scenes":[{"nodes":[%s]}],"scene":0}' "$b64" "$ones" "$zeros" >overdraw.gltf
@@ -456,6 +457,9 @@ unchanged_row "-o naming the model's own texture" self-texture.png render selfte
 row "OBJ whose every triangle has zero area" render degenerate.obj -o out.png
 row "6 KB glTF drawing one screen-sized triangle 160,000 times" render overdraw.gltf -o out.png
 row "--views-json camera whose eye is its target" batch tri.off -o out.d --size 8x8 --views-json same.views.json
+unchanged_row "batch --log naming the model's own texture" self-texture.png batch selftex.obj -o out.d --size 8x8 --log self-texture.png
+row "--threads 0x10 (whole numbers are decimal)" render builtin:cube --size 8x8 --threads 0x10 -o out.png
+row "glTF camera (ignored by zraster) with znear -1" render camera.gltf -o out.png
 row "--sensor-max-range below the default minimum" render builtin:cube -o out.png --z-out out.npy --sensor kinect --sensor-max-range 0.2
 row "batch --log in a missing folder" batch tri.off -o out.d --size 8x8 --log nodir/l.jsonl
 row "batch --log naming a folder" batch tri.off -o out.d --size 8x8 --log folder.obj

@@ -483,6 +483,22 @@ TEST(CliLimits, AnABufferPastTheMachinesMemoryNamesTheBudget) {
     EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
 }
 
+// Any other request past the machine's memory (limits raised past their defaults) is the user's
+// to change: exit 2 saying what to lower, not exit 1 (an internal error).
+TEST(CliLimits, RaisedLimitsPastTheMachinesMemoryAreExitTwo) {
+    if (kSanitized) GTEST_SKIP() << "no address-space limit in sanitizer builds";
+    const auto dir = temp_dir("cli-limits-out-of-memory");
+    const CommandResult r = run_limited(
+        "render builtin:cube --size 1024x1024 --aa 16 --max-pixels 9999999999999999999 "
+        "--max-bin-bytes 9999999999999999999 -o out.png",
+        dir);
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_EQ(r.output.rfind("zraster: out of memory: the run needs more than this machine", 0), 0u)
+        << r.output;
+    EXPECT_EQ(r.output.find('\n'), r.output.size() - 1) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+}
+
 // Coordinates beyond what single-precision matrices can frame: a triangle at 3e38 (the fitted
 // camera overflowed and the image was empty, exit 0) and an eye at 1e39 (the message blamed
 // near and far).

@@ -163,8 +163,12 @@ int run_zraster(std::vector<std::string> args) {
         fmt::print(stderr, "zraster: {}\n", io::one_line(e.what()));
         return kExitBadInput;
     } catch (const std::bad_alloc&) {
-        fmt::print(stderr, "zraster: out of memory\n");
-        return kExitInternal;
+        // The default budgets keep a run within a few GB: past them is a request this machine
+        // cannot hold (a budget or --max-pixels raised), the user's to change, not a bug.
+        fmt::print(stderr,
+                   "zraster: out of memory: the run needs more than this machine gives it; "
+                   "lower --size, --aa or a budget raised past its default (docs/limits.md)\n");
+        return kExitBadInput;
     } catch (const std::exception& e) {
         fmt::print(stderr, "zraster: internal error: {}\n", io::one_line(e.what()));
         return kExitInternal;
