@@ -113,33 +113,39 @@ class SchemaChecker {
         }
     }
 
-    void attributes() const {
-        const json& accessors = array_of(document_, "accessors");
+    // f(mesh index, primitive index, primitive) for every primitive that is a JSON object.
+    template <typename F>
+    void for_each_primitive(F&& f) const {
         const json& meshes = array_of(document_, "meshes");
         for (std::size_t m = 0; m < meshes.size(); ++m) {
             if (!meshes[m].is_object()) continue;
             const json& primitives = array_of(meshes[m], "primitives");
-            for (std::size_t p = 0; p < primitives.size(); ++p) {
-                if (!primitives[p].is_object()) continue;
-                const auto attributes = primitives[p].find("attributes");
-                if (attributes == primitives[p].end() || !attributes->is_object()) continue;
-                for (const auto& [name, index] : attributes->items()) {
-                    const std::string allowed = allowed_types(name);
-                    if (allowed.empty() || !index.is_number_unsigned() ||
-                        index.get<std::uint64_t>() >= accessors.size() ||
-                        !accessors[index.get<std::size_t>()].is_object())
-                        continue;
-                    const auto type = accessors[index.get<std::size_t>()].find("type");
-                    if (type == accessors[index.get<std::size_t>()].end() || !type->is_string())
-                        continue;
-                    const std::string t = type->get<std::string>();
-                    if (allowed.find(t) == std::string::npos || t.size() != 4)
-                        refuse("mesh " + std::to_string(m) + ", primitive " + std::to_string(p) +
-                               ": attribute " + name + " is a " + t + " accessor (" + allowed +
-                               " in glTF 2.0)");
-                }
-            }
+            for (std::size_t p = 0; p < primitives.size(); ++p)
+                if (primitives[p].is_object()) f(m, p, primitives[p]);
         }
+    }
+
+    void attributes() const {
+        const json& accessors = array_of(document_, "accessors");
+        for_each_primitive([&](std::size_t m, std::size_t p, const json& primitive) {
+            const auto attributes = primitive.find("attributes");
+            if (attributes == primitive.end() || !attributes->is_object()) return;
+            for (const auto& [name, index] : attributes->items()) {
+                const std::string allowed = allowed_types(name);
+                if (allowed.empty() || !index.is_number_unsigned() ||
+                    index.get<std::uint64_t>() >= accessors.size() ||
+                    !accessors[index.get<std::size_t>()].is_object())
+                    continue;
+                const auto type = accessors[index.get<std::size_t>()].find("type");
+                if (type == accessors[index.get<std::size_t>()].end() || !type->is_string())
+                    continue;
+                const std::string t = type->get<std::string>();
+                if (allowed.find(t) == std::string::npos || t.size() != 4)
+                    refuse("mesh " + std::to_string(m) + ", primitive " + std::to_string(p) +
+                           ": attribute " + name + " is a " + t + " accessor (" + allowed +
+                           " in glTF 2.0)");
+            }
+        });
     }
 
     void nodes() const {
@@ -198,20 +204,14 @@ class SchemaChecker {
     // A primitive's material and a material's textures name elements the file has.
     void material_references() const {
         const std::size_t materials = array_of(document_, "materials").size();
-        const json& meshes = array_of(document_, "meshes");
-        for (std::size_t m = 0; m < meshes.size(); ++m) {
-            if (!meshes[m].is_object()) continue;
-            const json& primitives = array_of(meshes[m], "primitives");
-            for (std::size_t p = 0; p < primitives.size(); ++p) {
-                if (!primitives[p].is_object()) continue;
-                const auto material = primitives[p].find("material");
-                if (material == primitives[p].end()) continue;
-                if (!material->is_number_unsigned() || material->get<std::uint64_t>() >= materials)
-                    refuse("mesh " + std::to_string(m) + ", primitive " + std::to_string(p) +
-                           ": material " + material->dump() + " is not one of the file's " +
-                           std::to_string(materials) + " materials");
-            }
-        }
+        for_each_primitive([&](std::size_t m, std::size_t p, const json& primitive) {
+            const auto material = primitive.find("material");
+            if (material == primitive.end()) return;
+            if (!material->is_number_unsigned() || material->get<std::uint64_t>() >= materials)
+                refuse("mesh " + std::to_string(m) + ", primitive " + std::to_string(p) +
+                       ": material " + material->dump() + " is not one of the file's " +
+                       std::to_string(materials) + " materials");
+        });
         const std::size_t textures = array_of(document_, "textures").size();
         const json& all = array_of(document_, "materials");
         for (std::size_t m = 0; m < all.size(); ++m) {
