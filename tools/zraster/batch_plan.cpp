@@ -85,21 +85,17 @@ void check_existing_log(const BatchArguments& a) {
 }
 
 // The log may not be where an input's output goes (the output would be skipped as up to date,
-// or the log replaced).
-void check_log_against_outputs(const std::filesystem::path& log_path,
-                               const std::vector<BatchInput>& inputs,
-                               const BatchSettings& settings) {
+// or the log replaced): checked against each input's planned outputs as the clash check lists
+// them, most names ruled out by the file name alone.
+void check_log_against(const std::filesystem::path& log_path, const std::filesystem::path& log,
+                       const BatchInput& input, const std::vector<std::filesystem::path>& outputs) {
     std::error_code ec;
-    const std::filesystem::path log = std::filesystem::weakly_canonical(log_path, ec);
-    if (ec) return;
-    for (const BatchInput& input : inputs)
-        for (const std::filesystem::path& output : planned_outputs(input, settings))
-            if (output.filename() == log.filename() &&  // (cheap first: most names differ)
-                std::filesystem::weakly_canonical(output, ec) == log && !ec)
-                throw InputError("--log " + log_path.string(),
-                                 "is where " + input.source.string() + "'s output " +
-                                     output.string() +
-                                     " goes: each output needs a path of its own");
+    for (const std::filesystem::path& output : outputs)
+        if (output.filename() == log.filename() &&
+            std::filesystem::weakly_canonical(output, ec) == log && !ec)
+            throw InputError("--log " + log_path.string(),
+                             "is where " + input.source.string() + "'s output " + output.string() +
+                                 " goes: each output needs a path of its own");
 }
 
 // The inputs, their outputs checked for clashes, the shard's share of them, the log.
@@ -124,13 +120,17 @@ void plan_inputs(const BatchArguments& a, std::istream& standard_input, const Sh
                                       (paths.size() > 1 ? ", ..." : "") + ")");
     for (const BatchInput& input : all) log.check_input(input.source, "");
     check_existing_log(a);
-    check_output_clashes(
-        all, [&](const BatchInput& input) { return planned_outputs(input, plan.settings); });
-    std::copy_if(all.begin(), all.end(), std::back_inserter(plan.inputs),
-                 [&](const BatchInput& input) { return in_shard(input, shard); });
     plan.log = a.log.empty() ? std::filesystem::path(a.out_dir) / "batch.jsonl"
                              : std::filesystem::path(a.log);
-    check_log_against_outputs(plan.log, all, plan.settings);
+    std::error_code ec;
+    const std::filesystem::path log_file = std::filesystem::weakly_canonical(plan.log, ec);
+    check_output_clashes(all, [&](const BatchInput& input) {
+        std::vector<std::filesystem::path> outputs = planned_outputs(input, plan.settings);
+        if (!ec) check_log_against(plan.log, log_file, input, outputs);
+        return outputs;
+    });
+    std::copy_if(all.begin(), all.end(), std::back_inserter(plan.inputs),
+                 [&](const BatchInput& input) { return in_shard(input, shard); });
 }
 
 }  // namespace
