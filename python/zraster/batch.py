@@ -166,7 +166,7 @@ def _run_on_cluster(client, plan, inputs, progress, done):
     def submit():
         nonlocal next_index
         source, stem = inputs[next_index]
-        future = client.submit(_render_on_worker, plan.argv, source, stem, pure=False,
+        future = client.submit(_render_on_worker, plan.argv, batch_id, source, stem, pure=False,
                                key=f"zraster-batch-{batch_id}-{next_index}")
         in_flight[future.key] = (next_index, future)
         completed.add(future)
@@ -192,14 +192,15 @@ def _run_on_cluster(client, plan, inputs, progress, done):
                 submit()
     except BaseException:
         # The tasks are cancelled. A file a worker is already rendering still ends there, its
-        # outputs whole (written all or nothing) but not logged: a rerun finds them up to date.
+        # outputs whole (written all or nothing) but not logged: a rerun renders them again.
         client.cancel([future for _, future in in_flight.values()])
         raise
 
 
 @functools.lru_cache(maxsize=8)
-def _worker_jobs(argv):
-    """The settings on a worker, parsed once per batch (argv: a tuple), with the default
+def _worker_jobs(argv, batch_id):
+    """The settings on a worker, parsed once per batch (argv: a tuple; batch_id: one per call of
+    render_files, so that each batch reads the log's records afresh), with the default
     --max-memory shared among the worker's threads."""
     try:
         from distributed import get_worker
@@ -211,8 +212,8 @@ def _worker_jobs(argv):
     return _zraster._BatchJobs(list(argv), int(threads))
 
 
-def _render_on_worker(argv, source, stem):
-    return _worker_jobs(tuple(argv)).run(source, stem)
+def _render_on_worker(argv, batch_id, source, stem):
+    return _worker_jobs(tuple(argv), batch_id).run(source, stem)
 
 
 def _summary(records, seconds, log):

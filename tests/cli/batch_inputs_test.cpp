@@ -111,9 +111,9 @@ TEST(BatchInputs, RecordsHaveTheDocumentedFieldsInOrder) {
     EXPECT_EQ(r.exit_code, 3) << r.output;
     const auto log = read_log(dir / "out" / "batch.jsonl");
     ASSERT_EQ(log.size(), 2u);
-    const std::vector<std::string> fields = {"input",     "status",    "error",
-                                             "outputs",   "triangles", "load_ms",
-                                             "render_ms", "write_ms",  "warnings"};
+    const std::vector<std::string> fields = {"input",     "status",  "error",     "outputs",
+                                             "triangles", "load_ms", "render_ms", "write_ms",
+                                             "warnings",  "reads"};
     std::ifstream in(dir / "out" / "batch.jsonl");
     for (std::string line; std::getline(in, line);) {
         std::size_t at = 0;
@@ -127,6 +127,7 @@ TEST(BatchInputs, RecordsHaveTheDocumentedFieldsInOrder) {
         EXPECT_EQ(record.size(), fields.size());
         EXPECT_TRUE(record.at("outputs").is_array());
         EXPECT_TRUE(record.at("warnings").is_array());
+        EXPECT_TRUE(record.at("reads").is_array());
         for (const char* time : {"load_ms", "render_ms", "write_ms"}) {
             EXPECT_TRUE(record.at(time).is_number()) << time;
             EXPECT_GE(record.at(time).get<double>(), 0.0) << time;

@@ -79,6 +79,77 @@ TEST(BatchResume, RerunSkipsUpToDateInputsAndForceRedoesThem) {
         EXPECT_GT(time, before.at(file)) << file;
 }
 
+// Up to date means "written by an earlier run, and nothing it was made from changed since": the
+// log's records say which outputs a run wrote and which files each model read.
+TEST(BatchResume, OnlyOutputsTheLogRecordsAreUpToDateAndTheirModelsFilesCount) {
+    const auto dir = temp_dir("batch-rerun-reads");
+    ASSERT_EQ(run_zraster("render builtin:cube --size 4x4 -o tex.png", dir).exit_code, 0);
+    write_text(dir / "in" / "m.mtl", "newmtl t\nKd 1 1 1\nmap_Kd ../tex.png\n");
+    write_text(dir / "in" / "m.obj",
+               "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nusemtl t\nf 1/1 2/1 3/1\n");
+    write_sphere_obj(dir / "in" / "s.obj", 8, 1);
+    const std::string batch =
+        "batch in -o out --size 16x16 --progress none --allow-outside-references";
+    const CommandResult first = run_zraster(batch, dir);
+    ASSERT_EQ(first.exit_code, 0) << first.output;
+    auto records = records_by_input(read_log(dir / "out" / "batch.jsonl"));
+    const std::string texture = std::filesystem::canonical(dir / "tex.png").string();
+    EXPECT_EQ(records.at("in/m.obj").at("reads"),
+              nlohmann::json({std::filesystem::canonical(dir / "in" / "m.mtl").string(), texture}));
+    EXPECT_EQ(records.at("in/s.obj").at("reads"), nlohmann::json::array());
+
+    // The texture edited after the images (the image made older than it): its model is
+    // rendered again, the other skipped.
+    std::filesystem::last_write_time(
+        dir / "out" / "m.png",
+        std::filesystem::last_write_time(dir / "tex.png") - std::chrono::seconds(10));
+    const CommandResult edited = run_zraster(batch, dir);
+    EXPECT_NE(edited.output.find("1 ok, 0 failed, 1 skipped"), std::string::npos) << edited.output;
+    records = records_by_input(read_log(dir / "out" / "batch.jsonl"));
+    EXPECT_EQ(records.at("in/m.obj").at("status"), "ok");
+    EXPECT_EQ(records.at("in/s.obj").at("status"), "skipped");
+    // A skipped record carries the reads on, for the run after it.
+    EXPECT_EQ(records.at("in/s.obj").at("reads"), nlohmann::json::array());
+    const CommandResult again = run_zraster(batch, dir);
+    EXPECT_NE(again.output.find("0 ok, 0 failed, 2 skipped"), std::string::npos) << again.output;
+
+    // Without the log nothing is known to be written: every input is rendered.
+    std::filesystem::remove(dir / "out" / "batch.jsonl");
+    const CommandResult no_log = run_zraster(batch, dir);
+    EXPECT_NE(no_log.output.find("2 ok, 0 failed, 0 skipped"), std::string::npos) << no_log.output;
+}
+
+TEST(BatchResume, AFileTheBatchDidNotWriteIsNeverTakenForAnOutput) {
+    // m.obj's image would be ./m.png, which is its own texture: refused, and refused again on
+    // every rerun however new the texture is (it was never an output).
+    const auto dir = temp_dir("batch-rerun-not-written");
+    ASSERT_EQ(run_zraster("render builtin:cube --size 4x4 -o m.png", dir).exit_code, 0);
+    write_text(dir / "m.mtl", "newmtl t\nKd 1 1 1\nmap_Kd m.png\n");
+    write_text(dir / "m.obj",
+               "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nusemtl t\nf 1/1 2/1 3/1\n");
+    const std::string texture = read_bytes(dir / "m.png");
+    for (int run = 0; run < 2; ++run) {
+        SCOPED_TRACE(run);
+        std::filesystem::last_write_time(
+            dir / "m.png",
+            std::filesystem::last_write_time(dir / "m.obj") + std::chrono::seconds(10));
+        const CommandResult r = run_zraster("batch m.obj -o . --size 8x8 --progress none", dir);
+        EXPECT_EQ(r.exit_code, 3) << r.output;
+        EXPECT_NE(r.output.find("0 ok, 1 failed, 0 skipped"), std::string::npos) << r.output;
+        const auto log = read_log(dir / "batch.jsonl");
+        ASSERT_EQ(log.size(), std::size_t(run + 1));
+        EXPECT_EQ(log.back().at("status"), "error");
+        EXPECT_NE(log.back().at("error").get<std::string>().find("is the same file as the input"),
+                  std::string::npos);
+        EXPECT_EQ(read_bytes(dir / "m.png"), texture);
+    }
+    // A log line that is not a record (or a line of megabytes) is passed over.
+    write_text(dir / "batch.jsonl", read_bytes(dir / "batch.jsonl") + "{\"input\": 3}\nnot json\n" +
+                                        "{" + std::string(3 << 20, ' ') + "}\n");
+    const CommandResult r = run_zraster("batch m.obj -o . --size 8x8 --progress none", dir);
+    EXPECT_EQ(r.exit_code, 3) << r.output;
+}
+
 // Starts `zraster ARGUMENTS` in `cwd` with its output to `output_file`; returns its pid.
 pid_t spawn_zraster(const std::string& arguments, const std::filesystem::path& cwd,
                     const std::filesystem::path& output_file) {

@@ -88,18 +88,6 @@ std::vector<std::filesystem::path> planned_outputs(const BatchInput& input,
     return paths;
 }
 
-bool outputs_up_to_date(const std::filesystem::path& input,
-                        const std::vector<std::filesystem::path>& outputs) {
-    std::error_code ec;
-    const auto input_time = std::filesystem::last_write_time(input, ec);
-    if (ec) return false;
-    for (const std::filesystem::path& output : outputs) {
-        const auto output_time = std::filesystem::last_write_time(output, ec);
-        if (ec || !(output_time > input_time)) return false;
-    }
-    return true;
-}
-
 void check_batch_settings(const BatchSettings& settings) {
     // A stand-in input: its outputs' paths go through every check a real one's will.
     const BatchInput probe{"probe", ".zraster-batch-check"};
@@ -118,9 +106,12 @@ BatchRecord run_batch_job(const BatchInput& input, const BatchSettings& settings
     BatchRecord record;
     record.input = input.source.string();
     const std::vector<std::filesystem::path> planned = planned_outputs(input, settings);
-    if (!settings.force && outputs_up_to_date(input.source, planned)) {
+    const std::vector<std::string>* reads =
+        settings.force ? nullptr : settings.history->written(record.input, planned);
+    if (reads && outputs_up_to_date(input.source, planned, *reads)) {
         record.status = BatchStatus::Skipped;
         for (const std::filesystem::path& p : planned) record.outputs.push_back(p.string());
+        record.reads = *reads;
         return record;
     }
     const auto dropped = [&] {
@@ -168,6 +159,7 @@ BatchRecord run_batch_job(const BatchInput& input, const BatchSettings& settings
         record.write_ms = encode_ms + ms_since(commit_start);
         record.status = BatchStatus::Ok;
         for (const std::filesystem::path& p : planned) record.outputs.push_back(p.string());
+        for (const std::filesystem::path& file : files_read) record.reads.push_back(file.string());
         return record;
     } catch (const LimitExceeded& e) {
         record.error = error_line(record.input, e.what() + limit_advice(e.limit()));

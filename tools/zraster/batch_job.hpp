@@ -9,9 +9,11 @@
 
 #include <atomic>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "batch_history.hpp"
 #include "batch_inputs.hpp"
 #include "batch_limits.hpp"
 #include "batch_record.hpp"
@@ -41,6 +43,8 @@ struct BatchSettings {
     BatchLimits limits;
     std::filesystem::path out_dir;
     bool force = false;  // render even when the outputs are up to date
+    // What the log says earlier runs wrote (empty with force): see batch_history.hpp.
+    std::shared_ptr<const BatchHistory> history = std::make_shared<BatchHistory>();
 };
 
 // The render arguments of one view of one input: `settings.render` with the view's camera, the
@@ -51,10 +55,6 @@ RenderArguments view_arguments(const BatchInput& input, const BatchSettings& set
 // Every file the input's views write, view by view in the order above.
 std::vector<std::filesystem::path> planned_outputs(const BatchInput& input,
                                                    const BatchSettings& settings);
-
-// Every output exists and was modified after the input.
-bool outputs_up_to_date(const std::filesystem::path& input,
-                        const std::vector<std::filesystem::path>& outputs);
 
 // Throws InputError naming the option for settings no file could render with (bad flag values,
 // combinations `zraster render` refuses, an output folder that cannot be written), so that a

@@ -47,6 +47,7 @@ std::string record_json(const BatchRecord& r) {
     line["render_ms"] = rounded(r.render_ms);
     line["write_ms"] = rounded(r.write_ms);
     line["warnings"] = r.warnings;
+    line["reads"] = r.reads;
     return line.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
 }
 

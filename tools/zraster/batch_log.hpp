@@ -12,7 +12,7 @@ namespace zraster::cli {
 
 // The record as one line of JSON, without the newline. Fields in this order: input, status,
 // error (null unless status is "error"), outputs, triangles (null when the file was not loaded),
-// load_ms, render_ms, write_ms, warnings. Text that is not UTF-8 has its bad bytes replaced.
+// load_ms, render_ms, write_ms, warnings, reads. Text that is not UTF-8 has its bad bytes replaced.
 std::string record_json(const BatchRecord& record);
 
 class BatchLog {

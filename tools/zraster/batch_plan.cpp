@@ -52,6 +52,10 @@ BatchSettings batch_settings(const BatchArguments& a, int jobs) {
     s.load.worker_memory_bytes = s.limits.max_memory;
     s.out_dir = a.out_dir;
     s.force = a.force;
+    if (!a.force)
+        s.history = std::make_shared<const BatchHistory>(
+            BatchHistory::read(a.log.empty() ? std::filesystem::path(a.out_dir) / "batch.jsonl"
+                                             : std::filesystem::path(a.log)));
     return s;
 }
 

@@ -22,6 +22,7 @@ struct BatchRecord {
     std::optional<std::uint64_t> triangles;  // over the instances, when the file was loaded
     double load_ms = 0.0, render_ms = 0.0, write_ms = 0.0;
     std::vector<std::string> warnings;  // the loader's (missing textures, ...)
+    std::vector<std::string> reads;     // the files the model read besides itself (Ok, Skipped)
 };
 
 // "ok", "error", "skipped", "dropped".
