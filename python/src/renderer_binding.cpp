@@ -14,6 +14,7 @@
 #include "command_line.hpp"
 #include "depth_outputs.hpp"
 #include "errors.hpp"
+#include "flag_effects.hpp"
 #include "options.hpp"
 #include "recycled_arrays.hpp"
 
@@ -172,6 +173,9 @@ py::dict render(PyRenderer& r, const py::object& scene_object, const py::object&
             camera ? std::vector<glm::vec3>() : scene->world_positions();
         options = cli::make_render_options(a, world, camera);
         cli::check_frame_arguments(a);
+        for (const std::string& w : cli::check_flags_take_effect(a))
+            if (PyErr_WarnEx(PyExc_UserWarning, with_keyword_names(w).c_str(), 1) != 0)
+                throw py::error_already_set();  // warnings turned into errors
     } catch (const InputError& e) {
         throw InputError(keyword_name(e.file()), with_keyword_names(e.cause()));
     }

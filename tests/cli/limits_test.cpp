@@ -201,6 +201,83 @@ TEST(CliLimits, EmptyValuesAndNewlinesInNames) {
                    "zraster: missing file.obj: file not found");
 }
 
+// A flag that would change nothing in the frame the others ask for is refused by name; a depth
+// compare that nothing passes is drawn, with a warning saying why the image is empty.
+TEST(CliLimits, FlagsWithoutEffectAreRefused) {
+    const auto dir = temp_dir("cli-limits-no-effect");
+    const std::pair<const char*, const char*> cases[] = {
+        {"render builtin:cube -o out.png --visibility abuffer --no-depth-test",
+         "zraster: --no-depth-test: sets the z-buffer's depth test, which --visibility abuffer "
+         "does not use\n"},
+        {"render builtin:cube -o out.png --visibility bsp --depth-compare greater",
+         "zraster: --depth-compare: sets the z-buffer's depth test, which --visibility bsp does "
+         "not use\n"},
+        {"render builtin:cube -o out.png --visibility painter --depth-format d16",
+         "zraster: --depth-format: sets the z-buffer's depth test, which --visibility painter "
+         "does not use\n"},
+        {"render builtin:cube -o out.png --aa 4 --msaa --no-depth-write",
+         "zraster: --no-depth-write: sets the z-buffer's depth test, which --msaa does not use "
+         "(its samples keep the nearest surface)\n"},
+        {"render builtin:cube -o out.png --edge-color 255,0,0",
+         "zraster: --edge-color: colors the edges of --wireframe or --hidden-line: give one of "
+         "them\n"},
+        {"render builtin:cube -o out.png --shading unlit --light-dir 0,0,1",
+         "zraster: --light-dir: lights nothing with --shading unlit (colors are drawn as they "
+         "are)\n"},
+        {"render builtin:cube -o out.png --no-textures --texture-filter nearest",
+         "zraster: --texture-filter: filters textures, which --no-textures turns off\n"},
+        {"batch builtin:cube -o out.png --visibility warnock --no-depth-test",
+         "zraster: --no-depth-test: sets the z-buffer's depth test, which --visibility warnock "
+         "does not use\n"},
+        {"svg builtin:cube -o out.svg --edge-width 2",
+         "zraster: --edge-width: styles the outlines --edges draws: give --edges\n"},
+        {"svg builtin:cube -o out.svg --edge-color 9,9,9",
+         "zraster: --edge-color: styles the outlines --edges draws: give --edges\n"},
+        {"svg builtin:cube -o out.svg --depth-compare less",
+         "zraster: --depth-compare: sets the z-buffer's depth test: svg orders polygons "
+         "(--order), it keeps no depth buffer\n"},
+    };
+    for (const auto& [arguments, message] : cases) {
+        SCOPED_TRACE(arguments);
+        const CommandResult r = run_zraster(arguments, dir);
+        EXPECT_EQ(r.exit_code, 2) << r.output;
+        EXPECT_EQ(r.output, message);
+    }
+    EXPECT_TRUE(std::filesystem::is_empty(dir));
+    // The same flags where they act are taken.
+    for (const char* arguments :
+         {"render builtin:cube -o a.png --size 8x8 --no-depth-test --depth-format d16",
+          "render builtin:cube -o a.png --size 8x8 --aa 2 --depth-compare lequal",
+          "render builtin:cube -o a.png --size 8x8 --wireframe --edge-color 255,0,0",
+          "render builtin:cube -o a.png --size 8x8 --shading flat --light-dir 0,0,1",
+          "svg builtin:cube -o a.svg --edges --edge-width 2 --edge-color 9,9,9"}) {
+        SCOPED_TRACE(arguments);
+        const CommandResult r = run_zraster(arguments, dir);
+        EXPECT_EQ(r.exit_code, 0) << r.output;
+        EXPECT_EQ(r.output.find("warning"), std::string::npos) << r.output;
+    }
+    // Compares that pass nothing against the cleared buffer: drawn (the background), and said.
+    for (const auto& [arguments, cause] :
+         std::initializer_list<std::pair<const char*, const char*>>{
+             {"--reversed-z --depth-compare less",
+              "passes nothing nearer than the cleared depth buffer (0, the far plane with "
+              "--reversed-z): the image shows only the background; reversed-Z needs greater or "
+              "gequal"},
+             {"--depth-compare greater",
+              "passes nothing nearer than the cleared depth buffer (1, the far plane): the image "
+              "shows only the background; greater and gequal need --reversed-z"}}) {
+        SCOPED_TRACE(arguments);
+        const CommandResult r =
+            run_zraster(std::string("render builtin:cube -o w.png --size 8x8 ") + arguments, dir);
+        EXPECT_EQ(r.exit_code, 0) << r.output;
+        EXPECT_EQ(
+            r.output,
+            std::string("warning: --depth-compare ") +
+                (std::string(arguments).find("less") != std::string::npos ? "less " : "greater ") +
+                cause + "\n");
+    }
+}
+
 // Every camera and lighting number has a range (docs/limits.md), the same for the flags and for
 // the cameras of a --views-json file, whose messages name the file, camera and field.
 // Whole numbers are decimal: CLI11 alone read "010" as octal 8 and "0x10" as 16.

@@ -150,8 +150,9 @@ TEST(ViewCommand, KeysSwitchAsTheRenderFlagsDo) {
         dir);
     VIEWER_OR_SKIP(v);
     ASSERT_EQ(v.exit_code, 0) << v.output;
+    // (D24 changes nothing for BSP: the command refuses --depth-format with it.)
     ASSERT_EQ(run_zraster("render sphere:200 --size 160x120 --shading flat --cull none "
-                          "--depth-format d24 --visibility bsp -o r.png",
+                          "--visibility bsp -o r.png",
                           dir)
                   .exit_code,
               0);

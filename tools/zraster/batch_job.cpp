@@ -12,6 +12,7 @@
 #include <system_error>
 
 #include "command_line.hpp"
+#include "flag_effects.hpp"
 #include "render_outputs.hpp"
 
 namespace zraster::cli {
@@ -89,6 +90,8 @@ std::vector<std::filesystem::path> planned_outputs(const BatchInput& input,
 }
 
 void check_batch_settings(const BatchSettings& settings) {
+    for (const std::string& w : check_flags_take_effect(settings.render))
+        fmt::print(stderr, "warning: {}\n", w);
     // A stand-in input: its outputs' paths go through every check a real one's will.
     const BatchInput probe{"probe", ".zraster-batch-check"};
     for (const BatchView& view : settings.views) {

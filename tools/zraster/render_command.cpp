@@ -12,6 +12,7 @@
 #include <numeric>
 
 #include "command_line.hpp"
+#include "flag_effects.hpp"
 #include "progress.hpp"
 #include "pvs_command.hpp"
 #include "render_outputs.hpp"
@@ -77,6 +78,7 @@ int run_render(const RenderArguments& a) {
     OutputFiles outputs;  // written together at the end, or not at all
     check_render_outputs(a, outputs);
     check_run_inputs(a, outputs);
+    for (const std::string& w : check_flags_take_effect(a)) fmt::print(stderr, "warning: {}\n", w);
     // Wall-clock times of the stages, for --stats.
     using Clock = std::chrono::steady_clock;
     const auto since = [](Clock::time_point start) {

@@ -13,6 +13,7 @@
 #include <filesystem>
 
 #include "command_line.hpp"
+#include "flag_effects.hpp"
 #include "output_maps.hpp"
 #include "progress.hpp"
 #include "render/material_alpha.hpp"
@@ -83,6 +84,7 @@ int run_svg(const SvgArguments& a) {
     if (a.render.wireframe || a.render.hidden_line)
         throw InputError(a.render.wireframe ? "--wireframe" : "--hidden-line",
                          "not available for svg (use --edges)");
+    check_svg_flags_take_effect(a.render, a.edges, a.edge_width != SvgArguments{}.edge_width);
 
     const Scene scene = load_scene_or_procedural(a.render.scene, nullptr, &outputs);
     RenderOptions options = make_render_options(a.render, scene);

@@ -10,6 +10,7 @@
 #include <filesystem>
 
 #include "command_line.hpp"
+#include "flag_effects.hpp"
 #include "output_maps.hpp"
 #include "run_inputs.hpp"
 #include "view_script.hpp"
@@ -59,6 +60,8 @@ void add_view_command(CLI::App& app, ViewArguments& a) {
 
 int run_view(const ViewArguments& a) {
     check_frame_arguments(a.render);
+    for (const std::string& w : check_flags_take_effect(a.render))
+        fmt::print(stderr, "warning: {}\n", w);
     check_screenshot_path(a);
     std::vector<ScriptEvent> script;
     if (!a.script.empty()) script = read_view_script(a.script);

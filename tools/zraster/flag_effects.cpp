@@ -1,0 +1,79 @@
+// See flag_effects.hpp.
+#include "flag_effects.hpp"
+
+#include <zraster/error.hpp>
+
+namespace zraster::cli {
+namespace {
+
+// The depth test's settings apply to the z-buffer's depth buffer: the other algorithms order
+// surfaces by their own means (painter's sort, BSP, Warnock's subdivision, the A-buffer's lists)
+// and MSAA keeps its own per-sample depths, always nearest-wins.
+void check_depth_test_flags(const RenderArguments& a) {
+    if (a.visibility == "zbuffer" && !a.msaa) return;
+    const RenderArguments defaults;
+    const char* flag = a.no_depth_test                           ? "--no-depth-test"
+                       : a.no_depth_write                        ? "--no-depth-write"
+                       : !a.depth_compare.empty()                ? "--depth-compare"
+                       : a.depth_format != defaults.depth_format ? "--depth-format"
+                                                                 : nullptr;
+    if (flag == nullptr) return;
+    throw InputError(flag, a.msaa ? "sets the z-buffer's depth test, which --msaa does not use "
+                                    "(its samples keep the nearest surface)"
+                                  : "sets the z-buffer's depth test, which --visibility " +
+                                        a.visibility + " does not use");
+}
+
+// The cleared depth buffer holds the far end (1, or 0 with reversed-Z): compares that nothing
+// nearer passes draw nothing.
+std::vector<std::string> depth_compare_warnings(const RenderArguments& a) {
+    const std::string& c = a.depth_compare;
+    const bool nothing = c == "never" || c == "equal" ||
+                         (!a.reversed_z && (c == "greater" || c == "gequal")) ||
+                         (a.reversed_z && (c == "less" || c == "lequal"));
+    if (!nothing || a.no_depth_test) return {};
+    return {"--depth-compare " + c + " passes nothing nearer than the cleared depth buffer (" +
+            (a.reversed_z ? "0, the far plane with --reversed-z" : "1, the far plane") +
+            "): the image shows only the background" +
+            (c == "less" || c == "lequal"      ? "; reversed-Z needs greater or gequal"
+             : c == "greater" || c == "gequal" ? "; greater and gequal need --reversed-z"
+                                               : "")};
+}
+
+void check_shading_flags(const RenderArguments& a) {
+    if (a.shading == "unlit" && (!a.light_dirs.empty() || !a.point_lights.empty()))
+        throw InputError(a.light_dirs.empty() ? "--point-light" : "--light-dir",
+                         "lights nothing with --shading unlit (colors are drawn as they are)");
+    if (a.no_textures && a.texture_filter != RenderArguments{}.texture_filter)
+        throw InputError("--texture-filter", "filters textures, which --no-textures turns off");
+}
+
+}  // namespace
+
+std::vector<std::string> check_flags_take_effect(const RenderArguments& a) {
+    check_depth_test_flags(a);
+    if (a.edge_color != RenderArguments{}.edge_color && !a.wireframe && !a.hidden_line)
+        throw InputError("--edge-color",
+                         "colors the edges of --wireframe or --hidden-line: "
+                         "give one of them");
+    check_shading_flags(a);
+    return depth_compare_warnings(a);
+}
+
+void check_svg_flags_take_effect(const RenderArguments& a, bool edges, bool edge_width_given) {
+    RenderArguments no_depth_buffer = a;
+    no_depth_buffer.visibility = "painter";  // svg orders polygons: no depth buffer
+    try {
+        check_depth_test_flags(no_depth_buffer);
+    } catch (const InputError& e) {
+        throw InputError(e.file(),
+                         "sets the z-buffer's depth test: svg orders polygons "
+                         "(--order), it keeps no depth buffer");
+    }
+    if (!edges && (a.edge_color != RenderArguments{}.edge_color || edge_width_given))
+        throw InputError(edge_width_given ? "--edge-width" : "--edge-color",
+                         "styles the outlines --edges draws: give --edges");
+    check_shading_flags(a);
+}
+
+}  // namespace zraster::cli
