@@ -15,6 +15,7 @@
 #include "depth_outputs.hpp"
 #include "errors.hpp"
 #include "flag_effects.hpp"
+#include "io/drawable_check.hpp"
 #include "options.hpp"
 #include "recycled_arrays.hpp"
 
@@ -145,6 +146,8 @@ py::dict render(PyRenderer& r, const py::object& scene_object, const py::object&
                 const py::object& outputs, const py::object& sensor_object,
                 const py::kwargs& keywords) {
     const std::shared_ptr<const PyScene> scene = scene_argument(scene_object, "scene");
+    // As the command refuses such files: an image of nothing is not a render.
+    io::check_some_triangle_has_area(scene->view(), "scene");
     std::vector<Output> order;
     const std::array<bool, kOutputCount> wanted = wanted_outputs(outputs, order);
     DepthCameraImages depth_camera;

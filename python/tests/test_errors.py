@@ -246,10 +246,58 @@ def test_bad_outputs(cube):
     ({"fovy": None}, TypeError, ("fovy",)),
     ({"fovy": (30, 40)}, zraster.InputError, ("fovy",)),
     ({"eye": [[1, 2], 3]}, TypeError, ("eye", "nested")),
+    # Keywords that would change nothing in the frame the others ask for.
+    ({"visibility": "bsp", "depth_compare": "less"}, zraster.InputError,
+     ("depth_compare: sets the z-buffer's depth test, which visibility bsp does not use",)),
+    ({"edge_color": (255, 0, 0)}, zraster.InputError, ("edge_color", "wireframe or hidden_line")),
+    ({"shading": "unlit", "point_light": (0, 1, 0)}, zraster.InputError,
+     ("point_light: lights nothing with shading unlit",)),
 ])
 def test_bad_render_options(cube, keywords, kind, fragments):
     with raises(kind, *fragments):
         zraster.Renderer(16, 16).render(cube, **keywords)
+
+
+def test_a_compare_that_passes_nothing_warns(cube):
+    with pytest.warns(UserWarning, match="depth_compare greater passes nothing nearer than the "
+                                         "cleared depth buffer"):
+        out = zraster.Renderer(16, 16).render(cube, outputs=("color",), depth_compare="greater")
+    assert (out["color"] == out["color"][0, 0]).all()  # the background only
+
+
+def test_a_scene_of_triangles_without_area_is_refused():
+    flat = zraster.Mesh(np.array([[0, 0, 0], [1, 1, 1], [2, 2, 2]], np.float32),
+                        np.array([[0, 1, 2]], np.uint32))
+    cause = ("scene: every one of its 2 triangles has zero area as placed (repeated or collinear "
+             "corners, or a transform that flattens them): nothing to draw")
+    with raises(zraster.InputError, cause):
+        zraster.Renderer(8, 8).render(zraster.Scene([flat, flat]))
+    # One triangle with area is enough to draw.
+    out = zraster.Renderer(8, 8).render(zraster.Scene([flat, zraster.Mesh.box()]))
+    assert out["color"].shape == (8, 8, 3)
+
+
+@pytest.mark.parametrize("call,message", [
+    (lambda: zraster.Camera.look_at((0, 0, 5), (0, 0, 0), width=8),
+     "look_at() got an unexpected keyword argument 'width' (it takes eye, target, up, fovy, near, "
+     "far, reversed_z, infinite_far, ortho_height)"),
+    (lambda: zraster.Camera.look_at((0, 0, 5), (0, 0, 0), reversed_z="yes"),
+     "look_at(): reversed_z must be bool, not str"),
+    (lambda: zraster.Mesh(np.zeros((3, 3), np.float32), np.array([[0, 1, 2]]), colour=1),
+     "Mesh() got an unexpected keyword argument 'colour' (it takes positions, indices, normals, "
+     "uvs, color, name, texture, alpha_mode, alpha_cutoff, colors, double_sided)"),
+    (lambda: zraster.Mesh(), "Mesh() missing argument 'positions'"),
+    (lambda: zraster.load("builtin:cube", max_tris=3),
+     "load() got an unexpected keyword argument 'max_tris'"),
+    (lambda: zraster.Renderer(8, 8, 3, 4, 5), "Renderer() takes at most 4 arguments (width, "
+                                             "height, threads, max_pixels), got 5"),
+    (lambda: zraster.Scene([], extra=1), "Scene() got an unexpected keyword argument 'extra'"),
+])
+def test_calls_matching_no_signature_are_one_line_type_errors(call, message):
+    with pytest.raises(TypeError) as caught:
+        call()
+    assert str(caught.value).startswith(message), str(caught.value)
+    assert "\n" not in str(caught.value)
 
 
 def test_camera_and_placement_keywords_conflict(cube):

@@ -36,6 +36,15 @@ from ._zraster import (
     unproject,
 )
 
+from ._arguments import one_line_type_errors as _one_line_type_errors
+from ._arguments import wrap_class as _wrap_class
+
+# One-line TypeErrors for calls that match no signature (see _arguments.py).
+for _cls in (Camera, Material, Mesh, Renderer, Scene, StructuredLightSensor):
+    _wrap_class(_cls)
+load = _one_line_type_errors(load)
+unproject = _one_line_type_errors(unproject)
+
 __all__ = [
     "Camera",
     "InputError",
