@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "memory/huge_pages.hpp"
+#include "raster/bounding_box_pixels.hpp"
 #include "render/shade_fragment.hpp"
 #include "render/stream_lines.hpp"
 
@@ -129,9 +130,38 @@ void bin_offsets(Frame& frame) {
     if (bytes > frame.bin_storage.size()) memory::resize_on_huge_pages(frame.bin_storage, bytes);
 }
 
+// Without the depth test nothing is hidden: every fragment of every triangle is rasterized and
+// shaded (--view overdraw's count, --no-depth-test), so a few large triangles drawn over each
+// other many times are minutes of work in bins of a few hundred MB. Counted per triangle here,
+// once per frame, never in the per-pixel loops; frames with the depth test skip it.
+void check_covered_samples(const Frame& frame) {
+    const RenderOptions& options = *frame.options;
+    if (options.depth_test) return;
+    std::vector<std::uint64_t> per_chunk(frame.chunks.size(), 0);
+    tbb::parallel_for(std::size_t{0}, frame.chunks.size(), [&](std::size_t c) {
+        const Chunk& chunk = frame.chunks[c];
+        std::uint64_t sum = 0;
+        for (const TriangleRef& r : chunk.refs) {
+            const ScreenVertex& a = frame.screen_vertex(chunk, r, 0);
+            const ScreenVertex& b = frame.screen_vertex(chunk, r, 1);
+            const ScreenVertex& d = frame.screen_vertex(chunk, r, 2);
+            sum += bounding_box_pixels(std::min({a.x, b.x, d.x}), std::min({a.y, b.y, d.y}),
+                                       std::max({a.x, b.x, d.x}), std::max({a.y, b.y, d.y}),
+                                       options.width, options.height);
+        }
+        per_chunk[c] = sum;
+    });
+    std::uint64_t total = 0;
+    for (const std::uint64_t n : per_chunk) total += n;
+    detail::check_covered_samples(total, options.limits.max_covered_samples,
+                                  "with the depth test off (--view overdraw, --no-depth-test), "
+                                  "the frame");
+}
+
 }  // namespace
 
 void bin_triangles(Frame& frame) {
+    check_covered_samples(frame);
     bin_offsets(frame);
     // Every slot's scratch sized for the largest chunk before any takes one.
     std::size_t largest_chunk = 0;
