@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "memory/huge_pages.hpp"
+#include "platform/memory_size.hpp"
 #include "raster/bounding_box_pixels.hpp"
 #include "render/shade_fragment.hpp"
 #include "render/stream_lines.hpp"
@@ -124,6 +125,15 @@ void bin_offsets(Frame& frame) {
                 std::to_string(frame.options->limits.max_bin_bytes) +
                 " (RenderLimits::max_bin_bytes): large triangles drawn over each other many "
                 "times, or a frame too large for them");
+    // Within a budget raised past the machine: refused before the allocation the system would
+    // refuse, naming what to lower. (Asked only past the default budget: no system calls in the
+    // frames of a view or a benchmark.)
+    if (tile_base[tiles] > RenderLimits{}.max_bin_bytes &&
+        tile_base[tiles] > platform::usable_memory_bytes())
+        throw InputError("", "binning needs " + std::to_string(tile_base[tiles]) +
+                                 " bytes of tile records, more than the memory this process may "
+                                 "use (max_bin_bytes raised past it): lower --size or --aa, or "
+                                 "--max-bin-bytes to what this machine holds");
     frame.bin_bytes = tile_base[tiles];
     const std::size_t bytes = tile_base[tiles] + kCacheLine;
     if (bytes > frame.bin_storage.capacity()) frame.bin_storage = {};

@@ -530,6 +530,25 @@ TEST(CliLimits, RaisedLimitsPastTheMachinesMemoryAreExitTwo) {
     EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
 }
 
+// A BSP polygon budget raised past what the process may use (about 400 bytes a polygon at the
+// tree's peak) is refused before the tree is built, naming the flag to lower and how far: under
+// the 2 GiB address-space limit, 2^31 / 400 = 5,368,709 polygons. (A random soup with every
+// budget at its maximum split for 29 s to 6.6 GB, then ran out of memory.)
+TEST(CliLimits, ABspBudgetPastTheMachinesMemoryIsRefusedBeforeBuilding) {
+    if (kSanitized) GTEST_SKIP() << "no address-space limit in sanitizer builds";
+    const auto dir = temp_dir("cli-limits-bsp-memory");
+    const std::string bsp = "render builtin:cube --size 64x64 -o out.png --visibility bsp ";
+    expect_refused(dir, bsp + "--max-bsp-polygons 9999999999999999999",
+                   "zraster: builtin:cube: BSP tree: the budget of 9999999999999999999 polygons "
+                   "(max_bsp_polygons) is more than the memory this process may use holds at "
+                   "about 400 bytes each: lower --max-bsp-polygons to at most 5368709 (0: "
+                   "automatic)");
+    const CommandResult exact = run_limited(bsp + "--max-bsp-polygons 5368709", dir);
+    EXPECT_EQ(exact.exit_code, 0) << exact.output;
+    std::filesystem::remove(dir / "out.png");
+    expect_refused(dir, bsp + "--max-bsp-polygons 5368710", "at most 5368709");
+}
+
 // Coordinates beyond what single-precision matrices can frame: a triangle at 3e38 (the fitted
 // camera overflowed and the image was empty, exit 0) and an eye at 1e39 (the message blamed
 // near and far).
