@@ -110,7 +110,7 @@ struct RenderLimits {
     // pixels of the frame inside each triangle's bounding box (times the samples per pixel),
     // summed: bins of a few hundred MB can hold minutes of such work (a 2 KB glTF placing a
     // half-screen triangle 50,000 times). Past it, LimitExceeded "max_covered_samples".
-    std::uint64_t max_covered_samples = std::uint64_t{1} << 32;
+    std::uint64_t max_covered_samples = std::uint64_t{1} << 31;
 
     // The object-space visibility algorithms (visibility.hpp, and the SVG writer): their work
     // grows faster than their input (random, interpenetrating triangles split without end), so

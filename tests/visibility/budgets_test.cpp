@@ -1,6 +1,7 @@
 // The budgets of the object-space algorithms (RenderLimits' max_painter_comparisons,
 // max_bsp_polygons, max_projected_polygons, max_painted_fragments, max_warnock_classifications;
-// ABufferOptions::max_fragments): what they are
+// ABufferOptions::max_fragments; and max_covered_samples, of the rasterizing paths that draw every
+// fragment): what they are
 // by default, that random interpenetrating triangles are refused by name long before they cost
 // minutes or gigabytes, that real meshes stay far inside them, and the progress reports.
 #include <zraster/abuffer.hpp>
@@ -235,7 +236,7 @@ TEST(Budgets, ABufferFragmentsExactly) {
 // triangles' bounding boxes cover in the frame: exactly a frame's count passes, with the image
 // of the default budget, and one less is refused naming RenderLimits::max_covered_samples.
 TEST(Budgets, CoveredSamplesExactly) {
-    EXPECT_EQ(RenderLimits{}.max_covered_samples, std::uint64_t{1} << 32);
+    EXPECT_EQ(RenderLimits{}.max_covered_samples, std::uint64_t{1} << 31);
     const Scene soup = wild_soup(50);
     RenderOptions no_depth_test = soup_options();
     no_depth_test.depth_test = false;
