@@ -26,14 +26,13 @@ inline std::uint64_t bounding_box_pixels(std::int64_t min_x, std::int64_t min_y,
 }
 
 // Refuses `samples` (pixels inside the bounding boxes times samples per pixel, summed) past
-// `limit`, before any is rasterized; `what` says which path draws every fragment.
+// `limit`, before any is rasterized; `what` says which triangles are drawn whole and why.
 inline void check_covered_samples(std::uint64_t samples, std::uint64_t limit,
                                   const std::string& what) {
     if (samples <= limit) return;
     throw LimitExceeded("", "max_covered_samples",
-                        what + " rasterizes every triangle whole: their bounding boxes cover " +
-                            std::to_string(samples) + " samples, more than the limit of " +
-                            std::to_string(limit) +
+                        what + ": their bounding boxes cover " + std::to_string(samples) +
+                            " samples, more than the limit of " + std::to_string(limit) +
                             " (RenderLimits::max_covered_samples): large triangles drawn over "
                             "each other many times, or a frame too large for them");
 }

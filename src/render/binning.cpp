@@ -141,17 +141,21 @@ void bin_offsets(Frame& frame) {
 }
 
 // Without the depth test nothing is hidden: every fragment of every triangle is rasterized and
-// shaded (--view overdraw's count, --no-depth-test), so a few large triangles drawn over each
-// other many times are minutes of work in bins of a few hundred MB. Counted per triangle here,
-// once per frame, never in the per-pixel loops; frames with the depth test skip it.
+// shaded (--view overdraw's count, --no-depth-test); blended (transparent) triangles write no
+// depth, so none hides another. A few large triangles drawn over each other many times are then
+// minutes of work (and, blended, per-tile fragment lists of GB) in bins of a few hundred MB.
+// Counted per triangle here, once per frame, never in the per-pixel loops; frames with the depth
+// test and no transparent instance skip it.
 void check_covered_samples(const Frame& frame) {
     const RenderOptions& options = *frame.options;
-    if (options.depth_test) return;
+    const bool every = !options.depth_test;
+    if (!every && !frame.alpha_instances) return;
     std::vector<std::uint64_t> per_chunk(frame.chunks.size(), 0);
     tbb::parallel_for(std::size_t{0}, frame.chunks.size(), [&](std::size_t c) {
         const Chunk& chunk = frame.chunks[c];
         std::uint64_t sum = 0;
         for (const TriangleRef& r : chunk.refs) {
+            if (!every && frame.instances[r.instance].alpha != AlphaMode::Blend) continue;
             const ScreenVertex& a = frame.screen_vertex(chunk, r, 0);
             const ScreenVertex& b = frame.screen_vertex(chunk, r, 1);
             const ScreenVertex& d = frame.screen_vertex(chunk, r, 2);
@@ -163,9 +167,12 @@ void check_covered_samples(const Frame& frame) {
     });
     std::uint64_t total = 0;
     for (const std::uint64_t n : per_chunk) total += n;
-    detail::check_covered_samples(total, options.limits.max_covered_samples,
-                                  "with the depth test off (--view overdraw, --no-depth-test), "
-                                  "the frame");
+    detail::check_covered_samples(
+        total, options.limits.max_covered_samples,
+        every ? "with the depth test off (--view overdraw, --no-depth-test), the frame rasterizes "
+                "every triangle whole"
+              : "the frame's blended (transparent) triangles are rasterized whole (they write no "
+                "depth: none hides another)");
 }
 
 }  // namespace

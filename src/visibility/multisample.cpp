@@ -84,7 +84,7 @@ RenderResult render_multisampled(const Scene& scene, const RenderOptions& option
             std::uint64_t(n * n);
     }
     detail::check_covered_samples(covered, options.limits.max_covered_samples,
-                                  "multisampling (--msaa)");
+                                  "multisampling (--msaa) rasterizes every triangle whole");
     const visibility_detail::FrameContext frame =
         visibility_detail::make_frame_context(scene, options);
     const int width = options.width, height = options.height;
