@@ -492,6 +492,22 @@ row "A-buffer budget raised past a 2 GiB address space (ulimit -v)" render soup.
 run_zraster=
 row "explain past the BSP budget into a new folder" explain bsp soup10k.ply -o out.ex
 row "BSP tree of a convex 20,000-triangle sphere (a chain) past --max-bsp-classifications" render sphere:20000 --size 64x64 --visibility bsp --max-bsp-classifications 10000000 -o out.png
+# The paths that rasterize every triangle whole, budgeted by the samples the triangles' bounding
+# boxes cover (--max-covered-samples), on a 3 KB glTF placing one large triangle 50,000 times
+# (within the bin budget: the z-buffer draws it), and transparent; explain's A-buffer on it; a BSP
+# budget raised past a 2 GiB address space.
+stack_children=$(printf '1,%.0s' $(seq 249))1
+stack_roots=$(printf '0,%.0s' $(seq 199))0
+printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"%s"}],"bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"children":[%s]},{"mesh":0}],"scenes":[{"nodes":[%s]}],"scene":0}' "$b64" "$stack_children" "$stack_roots" >stacked.gltf
+row "--view overdraw of one large triangle placed 50,000 times" render stacked.gltf -o out.png --view overdraw
+row "--no-depth-test, one large triangle placed 50,000 times" render stacked.gltf -o out.png --no-depth-test
+row "--msaa --aa 8 at 256x256, one large triangle placed 50,000 times" render stacked.gltf --size 256x256 --aa 8 --msaa -o out.png
+row "explain abuffer, one large triangle placed 50,000 times (past 2^24 fragments)" explain abuffer stacked.gltf --size 256x256 -o out.ex
+sed 's/"meshes":\[{"primitives":\[{"attributes":{"POSITION":0}}\]}\]/"materials":[{"alphaMode":"BLEND","pbrMetallicRoughness":{"baseColorFactor":[1,0,0,0.5]}}],"meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}]/' stacked.gltf >stacked-glass.gltf
+row "one large transparent (BLEND) triangle placed 50,000 times" render stacked-glass.gltf --size 640x360 -o out.png
+run_zraster=./address-space-limit.sh
+row "BSP budget raised past a 2 GiB address space (ulimit -v)" render soup.ply --visibility bsp --max-bsp-polygons 9999999999999999999 -o out.png
+run_zraster=
 echo
 echo "$n inputs; $failures broke the contract (exit 2, one line, nothing left)."
 [ "$failures" -eq 0 ]

@@ -118,7 +118,9 @@ ZRASTER_API RenderResult render_supersampled(const Scene& scene, RenderOptions o
 // they lie in front of it. Depth, ids and normal: the opaque polygon of sample (n / 2, n / 2).
 // Throws InputError as project_scene does, for samples_per_side other than 1, 2, 4, 8, or when
 // width x height x samples exceeds options.limits.max_pixels (the sample buffers take 8 bytes per
-// sample). Bit-identical for any thread count.
+// sample), and LimitExceeded ("max_covered_samples") when the polygons' bounding boxes cover more
+// than options.limits.max_covered_samples samples (checked before any is rasterized: every
+// polygon's samples are, hidden or not). Bit-identical for any thread count.
 ZRASTER_API RenderResult render_multisampled(const Scene& scene, const RenderOptions& options,
                                              int samples_per_side);
 

@@ -104,6 +104,14 @@ struct RenderLimits {
     // far more (a 6 KB glTF placing one screen-sized triangle a million times: 20 GB), refused
     // past this before the records are allocated (LimitExceeded "max_bin_bytes").
     std::uint64_t max_bin_bytes = std::uint64_t{2} << 30;
+    // Samples rasterized by the paths that draw every fragment of every triangle, hidden or not:
+    // the depth test off (--view overdraw's count, RenderOptions::depth_test false), blended
+    // (transparent) triangles, which write no depth, and render_multisampled (its coverage and
+    // depth per sample). Counted before rasterizing as the pixels of the frame inside each
+    // triangle's bounding box (times the samples per pixel), summed: bins of a few hundred MB can
+    // hold minutes of such work (a 2 KB glTF placing a half-screen triangle 50,000 times). Past
+    // it, LimitExceeded "max_covered_samples".
+    std::uint64_t max_covered_samples = std::uint64_t{1} << 31;
 
     // The object-space visibility algorithms (visibility.hpp, and the SVG writer): their work
     // grows faster than their input (random, interpenetrating triangles split without end), so

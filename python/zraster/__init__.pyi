@@ -247,6 +247,7 @@ class Renderer:
         sensor: Sensor = None,
         *,
         max_bin_bytes: int = ...,
+        max_covered_samples: int = ...,
         eye: Vec3 = ...,
         target: Vec3 = ...,
         up: Vec3 = ...,

@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "memory/huge_pages.hpp"
+#include "platform/memory_size.hpp"
+#include "raster/bounding_box_pixels.hpp"
 #include "render/shade_fragment.hpp"
 #include "render/stream_lines.hpp"
 
@@ -123,15 +125,60 @@ void bin_offsets(Frame& frame) {
                 std::to_string(frame.options->limits.max_bin_bytes) +
                 " (RenderLimits::max_bin_bytes): large triangles drawn over each other many "
                 "times, or a frame too large for them");
+    // Within a budget raised past the machine: refused before the allocation the system would
+    // refuse, naming what to lower. (Asked only past the default budget: no system calls in the
+    // frames of a view or a benchmark.)
+    if (tile_base[tiles] > RenderLimits{}.max_bin_bytes &&
+        tile_base[tiles] > platform::usable_memory_bytes())
+        throw InputError("", "binning needs " + std::to_string(tile_base[tiles]) +
+                                 " bytes of tile records, more than the memory this process may "
+                                 "use (max_bin_bytes raised past it): lower --size or --aa, or "
+                                 "--max-bin-bytes to what this machine holds");
     frame.bin_bytes = tile_base[tiles];
     const std::size_t bytes = tile_base[tiles] + kCacheLine;
     if (bytes > frame.bin_storage.capacity()) frame.bin_storage = {};
     if (bytes > frame.bin_storage.size()) memory::resize_on_huge_pages(frame.bin_storage, bytes);
 }
 
+// Without the depth test nothing is hidden: every fragment of every triangle is rasterized and
+// shaded (--view overdraw's count, --no-depth-test); blended (transparent) triangles write no
+// depth, so none hides another. A few large triangles drawn over each other many times are then
+// minutes of work (and, blended, per-tile fragment lists of GB) in bins of a few hundred MB.
+// Counted per triangle here, once per frame, never in the per-pixel loops; frames with the depth
+// test and no transparent instance skip it.
+void check_covered_samples(const Frame& frame) {
+    const RenderOptions& options = *frame.options;
+    const bool every = !options.depth_test;
+    if (!every && !frame.alpha_instances) return;
+    std::vector<std::uint64_t> per_chunk(frame.chunks.size(), 0);
+    tbb::parallel_for(std::size_t{0}, frame.chunks.size(), [&](std::size_t c) {
+        const Chunk& chunk = frame.chunks[c];
+        std::uint64_t sum = 0;
+        for (const TriangleRef& r : chunk.refs) {
+            if (!every && frame.instances[r.instance].alpha != AlphaMode::Blend) continue;
+            const ScreenVertex& a = frame.screen_vertex(chunk, r, 0);
+            const ScreenVertex& b = frame.screen_vertex(chunk, r, 1);
+            const ScreenVertex& d = frame.screen_vertex(chunk, r, 2);
+            sum += bounding_box_pixels(std::min({a.x, b.x, d.x}), std::min({a.y, b.y, d.y}),
+                                       std::max({a.x, b.x, d.x}), std::max({a.y, b.y, d.y}),
+                                       options.width, options.height);
+        }
+        per_chunk[c] = sum;
+    });
+    std::uint64_t total = 0;
+    for (const std::uint64_t n : per_chunk) total += n;
+    detail::check_covered_samples(
+        total, options.limits.max_covered_samples,
+        every ? "with the depth test off (--view overdraw, --no-depth-test), the frame rasterizes "
+                "every triangle whole"
+              : "the frame's blended (transparent) triangles are rasterized whole (they write no "
+                "depth: none hides another)");
+}
+
 }  // namespace
 
 void bin_triangles(Frame& frame) {
+    check_covered_samples(frame);
     bin_offsets(frame);
     // Every slot's scratch sized for the largest chunk before any takes one.
     std::size_t largest_chunk = 0;

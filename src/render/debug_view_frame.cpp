@@ -22,15 +22,16 @@ void draw_auxiliary_frames(Frame& frame, const SceneView& scene, std::string_vie
     s.options.view = DebugView::None;
     s.options.edges = RenderOptions::Edges::None;
     RenderStats ignored;
-    const TargetViews visible = size_targets(s.visible, options, {.normal = true, .ids = true});
-    draw_frame(frame, scene, source, s.options, visible, false, ignored);
     if (options.view == DebugView::Overdraw) {
-        // Every fragment rasterized counts: the depth test off, nothing hidden.
+        // Every fragment rasterized counts: the depth test off, nothing hidden. Drawn first: its
+        // budget (RenderLimits::max_covered_samples) then refuses a frame before any is drawn.
         s.options.depth_test = false;
         const TargetViews counts = size_targets(s.overdraw, options, {.coverage = true});
         draw_frame(frame, scene, source, s.options, counts, false, ignored);
         s.options.depth_test = options.depth_test;
     }
+    const TargetViews visible = size_targets(s.visible, options, {.normal = true, .ids = true});
+    draw_frame(frame, scene, source, s.options, visible, false, ignored);
     if (options.view == DebugView::ZFight && options.depth_format != DepthFormat::D32F) {
         s.options.depth_format = DepthFormat::D32F;
         const TargetViews ids = size_targets(s.reference, options, {.ids = true});

@@ -38,10 +38,12 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <tuple>
 
+#include "raster/bounding_box_pixels.hpp"
 #include "render/thread_arena.hpp"
 #include "visibility/fragment_alphas.hpp"
 #include "visibility/frame_context.hpp"
@@ -64,6 +66,25 @@ RenderResult render_multisampled(const Scene& scene, const RenderOptions& option
                                  std::to_string(options.limits.max_pixels) +
                                  " (RenderLimits::max_pixels, --max-pixels)");
     const std::vector<ScreenPolygon> polygons = project_scene(scene, options, true);
+    // Every polygon's coverage and depth are computed per sample, hidden or not (there is no
+    // hierarchical z here): that work is bounded before any is done.
+    std::uint64_t covered = 0;
+    for (const ScreenPolygon& polygon : polygons) {
+        constexpr std::int64_t kLow = std::numeric_limits<std::int64_t>::lowest();
+        constexpr std::int64_t kHigh = std::numeric_limits<std::int64_t>::max();
+        std::int64_t min_x = kHigh, min_y = kHigh, max_x = kLow, max_y = kLow;
+        for (const PolygonVertex& v : polygon.vertices) {
+            min_x = std::min(min_x, v.snapped[0]);
+            min_y = std::min(min_y, v.snapped[1]);
+            max_x = std::max(max_x, v.snapped[0]);
+            max_y = std::max(max_y, v.snapped[1]);
+        }
+        covered +=
+            detail::bounding_box_pixels(min_x, min_y, max_x, max_y, options.width, options.height) *
+            std::uint64_t(n * n);
+    }
+    detail::check_covered_samples(covered, options.limits.max_covered_samples,
+                                  "multisampling (--msaa) rasterizes every triangle whole");
     const visibility_detail::FrameContext frame =
         visibility_detail::make_frame_context(scene, options);
     const int width = options.width, height = options.height;

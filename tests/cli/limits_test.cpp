@@ -540,6 +540,37 @@ TEST(CliLimits, VisibilityAlgorithmBudgets) {
     expect_refused(dir, cube + "painter --max-projected-polygons -1", "--max-projected-polygons");
 }
 
+// The paths that rasterize every triangle whole (--view overdraw's count, --no-depth-test,
+// --msaa) are budgeted by the samples the triangles' bounding boxes cover: exactly what the run
+// needs passes, one less is refused naming the scene and the flag.
+TEST(CliLimits, CoveredSamplesExactly) {
+    const auto dir = temp_dir("cli-limits-covered-samples");
+    const std::string cube = "render builtin:cube --size 64x64 -o out.png ";
+    for (const char* path : {"--view overdraw", "--no-depth-test", "--aa 4 --msaa"}) {
+        SCOPED_TRACE(path);
+        const std::string run = cube + path + " --max-covered-samples ";
+        const CommandResult counted = run_limited(run + "1", dir);
+        ASSERT_EQ(counted.exit_code, 2) << counted.output;
+        EXPECT_EQ(counted.output.rfind("zraster: builtin:cube: ", 0), 0u) << counted.output;
+        const std::string key = "bounding boxes cover ";
+        const std::size_t at = counted.output.find(key);
+        ASSERT_NE(at, std::string::npos) << counted.output;
+        const unsigned long long needed = std::stoull(counted.output.substr(at + key.size()));
+        ASSERT_GT(needed, 1u);
+        const CommandResult exact = run_limited(run + std::to_string(needed), dir);
+        EXPECT_EQ(exact.exit_code, 0) << exact.output;
+        std::filesystem::remove(dir / "out.png");
+        expect_refused(dir, run + std::to_string(needed - 1),
+                       "more than the limit of " + std::to_string(needed - 1) +
+                           " (RenderLimits::max_covered_samples)");
+        expect_refused(dir, run + std::to_string(needed - 1),
+                       "; raise it with --max-covered-samples N");
+    }
+    expect_refused(dir, cube + "--view overdraw --max-covered-samples 0", "--max-covered-samples");
+    expect_refused(dir, cube + "--msaa --aa 4 --max-covered-samples 1e9",
+                   "--max-covered-samples: expected a positive whole number, got '1e9'");
+}
+
 // A fragment budget raised past what the machine holds: the A-buffer's allocation fails under
 // the 2 GiB address-space limit and the run ends naming the budget (exit 2), not with "out of
 // memory" (exit 1). Before, the pool doubled to 3.3 GB and the command said "out of memory".
@@ -574,6 +605,25 @@ TEST(CliLimits, RaisedLimitsPastTheMachinesMemoryAreExitTwo) {
         << r.output;
     EXPECT_EQ(r.output.find('\n'), r.output.size() - 1) << r.output;
     EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+}
+
+// A BSP polygon budget raised past what the process may use (about 400 bytes a polygon at the
+// tree's peak) is refused before the tree is built, naming the flag to lower and how far: under
+// the 2 GiB address-space limit, 2^31 / 400 = 5,368,709 polygons. (A random soup with every
+// budget at its maximum split for 29 s to 6.6 GB, then ran out of memory.)
+TEST(CliLimits, ABspBudgetPastTheMachinesMemoryIsRefusedBeforeBuilding) {
+    if (kSanitized) GTEST_SKIP() << "no address-space limit in sanitizer builds";
+    const auto dir = temp_dir("cli-limits-bsp-memory");
+    const std::string bsp = "render builtin:cube --size 64x64 -o out.png --visibility bsp ";
+    expect_refused(dir, bsp + "--max-bsp-polygons 9999999999999999999",
+                   "zraster: builtin:cube: BSP tree: the budget of 9999999999999999999 polygons "
+                   "(max_bsp_polygons) is more than the memory this process may use holds at "
+                   "about 400 bytes each: lower --max-bsp-polygons to at most 5368709 (0: "
+                   "automatic)");
+    const CommandResult exact = run_limited(bsp + "--max-bsp-polygons 5368709", dir);
+    EXPECT_EQ(exact.exit_code, 0) << exact.output;
+    std::filesystem::remove(dir / "out.png");
+    expect_refused(dir, bsp + "--max-bsp-polygons 5368710", "at most 5368709");
 }
 
 // Coordinates beyond what single-precision matrices can frame: a triangle at 3e38 (the fitted

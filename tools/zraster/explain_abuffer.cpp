@@ -14,8 +14,10 @@
 namespace zraster::cli {
 namespace {
 
+// One fragment of a pixel's list (24 bytes: the A-buffer's own size per fragment).
 struct PixelFragment {
-    std::size_t polygon;
+    std::uint32_t polygon;
+    std::uint32_t next;  // the pixel's next fragment, kEnd at the end
     std::uint64_t mask;
     double depth;
 };
@@ -51,41 +53,59 @@ void mask_grid(Figure& f, double x, double y, int n, double cell, std::uint64_t 
 void explain_abuffer(const ExplainInput& in, ExplainOutput& out) {
     const int n = in.arguments.aa > 1 ? in.arguments.aa : 4;
     const int w = in.options.width, h = in.options.height;
+    // The frame first: the A-buffer refuses fragments past its budget (--max-abuffer-fragments)
+    // before storing them, and frees its own when done. The lists below hold the same fragments
+    // (polygon_coverage's masks are the ones it stores), so they are within the budget too, and
+    // allocated once at their size.
+    ABufferOptions abuffer;
+    abuffer.samples_per_side = n;
+    abuffer.max_fragments = in.arguments.max_abuffer_fragments;
+    ABufferStats counted;
+    const RenderResult frame = render_abuffer(in.scene, in.options, abuffer, &counted);
     const std::vector<ScreenPolygon> polygons = project_scene(in.scene, in.options, true);
-    std::vector<std::vector<PixelFragment>> lists(std::size_t(w) * std::size_t(h));
+    constexpr std::uint32_t kEnd = 0xffffffffu;
+    std::vector<std::uint32_t> head(std::size_t(w) * std::size_t(h), kEnd);
+    std::vector<PixelFragment> fragments;
+    fragments.reserve(counted.fragments);
     for (std::size_t i = 0; i < polygons.size(); ++i)
-        for (const PixelCoverage& c : polygon_coverage(polygons[i], Viewport{w, h}, n))
-            lists[std::size_t(c.y) * std::size_t(w) + std::size_t(c.x)].push_back(
-                {i, c.mask, depth_at(polygons[i], c.x + 0.5, c.y + 0.5)});
+        for (const PixelCoverage& c : polygon_coverage(polygons[i], Viewport{w, h}, n)) {
+            const std::size_t p = std::size_t(c.y) * std::size_t(w) + std::size_t(c.x);
+            fragments.push_back(
+                {std::uint32_t(i), head[p], c.mask, depth_at(polygons[i], c.x + 0.5, c.y + 0.5)});
+            head[p] = std::uint32_t(fragments.size() - 1);
+        }
     // An edge pixel a slide can show: a partly covered fragment over a farther surface, and a
     // short list (about three fragments; sphere poles gather dozens).
     const std::uint64_t full = n == 8 ? ~std::uint64_t{0} : (std::uint64_t{1} << (n * n)) - 1;
     std::size_t best = 0, best_score = 0;
-    for (std::size_t p = 0; p < lists.size(); ++p) {
-        const std::vector<PixelFragment>& l = lists[p];
-        if (l.size() < 2) continue;
-        const bool partial =
-            std::any_of(l.begin(), l.end(), [&](const PixelFragment& f) { return f.mask != full; });
-        const auto [nearest, farthest] = std::minmax_element(
-            l.begin(), l.end(),
-            [](const PixelFragment& a, const PixelFragment& b) { return a.depth < b.depth; });
-        const bool layered = farthest->depth - nearest->depth > 1e-3;
+    for (std::size_t p = 0; p < head.size(); ++p) {
+        std::size_t size = 0;
+        bool partial = false;
+        double nearest = 0.0, farthest = 0.0;
+        for (std::uint32_t f = head[p]; f != kEnd; f = fragments[f].next) {
+            const PixelFragment& fragment = fragments[f];
+            partial |= fragment.mask != full;
+            nearest = size == 0 ? fragment.depth : std::min(nearest, fragment.depth);
+            farthest = size == 0 ? fragment.depth : std::max(farthest, fragment.depth);
+            ++size;
+        }
+        if (size < 2) continue;
+        const bool layered = farthest - nearest > 1e-3;
         const std::size_t score = (partial ? 100 : 0) + (layered ? 50 : 0) +
-                                  (l.size() <= 6 ? 10 + std::min<std::size_t>(l.size(), 4) : 0);
+                                  (size <= 6 ? 10 + std::min<std::size_t>(size, 4) : 0);
         if (score > best_score) {
             best = p;
             best_score = score;
         }
     }
-    std::vector<PixelFragment> list = lists[best];
+    std::vector<PixelFragment> list;
+    for (std::uint32_t f = head.empty() ? kEnd : head[best]; f != kEnd; f = fragments[f].next)
+        list.push_back(fragments[f]);
+    std::reverse(list.begin(), list.end());  // (in the order they were made, as before the sort)
     std::sort(list.begin(), list.end(),
               [](const PixelFragment& a, const PixelFragment& b) { return a.depth < b.depth; });
     const int px = int(best % std::size_t(w)), py = int(best / std::size_t(w));
 
-    ABufferOptions abuffer;
-    abuffer.samples_per_side = n;
-    abuffer.max_fragments = in.arguments.max_abuffer_fragments;
-    const RenderResult frame = render_abuffer(in.scene, in.options, abuffer);
     RgbaImage image = color_image(frame.targets);
     const int zoom = 8, around = 7;
     RgbaImage inset(2 * around + 1, 2 * around + 1, Rgba{0, 0, 0, 255});

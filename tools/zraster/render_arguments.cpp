@@ -85,6 +85,12 @@ void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
                    "more bytes than this")
         ->check(whole_number(false))
         ->capture_default_str();
+    cmd.add_option("--max-covered-samples", a.max_covered_samples,
+                   "Refuse frames that rasterize every triangle whole (--view overdraw, "
+                   "--no-depth-test, --msaa) when the triangles' bounding boxes cover more "
+                   "samples than this")
+        ->check(whole_number(false))
+        ->capture_default_str();
     cmd.add_option("--threads", a.threads, "Worker threads (0: all cores)")->capture_default_str();
     cmd.add_option("--eye", a.eye, "Camera position X,Y,Z (default: frame the bounding sphere)");
     cmd.add_option("--target", a.target, "Point looked at X,Y,Z");
@@ -316,6 +322,7 @@ RenderOptions make_render_options(const RenderArguments& a,
     o.height = size.y;
     o.limits.max_pixels = a.max_pixels;
     o.limits.max_bin_bytes = a.max_bin_bytes;
+    o.limits.max_covered_samples = a.max_covered_samples;
     o.limits.max_painter_comparisons = a.max_painter_comparisons;
     o.limits.max_bsp_polygons = a.max_bsp_polygons;
     o.limits.max_warnock_classifications = a.max_warnock_classifications;

@@ -27,6 +27,7 @@ struct RenderArguments {
     std::string size = "1920x1080";
     std::uint64_t max_pixels = RenderLimits{}.max_pixels;
     std::uint64_t max_bin_bytes = RenderLimits{}.max_bin_bytes;
+    std::uint64_t max_covered_samples = RenderLimits{}.max_covered_samples;
     // Budgets of the object-space algorithms (0: automatic, scaled to the input).
     std::uint64_t max_painter_comparisons = 0, max_bsp_polygons = 0;
     std::uint64_t max_warnock_classifications = 0;
