@@ -156,7 +156,7 @@ io::LoadedScene load_any(const std::filesystem::path& path, const LoadOptions& o
     // looked wrong comes first: Assimp's messages name neither the line nor, often, the cause
     // ("vertex index out of range" for a coordinate that is not a number).
     const io::ObjFallback& fallback = std::get<io::ObjFallback>(fast);
-    io::check_obj_indices(path);  // what Assimp would clamp or drop without a word
+    io::check_obj_indices(path, options);  // what Assimp would clamp or drop without a word
     // Its material libraries' numbers too: Assimp fails on a short color in its own words.
     io::scan_obj_material_libraries(path,
                                     io::ReferencePolicy(path, options.allow_outside_references));
