@@ -104,6 +104,7 @@ class MaterialTable {
         if (is_obj(path)) {
             io::ObjMaterialLibraries libraries = io::scan_obj_material_libraries(path, policy);
             warnings.insert(warnings.end(), libraries.warnings.begin(), libraries.warnings.end());
+            warnings.insert(warnings.end(), libraries.notices.begin(), libraries.notices.end());
             obj_missing_library_ = !libraries.warnings.empty();
             obj_defined_ = std::move(libraries.defined_materials);
             obj_dissolve_ = std::move(libraries.dissolve);
@@ -208,7 +209,9 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
     Assimp::Importer importer;
     const io::ReferencePolicy policy(path, options.allow_outside_references);
     std::vector<std::string> refusals;
-    importer.SetIOHandler(new io::ConfinedIOSystem(policy, refusals));  // the importer owns it
+    auto* io_system = new io::ConfinedIOSystem(policy, refusals);
+    if (is_obj(path)) io_system->rewrite_material_libraries(file);
+    importer.SetIOHandler(io_system);  // the importer owns it
     // Points and lines are not drawn: drop them while sorting primitives by type.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);
