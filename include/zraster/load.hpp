@@ -41,10 +41,11 @@ struct LoadOptions {
     // 3 x max_triangles vertices (Assimp copies an accessor into every primitive that reads it).
     std::size_t max_triangles = 50'000'000;
     // The memory a glTF file's accessors decode to, estimated before Assimp reads them: every
-    // accessor a primitive reads, per primitive (attributes, indices; a sparse accessor's dense
-    // copy too), at the bytes the import and the conversion take per element (measured). A
-    // 600-byte sparse accessor of 150 million vertices, or one 900,000-vertex accessor read by
-    // 166 primitives, reached 6 to 8 GB; the default keeps a load to about 1-2 GB.
+    // accessor a primitive reads, per primitive (attributes, morph targets, indices; a sparse
+    // accessor's dense copy too), at the bytes the import and the conversion take per element
+    // (measured). A 600-byte sparse accessor of 150 million vertices, or one 900,000-vertex
+    // accessor read by 166 primitives, reached 6 to 8 GB; the default keeps a load to about
+    // 1-2 GB.
     std::size_t max_geometry_bytes = std::size_t{1} << 30;
     // Polygons of more than 4 corners (OBJ, PLY) are triangulated by Assimp in time quadratic
     // in their corners: a face of n corners counts n^2, summed over the file, refused past this

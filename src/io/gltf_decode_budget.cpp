@@ -109,6 +109,14 @@ void check_gltf_decode_budget(const std::filesystem::path& path, const json& doc
                     bytes = saturated_add(bytes, saturated_mul(count, each));
                     bytes = saturated_add(bytes, sparse_bytes(accessors, index));
                 }
+            // Morph targets: Assimp decodes each target's attributes as a mesh of its own.
+            for (const json& target : array_member(primitive, "targets"))
+                if (target.is_object())
+                    for (const auto& [name, index] : target.items()) {
+                        const std::uint64_t count = accessor_count(accessors, index);
+                        bytes = saturated_add(bytes, saturated_mul(count, kAttributeBytes));
+                        bytes = saturated_add(bytes, sparse_bytes(accessors, index));
+                    }
             const auto indices = primitive.find("indices");
             const std::uint64_t drawn =
                 indices != primitive.end() ? accessor_count(accessors, *indices) : n;

@@ -169,6 +169,14 @@ TEST(LoadBudgets, DecodedGeometryIsCountedInBytesPerPrimitive) {
             "max_geometry_bytes (1799 bytes) (the importer copies an accessor into every "
             "primitive that reads it)");
     }
+    // A morph target's attributes are decoded too: 72 bytes more a primitive.
+    const auto morphed = dir / "morphed.gltf";
+    test::write_bytes(
+        morphed, shared_accessor_gltf(10, "", R"("POSITION":0},"targets":[{"POSITION":0}],"x":{)"));
+    LoadOptions o;
+    o.max_geometry_bytes = 2519;
+    test::expect_limit_exceeded([&] { load_scene(morphed, o); }, morphed, "max_geometry_bytes",
+                                "decode to about 2520 bytes of geometry");
 }
 
 // A 578-byte glTF whose one sparse accessor declares 150 million vertices (one of them given):
