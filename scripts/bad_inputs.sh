@@ -508,6 +508,42 @@ row "one large transparent (BLEND) triangle placed 50,000 times" render stacked-
 run_zraster=./address-space-limit.sh
 row "BSP budget raised past a 2 GiB address space (ulimit -v)" render soup.ply --visibility bsp --max-bsp-polygons 9999999999999999999 -o out.png
 run_zraster=
+# What the loaders' last budgets and format checks refuse: the bytes a glTF's accessors decode to
+# (a sparse accessor of 150 million vertices; one of a million read by 140 primitives, within the
+# triangle budget's counts), polygons whose triangulation takes quadratic time, a glTF asking for
+# a newer reader, a PLY whose magic only Assimp took for one (its header was not checked), a cells
+# instance with a matrix and its parts, an MTL decal.
+printf '{"asset":{"version":"2.0"},"buffers":[{"byteLength":16,"uri":"data:application/octet-stream;base64,AAAAAAAAgD8AAIA/AACAPw=="}],"bufferViews":[{"buffer":0,"byteLength":4},{"buffer":0,"byteOffset":4,"byteLength":12}],"accessors":[{"componentType":5126,"count":150000000,"type":"VEC3","min":[0,0,0],"max":[1,1,1],"sparse":{"count":1,"indices":{"bufferView":0,"componentType":5125},"values":{"bufferView":1}}}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0}' >sparse150m.gltf
+million_gltf 140 1 >million/primitives140.gltf
+awk 'BEGIN { for (k = 0; k < 32767; ++k) print "v", cos(k * 0.00019), sin(k * 0.00019), 0;
+             printf "f"; for (k = 1; k <= 32767; ++k) printf " %d", k; print "" }' >fan32767.obj
+awk 'BEGIN { print "ply\nformat ascii 1.0\nelement vertex 20000\nproperty float x\nproperty float y";
+             print "property float z\nelement face 1\nproperty list ushort int vertex_indices\nend_header";
+             for (k = 0; k < 20000; ++k) print cos(k * 0.0003), sin(k * 0.0003), 0;
+             printf "20000"; for (k = 0; k < 20000; ++k) printf " %d", k; print "" }' >fan20000.ply
+printf '{"asset":{"version":"2.0","minVersion":"3.0"}}' >minversion3.gltf
+sed 's/"translate": \[1, 0, 0\]/"matrix": [1, 0, 0, 1, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1], "translate": [1, 0, 0]/' \
+    cells/two.cells.json >cells/matrix-and-translate.cells.json
+printf 'plyply\nformat ascii 1.0\nelement vertex 400000000\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n' >plyply.ply
+printf 'newmtl m\nKd 0.5\ndecal m.png\n' >decal.mtl
+printf "mtllib decal.mtl\n${tri}usemtl m\nf 1 2 3\n" >decal.obj
+row "glTF: a 578-byte sparse accessor of 150 million vertices (past --max-geometry-memory)" render sparse150m.gltf -o out.png
+row "glTF: a million-vertex accessor read by 140 primitives (within the triangle counts)" render million/primitives140.gltf -o out.png
+row "OBJ face of 32767 corners (quadratic triangulation)" render fan32767.obj --max-triangles 100 -o out.png
+row "PLY face of 20000 corners (quadratic triangulation)" render fan20000.ply -o out.png
+row "PLY of two headers run together (\"plyply\": Assimp's magic) declaring 4e8 vertices" render plyply.ply -o out.png
+row "glTF asset minVersion 3.0" render minversion3.gltf -o out.png
+cells_row "cells file: an instance with both \"matrix\" and \"translate\"" cells/matrix-and-translate.cells.json "instances[1]" render cells/matrix-and-translate.cells.json -o out.png
+row "MTL decal statement and a one-number Kd (warning; gray)" render decal.obj --size 8x8 -o out.png
+rm -f out.png
+# Settings that would change nothing in the frame the others ask for.
+row "--no-depth-test with the A-buffer (changes nothing)" render builtin:cube --size 8x8 --visibility abuffer --no-depth-test -o out.png
+row "--depth-format with painter's (changes nothing)" render builtin:cube --size 8x8 --visibility painter --depth-format d16 -o out.png
+row "--edge-color without --wireframe or --hidden-line" render builtin:cube --size 8x8 --edge-color 255,0,0 -o out.png
+row "--light-dir with --shading unlit" render builtin:cube --size 8x8 --shading unlit --light-dir 0,0,1 -o out.png
+row "svg --edge-width without --edges" svg builtin:cube --size 8x8 --edge-width 2 -o out.svg
+row "--reversed-z --depth-compare less (a warning: nothing passes)" render builtin:cube --size 8x8 --reversed-z --depth-compare less -o out.png
+rm -f out.png
 echo
 echo "$n inputs; $failures broke the contract (exit 2, one line, nothing left)."
 [ "$failures" -eq 0 ]

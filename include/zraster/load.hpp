@@ -6,6 +6,7 @@
 #include <zraster/scene.hpp>
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -39,6 +40,18 @@ struct LoadOptions {
     // it before Assimp reads it: its primitives may decode at most max_triangles faces and
     // 3 x max_triangles vertices (Assimp copies an accessor into every primitive that reads it).
     std::size_t max_triangles = 50'000'000;
+    // The memory a glTF file's accessors decode to, estimated before Assimp reads them: every
+    // accessor a primitive reads, per primitive (attributes, morph targets, indices; a sparse
+    // accessor's dense copy too), at the bytes the import and the conversion take per element
+    // (measured). A 600-byte sparse accessor of 150 million vertices, or one 900,000-vertex
+    // accessor read by 166 primitives, reached 6 to 8 GB; the default keeps a load to about
+    // 1-2 GB.
+    std::size_t max_geometry_bytes = std::size_t{1} << 30;
+    // Polygons of more than 4 corners (OBJ, PLY) are triangulated by Assimp in time quadratic
+    // in their corners: a face of n corners counts n^2, summed over the file, refused past this
+    // before Assimp reads it. The default, 2^28 (one face of 16,384 corners, or 10 million
+    // pentagons), is about 4 s of triangulation (measured: one face at the budget).
+    std::uint64_t max_triangulation_work = std::uint64_t{1} << 28;
     std::size_t max_file_bytes = std::size_t{4} << 30;
     // Meshes placed by the node hierarchy (instances). Nodes that share children multiply: a
     // 1.5 KB glTF can place billions; it is refused before the hierarchy is expanded.

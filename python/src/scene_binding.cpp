@@ -126,7 +126,9 @@ std::shared_ptr<PyScene> scene_from_owned(std::shared_ptr<const Scene> owned, st
 std::shared_ptr<PyScene> load(const py::object& path_object, const std::string& isolation,
                               bool allow_outside_references, const py::object& max_instances,
                               const py::object& max_triangles, const py::object& max_texture_side,
-                              const py::object& max_texture_bytes) {
+                              const py::object& max_texture_bytes,
+                              const py::object& max_geometry_bytes,
+                              const py::object& max_triangulation_work) {
     if (!py::isinstance<py::str>(path_object) && !py::hasattr(path_object, "__fspath__"))
         type_error("path", "a str or os.PathLike", path_object);
     const auto path = py::module_::import("os").attr("fspath")(path_object);
@@ -150,6 +152,10 @@ std::shared_ptr<PyScene> load(const py::object& path_object, const std::string& 
         int(integer_in_range(max_texture_side, "max_texture_side", 1, 1 << 16));
     options.max_texture_bytes =
         std::size_t(integer_in_range(max_texture_bytes, "max_texture_bytes", 1, kMost));
+    options.max_geometry_bytes =
+        std::size_t(integer_in_range(max_geometry_bytes, "max_geometry_bytes", 1, kMost));
+    options.max_triangulation_work = std::uint64_t(
+        integer_in_range(max_triangulation_work, "max_triangulation_work", 1, 1LL << 40));
     std::shared_ptr<const Scene> owned;
     std::vector<std::string> warnings;
     {
@@ -296,6 +302,8 @@ zraster.load() returns a Scene too (its meshes owned by zraster).)")
           "max_triangles"_a = py::int_(LoadOptions{}.max_triangles),
           "max_texture_side"_a = py::int_(LoadOptions{}.max_texture_side),
           "max_texture_bytes"_a = py::int_(LoadOptions{}.max_texture_bytes),
+          "max_geometry_bytes"_a = py::int_(LoadOptions{}.max_geometry_bytes),
+          "max_triangulation_work"_a = py::int_(LoadOptions{}.max_triangulation_work),
           R"(Loads a scene: a mesh file or a procedural spec, as `zraster render` reads it.
 
 path: a file (OBJ with MTL, PLY, STL, glTF 2.0 .gltf/.glb, 3DS, OFF and the other formats
@@ -307,6 +315,10 @@ isolation: "worker" (the command's default: Assimp runs in a child process with 
 allow_outside_references: read a model's external files (glTF buffers, textures, material
   libraries) outside its folder too.
 max_instances, max_triangles: larger models are refused.
+max_geometry_bytes: a glTF file whose accessors decode to more (each accessor once per primitive
+  that reads it) is refused before it is read.
+max_triangulation_work: an OBJ or PLY file whose polygons of more than 4 corners sum to more
+  corners^2 is refused before it is read (their triangulation takes quadratic time).
 max_texture_side, max_texture_bytes: textures wider or taller are reduced (halved as their mip
   levels are); the decoded bytes of a model's textures stay within the budget (a texture past it
   is not used). Both with a LoadWarning.

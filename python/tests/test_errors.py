@@ -119,7 +119,8 @@ def test_bad_renderer_arguments():
 
 def test_bad_load_budgets():
     for name, value in (("max_instances", -1), ("max_instances", 2**70), ("max_triangles", 0),
-                        ("max_texture_side", 2**63), ("max_texture_bytes", -5)):
+                        ("max_texture_side", 2**63), ("max_texture_bytes", -5),
+                        ("max_geometry_bytes", 0), ("max_triangulation_work", 2**41)):
         with raises(zraster.InputError, name, "must be in", str(value)):
             zraster.load("builtin:cube", **{name: value})
     with raises(TypeError, "max_texture_side", "integer", "float"):
@@ -207,6 +208,14 @@ def test_load_budgets_raise_limit_exceeded(tmp_path, isolation):
     with raises(zraster.LimitExceeded, "too many triangles (2, limit 1)") as info:
         zraster.load(ply, isolation=isolation, max_triangles=1)
     assert info.value.limit == "max_triangles"
+    pentagon = tmp_path / "pentagon.obj"
+    pentagon.write_text("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv -1 0 0\nf 1 2 3 4 5\n")
+    with raises(zraster.LimitExceeded, "line 6: a polygon of 5 corners") as info:
+        zraster.load(pentagon, isolation=isolation, max_triangulation_work=24)
+    assert info.value.limit == "max_triangulation_work"
+    with raises(zraster.LimitExceeded, "more than max_geometry_bytes (100 bytes)") as info:
+        zraster.load(path, isolation=isolation, max_geometry_bytes=100)
+    assert info.value.limit == "max_geometry_bytes"
 
 
 @pytest.fixture(scope="module")

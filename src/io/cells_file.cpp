@@ -152,6 +152,12 @@ class CellsReader {
 
     glm::mat4 transform(const json& instance, const std::string& at) const {
         if (instance.contains("matrix")) {
+            // Either a matrix or the parts (docs/portals.md): with both, one would be ignored.
+            for (const char* part : {"translate", "rotate_y_degrees", "scale"})
+                if (instance.contains(part))
+                    fail(at, std::string("has both \"matrix\" and \"") + part +
+                                 "\" (the transform is a matrix or translate, rotate_y_degrees "
+                                 "and scale, not both: docs/portals.md)");
             const json& m = instance["matrix"];
             if (!m.is_array() || m.size() != 16)
                 fail(at + ".matrix", "expected 16 numbers (rows of a 4x4 matrix)");

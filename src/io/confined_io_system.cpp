@@ -1,6 +1,13 @@
 #include "io/confined_io_system.hpp"
 
+#include "io/mtl_for_assimp.hpp"
+
+#include <assimp/MemoryIOWrapper.h>
+
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <optional>
 
 namespace zraster::io {
 
@@ -30,7 +37,17 @@ bool ConfinedIOSystem::Exists(const char* file) const {
 Assimp::IOStream* ConfinedIOSystem::Open(const char* file, const char* mode) {
     // Only reading is confined; Assimp's importers never write.
     if (!allowed(file)) return nullptr;
-    return Assimp::DefaultIOSystem::Open(file, mode);
+    Assimp::IOStream* stream = Assimp::DefaultIOSystem::Open(file, mode);
+    if (stream == nullptr || !rewrite_libraries_ || obj_model_ == file) return stream;
+    std::string text(stream->FileSize(), '\0');
+    const std::size_t read = text.empty() ? 0 : stream->Read(text.data(), 1, text.size());
+    Close(stream);
+    text.resize(read);
+    const std::optional<std::string> rewritten = mtl_for_assimp(text);
+    const std::string& served = rewritten ? *rewritten : text;
+    auto* bytes = new std::uint8_t[served.size() + 1];  // owned by the stream
+    std::memcpy(bytes, served.data(), served.size());
+    return new Assimp::MemoryIOStream(bytes, served.size(), true);
 }
 
 }  // namespace zraster::io

@@ -26,6 +26,13 @@ class ConfinedIOSystem : public Assimp::DefaultIOSystem {
     ConfinedIOSystem(ReferencePolicy policy, std::vector<std::string>& refusals)
         : policy_(std::move(policy)), refusals_(refusals) {}
 
+    // OBJ imports: every file Assimp opens besides `model` is a material library, handed to it
+    // as mtl_for_assimp() rewrites it.
+    void rewrite_material_libraries(std::string model) {
+        obj_model_ = std::move(model);
+        rewrite_libraries_ = true;
+    }
+
     bool Exists(const char* file) const override;
     Assimp::IOStream* Open(const char* file, const char* mode = "rb") override;
 
@@ -33,6 +40,8 @@ class ConfinedIOSystem : public Assimp::DefaultIOSystem {
     bool allowed(const char* file) const;
     ReferencePolicy policy_;
     std::vector<std::string>& refusals_;
+    bool rewrite_libraries_ = false;
+    std::string obj_model_;
 };
 
 }  // namespace zraster::io

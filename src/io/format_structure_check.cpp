@@ -60,6 +60,28 @@ std::string hex16(std::uint16_t id) {
     return out;
 }
 
+// The specification: a loader must refuse a file whose "minVersion" it does not support. Assimp
+// reads glTF 2.0 (a newer minor version may use what 2.0 readers misread) and ignores the member.
+void check_gltf_min_version(const std::string& file, const json& asset) {
+    const auto min_version = asset.find("minVersion");
+    if (min_version == asset.end()) return;
+    const std::string v = min_version->is_string() ? min_version->get<std::string>() : "";
+    const std::size_t dot = v.find('.');
+    const auto digits = [&](std::size_t from, std::size_t to) {
+        return to > from && to - from <= 9 &&
+               std::all_of(v.begin() + std::ptrdiff_t(from), v.begin() + std::ptrdiff_t(to),
+                           [](char c) { return c >= '0' && c <= '9'; });
+    };
+    if (dot == std::string::npos || !digits(0, dot) || !digits(dot + 1, v.size()))
+        throw InputError(file,
+                         "its asset's \"minVersion\" is not a MAJOR.MINOR version string "
+                         "such as \"2.0\"");
+    const long major = std::stol(v.substr(0, dot)), minor = std::stol(v.substr(dot + 1));
+    if (major > 2 || (major == 2 && minor > 0))
+        throw InputError(file, "its asset's \"minVersion\" is " + v + ": it needs a glTF " + v +
+                                   " reader, zraster reads glTF 2.0");
+}
+
 // A glTF document (the .gltf text, or a GLB's JSON chunk: `chunk`): JSON, an object, an asset
 // of version 2.N. glTF 1.0 (2015, superseded in 2017) is refused although Assimp has an importer
 // for it: that importer reports a malformed file as "no suitable reader" and checks little, and
@@ -100,6 +122,7 @@ void check_gltf_json(const std::string& file, std::string_view text, bool chunk)
         throw InputError(
             file, "glTF version '" + shown + "' is not supported, only glTF 2.N (such as 2.0) is");
     }
+    check_gltf_min_version(file, *asset);
 }
 
 void check_glb_structure(const std::string& file, const std::string& bytes) {

@@ -19,12 +19,49 @@ const json& array_member(const json& object, const char* key) {
     return it != object.end() && it->is_array() ? *it : empty;
 }
 
+// The accessor `index` names; null when it names none.
+const json* accessor_at(const json& accessors, const json& index) {
+    if (!index.is_number_unsigned() || index.get<std::uint64_t>() >= accessors.size())
+        return nullptr;
+    const json& accessor = accessors[index.get<std::size_t>()];
+    return accessor.is_object() ? &accessor : nullptr;
+}
+
 // The count of the accessor `index` names; 0 when it names none.
 std::uint64_t accessor_count(const json& accessors, const json& index) {
-    if (!index.is_number_unsigned() || index.get<std::uint64_t>() >= accessors.size()) return 0;
-    const json& accessor = accessors[index.get<std::size_t>()];
-    const auto count = accessor.is_object() ? accessor.find("count") : accessor.end();
-    return count != accessor.end() && count->is_number_unsigned() ? count->get<std::uint64_t>() : 0;
+    const json* accessor = accessor_at(accessors, index);
+    if (accessor == nullptr) return 0;
+    const auto count = accessor->find("count");
+    return count != accessor->end() && count->is_number_unsigned() ? count->get<std::uint64_t>()
+                                                                   : 0;
+}
+
+// Bytes per element of what the import and the conversion keep, measured with `zraster info`
+// (max RSS per extra primitive reading a 3-million-vertex accessor): an attribute takes 24 bytes
+// a vertex (Assimp's 3-float copy, then ours; a color 4 floats twice), a drawn index 36 (Assimp's
+// face, its index array and ours, about 107 bytes a triangle). A sparse accessor is first
+// expanded to a dense array of its own: 16 bytes an element (up to 4 floats), each time it is
+// read.
+constexpr std::uint64_t kAttributeBytes = 24, kColorBytes = 32, kIndexBytes = 36, kSparseBytes = 16;
+
+std::uint64_t saturated_add(std::uint64_t a, std::uint64_t b) {
+    return a > UINT64_MAX - b ? UINT64_MAX : a + b;
+}
+
+std::uint64_t saturated_mul(std::uint64_t a, std::uint64_t b) {
+    return b != 0 && a > UINT64_MAX / b ? UINT64_MAX : a * b;
+}
+
+std::string byte_text(std::uint64_t bytes) {
+    return bytes >= (1u << 20) ? std::to_string(bytes >> 20) + " MiB"
+                               : std::to_string(bytes) + " bytes";
+}
+
+// The dense copy Assimp makes of a sparse accessor before reading it; 0 for the others.
+std::uint64_t sparse_bytes(const json& accessors, const json& index) {
+    const json* accessor = accessor_at(accessors, index);
+    if (accessor == nullptr || !accessor->contains("sparse")) return 0;
+    return saturated_mul(accessor_count(accessors, index), kSparseBytes);
 }
 
 // Faces Assimp makes of `n` indices (or vertices) drawn in `mode`: points, lines, loops, strips,
@@ -56,7 +93,7 @@ void check_gltf_decode_budget(const std::filesystem::path& path, const json& doc
     const std::uint64_t max_faces = options.max_triangles;
     const std::uint64_t max_vertices =
         max_faces > UINT64_MAX / 3 ? UINT64_MAX : 3 * std::uint64_t{max_faces};
-    std::uint64_t vertices = 0, face_total = 0, primitives = 0;
+    std::uint64_t vertices = 0, face_total = 0, primitives = 0, bytes = 0;
     for (const json& mesh : array_member(document, "meshes")) {
         for (const json& primitive : array_member(mesh, "primitives")) {
             if (!primitive.is_object()) continue;
@@ -64,11 +101,28 @@ void check_gltf_decode_budget(const std::filesystem::path& path, const json& doc
             std::uint64_t n = 0;
             const auto attributes = primitive.find("attributes");
             if (attributes != primitive.end() && attributes->is_object())
-                for (const auto& [name, index] : attributes->items())
-                    n = std::max(n, accessor_count(accessors, index));
+                for (const auto& [name, index] : attributes->items()) {
+                    const std::uint64_t count = accessor_count(accessors, index);
+                    n = std::max(n, count);
+                    const std::uint64_t each =
+                        name.starts_with("COLOR_") ? kColorBytes : kAttributeBytes;
+                    bytes = saturated_add(bytes, saturated_mul(count, each));
+                    bytes = saturated_add(bytes, sparse_bytes(accessors, index));
+                }
+            // Morph targets: Assimp decodes each target's attributes as a mesh of its own.
+            for (const json& target : array_member(primitive, "targets"))
+                if (target.is_object())
+                    for (const auto& [name, index] : target.items()) {
+                        const std::uint64_t count = accessor_count(accessors, index);
+                        bytes = saturated_add(bytes, saturated_mul(count, kAttributeBytes));
+                        bytes = saturated_add(bytes, sparse_bytes(accessors, index));
+                    }
             const auto indices = primitive.find("indices");
             const std::uint64_t drawn =
                 indices != primitive.end() ? accessor_count(accessors, *indices) : n;
+            bytes = saturated_add(bytes, saturated_mul(drawn, kIndexBytes));
+            if (indices != primitive.end())
+                bytes = saturated_add(bytes, sparse_bytes(accessors, *indices));
             const auto mode = primitive.find("mode");
             const std::uint64_t m = mode != primitive.end() && mode->is_number_unsigned()
                                         ? mode->get<std::uint64_t>()
@@ -88,6 +142,11 @@ void check_gltf_decode_budget(const std::filesystem::path& path, const json& doc
         throw LimitExceeded(path.string(), "max_triangles",
                             where + " decode to more than " + std::to_string(max_faces) +
                                 " faces, max_triangles" + why);
+    if (bytes > options.max_geometry_bytes)
+        throw LimitExceeded(path.string(), "max_geometry_bytes",
+                            where + " decode to about " + byte_text(bytes) +
+                                " of geometry, more than max_geometry_bytes (" +
+                                byte_text(options.max_geometry_bytes) + ")" + why);
 }
 
 }  // namespace zraster::io

@@ -95,15 +95,18 @@ class MaterialTable {
   public:
     MaterialTable(const aiScene& scene, const std::filesystem::path& path,
                   const io::ReferencePolicy& policy, const LoadOptions& options, Scene& out,
-                  std::vector<std::string>& warnings)
+                  std::vector<std::string>& warnings, const io::ObjMaterialLibraries* scanned)
         : scene_(scene),
           out_(out),
           warnings_(warnings),
           textures_(scene, path, policy, options, warnings),
           map_(scene.mNumMaterials, kUnset) {
         if (is_obj(path)) {
-            io::ObjMaterialLibraries libraries = io::scan_obj_material_libraries(path, policy);
+            // The caller's scan when it made one (load_any's, before the import): one a file.
+            io::ObjMaterialLibraries libraries =
+                scanned != nullptr ? *scanned : io::scan_obj_material_libraries(path, policy);
             warnings.insert(warnings.end(), libraries.warnings.begin(), libraries.warnings.end());
+            warnings.insert(warnings.end(), libraries.notices.begin(), libraries.notices.end());
             obj_missing_library_ = !libraries.warnings.empty();
             obj_defined_ = std::move(libraries.defined_materials);
             obj_dissolve_ = std::move(libraries.dissolve);
@@ -156,12 +159,13 @@ io::LoadedScene load_any(const std::filesystem::path& path, const LoadOptions& o
     // looked wrong comes first: Assimp's messages name neither the line nor, often, the cause
     // ("vertex index out of range" for a coordinate that is not a number).
     const io::ObjFallback& fallback = std::get<io::ObjFallback>(fast);
-    io::check_obj_indices(path);  // what Assimp would clamp or drop without a word
-    // Its material libraries' numbers too: Assimp fails on a short color in its own words.
-    io::scan_obj_material_libraries(path,
-                                    io::ReferencePolicy(path, options.allow_outside_references));
+    io::check_obj_indices(path, options);  // what Assimp would clamp or drop without a word
+    // Its material libraries' numbers too: Assimp fails on a short color in its own words. The
+    // scan's materials serve the conversion after the import.
+    const io::ObjMaterialLibraries libraries = io::scan_obj_material_libraries(
+        path, io::ReferencePolicy(path, options.allow_outside_references));
     try {
-        return io::load_scene_with_assimp(path, options);
+        return io::load_scene_with_assimp(path, options, &libraries);
     } catch (const LimitExceeded&) {
         throw;
     } catch (const InputError& e) {
@@ -187,9 +191,11 @@ Scene load_scene(const std::filesystem::path& path, const LoadOptions& options,
 }
 
 io::LoadedScene io::load_scene_with_assimp(const std::filesystem::path& path,
-                                           const LoadOptions& options) {
-    if (options.isolation == LoadIsolation::WorkerProcess) return io::load_in_worker(path, options);
-    return io::import_with_assimp(path, options, false);
+                                           const LoadOptions& options,
+                                           const io::ObjMaterialLibraries* obj_libraries) {
+    if (options.isolation == LoadIsolation::WorkerProcess)
+        return io::load_in_worker(path, options, obj_libraries);
+    return io::import_with_assimp(path, options, false, obj_libraries);
 }
 
 std::uintmax_t io::precheck_assimp_input(const std::filesystem::path& path,
@@ -201,14 +207,17 @@ std::uintmax_t io::precheck_assimp_input(const std::filesystem::path& path,
 }
 
 io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
-                                       const LoadOptions& options, bool prechecked) {
+                                       const LoadOptions& options, bool prechecked,
+                                       const io::ObjMaterialLibraries* obj_libraries) {
     const std::string file = path.string();
     if (!prechecked) io::precheck_assimp_input(path, options);
 
     Assimp::Importer importer;
     const io::ReferencePolicy policy(path, options.allow_outside_references);
     std::vector<std::string> refusals;
-    importer.SetIOHandler(new io::ConfinedIOSystem(policy, refusals));  // the importer owns it
+    auto* io_system = new io::ConfinedIOSystem(policy, refusals);
+    if (is_obj(path)) io_system->rewrite_material_libraries(file);
+    importer.SetIOHandler(io_system);  // the importer owns it
     // Points and lines are not drawn: drop them while sorting primitives by type.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);
@@ -275,7 +284,7 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
     for (std::string& warning : assimp_warnings.take()) warnings.push_back(std::move(warning));
     for (std::string& warning : io::gltf_material_type_warnings(path))
         warnings.push_back(std::move(warning));
-    MaterialTable materials(*ai, path, policy, options, scene, warnings);
+    MaterialTable materials(*ai, path, policy, options, scene, warnings, obj_libraries);
     // (The document is read again only when a mesh has vertex colors.)
     bool any_colors = false;
     for (unsigned m = 0; m < ai->mNumMeshes; ++m)

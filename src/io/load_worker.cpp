@@ -92,6 +92,7 @@ void set_limit(int resource, std::uintmax_t value) {
 
 // Runs in the forked child; never returns. Only this thread exists here.
 [[noreturn]] void child_main(int fd, const std::filesystem::path& path,
+                             const ObjMaterialLibraries* obj_libraries,
                              const LoadOptions& options) {
     // A crash must end the child with its signal, whatever handlers the caller (or a fuzzer, or
     // a sanitizer runtime) installed; the parent reports it.
@@ -122,7 +123,7 @@ void set_limit(int resource, std::uintmax_t value) {
     if (g_test_hook != nullptr) g_test_hook();
     std::string message;
     try {
-        message = encode_scene_message(import_with_assimp(path, options, true));
+        message = encode_scene_message(import_with_assimp(path, options, true, obj_libraries));
     } catch (const LimitExceeded& e) {
         message = encode_limit_message(e.limit(), e.cause());
     } catch (const InputError& e) {
@@ -217,7 +218,8 @@ void set_worker_test_hook(WorkerTestHook hook) {
     g_test_hook = hook;
 }
 
-LoadedScene load_in_worker(const std::filesystem::path& path, const LoadOptions& options) {
+LoadedScene load_in_worker(const std::filesystem::path& path, const LoadOptions& options,
+                           const ObjMaterialLibraries* obj_libraries) {
     const std::string file = path.string();
     // Our own checks (fuzzed, in this process): the common refusals need no child.
     precheck_assimp_input(path, options);
@@ -235,7 +237,7 @@ LoadedScene load_in_worker(const std::filesystem::path& path, const LoadOptions&
     }
     if (pid == 0) {
         ::close(fds[0]);
-        child_main(fds[1], path, options);
+        child_main(fds[1], path, obj_libraries, options);
     }
     ::close(fds[1]);
     Child child(pid);

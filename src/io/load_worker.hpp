@@ -5,15 +5,17 @@
 #include <zraster/scene.hpp>
 
 #include "io/loaded_scene.hpp"
+#include "io/obj_material_libraries.hpp"
 
 #include <filesystem>
 
 namespace zraster::io {
 
-// Runs import_with_assimp(path, options) in a forked child under the limits of `options` and
-// returns the validated scene it sends back. Throws InputError naming the file for a bad file
-// and for a child that crashed, was killed, timed out or ran out of memory.
-LoadedScene load_in_worker(const std::filesystem::path& path, const LoadOptions& options);
+// Runs import_with_assimp(path, options, true, obj_libraries) in a forked child under the limits
+// of `options` and returns the validated scene it sends back. Throws InputError naming the file
+// for a bad file and for a child that crashed, was killed, timed out or ran out of memory.
+LoadedScene load_in_worker(const std::filesystem::path& path, const LoadOptions& options,
+                           const ObjMaterialLibraries* obj_libraries = nullptr);
 
 // Tests only: a function the child calls before importing (to make it crash, hang or allocate
 // without bound); null (the default) for none. Not thread-safe; set it before loading.

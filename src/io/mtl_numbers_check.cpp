@@ -3,6 +3,7 @@
 
 #include <zraster/error.hpp>
 
+#include "io/mtl_for_assimp.hpp"
 #include "io/obj_number_token.hpp"
 
 #include <algorithm>
@@ -26,9 +27,11 @@ bool blank(char c) {
 
 }  // namespace
 
-void check_mtl_numbers(const std::filesystem::path& obj, const std::filesystem::path& library) {
+void check_mtl_numbers(const std::filesystem::path& obj, const std::filesystem::path& library,
+                       std::vector<std::string>* warnings) {
     std::ifstream in(library, std::ios::binary);
     std::string line;
+    bool decal_seen = false;
     std::vector<std::string_view> words;
     for (std::size_t number = 1; std::getline(in, line); ++number) {
         words.clear();
@@ -40,14 +43,19 @@ void check_mtl_numbers(const std::filesystem::path& obj, const std::filesystem::
             if (end > at) words.push_back(text.substr(at, end - at));
             at = end;
         }
+        const auto where = [&] {
+            return "material library " + library.lexically_relative(obj.parent_path()).string() +
+                   ": line " + std::to_string(number) + ": ";
+        };
+        if (!words.empty() && words[0] == "decal" && !decal_seen) {
+            decal_seen = true;
+            if (warnings != nullptr) warnings->push_back(where() + std::string(kDecalIgnored));
+        }
         if (words.empty() ||
             std::find(kNumeric.begin(), kNumeric.end(), words[0]) == kNumeric.end())
             continue;
         const auto refuse = [&](const std::string& cause) {
-            throw InputError(obj.string(),
-                             "material library " +
-                                 library.lexically_relative(obj.parent_path()).string() +
-                                 ": line " + std::to_string(number) + ": " + cause);
+            throw InputError(obj.string(), where() + cause);
         };
         std::size_t numbers = 0;
         for (std::size_t k = 1; k < words.size(); ++k) {

@@ -3,6 +3,8 @@
 // that is not a number is refused as in the OBJ file itself (obj_number_token.hpp).
 #pragma once
 #include <filesystem>
+#include <string>
+#include <vector>
 
 namespace zraster::io {
 
@@ -13,6 +15,9 @@ namespace zraster::io {
 // is relative to the OBJ's folder. A comment (a word starting with '#') ends the statement.
 // (`Ka spectral file` and `Ka xyz x y z`, which Assimp refuses in its own words, are refused
 // here by their first word.)
-void check_mtl_numbers(const std::filesystem::path& obj, const std::filesystem::path& library);
+// A library with `decal` statements (which Assimp would misread: mtl_for_assimp.hpp) appends one
+// warning to *warnings, "material library LIBRARY: line N: decal maps are not supported; ignored".
+void check_mtl_numbers(const std::filesystem::path& obj, const std::filesystem::path& library,
+                       std::vector<std::string>* warnings = nullptr);
 
 }  // namespace zraster::io

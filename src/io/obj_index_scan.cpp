@@ -4,6 +4,7 @@
 #include <zraster/error.hpp>
 
 #include "io/obj_number_token.hpp"
+#include "io/triangulation_budget.hpp"
 
 #include <algorithm>
 #include <array>
@@ -124,9 +125,50 @@ void check_numbers(std::string_view line, const std::string& file, std::size_t n
     }
 }
 
+// A file with line continuations is not scanned for indices, but its faces still count against
+// the triangulation budget: a face's corners are the words of its line and the lines it continues
+// into.
+void count_continued_faces(const std::string& text, const std::filesystem::path& path,
+                           const LoadOptions& options) {
+    TriangulationBudget triangulation(path, options);
+    std::size_t number = 0, face_line = 0;
+    std::uint64_t corners = 0;
+    bool continued = false;
+    for (std::size_t at = 0; at < text.size();) {
+        std::size_t end = text.find('\n', at);
+        if (end == std::string::npos) end = text.size();
+        std::string_view line(text.data() + at, end - at);
+        at = end + 1;
+        ++number;
+        while (!line.empty() && is_blank(line.back())) line.remove_suffix(1);
+        const bool continues = line.ends_with('\\');
+        if (continues) line.remove_suffix(1);
+        std::uint64_t words = 0;
+        bool face = false;
+        for (std::size_t i = 0; i < line.size();) {
+            while (i < line.size() && is_blank(line[i])) ++i;
+            if (i == line.size()) break;
+            const std::size_t from = i;
+            while (i < line.size() && !is_blank(line[i])) ++i;
+            if (words++ == 0 && !continued) face = line.substr(from, i - from) == "f";
+        }
+        if (!continued) {
+            face_line = face ? number : 0;
+            corners = face ? words - 1 : 0;
+        } else if (face_line != 0) {
+            corners += words;
+        }
+        if (!continues && face_line != 0) {
+            triangulation.add(corners, "line " + std::to_string(face_line));
+            face_line = 0;
+        }
+        continued = continues;
+    }
+}
+
 }  // namespace
 
-void check_obj_indices(const std::filesystem::path& path) {
+void check_obj_indices(const std::filesystem::path& path, const LoadOptions& options) {
     std::ifstream in(path, std::ios::binary);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     std::vector<std::string_view> lines;
@@ -135,7 +177,10 @@ void check_obj_indices(const std::filesystem::path& path) {
         if (end == std::string::npos) end = text.size();
         std::string_view line(text.data() + at, end - at);
         while (!line.empty() && is_blank(line.back())) line.remove_suffix(1);
-        if (line.ends_with('\\')) return;  // continuations: Assimp joins lines its own way
+        if (line.ends_with('\\')) {  // continuations: Assimp joins lines its own way
+            count_continued_faces(text, path, options);
+            return;
+        }
         lines.push_back(line);
         at = end + 1;
     }
@@ -154,6 +199,7 @@ void check_obj_indices(const std::filesystem::path& path) {
         if (k == "vn") ++total[kNormal];
     }
     std::array<std::int64_t, 3> before{};
+    TriangulationBudget triangulation(path, options);
     std::vector<std::string_view> w;
     std::vector<Corner> corners;
     for (std::size_t l = 0; l < lines.size(); ++l) {
@@ -180,6 +226,7 @@ void check_obj_indices(const std::filesystem::path& path) {
             throw InputError(path.string(), "line " + std::to_string(l + 1) + ": a face of " +
                                                 std::to_string(w.size() - 1) +
                                                 " corners; at most 32767");
+        triangulation.add(w.size() - 1, "line " + std::to_string(l + 1));
         corners.clear();
         for (std::size_t i = 1; i < w.size(); ++i) {
             const std::optional<Corner> c = corner(w[i]);

@@ -8,6 +8,8 @@
 // v//vn or v/vt/vn with plain indices are checked, a texture or normal slot only where Assimp
 // reads it as one (after the file's first `vt`), and a file with line continuations not at all.
 #pragma once
+#include <zraster/load.hpp>
+
 #include <filesystem>
 
 namespace zraster::io {
@@ -16,6 +18,7 @@ namespace zraster::io {
 // texture coordinates)", and likewise for vertex and normal indices) for the first such index,
 // "FILE: line N: 'WORD' is not a number" for a coordinate or index that is not one (as the reader
 // refuses it: obj_number_token.hpp), and "FILE: line N: a face of C corners; at most 32767".
-void check_obj_indices(const std::filesystem::path& path);
+// Throws LimitExceeded past options.max_triangulation_work (triangulation_budget.hpp).
+void check_obj_indices(const std::filesystem::path& path, const LoadOptions& options);
 
 }  // namespace zraster::io

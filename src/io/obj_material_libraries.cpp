@@ -58,7 +58,7 @@ ObjMaterialLibraries scan_obj_material_libraries(const std::filesystem::path& ob
         const MaterialLibraryChoice choice = resolve_material_library(obj_path, library, policy);
         if (!choice.warning.empty()) result.warnings.push_back(choice.warning);
         if (!choice.file) continue;
-        check_mtl_numbers(obj_path, *choice.file);
+        check_mtl_numbers(obj_path, *choice.file, &result.notices);
         read_material_names(*choice.file, result.defined_materials);
         result.dissolve.read(*choice.file);
     }

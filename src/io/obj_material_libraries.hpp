@@ -17,6 +17,7 @@ struct ObjMaterialLibraries {
     std::vector<std::string> warnings;        // missing libraries, substitutes
     std::set<std::string> defined_materials;  // `newmtl` names of the libraries found
     MtlDissolve dissolve;                     // `d` values a later `Tr` hid from Assimp
+    std::vector<std::string> notices;         // statements ignored (`decal`)
 };
 
 // The rest of a line after `keyword` and blanks, when the trimmed line starts with it (how

@@ -64,7 +64,7 @@ std::optional<ObjFallback> read_statements(const std::filesystem::path& obj_path
                                        "material library " + l.file->string() +
                                            " that Assimp may read differently"};
                 l.materials = std::move(*names);
-                check_mtl_numbers(obj_path, *l.file);
+                check_mtl_numbers(obj_path, *l.file, &out.notices);
                 out.dissolve.read(*l.file);
             }
             out.libraries.push_back(std::move(l));
@@ -83,6 +83,7 @@ Materials::Materials(const std::filesystem::path& obj_path, const Statements& st
       options_(options),
       scene_(scene),
       warnings_(warnings) {
+    warnings_.insert(warnings_.end(), statements.notices.begin(), statements.notices.end());
     // As scan_obj_material_libraries: each library name once.
     std::set<std::string> seen;
     for (const LibraryLoad& l : libraries_) {
@@ -143,7 +144,9 @@ const aiMaterial* Materials::assimp_material(const std::string& name) {
         }
         text += "v 0 0 0\nf 1 1 1\n";
         importer_ = std::make_unique<Assimp::Importer>();
-        importer_->SetIOHandler(new ConfinedIOSystem(policy_, refusals_));  // owned by importer_
+        auto* io_system = new ConfinedIOSystem(policy_, refusals_);
+        io_system->rewrite_material_libraries("");  // the OBJ is in memory
+        importer_->SetIOHandler(io_system);         // owned by importer_
         try {
             ai_ = importer_->ReadFileFromMemory(text.data(), text.size(), 0, "obj");
         } catch (const std::exception&) {

@@ -51,6 +51,7 @@ struct Statements {
     std::vector<LibraryLoad> libraries;  // one per mtllib statement
     ReferencePolicy policy;              // which library and texture files may be read
     MtlDissolve dissolve;                // `d` values a later `Tr` hid from Assimp
+    std::vector<std::string> notices;    // library statements ignored (`decal`)
 };
 
 // Collects the statements of `chunks` (whose first_line is set) and resolves and scans the

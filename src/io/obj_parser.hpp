@@ -20,6 +20,7 @@
 #include <zraster/scene.hpp>
 
 #include "io/loaded_scene.hpp"
+#include "io/obj_material_libraries.hpp"
 
 #include <cstddef>
 #include <filesystem>
@@ -42,8 +43,10 @@ std::variant<LoadedScene, ObjFallback> read_obj(const std::filesystem::path& pat
 
 // load_scene through Assimp for any format (defined in load_scene.cpp): what read_obj falls back
 // to, and what the tests compare it with. In this process or in a worker process, as
-// options.isolation says.
-LoadedScene load_scene_with_assimp(const std::filesystem::path& path, const LoadOptions& options);
+// options.isolation says. For an OBJ, `obj_libraries` is the scan of its material libraries
+// when the caller made it (else it is made after the import).
+LoadedScene load_scene_with_assimp(const std::filesystem::path& path, const LoadOptions& options,
+                                   const ObjMaterialLibraries* obj_libraries = nullptr);
 
 // The checks made before Assimp sees a file (input_file_check, declared_counts_check with the
 // glTF byte ranges). Returns the file size. Throws InputError.
@@ -52,6 +55,7 @@ std::uintmax_t precheck_assimp_input(const std::filesystem::path& path, const Lo
 // The import and conversion proper, always in this process; the pre-checks too unless
 // `prechecked` (the worker's parent made them).
 LoadedScene import_with_assimp(const std::filesystem::path& path, const LoadOptions& options,
-                               bool prechecked);
+                               bool prechecked,
+                               const ObjMaterialLibraries* obj_libraries = nullptr);
 
 }  // namespace zraster::io

@@ -1,7 +1,10 @@
 // What a small file can expand into is bounded before it is expanded: a node graph whose shared
-// children multiply the placed meshes is refused by its count, a cycle by name.
+// children multiply the placed meshes is refused by its count, a cycle by name; the bytes a
+// glTF's accessors decode to, and the triangulation's work on polygons of many corners, are
+// refused before the importer reads the file.
 #include <zraster/load.hpp>
 
+#include <cmath>
 #include <string>
 
 #include "io/io_test_util.hpp"
@@ -144,6 +147,111 @@ TEST(LoadBudgets, AnAccessorReadByManyPrimitivesIsCountedForEach) {
         test::expect_limit_exceeded(
             [&] { load_scene(points, o); }, points, "max_triangles",
             "the meshes' 10 primitives decode to more than 20 faces, max_triangles");
+    }
+}
+
+// The bytes decoded, per primitive: 3 vertices of one attribute (24 bytes each) and 3 drawn
+// indices (36 bytes each) make 180 bytes a primitive.
+TEST(LoadBudgets, DecodedGeometryIsCountedInBytesPerPrimitive) {
+    const auto dir = test::temp_dir("budgets-geometry-bytes");
+    const auto model = dir / "shared.gltf";
+    test::write_bytes(model, shared_accessor_gltf(10));
+    for (const LoadIsolation isolation : {LoadIsolation::InProcess, LoadIsolation::WorkerProcess}) {
+        SCOPED_TRACE(isolation == LoadIsolation::InProcess ? "in process" : "worker");
+        LoadOptions o;
+        o.isolation = isolation;
+        o.max_geometry_bytes = 1800;
+        EXPECT_EQ(load_scene(model, o).meshes.size(), 10u);
+        o.max_geometry_bytes = 1799;
+        test::expect_limit_exceeded(
+            [&] { load_scene(model, o); }, model, "max_geometry_bytes",
+            "the meshes' 10 primitives decode to about 1800 bytes of geometry, more than "
+            "max_geometry_bytes (1799 bytes) (the importer copies an accessor into every "
+            "primitive that reads it)");
+    }
+    // A morph target's attributes are decoded too: 72 bytes more a primitive.
+    const auto morphed = dir / "morphed.gltf";
+    test::write_bytes(
+        morphed, shared_accessor_gltf(10, "", R"("POSITION":0},"targets":[{"POSITION":0}],"x":{)"));
+    LoadOptions o;
+    o.max_geometry_bytes = 2519;
+    test::expect_limit_exceeded([&] { load_scene(morphed, o); }, morphed, "max_geometry_bytes",
+                                "decode to about 2520 bytes of geometry");
+}
+
+// A 578-byte glTF whose one sparse accessor declares 150 million vertices (one of them given):
+// within the triangle budget's 3 x 50 million vertices, it reached 7.6 GB in the importer. The
+// bytes are refused at once, with the defaults.
+TEST(LoadBudgets, ASparseAccessorOfMillionsIsRefusedByItsBytes) {
+    const auto dir = test::temp_dir("budgets-sparse");
+    const auto model = dir / "sparse.gltf";
+    test::write_bytes(
+        model,
+        R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":16,"uri":)"
+        R"("data:application/octet-stream;base64,AAAAAAAAgD8AAIA/AACAPw=="}],)"
+        R"("bufferViews":[{"buffer":0,"byteLength":4},{"buffer":0,"byteOffset":4,"byteLength":12}],)"
+        R"("accessors":[{"componentType":5126,"count":150000000,"type":"VEC3","min":[0,0,0],)"
+        R"("max":[1,1,1],"sparse":{"count":1,"indices":{"bufferView":0,"componentType":5125},)"
+        R"("values":{"bufferView":1}}}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],)"
+        R"("nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0})");
+    for (const LoadIsolation isolation : {LoadIsolation::InProcess, LoadIsolation::WorkerProcess}) {
+        SCOPED_TRACE(isolation == LoadIsolation::InProcess ? "in process" : "worker");
+        LoadOptions o;
+        o.isolation = isolation;
+        test::expect_limit_exceeded(
+            [&] { load_scene(model, o); }, model, "max_geometry_bytes",
+            "the meshes' 1 primitives decode to about 10871 MiB of geometry, more than "
+            "max_geometry_bytes (1024 MiB)");
+    }
+}
+
+// A polygon of n corners counts n^2 against max_triangulation_work (the importer's ear clipping
+// is quadratic: one face of 32,767 corners took 12 s), in OBJ (whose polygons of more than 4
+// corners go to the importer; a face continued over lines too) and PLY files.
+TEST(LoadBudgets, PolygonsOfManyCornersAreCountedBeforeTriangulation) {
+    const auto dir = test::temp_dir("budgets-triangulation");
+    std::string obj = "", face = "f", ply_face = "200";
+    for (int k = 0; k < 200; ++k) {
+        obj += "v " + std::to_string(std::cos(k * 0.0314)) + " " +
+               std::to_string(std::sin(k * 0.0314)) + " 0\n";
+        face += " " + std::to_string(k + 1);
+        ply_face += " " + std::to_string(k);
+    }
+    const auto one_line = dir / "polygon.obj";
+    test::write_bytes(one_line, obj + face + "\n");
+    const auto continued = dir / "continued.obj";
+    const std::size_t cut = face.find(' ', 300);
+    test::write_bytes(continued, obj + face.substr(0, cut) + " \\\n" + face.substr(cut + 1) + "\n");
+    std::string ply =
+        "ply\nformat ascii 1.0\nelement vertex 200\nproperty float x\n"
+        "property float y\nproperty float z\nelement face 1\n"
+        "property list ushort int vertex_indices\nend_header\n";
+    for (int k = 0; k < 200; ++k)
+        ply += std::to_string(std::cos(k * 0.0314)) + " " + std::to_string(std::sin(k * 0.0314)) +
+               " 0\n";
+    const auto polygon_ply = dir / "polygon.ply";
+    test::write_bytes(polygon_ply, ply + ply_face + "\n");
+    struct Case {
+        std::filesystem::path file;
+        std::string where;
+    };
+    for (const Case& c :
+         {Case{one_line, "line 201"}, Case{continued, "line 201"}, Case{polygon_ply, "face 0"}}) {
+        SCOPED_TRACE(c.file.string());
+        for (const LoadIsolation isolation :
+             {LoadIsolation::InProcess, LoadIsolation::WorkerProcess}) {
+            LoadOptions o;
+            o.isolation = isolation;
+            o.max_triangulation_work = 40'000;
+            EXPECT_EQ(load_scene(c.file, o).triangle_count(), 198u);
+            o.max_triangulation_work = 39'999;
+            test::expect_limit_exceeded(
+                [&] { load_scene(c.file, o); }, c.file, "max_triangulation_work",
+                c.where +
+                    ": a polygon of 200 corners takes the triangulation's work (corners^2 summed "
+                    "over the polygons of more than 4 corners) past max_triangulation_work "
+                    "(39999)");
+        }
     }
 }
 

@@ -161,6 +161,33 @@ TEST(LoaderNonsense, GltfVersionsThatAreNot2NAreRefused) {
     }
 }
 
+// The specification: a loader refuses a file whose asset's minVersion it does not support.
+TEST(LoaderNonsense, GltfMinVersionsAbove20AreRefused) {
+    const auto dir = test::temp_dir("nonsense-gltf-min-version");
+    const auto path = dir / "v.gltf";
+    struct Case {
+        std::string min_version, cause;
+    };
+    for (const Case& c :
+         {Case{R"("3.0")",
+               "its asset's \"minVersion\" is 3.0: it needs a glTF 3.0 reader, "
+               "zraster reads glTF 2.0"},
+          Case{R"("2.1")",
+               "its asset's \"minVersion\" is 2.1: it needs a glTF 2.1 reader, "
+               "zraster reads glTF 2.0"},
+          Case{R"("2.0.1")", "its asset's \"minVersion\" is not a MAJOR.MINOR version string"},
+          Case{"2", "its asset's \"minVersion\" is not a MAJOR.MINOR version string"}}) {
+        SCOPED_TRACE(c.min_version);
+        test::write_bytes(path,
+                          R"({"asset":{"version":"2.1","minVersion":)" + c.min_version + "}}");
+        for (const LoadIsolation isolation : kIsolations)
+            test::expect_input_error([&] { load_scene(path, isolated(isolation)); }, path, c.cause);
+    }
+    // 2.0 is read (as far as this document goes).
+    test::write_bytes(path, R"({"asset":{"version":"2.0","minVersion":"2.0"}})");
+    test::expect_input_error([&] { load_scene(path); }, path, "no scene to draw");
+}
+
 // What Assimp's validation would refuse in its own terms ("aiCamera::mClipPlaneFar must be >=
 // ...", "Member \"index\" was not of type \"uint\""), refused in the file's.
 TEST(LoaderNonsense, GltfCamerasAndMaterialReferencesAreCheckedInTheFilesTerms) {
@@ -297,6 +324,55 @@ TEST(LoaderNonsense, CellsFileFieldsItDoesNotHaveAreRefusedByName) {
                 R"("portals":[{"cells":["a","b"],"corners":[[5,0,0],[5,1,0],[5,1,1]])" + c.portal +
                 "}]" + c.top + "}");
         test::expect_input_error([&] { load_scene(path); }, path, c.cause);
+    }
+}
+
+// A transform is a matrix or its parts (docs/portals.md): with both, one was silently ignored.
+TEST(LoaderNonsense, CellsInstancesWithAMatrixAndItsPartsAreRefused) {
+    const auto dir = test::temp_dir("nonsense-cells-matrix");
+    test::write_bytes(dir / "t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const auto path = dir / "m.cells.json";
+    for (const std::string part : {"translate", "rotate_y_degrees", "scale"}) {
+        SCOPED_TRACE(part);
+        const std::string value = part == "translate" ? "[1,0,0]" : "2";
+        test::write_bytes(
+            path,
+            R"({"zraster_cells":1,"meshes":{"t":"t.obj"},"instances":[{"name":"i","mesh":"t",)"
+            R"("matrix":[1,0,0,0,0,1,0,0,0,0,1,0,0,0,0,1],")" +
+                part + R"(":)" + value +
+                R"(}],"cells":[{"name":"a","box":[[-5,-5,-5],[5,5,5]],"instances":["i"]}],)"
+                R"("portals":[]})");
+        test::expect_input_error(
+            [&] { load_scene(path); }, path,
+            "instances[0]: has both \"matrix\" and \"" + part +
+                "\" (the transform is a matrix or translate, rotate_y_degrees and scale, not "
+                "both: docs/portals.md)");
+    }
+}
+
+// Two valid MTL statements Assimp's MTL reader misread: `decal` (taken for `d` and "ecal", which
+// failed the load) and a color of one number (the MTL specification's gray, read as red). On
+// both OBJ paths: zraster's reader, and Assimp's (a pentagon first).
+TEST(LoaderNonsense, MtlDecalsAreIgnoredWithAWarningAndOneNumberColorsAreGray) {
+    const auto dir = test::temp_dir("nonsense-mtl-decal");
+    test::write_bytes(dir / "m.mtl", "newmtl gray\nKd 0.5\nKs 0.25 # spec\ndecal d.png\n");
+    const std::string body = "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl gray\nf 1 2 3\n";
+    for (const std::string& text : {"mtllib m.mtl\n" + body, "mtllib m.mtl\n" + kPentagon + body}) {
+        const auto obj = dir / "m.obj";
+        test::write_bytes(obj, text);
+        for (const LoadIsolation isolation : kIsolations) {
+            SCOPED_TRACE(text.size());
+            const io::LoadedScene loaded = test::load_with_warnings(obj, isolated(isolation));
+            ASSERT_EQ(loaded.scene.materials.size(), 2u);
+            const Material& gray = loaded.scene.materials[1];
+            EXPECT_EQ(gray.base_color, glm::vec3(0.5f));
+            EXPECT_EQ(gray.specular, glm::vec3(0.25f));
+            ASSERT_EQ(loaded.warnings.size(), 1u);
+            EXPECT_NE(loaded.warnings[0].find(
+                          "material library m.mtl: line 4: decal maps are not supported; ignored"),
+                      std::string::npos)
+                << loaded.warnings[0];
+        }
     }
 }
 

@@ -60,9 +60,12 @@ std::string limit_advice(const std::string& limit) {
         {"max_instances", "--max-instances"},
         {"max_triangles", "--max-triangles"},
         {"max_memory", "--max-memory"},
+        {"max_triangulation_work", "--max-triangulation-work"},
     };
     for (const auto& [name, flag] : kFlags)
         if (limit == name) return fmt::format("; raise it with {} N", flag);
+    if (limit == "max_geometry_bytes")
+        return "; raise it with --max-geometry-memory SIZE (e.g. 4G)";
     return "";
 }
 
@@ -132,7 +135,17 @@ std::size_t g_max_instances = LoadOptions{}.max_instances;
 std::size_t g_max_load_triangles = LoadOptions{}.max_triangles;
 int g_max_texture_side = LoadOptions{}.max_texture_side;
 std::size_t g_max_texture_bytes = LoadOptions{}.max_texture_bytes;
+std::size_t g_max_geometry_bytes = LoadOptions{}.max_geometry_bytes;
+std::uint64_t g_max_triangulation_work = LoadOptions{}.max_triangulation_work;
 }  // namespace
+
+void set_max_triangulation_work(std::uint64_t max_work) {
+    g_max_triangulation_work = max_work;
+}
+
+void set_max_geometry_bytes(std::size_t max_bytes) {
+    g_max_geometry_bytes = max_bytes;
+}
 
 void set_texture_limits(int max_side, std::size_t max_bytes) {
     g_max_texture_side = max_side;
@@ -163,6 +176,8 @@ LoadOptions command_load_options() {
     options.max_triangles = g_max_load_triangles;
     options.max_texture_side = g_max_texture_side;
     options.max_texture_bytes = g_max_texture_bytes;
+    options.max_geometry_bytes = g_max_geometry_bytes;
+    options.max_triangulation_work = g_max_triangulation_work;
     return options;
 }
 

@@ -65,6 +65,10 @@ void set_allow_outside_references(bool allow);
 void set_max_instances(std::size_t max_instances);
 // The command's --max-triangles (LoadOptions::max_triangles; `zraster batch` sets its own).
 void set_max_load_triangles(std::size_t max_triangles);
+// --max-triangulation-work (LoadOptions::max_triangulation_work).
+void set_max_triangulation_work(std::uint64_t max_work);
+// --max-geometry-memory (LoadOptions::max_geometry_bytes).
+void set_max_geometry_bytes(std::size_t max_bytes);
 // --max-texture-side and --max-texture-memory (LoadOptions::max_texture_side, max_texture_bytes).
 void set_texture_limits(int max_side, std::size_t max_bytes);
 // The LoadOptions of the settings above, the rest as LoadOptions' defaults.

@@ -71,6 +71,17 @@ int run_zraster(std::vector<std::string> args) {
                    "Refuse model files of more triangles than this (over their instances)")
         ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 40))
         ->capture_default_str();
+    std::uint64_t max_triangulation_work = LoadOptions{}.max_triangulation_work;
+    app.add_option("--max-triangulation-work", max_triangulation_work,
+                   "Refuse OBJ and PLY files whose polygons of more than 4 corners sum to more "
+                   "corners^2 than this (the importer's triangulation takes quadratic time)")
+        ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40))
+        ->capture_default_str();
+    std::string max_geometry_memory = "1G";
+    app.add_option("--max-geometry-memory", max_geometry_memory,
+                   "Refuse glTF files whose accessors decode to more bytes than this (e.g. 2G; "
+                   "an accessor counts once per primitive that reads it)")
+        ->capture_default_str();
     int max_texture_side = LoadOptions{}.max_texture_side;
     app.add_option("--max-texture-side", max_texture_side,
                    "Reduce textures wider or taller than this many texels (halving them, with a "
@@ -143,9 +154,11 @@ int run_zraster(std::vector<std::string> args) {
     set_allow_outside_references(allow_outside_references);
     set_max_instances(max_instances);
     set_max_load_triangles(max_load_triangles);
+    set_max_triangulation_work(max_triangulation_work);
     try {
         set_texture_limits(max_texture_side,
                            parse_byte_size("--max-texture-memory", max_texture_memory));
+        set_max_geometry_bytes(parse_byte_size("--max-geometry-memory", max_geometry_memory));
         if (app.got_subcommand("info")) return run_info(info_args);
         if (app.got_subcommand("bench")) return run_bench(bench_args);
         if (app.got_subcommand("svg")) return run_svg(svg_args);
