@@ -251,6 +251,16 @@ TEST(CommandOutputs, AFifoAtTheOutputIsRefused) {
     EXPECT_TRUE(std::filesystem::is_fifo(dir / "d.png"));
     EXPECT_TRUE(std::filesystem::is_fifo(dir / "d.svg"));
     EXPECT_EQ(names_in(dir), (std::vector<std::string>{"d.png", "d.svg"}));
+    // batch --log may be a FIFO (its reader takes the records), but not one nothing reads:
+    // opening it would wait for ever. Refused before the output folder is made.
+    ASSERT_EQ(::mkfifo((dir / "l.jsonl").c_str(), 0600), 0);
+    const CommandResult batch =
+        run_zraster("batch builtin:cube --size 8x8 -o out --log l.jsonl --progress none", dir);
+    EXPECT_EQ(batch.exit_code, 2) << batch.output;
+    EXPECT_EQ(batch.output,
+              "zraster: --log l.jsonl: is a FIFO that nothing reads: start its reader first, or "
+              "give a file\n");
+    EXPECT_FALSE(std::filesystem::exists(dir / "out"));
 }
 
 }  // namespace

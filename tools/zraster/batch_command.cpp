@@ -107,7 +107,7 @@ int run_batch(const BatchArguments& a) {
     const BatchSettings& settings = plan.settings;
     const int jobs = plan.jobs;
 
-    BatchLog log(plan.log);
+    BatchLog log(plan.log, plan.log_fifo);
     StopOnSignals signals;
     BatchProgress progress(progress_mode(a.progress, ::isatty(STDERR_FILENO) == 1), inputs.size());
     keep_freed_memory();

@@ -51,7 +51,12 @@ std::string record_json(const BatchRecord& r) {
     return line.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
 }
 
-BatchLog::BatchLog(const std::filesystem::path& path) : path_(path) {
+BatchLog::BatchLog(const std::filesystem::path& path, std::shared_ptr<const int> opened)
+    : path_(path), opened_(std::move(opened)) {
+    if (opened_) {
+        fd_ = *opened_;
+        return;
+    }
     fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0666);
     if (fd_ < 0)
         throw InputError(path.string(),
@@ -59,7 +64,7 @@ BatchLog::BatchLog(const std::filesystem::path& path) : path_(path) {
 }
 
 BatchLog::~BatchLog() {
-    if (fd_ >= 0) ::close(fd_);
+    if (fd_ >= 0 && !opened_) ::close(fd_);
 }
 
 void BatchLog::append(const BatchRecord& record) {

@@ -3,6 +3,7 @@
 // point leaves whole lines for the inputs it finished.
 #pragma once
 #include <filesystem>
+#include <memory>
 #include <mutex>
 #include <string>
 
@@ -18,7 +19,9 @@ std::string record_json(const BatchRecord& record);
 class BatchLog {
   public:
     // Opens `path` for appending (created when missing). Throws InputError naming it.
-    explicit BatchLog(const std::filesystem::path& path);
+    // `opened`: the file already open for writing (a FIFO the plan opened), written instead.
+    explicit BatchLog(const std::filesystem::path& path,
+                      std::shared_ptr<const int> opened = nullptr);
     ~BatchLog();
     BatchLog(const BatchLog&) = delete;
     BatchLog& operator=(const BatchLog&) = delete;
@@ -32,6 +35,7 @@ class BatchLog {
 
   private:
     std::filesystem::path path_;
+    std::shared_ptr<const int> opened_;
     int fd_ = -1;
     std::mutex mutex_;
 };

@@ -6,11 +6,15 @@
 #include <zraster/render.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <fstream>
 #include <iterator>
 #include <string>
 #include <system_error>
 #include <thread>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 #include "batch_limits.hpp"
 #include "batch_views.hpp"
@@ -64,10 +68,27 @@ namespace {
 // --log is appended to: checked as an output is (OutputFiles::check) while the plan is made, so
 // that a refused log leaves nothing (plan_batch removes the folders it made). A device or FIFO
 // there (/dev/stdout) is written as it is.
-void check_log(const BatchArguments& a, OutputFiles& log) {
+void check_log(const BatchArguments& a, OutputFiles& log, BatchPlan& plan) {
     if (a.log.empty()) return;
     std::error_code ec;
     const std::filesystem::file_status status = std::filesystem::status(a.log, ec);
+    if (std::filesystem::is_fifo(status)) {
+        // Without blocking: a FIFO nothing reads fails with ENXIO instead of waiting for ever.
+        const int fd = ::open(a.log.c_str(), O_WRONLY | O_APPEND | O_NONBLOCK | O_CLOEXEC);
+        if (fd < 0 && errno == ENXIO)
+            throw InputError(
+                "--log " + a.log,
+                "is a FIFO that nothing reads: start its reader first, or give a file");
+        if (fd < 0)
+            throw InputError("--log " + a.log,
+                             "cannot open the log: " + std::generic_category().message(errno));
+        ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);  // lines written whole
+        plan.log_fifo = std::shared_ptr<const int>(new int(fd), [](const int* p) {
+            ::close(*p);
+            delete p;
+        });
+        return;
+    }
     if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&
         !std::filesystem::is_directory(status))
         return;
@@ -107,7 +128,7 @@ void plan_inputs(const BatchArguments& a, std::istream& standard_input, const Sh
                  BatchPlan& plan) {
     check_batch_settings(plan.settings);
     OutputFiles log;
-    check_log(a, log);
+    check_log(a, log, plan);
 
     std::vector<std::string> paths = a.inputs;
     // The log may not be one of the files the run reads.

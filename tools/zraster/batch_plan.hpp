@@ -5,6 +5,7 @@
 #pragma once
 #include <filesystem>
 #include <istream>
+#include <memory>
 #include <vector>
 
 #include "batch_command.hpp"
@@ -30,6 +31,10 @@ struct BatchPlan {
     BatchSettings settings;
     std::vector<BatchInput> inputs;  // this shard's, in order
     std::filesystem::path log;       // --log, or OUTDIR/batch.jsonl
+    // --log a FIFO: opened while planning (a FIFO nothing reads is refused then, not waited on
+    // for ever), kept open for the log (BatchLog adopts it), so that a reader such as `cat`
+    // never sees the writer come and go.
+    std::shared_ptr<const int> log_fifo;
     int jobs = 1;
 };
 
