@@ -69,7 +69,7 @@ TEST(CommandOutputs, ANameOfTheLongestLengthIsWritten) {
 TEST(CommandOutputs, AnOutputMayNotOverwriteAnInput) {
     const auto dir = temp_dir("outputs-input");
     for (const char* name :
-         {"m.ply", "m.json", "m.png", "m.svg", "g.obj", "p.json", "bsp-tree.svg"})
+         {"m.ply", "m.json", "m.png", "m.svg", "g.obj", "p.json", "bsp-tree.svg", "c.cells.json"})
         write_text(dir / name, kTriangle);
     const std::string tail = ": an output may not overwrite a file the run reads\n";
     struct Case {
@@ -92,6 +92,8 @@ TEST(CommandOutputs, AnOutputMayNotOverwriteAnInput) {
          "zraster: --log g.obj: is the same file as the input g.obj" + tail},
         {"explain bsp bsp-tree.svg -o .",
          "zraster: -o ./bsp-tree.svg: is the same file as the input bsp-tree.svg" + tail},
+        {"pvs c.cells.json -o ./c.cells.json",
+         "zraster: -o ./c.cells.json: is the same file as the input c.cells.json" + tail},
     };
     for (const Case& c : cases) {
         const CommandResult r = run_zraster(c.arguments, dir);
@@ -99,10 +101,11 @@ TEST(CommandOutputs, AnOutputMayNotOverwriteAnInput) {
         EXPECT_EQ(r.output, c.message) << c.arguments;
     }
     for (const char* name :
-         {"m.ply", "m.json", "m.png", "m.svg", "g.obj", "p.json", "bsp-tree.svg"})
+         {"m.ply", "m.json", "m.png", "m.svg", "g.obj", "p.json", "bsp-tree.svg", "c.cells.json"})
         EXPECT_EQ(read_text(dir / name), kTriangle) << name;
-    EXPECT_EQ(names_in(dir), (std::vector<std::string>{"bsp-tree.svg", "g.obj", "m.json", "m.ply",
-                                                       "m.png", "m.svg", "p.json"}));
+    EXPECT_EQ(names_in(dir),
+              (std::vector<std::string>{"bsp-tree.svg", "c.cells.json", "g.obj", "m.json", "m.ply",
+                                        "m.png", "m.svg", "p.json"}));
 }
 
 // The files a model names (textures, buffers, material libraries) are inputs of the run too, read
@@ -260,6 +263,21 @@ TEST(CommandOutputs, AFifoAtTheOutputIsRefused) {
     EXPECT_EQ(batch.output,
               "zraster: --log l.jsonl: is a FIFO that nothing reads: start its reader first, or "
               "give a file\n");
+    EXPECT_FALSE(std::filesystem::exists(dir / "out"));
+    // --views-json and --list FIFOs nothing writes read as empty (opening them waited for ever).
+    ASSERT_EQ(::mkfifo((dir / "v.json").c_str(), 0600), 0);
+    ASSERT_EQ(::mkfifo((dir / "list.txt").c_str(), 0600), 0);
+    write_text(dir / "m.ply", kTriangle);
+    const CommandResult views =
+        run_zraster("batch m.ply --size 8x8 -o out --views-json v.json --progress none", dir);
+    EXPECT_EQ(views.exit_code, 2) << views.output;
+    EXPECT_EQ(views.output,
+              "zraster: v.json: not valid JSON: line 1, column 1: unexpected end of "
+              "input; expected '[', '{', or a literal\n");
+    const CommandResult list =
+        run_zraster("batch --list list.txt --size 8x8 -o out --progress none", dir);
+    EXPECT_EQ(list.exit_code, 2) << list.output;
+    EXPECT_EQ(list.output, "zraster: batch: no inputs: give files, folders or --list FILE\n");
     EXPECT_FALSE(std::filesystem::exists(dir / "out"));
 }
 

@@ -13,6 +13,8 @@
 #include <set>
 #include <system_error>
 
+#include "input_stream.hpp"
+
 namespace zraster::cli {
 namespace {
 
@@ -94,15 +96,14 @@ std::vector<BatchInput> find_inputs(const std::vector<std::string>& paths,
 }
 
 std::vector<std::string> read_path_list(const std::string& list, std::istream& standard_input) {
-    std::ifstream file;
+    std::unique_ptr<std::istream> file;
     if (list != "-") {
         std::error_code ec;
         if (std::filesystem::is_directory(list, ec))
             throw InputError("--list " + list, "is a folder, not a list of paths");
-        file.open(list);
-        if (!file) throw InputError("--list " + list, "cannot open the list");
+        file = open_input_stream(list, "--list " + list);
     }
-    std::istream& in = list == "-" ? standard_input : file;
+    std::istream& in = list == "-" ? standard_input : *file;
     // Lines read within bounds: a device (/dev/zero) or a binary file is one endless line.
     constexpr std::size_t kMaxLine = 4096, kMaxPaths = 10'000'000;
     std::vector<std::string> paths;

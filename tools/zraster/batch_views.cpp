@@ -15,9 +15,12 @@
 
 #include "camera_ranges.hpp"
 #include "command_line.hpp"
+#include "input_stream.hpp"
 
 namespace zraster::cli {
 namespace {
+
+constexpr std::size_t kMaxViewsJsonBytes = std::size_t(16) << 20;
 
 using Json = nlohmann::json;
 
@@ -247,11 +250,18 @@ std::vector<BatchView> orbit_views(int count, double elevation, std::optional<do
 }
 
 std::vector<BatchView> read_views_json(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path.string(), "cannot open the --views-json file");
+    // At most 16 MiB (1000 cameras take far less): a device such as /dev/zero is not read for ever.
+    const std::unique_ptr<std::istream> in =
+        open_input_stream(path, "--views-json " + path.string());
+    std::string text(kMaxViewsJsonBytes + 1, '\0');
+    in->read(text.data(), std::streamsize(text.size()));
+    text.resize(std::size_t(in->gcount()));
+    if (text.size() > kMaxViewsJsonBytes)
+        throw InputError(path.string(),
+                         "longer than 16 MiB: more than the 1000 cameras a batch takes");
     Json document;
     try {
-        document = Json::parse(in);
+        document = Json::parse(text);
     } catch (const Json::exception& e) {
         throw InputError(path.string(), "not valid JSON: " + io::json_error_text(e));
     }

@@ -29,6 +29,7 @@ int run_pvs(const PvsArguments& a) {
         throw InputError("--slack", "must be a finite number >= 0");
     OutputFiles outputs;
     outputs.check(a.output, "-o");
+    outputs.check_input(a.scene, "");  // (a procedural spec names no file)
     const Scene scene = load_scene_or_procedural(a.scene, nullptr, &outputs);
     if (!scene.cells)
         throw InputError(a.scene, "the scene has no cells (building:RxC or a .cells.json file)");
