@@ -134,6 +134,9 @@ std::shared_ptr<PyScene> load(const py::object& path_object, const std::string& 
     const auto path = py::module_::import("os").attr("fspath")(path_object);
     if (!py::isinstance<py::str>(path)) type_error("path", "a str path", path);
     const std::string spec = path.cast<std::string>();
+    // The system would read the path only up to it (Python's own open() refuses it too).
+    if (spec.find('\0') != std::string::npos)
+        input_error("path", "contains a NUL character: no file has such a name");
     LoadOptions options;
     if (isolation == "worker")
         options.isolation = LoadIsolation::WorkerProcess;

@@ -281,6 +281,13 @@ def test_a_scene_of_triangles_without_area_is_refused():
              "corners, or a transform that flattens them): nothing to draw")
     with raises(zraster.InputError, cause):
         zraster.Renderer(8, 8).render(zraster.Scene([flat, flat]))
+    empty = zraster.Mesh(np.zeros((0, 3), np.float32), np.zeros((0, 3), np.uint32))
+    with raises(zraster.InputError, "scene: no triangles: nothing to draw"):
+        zraster.Renderer(8, 8).render(empty)
+    with raises(zraster.InputError, "scene: no triangles: nothing to draw"):
+        zraster.Renderer(8, 8).render(zraster.Scene([]))
+    with raises(zraster.InputError, "path: contains a NUL character"):
+        zraster.load("builtin:cube\x00junk")
     # One triangle with area is enough to draw.
     out = zraster.Renderer(8, 8).render(zraster.Scene([flat, zraster.Mesh.box()]))
     assert out["color"].shape == (8, 8, 3)

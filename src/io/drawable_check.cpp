@@ -80,7 +80,8 @@ void check_some_triangle_has_area(const SceneView& scene, const std::string& nam
             ++triangles;
         }
     }
-    if (triangles != 0) refuse(name, triangles);
+    if (triangles == 0) throw InputError(name, "no triangles: nothing to draw");
+    refuse(name, triangles);
 }
 
 }  // namespace zraster::io

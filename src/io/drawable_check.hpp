@@ -12,7 +12,8 @@ namespace zraster::io {
 // Throws InputError(file, ...) when no triangle of any instance has a nonzero area as placed.
 void check_some_triangle_has_area(const Scene& scene, const std::string& file);
 // The same over views (the Python module's scenes of the caller's arrays), `name` naming the
-// scene. Triangles with an index past the vertices are passed over (the renderer refuses them).
+// scene; a scene of no triangles at all is refused too, as the loaders refuse such files.
+// Triangles with an index past the vertices are passed over (the renderer refuses them).
 void check_some_triangle_has_area(const SceneView& scene, const std::string& name);
 
 }  // namespace zraster::io
