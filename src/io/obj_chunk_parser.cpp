@@ -190,8 +190,13 @@ class ChunkParser {
             if (n >= 0 && n < 3)
                 return error(line, "a vertex of " + std::to_string(n) +
                                        (n == 1 ? " number" : " numbers") + "; x y z are needed");
-            return leave(line, n < 0 ? "vertex coordinate that is not a plain number"
-                                     : "vertex with " + std::to_string(n) + " numbers");
+            // (Assimp misreads these as well, and blames a vertex index.)
+            if (n >= 0)
+                return error(line, "a vertex of " + std::to_string(n) +
+                                       " numbers; a vertex is x y z, x y z w or x y z r g b");
+            // (More than 7 numbers, or numbers this reader does not take: the Assimp path's
+            // scan tells them apart.)
+            return leave(line, "vertex coordinate that is not a plain number");
         }
         if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
             c_.non_finite_positions.emplace_back(static_cast<std::uint32_t>(positions_), line);

@@ -214,6 +214,9 @@ void check_obj_indices(const std::filesystem::path& path, const LoadOptions& opt
         if (w[0] == "v" && w.size() < 4)
             refuse("a vertex of " + std::to_string(w.size() - 1) +
                    (w.size() == 2 ? " number" : " numbers") + "; x y z are needed");
+        if (w[0] == "v" && w.size() != 4 && w.size() != 5 && w.size() != 7)
+            refuse("a vertex of " + std::to_string(w.size() - 1) +
+                   " numbers; a vertex is x y z, x y z w or x y z r g b");
         if (w[0] == "f" && w.size() > 1 && w.size() < 4)  // ("f" alone: ignored by both)
             refuse("a face of " + std::to_string(w.size() - 1) +
                    (w.size() == 2 ? " corner" : " corners") + "; a face needs at least 3");

@@ -170,6 +170,13 @@ std::vector<Malformed> malformed_files() {
          "line 7: a face of 1 corner; a face needs at least 3"},
         {"short-vertex-assimp.obj", tri + "v 1 1 0\nv 2 0 0\nf 1 2 5 4 3\nv 0 0\n",
          "line 7: a vertex of 2 numbers; x y z are needed"},
+        // Vertices of 5, 7 or more numbers: Assimp misreads them and blames a vertex index.
+        {"five-numbers.obj", "v 0 0 0 1 1\n" + tri + "f 2 3 4\n",
+         "line 1: a vertex of 5 numbers; a vertex is x y z, x y z w or x y z r g b"},
+        {"eight-numbers.obj", "v 0 0 0 1 1 1 1 1\n" + tri + "f 2 3 4\n",
+         "line 1: a vertex of 8 numbers; a vertex is x y z, x y z w or x y z r g b"},
+        {"seven-numbers-assimp.obj", tri + "v 1 1 0\nv 2 0 0\nf 1 2 5 4 3\nv 0 0 0 1 0 0 0\n",
+         "line 7: a vertex of 7 numbers; a vertex is x y z, x y z w or x y z r g b"},
         // OBJ texture and normal indices, which Assimp would clamp or drop without a word.
         {"uv.obj", tri + "vt 0 0\nf 1/99 2/1 3/1\n",
          "line 5: texture coordinate index out of range (99; the file has 1 texture coordinates)"},
