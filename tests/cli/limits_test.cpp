@@ -293,6 +293,13 @@ TEST(CliLimits, WholeNumbersAreReadInDecimal) {
                    "zraster: --threads: expected a whole number in decimal, got '0x10'\n");
     expect_refused(dir, "svg builtin:cube --precision 010 -o out.svg",
                    "zraster: --precision: must be 0..6, not 10\n");
+    // Not whole numbers (CLI11 alone called 1e3 "not in range", and '1 ' not convertible).
+    expect_refused(dir, "render builtin:cube --max-texture-side 1e3 -o out.png",
+                   "zraster: --max-texture-side: expected a whole number, got '1e3'\n");
+    expect_refused(dir, "bench builtin:cube --frames '1 '",
+                   "zraster: --frames: expected a whole number, got '1 '\n");
+    expect_refused(dir, "render builtin:cube --threads 2.0 -o out.png",
+                   "zraster: --threads: expected a whole number, got '2.0'\n");
 }
 
 TEST(CliLimits, CameraNumbersHaveRanges) {
@@ -568,7 +575,7 @@ TEST(CliLimits, CoveredSamplesExactly) {
     }
     expect_refused(dir, cube + "--view overdraw --max-covered-samples 0", "--max-covered-samples");
     expect_refused(dir, cube + "--msaa --aa 4 --max-covered-samples 1e9",
-                   "--max-covered-samples: expected a positive whole number, got '1e9'");
+                   "--max-covered-samples: expected a whole number, got '1e9'");
 }
 
 // A fragment budget raised past what the machine holds: the A-buffer's allocation fails under

@@ -15,6 +15,10 @@ CLI::Validator decimal() {
             if (zeros > sign && text.find_first_of("xXbBoO", zeros) == zeros)
                 return "expected a whole number in decimal, got '" + text + "'";
             text.erase(sign, zeros - sign);
+            // ("1e3", "1.0", "5 ": CLI11's own range check would call them out of range.)
+            if (text.size() == sign ||
+                text.find_first_not_of("0123456789", sign) != std::string::npos)
+                return "expected a whole number, got '" + text + "'";
             return {};
         },
         "", "decimal");
