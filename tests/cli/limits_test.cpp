@@ -229,6 +229,14 @@ TEST(CliLimits, FlagsWithoutEffectAreRefused) {
         {"batch builtin:cube -o out.png --visibility warnock --no-depth-test",
          "zraster: --no-depth-test: sets the z-buffer's depth test, which --visibility warnock "
          "does not use\n"},
+        {"render builtin:cube -o out.png --visibility painter --occlusion-cull",
+         "zraster: --occlusion-cull: is a stage of the z-buffer's pipeline, which --visibility "
+         "painter does not use\n"},
+        {"render builtin:cube -o out.png --aa 4 --msaa --shading-strategy deferred",
+         "zraster: --shading-strategy: is a stage of the z-buffer's pipeline, which --msaa does "
+         "not use\n"},
+        {"render builtin:cube -o out.png --shading unlit --infinite-viewer",
+         "zraster: --infinite-viewer: shapes highlights, which --shading unlit does not draw\n"},
         {"svg builtin:cube -o out.svg --edge-width 2",
          "zraster: --edge-width: styles the outlines --edges draws: give --edges\n"},
         {"svg builtin:cube -o out.svg --edge-color 9,9,9",

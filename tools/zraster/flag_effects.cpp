@@ -40,10 +40,26 @@ std::vector<std::string> depth_compare_warnings(const RenderArguments& a) {
                                                : "")};
 }
 
+// The culling passes and the shading strategy are stages of the z-buffer's tiled pipeline.
+void check_pipeline_flags(const RenderArguments& a) {
+    if (a.visibility == "zbuffer" && !a.msaa) return;
+    const char* flag = a.occlusion_cull                                 ? "--occlusion-cull"
+                       : a.portal_cull != RenderArguments{}.portal_cull ? "--portal-cull"
+                       : a.strategy != RenderArguments{}.strategy       ? "--shading-strategy"
+                                                                        : nullptr;
+    if (flag == nullptr) return;
+    throw InputError(flag, std::string("is a stage of the z-buffer's pipeline, which ") +
+                               (a.msaa ? "--msaa does not use"
+                                       : "--visibility " + a.visibility + " does not use"));
+}
+
 void check_shading_flags(const RenderArguments& a) {
     if (a.shading == "unlit" && (!a.light_dirs.empty() || !a.point_lights.empty()))
         throw InputError(a.light_dirs.empty() ? "--point-light" : "--light-dir",
                          "lights nothing with --shading unlit (colors are drawn as they are)");
+    if (a.shading == "unlit" && (a.infinite_viewer || a.reflection != RenderArguments{}.reflection))
+        throw InputError(a.infinite_viewer ? "--infinite-viewer" : "--reflection",
+                         "shapes highlights, which --shading unlit does not draw");
     if (a.no_textures && a.texture_filter != RenderArguments{}.texture_filter)
         throw InputError("--texture-filter", "filters textures, which --no-textures turns off");
 }
@@ -52,6 +68,7 @@ void check_shading_flags(const RenderArguments& a) {
 
 std::vector<std::string> check_flags_take_effect(const RenderArguments& a) {
     check_depth_test_flags(a);
+    check_pipeline_flags(a);
     if (a.edge_color != RenderArguments{}.edge_color && !a.wireframe && !a.hidden_line)
         throw InputError("--edge-color",
                          "colors the edges of --wireframe or --hidden-line: "
