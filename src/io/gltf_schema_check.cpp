@@ -3,9 +3,11 @@
 
 #include <zraster/error.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace zraster::io {
 namespace {
@@ -156,6 +158,44 @@ class SchemaChecker {
                 if (!child.is_number_unsigned() || child.get<std::uint64_t>() >= nodes.size())
                     refuse("node " + std::to_string(n) + ": child " + child.dump() +
                            " is not a node of the file's " + std::to_string(nodes.size()));
+            placement(n, nodes[n]);
+        }
+    }
+
+    // A node's placement as glTF 2.0 defines it (the importer takes any numbers: a projective
+    // matrix blanks the image, a quaternion of length 10 scales the node by 100, NaN spreads).
+    void placement(std::size_t n, const json& node) const {
+        const std::string name = "node " + std::to_string(n) + ": ";
+        const auto numbers = [&](const char* field, std::size_t count) -> std::vector<double> {
+            const auto v = node.find(field);
+            if (v == node.end()) return {};
+            std::vector<double> out;
+            if (v->is_array() && v->size() == count)
+                for (const json& x : *v)
+                    if (x.is_number() && std::isfinite(x.get<double>()))
+                        out.push_back(x.get<double>());
+            if (out.size() != count)
+                refuse(name + "\"" + field + "\" must be " + std::to_string(count) +
+                       " finite numbers, not " + v->dump());
+            return out;
+        };
+        const std::vector<double> matrix = numbers("matrix", 16);
+        const std::vector<double> rotation = numbers("rotation", 4);
+        const bool parts =
+            !numbers("translation", 3).empty() || !rotation.empty() || !numbers("scale", 3).empty();
+        if (!matrix.empty() && parts)
+            refuse(name +
+                   "has a \"matrix\" and translation, rotation or scale: glTF 2.0 allows "
+                   "one or the other");
+        if (!matrix.empty() &&
+            (matrix[3] != 0.0 || matrix[7] != 0.0 || matrix[11] != 0.0 || matrix[15] != 1.0))
+            refuse(name + "\"matrix\" is not affine (its last row must be 0, 0, 0, 1)");
+        if (!rotation.empty()) {
+            const double length = std::sqrt(rotation[0] * rotation[0] + rotation[1] * rotation[1] +
+                                            rotation[2] * rotation[2] + rotation[3] * rotation[3]);
+            if (!(std::abs(length - 1.0) <= 1e-3))
+                refuse(name + "\"rotation\" is not a unit quaternion (length " +
+                       std::to_string(length) + ")");
         }
     }
 

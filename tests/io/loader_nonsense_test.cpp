@@ -188,6 +188,34 @@ TEST(LoaderNonsense, GltfMinVersionsAbove20AreRefused) {
     test::expect_input_error([&] { load_scene(path); }, path, "no scene to draw");
 }
 
+// Node placements as glTF 2.0 defines them; the importer took any numbers (a projective matrix
+// blanked the image, a quaternion of length 100 scaled the node by 10^4).
+TEST(LoaderNonsense, GltfNodePlacementsAreChecked) {
+    const auto dir = test::temp_dir("nonsense-gltf-nodes");
+    const auto path = dir / "n.gltf";
+    struct Case {
+        std::string node, cause;
+    };
+    for (const Case& c : {
+             Case{R"("matrix":[1,0,0,0,0,1,0,0,0,0,1,0,0,0,0,1],"translation":[1,0,0])",
+                  "node 0: has a \"matrix\" and translation, rotation or scale: glTF 2.0 allows "
+                  "one or the other"},
+             Case{R"("matrix":[1,0,0,1,0,1,0,1,0,0,1,1,0,0,0,0])",
+                  "node 0: \"matrix\" is not affine (its last row must be 0, 0, 0, 1)"},
+             Case{R"("rotation":[0,0,0,0])",
+                  "node 0: \"rotation\" is not a unit quaternion (length 0.000000)"},
+             Case{R"("rotation":[0,0,10,0])",
+                  "node 0: \"rotation\" is not a unit quaternion (length 10.000000)"},
+             Case{R"("rotation":[0,0,"nan",1])",
+                  "node 0: \"rotation\" must be 4 finite numbers, not [0,0,\"nan\",1]"},
+             Case{R"("scale":[1,1])", "node 0: \"scale\" must be 3 finite numbers, not [1,1]"},
+         }) {
+        SCOPED_TRACE(c.node);
+        test::write_bytes(path, R"({"asset":{"version":"2.0"},"nodes":[{)" + c.node + "}]}");
+        test::expect_input_error([&] { load_scene(path); }, path, c.cause);
+    }
+}
+
 // What Assimp's validation would refuse in its own terms ("aiCamera::mClipPlaneFar must be >=
 // ...", "Member \"index\" was not of type \"uint\""), refused in the file's.
 TEST(LoaderNonsense, GltfCamerasAndMaterialReferencesAreCheckedInTheFilesTerms) {
