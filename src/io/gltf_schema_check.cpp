@@ -64,6 +64,7 @@ class SchemaChecker {
         extensions();
         strides();
         attributes();
+        zero_accessors();
         nodes();
         scene();
         cameras();
@@ -125,6 +126,32 @@ class SchemaChecker {
             for (std::size_t p = 0; p < primitives.size(); ++p)
                 if (primitives[p].is_object()) f(m, p, primitives[p]);
         }
+    }
+
+    // An accessor without a bufferView holds zeros (glTF 2.0), which the importer cannot read
+    // unless sparse values replace some ("data is null when extracting data from accessors").
+    void zero_accessors() const {
+        const json& accessors = array_of(document_, "accessors");
+        const auto check = [&](const json& index, const std::string& use) {
+            if (!index.is_number_unsigned() || index.get<std::uint64_t>() >= accessors.size())
+                return;
+            const json& accessor = accessors[index.get<std::size_t>()];
+            if (accessor.is_object() && !accessor.contains("bufferView") &&
+                !accessor.contains("sparse"))
+                refuse(use + " reads accessor " + index.dump() +
+                       ", which has no bufferView (its values would all be zero): not "
+                       "supported");
+        };
+        for_each_primitive([&](std::size_t m, std::size_t p, const json& primitive) {
+            const std::string at =
+                "mesh " + std::to_string(m) + ", primitive " + std::to_string(p) + ": ";
+            if (const auto attributes = primitive.find("attributes");
+                attributes != primitive.end() && attributes->is_object())
+                for (const auto& [name, index] : attributes->items())
+                    check(index, at + "attribute " + name);
+            if (const auto indices = primitive.find("indices"); indices != primitive.end())
+                check(*indices, at + "indices");
+        });
     }
 
     void attributes() const {

@@ -214,6 +214,14 @@ TEST(LoaderNonsense, GltfNodePlacementsAreChecked) {
         test::write_bytes(path, R"({"asset":{"version":"2.0"},"nodes":[{)" + c.node + "}]}");
         test::expect_input_error([&] { load_scene(path); }, path, c.cause);
     }
+    // An accessor of zeros (no bufferView, no sparse values), which the importer cannot read.
+    test::write_bytes(
+        path, R"({"asset":{"version":"2.0"},"accessors":[{"componentType":5126,"count":3,)"
+              R"("type":"VEC3","min":[0,0,0],"max":[1,1,0]}],"meshes":[{"primitives":[)"
+              R"({"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}]})");
+    test::expect_input_error([&] { load_scene(path); }, path,
+                             "mesh 0, primitive 0: attribute POSITION reads accessor 0, which has "
+                             "no bufferView (its values would all be zero): not supported");
 }
 
 // What Assimp's validation would refuse in its own terms ("aiCamera::mClipPlaneFar must be >=
