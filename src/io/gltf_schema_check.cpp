@@ -142,9 +142,33 @@ class SchemaChecker {
                        ", which has no bufferView (its values would all be zero): not "
                        "supported");
         };
+        for (std::size_t a = 0; a < accessors.size(); ++a) {
+            if (!accessors[a].is_object()) continue;
+            const auto normalized = accessors[a].find("normalized");
+            const auto type = accessors[a].find("componentType");
+            if (normalized != accessors[a].end() && *normalized == true &&
+                type != accessors[a].end() && (*type == 5126 || *type == 5125))
+                refuse("accessor " + std::to_string(a) + ": \"normalized\" is true for " +
+                       (*type == 5126 ? "float" : "32-bit integer") +
+                       " components (glTF 2.0 allows it for 8- and 16-bit integers only)");
+        }
         for_each_primitive([&](std::size_t m, std::size_t p, const json& primitive) {
             const std::string at =
                 "mesh " + std::to_string(m) + ", primitive " + std::to_string(p) + ": ";
+            if (const auto attributes = primitive.find("attributes");
+                attributes != primitive.end() && attributes->is_object())
+                for (const char* name : {"POSITION", "NORMAL", "TANGENT"}) {
+                    const auto index = attributes->find(name);
+                    if (index == attributes->end() || !index->is_number_unsigned() ||
+                        index->get<std::uint64_t>() >= accessors.size() ||
+                        !accessors[index->get<std::size_t>()].is_object())
+                        continue;
+                    const json& accessor = accessors[index->get<std::size_t>()];
+                    if (accessor.value("componentType", json()) == 5125)
+                        refuse(at + "attribute " + name + " reads accessor " + index->dump() +
+                               " of 32-bit integers (glTF 2.0: floats, or normalized 8- and "
+                               "16-bit integers)");
+                }
             if (const auto attributes = primitive.find("attributes");
                 attributes != primitive.end() && attributes->is_object())
                 for (const auto& [name, index] : attributes->items())
