@@ -60,13 +60,22 @@ void explain_painter(const ExplainInput& in, ExplainOutput& out) {
     };
     PainterOptions options;
     options.observer = &observer;
+    options.progress = in.options.progress;
     options.max_comparisons = painter_comparison_budget(in.options.limits, input);
     const PainterResult result =
         painter_sort(std::move(polygons), Viewport{in.options.width, in.options.height}, options);
     const glm::vec3 bg = in.options.background * 255.0f;
     const Rgba background{std::uint8_t(bg.x), std::uint8_t(bg.y), std::uint8_t(bg.z), 255};
+    const std::vector<std::size_t> counts = frame_counts(result.order.size(), in.step);
+    check_explain_pixels(counts.size(),
+                         std::uint64_t(in.options.width) * std::uint64_t(in.options.height),
+                         in.max_pixels, fmt::format("explain painter's {} frames", counts.size()),
+                         "or raise --step");
     std::vector<RgbaImage> frames;
-    for (const std::size_t n : frame_counts(result.order.size(), in.step)) {
+    for (const std::size_t n : counts) {
+        if (in.options.progress != nullptr)
+            in.options.progress->report("explain painter: painting the frames",
+                                        double(frames.size()) / double(counts.size()));
         RgbaImage image(in.options.width, in.options.height, background);
         for (std::size_t i = 0; i < n; ++i) {
             const ScreenPolygon& p = result.order[i];

@@ -64,6 +64,9 @@ void explain_warnock(const ExplainInput& in, ExplainOutput& out) {
         polygons, in.options, effective_camera(in.scene, in.options), &observer, &in.scene);
     const RgbaImage base = color_image(result.targets);
     const std::size_t levels = result.stats.regions_per_level.size();
+    check_explain_pixels(levels + 1,
+                         std::uint64_t(in.options.width) * std::uint64_t(in.options.height),
+                         in.max_pixels, fmt::format("explain warnock's {} pictures", levels + 1));
     std::vector<RgbaImage> frames;
     for (std::size_t level = 0; level < levels; ++level) {
         std::size_t counts[5] = {};
