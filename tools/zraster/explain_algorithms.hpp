@@ -18,6 +18,11 @@ struct ExplainInput {
     const RenderOptions& options;
     int step = 0;                                         // 0: about 8 frames
     std::uint64_t max_pixels = kDefaultMaxExplainPixels;  // of all its pictures
+
+    // Progress of a stage of the pictures (options.progress: silent for two seconds).
+    void report(const char* stage, double fraction) const {
+        if (options.progress != nullptr) options.progress->report(stage, fraction);
+    }
 };
 
 void explain_zbuffer(const ExplainInput& in, ExplainOutput& out);

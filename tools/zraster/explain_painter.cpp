@@ -73,9 +73,8 @@ void explain_painter(const ExplainInput& in, ExplainOutput& out) {
                          "or raise --step");
     std::vector<RgbaImage> frames;
     for (const std::size_t n : counts) {
-        if (in.options.progress != nullptr)
-            in.options.progress->report("explain painter: painting the frames",
-                                        double(frames.size()) / double(counts.size()));
+        in.report("explain painter: painting the frames",
+                  double(frames.size()) / double(counts.size()));
         RgbaImage image(in.options.width, in.options.height, background);
         for (std::size_t i = 0; i < n; ++i) {
             const ScreenPolygon& p = result.order[i];
@@ -92,6 +91,7 @@ void explain_painter(const ExplainInput& in, ExplainOutput& out) {
                                "red outline: pieces of split polygons; yellow: moved ahead",
                                n, result.order.size(), input)));
     }
+    in.report("explain painter: encoding the pictures", 0.0);
     for (std::size_t i = 0; i < frames.size(); ++i)
         out.still(fmt::format("painter-{:02}", i + 1), frames[i],
                   fmt::format("painting order, frame {} of {}", i + 1, frames.size()));

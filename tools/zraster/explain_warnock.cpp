@@ -69,6 +69,7 @@ void explain_warnock(const ExplainInput& in, ExplainOutput& out) {
                          in.max_pixels, fmt::format("explain warnock's {} pictures", levels + 1));
     std::vector<RgbaImage> frames;
     for (std::size_t level = 0; level < levels; ++level) {
+        in.report("explain warnock: drawing the levels", double(level) / double(levels));
         std::size_t counts[5] = {};
         for (const RegionRecord& r : records)
             if (r.level == level) ++counts[std::size_t(r.outcome)];
@@ -79,9 +80,12 @@ void explain_warnock(const ExplainInput& in, ExplainOutput& out) {
                         level, result.stats.regions_per_level[level], counts[0], counts[1],
                         counts[2], counts[3], counts[4])));
     }
-    for (std::size_t i = 0; i < frames.size(); ++i)
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+        in.report("explain warnock: encoding the pictures", double(i) / double(frames.size()));
         out.still(fmt::format("warnock-level-{:02}", i), frames[i],
                   fmt::format("the regions of subdivision level {} and the leaves above it", i));
+    }
+    in.report("explain warnock: encoding the animation", 0.0);
     out.animation("warnock-animation", frames, 800, "the subdivision level by level");
     out.still("warnock-result", base, "the image Warnock's algorithm drew");
 }
