@@ -54,6 +54,16 @@ RgbaImage level_picture(const RgbaImage& base, const std::vector<RegionRecord>& 
 }  // namespace
 
 void explain_warnock(const ExplainInput& in, ExplainOutput& out) {
+    // Counted before the subdivision: halving the larger side down to one pixel takes at most
+    // 1 + ceil(log2(side)) levels (any edge in the scene reaches the last), and a picture each,
+    // and the result.
+    std::size_t most_levels = 1;
+    for (int side = std::max(in.options.width, in.options.height); side > 1; side -= side / 2)
+        ++most_levels;
+    check_explain_pixels(
+        most_levels + 1, std::uint64_t(in.options.width) * std::uint64_t(in.options.height),
+        in.max_pixels,
+        fmt::format("explain warnock's {} pictures (levels and result)", most_levels + 1));
     const std::vector<ScreenPolygon> polygons = project_scene(in.scene, in.options);
     std::vector<RegionRecord> records;
     WarnockObserver observer;
@@ -64,9 +74,6 @@ void explain_warnock(const ExplainInput& in, ExplainOutput& out) {
         polygons, in.options, effective_camera(in.scene, in.options), &observer, &in.scene);
     const RgbaImage base = color_image(result.targets);
     const std::size_t levels = result.stats.regions_per_level.size();
-    check_explain_pixels(levels + 1,
-                         std::uint64_t(in.options.width) * std::uint64_t(in.options.height),
-                         in.max_pixels, fmt::format("explain warnock's {} pictures", levels + 1));
     std::vector<RgbaImage> frames;
     for (std::size_t level = 0; level < levels; ++level) {
         in.report("explain warnock: drawing the levels", double(level) / double(levels));
