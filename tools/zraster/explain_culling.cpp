@@ -80,7 +80,10 @@ std::array<std::uint32_t, 3> triangle_outcodes(const glm::mat4& mvp, const Mesh&
 void two_views(ExplainOutput& out, const std::string& name, const Scene& colored,
                const RenderOptions& options, const Camera& camera, CullMode camera_cull,
                const std::string& legend, const std::string& caption) {
+    const std::string stage = "explain " + name + ": drawing the two views";
+    if (options.progress != nullptr) options.progress->report(stage.c_str(), 0.0);
     RgbaImage from_camera = draw_from(colored, options, camera, camera_cull);
+    if (options.progress != nullptr) options.progress->report(stage.c_str(), 0.5);
     const Camera side = side_camera(camera);
     RgbaImage from_side = draw_from(colored, options, side, CullMode::None);
     draw_frustum(from_side, side, camera, double(options.width) / double(options.height));
@@ -164,6 +167,7 @@ void explain_occlusion_culling(const ExplainInput& in, ExplainOutput& out) {
     enum Class { kVisible, kHiddenDrawn, kOcclusionCulled, kOutside };
     std::vector<int> class_of_instance(in.scene.instances.size(), kOutside);
     std::size_t counts[4] = {};
+    in.report("explain occlusion-culling: drawing the culled frame", 0.0);
     {  // (the frame's targets go before the two views are drawn)
         const RenderResult frame = render(in.scene, options);
         const std::set<std::int32_t> visible(frame.targets.instance_id.begin(),
