@@ -544,6 +544,11 @@ row "--light-dir with --shading unlit" render builtin:cube --size 8x8 --shading 
 row "svg --edge-width without --edges" svg builtin:cube --size 8x8 --edge-width 2 -o out.svg
 row "--reversed-z --depth-compare less (a warning: nothing passes)" render builtin:cube --size 8x8 --reversed-z --depth-compare less -o out.png
 rm -f out.png
+# explain's pictures past their budget (each frame is held until the folder is written): refused
+# before the first frame, and no folder made.
+row "explain zbuffer: nine frames of 8192x8192 (past --max-explain-pixels)" explain zbuffer sphere:2000 --size 8192x8192 -o out.d
+row "explain hiz: its views at 8192x8192 (past --max-explain-pixels)" explain hiz city:2000 --size 8192x8192 -o out.d
+rm -rf out.d
 echo
 echo "$n inputs; $failures broke the contract (exit 2, one line, nothing left)."
 [ "$failures" -eq 0 ]

@@ -223,6 +223,17 @@ TEST(CommandOutputs, AFailedExplainLeavesNoFolder) {
     EXPECT_EQ(names_in(dir), std::vector<std::string>{"soup.ply"});
 }
 
+// The folder is made only when the pictures are written: SIGTERM during the frames leaves none.
+TEST(CommandOutputs, AKilledExplainLeavesNoFolder) {
+    const auto dir = temp_dir("outputs-explain-killed");
+    const CommandResult r = run_shell_line(
+        "cd '" + dir.string() + "' && { '" + ZRASTER_CLI +
+        "' explain zbuffer city:20000 --size 2048x2048 -o ex/deeper 2>/dev/null & pid=$!; "
+        "sleep 1; kill -TERM $pid; wait $pid; echo rc=$?; }");
+    EXPECT_NE(r.output.find("rc=143"), std::string::npos) << r.output;  // 128 + SIGTERM
+    EXPECT_TRUE(names_in(dir).empty());
+}
+
 // Past `ulimit -f` a write fails with EFBIG (SIGXFSZ is ignored): exit 2, no temporary left.
 TEST(CommandOutputs, AFileSizeLimitIsExitTwoAndLeavesNoTemporary) {
     const auto dir = temp_dir("outputs-ulimit");

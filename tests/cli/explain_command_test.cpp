@@ -154,6 +154,15 @@ TEST(ExplainCommand, WarnockResultIsTheVisibilityFlagsImage) {
     EXPECT_EQ(a.rgba, b.rgba);
 }
 
+// building:RxC carries a cell graph for all its instances: the frames short of some draw
+// without it.
+TEST(ExplainCommand, ZbufferFramesOfABuildingWithCells) {
+    const auto dir = temp_dir("explain-zbuffer-cells");
+    const CommandResult r = run_zraster("explain zbuffer building:3x3 --size 80x60 -o out", dir);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_TRUE(std::filesystem::exists(dir / "out" / "zbuffer-animation.png"));
+}
+
 TEST(ExplainCommand, BadInputIsExitTwoWithOneLine) {
     const auto dir = temp_dir("explain-bad");
     const CommandResult unknown = run_zraster("explain quadtree sphere:20 -o out", dir);

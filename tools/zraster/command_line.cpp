@@ -56,6 +56,7 @@ std::string limit_advice(const std::string& limit) {
         {"max_painted_fragments", "--max-painted-fragments"},
         {"max_pixels", "--max-pixels"},
         {"max_bin_bytes", "--max-bin-bytes"},
+        {"max_explain_pixels", "--max-explain-pixels"},
         {"max_covered_samples", "--max-covered-samples"},
         {"max_instances", "--max-instances"},
         {"max_triangles", "--max-triangles"},

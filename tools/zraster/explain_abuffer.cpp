@@ -53,6 +53,11 @@ void mask_grid(Figure& f, double x, double y, int n, double cell, std::uint64_t 
 void explain_abuffer(const ExplainInput& in, ExplainOutput& out) {
     const int n = in.arguments.aa > 1 ? in.arguments.aa : 4;
     const int w = in.options.width, h = in.options.height;
+    // The frame with its zoomed inset, and the lists' heads (one per pixel).
+    check_explain_pixels(1,
+                         (std::uint64_t(w) + 128) * std::uint64_t(std::max(h, 120)) +
+                             std::uint64_t(w) * std::uint64_t(h),
+                         in.max_pixels, "explain abuffer's picture and per-pixel lists");
     // The frame first: the A-buffer refuses fragments past its budget (--max-abuffer-fragments)
     // before storing them, and frees its own when done. The lists below hold the same fragments
     // (polygon_coverage's masks are the ones it stores), so they are within the budget too, and

@@ -6,6 +6,7 @@
 #include <zraster/render.hpp>
 #include <zraster/scene.hpp>
 
+#include "explain_budget.hpp"
 #include "explain_output.hpp"
 #include "render_arguments.hpp"
 
@@ -15,7 +16,13 @@ struct ExplainInput {
     const RenderArguments& arguments;
     const Scene& scene;  // empty for the 2D algorithms
     const RenderOptions& options;
-    int step = 0;  // 0: about 8 frames
+    int step = 0;                                         // 0: about 8 frames
+    std::uint64_t max_pixels = kDefaultMaxExplainPixels;  // of all its pictures
+
+    // Progress of a stage of the pictures (options.progress: silent for two seconds).
+    void report(const char* stage, double fraction) const {
+        if (options.progress != nullptr) options.progress->report(stage, fraction);
+    }
 };
 
 void explain_zbuffer(const ExplainInput& in, ExplainOutput& out);

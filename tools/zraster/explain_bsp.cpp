@@ -116,13 +116,21 @@ void explain_bsp(const ExplainInput& in, ExplainOutput& out) {
     BspOptions options;
     options.max_polygons = bsp_polygon_budget(in.options.limits, polygons.size());
     options.max_classifications = bsp_classification_budget(in.options.limits, polygons.size());
+    options.progress = in.options.progress;
     const BspTree tree = BspTree::build(std::move(polygons), options);
     const TreeLayout t = layout(tree);
     const Camera camera = effective_camera(in.scene, in.options);
     const std::vector<std::uint32_t> order = tree.back_to_front(bsp_eye(camera));
     const std::size_t levels = std::min<std::size_t>(tree.stats().depth, 8);
+    const std::vector<std::size_t> counts = frame_counts(order.size(), in.step);
+    // The levels, the walk's frames and its last frame again.
+    check_explain_pixels(
+        levels + counts.size() + 1,
+        std::uint64_t(in.options.width) * std::uint64_t(in.options.height), in.max_pixels,
+        fmt::format("explain bsp's {} pictures", levels + counts.size() + 1), "or raise --step");
     std::vector<RgbaImage> frames;
     for (std::size_t level = 0; level < levels; ++level) {
+        in.report("explain bsp: drawing the levels", double(level) / double(levels));
         const RgbaImage image =
             paint(tree, order, order.size(), camera, in.options, [&](std::uint32_t p) {
                 const std::int32_t node = t.node_of_polygon[p];
@@ -135,6 +143,7 @@ void explain_bsp(const ExplainInput& in, ExplainOutput& out) {
                                          "colors = the subtrees (cells of space) at level {}",
                                          level, level == 0 ? 0 : level - 1, level)));
     }
+    in.report("explain bsp: encoding the levels", 0.0);
     for (std::size_t i = 0; i < frames.size(); ++i)
         out.still(fmt::format("bsp-level-{:02}", i), frames[i],
                   fmt::format("the partition at tree level {}", i));
@@ -142,7 +151,8 @@ void explain_bsp(const ExplainInput& in, ExplainOutput& out) {
     std::vector<std::size_t> rank_of(tree.polygons().size(), 0);
     for (std::size_t i = 0; i < order.size(); ++i) rank_of[order[i]] = i;
     std::vector<RgbaImage> walk;
-    for (const std::size_t n : frame_counts(order.size(), in.step)) {
+    for (const std::size_t n : counts) {
+        in.report("explain bsp: drawing the walk", double(walk.size()) / double(counts.size()));
         const RgbaImage image = paint(tree, order, n, camera, in.options, [&](std::uint32_t p) {
             const auto far =
                 std::uint8_t(255 * rank_of[p] / std::max<std::size_t>(order.size(), 1));
@@ -152,6 +162,7 @@ void explain_bsp(const ExplainInput& in, ExplainOutput& out) {
                                                     "polygons painted (blue far, red near)",
                                                     n, order.size())));
     }
+    in.report("explain bsp: encoding the pictures", 0.0);
     out.animation("bsp-order", walk, 700, "the back-to-front walk of the tree from the camera");
     out.still("bsp-order-final", walk.back(), "the whole back-to-front order");
     out.svg("bsp-tree", tree_svg(tree, t),

@@ -9,6 +9,7 @@
 
 #include "command_line.hpp"
 #include "explain_algorithms.hpp"
+#include "progress.hpp"
 
 namespace zraster::cli {
 namespace {
@@ -109,6 +110,10 @@ void add_explain_command(CLI::App& app, ExplainArguments& a) {
                     "Frames after every STEP triangles or polygons (0: about 8 frames)")
         ->check(CLI::Range(0, 1 << 30))
         ->capture_default_str();
+    cmd->add_option("--max-explain-pixels", a.max_pixels,
+                    "Refuse runs whose pictures (every frame counted) take more pixels than this")
+        ->check(whole_number(false))
+        ->capture_default_str();
 }
 
 int run_explain(const ExplainArguments& a) {
@@ -119,13 +124,14 @@ int run_explain(const ExplainArguments& a) {
     if (algorithm.uses_scene) {
         scene = load_scene_or_procedural(a.render.scene, nullptr, nullptr, &files_read);
         options = make_render_options(a.render, scene);
+        options.progress = stderr_progress();  // silent unless a stage runs past two seconds
     }
     ExplainOutput out(a.output, algorithm.title, algorithm.introduction);
     if (algorithm.uses_scene) out.check_input(a.render.scene, "");
     for (const std::filesystem::path& file : files_read)
         out.check_input(file, file_named_by(a.render.scene));
     try {
-        algorithm.make(ExplainInput{a.render, scene, options, a.step}, out);
+        algorithm.make(ExplainInput{a.render, scene, options, a.step, a.max_pixels}, out);
     } catch (const LimitExceeded& e) {
         // The algorithms see polygons, not files: name the model, as render does.
         if (!e.file().empty() || scene.name.empty()) throw;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "explain_budget.hpp"
 #include "render_arguments.hpp"
 
 namespace zraster::cli {
@@ -15,6 +16,7 @@ struct ExplainArguments {
     RenderArguments render;  // the scene and camera of the 3D algorithms
     std::string output;
     int step = 0;  // frames: every step-th triangle or polygon (0: about 8 frames)
+    std::uint64_t max_pixels = kDefaultMaxExplainPixels;  // of all pictures (explain_budget.hpp)
 };
 
 void add_explain_command(CLI::App& app, ExplainArguments& arguments);

@@ -80,7 +80,10 @@ std::array<std::uint32_t, 3> triangle_outcodes(const glm::mat4& mvp, const Mesh&
 void two_views(ExplainOutput& out, const std::string& name, const Scene& colored,
                const RenderOptions& options, const Camera& camera, CullMode camera_cull,
                const std::string& legend, const std::string& caption) {
+    const std::string stage = "explain " + name + ": drawing the two views";
+    if (options.progress != nullptr) options.progress->report(stage.c_str(), 0.0);
     RgbaImage from_camera = draw_from(colored, options, camera, camera_cull);
+    if (options.progress != nullptr) options.progress->report(stage.c_str(), 0.5);
     const Camera side = side_camera(camera);
     RgbaImage from_side = draw_from(colored, options, side, CullMode::None);
     draw_frustum(from_side, side, camera, double(options.width) / double(options.height));
@@ -92,9 +95,17 @@ void two_views(ExplainOutput& out, const std::string& name, const Scene& colored
               caption);
 }
 
+// The one picture of each culling: the camera's view and the side view, side by side.
+void check_two_views(const ExplainInput& in, const std::string& algorithm) {
+    check_explain_pixels(
+        1, (2 * std::uint64_t(in.options.width) + 4) * std::uint64_t(in.options.height),
+        in.max_pixels, "explain " + algorithm + "'s two views");
+}
+
 }  // namespace
 
 void explain_frustum_culling(const ExplainInput& in, ExplainOutput& out) {
+    check_two_views(in, "frustum-culling");
     // The command's camera with half its field of view, so that part of the scene is outside.
     Camera camera = effective_camera(in.scene, in.options);
     camera.fovy_degrees *= 0.5;
@@ -121,6 +132,7 @@ void explain_frustum_culling(const ExplainInput& in, ExplainOutput& out) {
 }
 
 void explain_backface_culling(const ExplainInput& in, ExplainOutput& out) {
+    check_two_views(in, "backface-culling");
     RenderOptions all = in.options;
     all.cull = CullMode::None;
     std::set<std::pair<std::int32_t, std::int32_t>> front, back;
@@ -147,27 +159,31 @@ void explain_backface_culling(const ExplainInput& in, ExplainOutput& out) {
 // (the conservative test could not prove them hidden), skipped by occlusion culling, and outside
 // the view (or skipped by another culling).
 void explain_occlusion_culling(const ExplainInput& in, ExplainOutput& out) {
+    check_two_views(in, "occlusion-culling");
     RenderOptions options = in.options;
     options.id_targets = true;
     options.occlusion_cull = true;
     options.report_instance_outcomes = true;
-    const RenderResult frame = render(in.scene, options);
-    const std::set<std::int32_t> visible(frame.targets.instance_id.begin(),
-                                         frame.targets.instance_id.end());
     enum Class { kVisible, kHiddenDrawn, kOcclusionCulled, kOutside };
     std::vector<int> class_of_instance(in.scene.instances.size(), kOutside);
     std::size_t counts[4] = {};
-    for (std::size_t i = 0; i < in.scene.instances.size(); ++i) {
-        const InstanceOutcome outcome = frame.instance_outcomes.at(i);
-        int c = kOutside;
-        if (visible.count(std::int32_t(i)))
-            c = kVisible;
-        else if (outcome == InstanceOutcome::Drawn)
-            c = kHiddenDrawn;
-        else if (outcome == InstanceOutcome::OcclusionCulled)
-            c = kOcclusionCulled;
-        class_of_instance[i] = c;
-        ++counts[c];
+    in.report("explain occlusion-culling: drawing the culled frame", 0.0);
+    {  // (the frame's targets go before the two views are drawn)
+        const RenderResult frame = render(in.scene, options);
+        const std::set<std::int32_t> visible(frame.targets.instance_id.begin(),
+                                             frame.targets.instance_id.end());
+        for (std::size_t i = 0; i < in.scene.instances.size(); ++i) {
+            const InstanceOutcome outcome = frame.instance_outcomes.at(i);
+            int c = kOutside;
+            if (visible.count(std::int32_t(i)))
+                c = kVisible;
+            else if (outcome == InstanceOutcome::Drawn)
+                c = kHiddenDrawn;
+            else if (outcome == InstanceOutcome::OcclusionCulled)
+                c = kOcclusionCulled;
+            class_of_instance[i] = c;
+            ++counts[c];
+        }
     }
     const Scene colored =
         recolored_scene(in.scene, {kKeptColor, kClippedColor, kRemovedColor, kOutsideColor},

@@ -34,12 +34,23 @@ RgbaImage depth_picture(const Scene& scene, const RenderOptions& options) {
 }  // namespace
 
 void explain_hiz(const ExplainInput& in, ExplainOutput& out) {
+    // The two pictures: three views side by side, then two.
+    check_explain_pixels(
+        1, (5 * std::uint64_t(in.options.width) + 12) * std::uint64_t(in.options.height),
+        in.max_pixels, "explain hiz's two pictures");
+    const auto report = [&](double fraction) {
+        if (in.options.progress != nullptr)
+            in.options.progress->report("explain hiz: drawing the views", fraction);
+    };
     RenderOptions options = in.options;
     options.occlusion_cull = false;  // every instance reaches the rasterizer
     RenderStats stats;
     const RgbaImage hiz = view_picture(in.scene, options, DebugView::HiZ, &stats);
+    report(0.25);
     const RgbaImage tiles = view_picture(in.scene, options, DebugView::Tiles);
+    report(0.5);
     const RgbaImage depth = depth_picture(in.scene, options);
+    report(0.75);
     out.still("hiz",
               captioned(side_by_side(side_by_side(hiz, tiles), depth),
                         fmt::format("left: blocks skipped by hierarchical z ({} triangle x "

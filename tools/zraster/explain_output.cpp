@@ -8,6 +8,8 @@
 
 #include <algorithm>
 
+#include <unistd.h>
+
 #include "apng_encode.hpp"
 
 namespace zraster::cli {
@@ -25,6 +27,24 @@ ExplainOutput::ExplainOutput(std::filesystem::path folder, std::string title,
     std::error_code error;
     if (std::filesystem::exists(folder_, error) && !std::filesystem::is_directory(folder_, error))
         throw InputError("-o", folder_.string() + " exists and is not a folder");
+    // What making it would meet, told before the work: the nearest existing ancestor must be a
+    // folder this process may write into.
+    std::filesystem::path existing = folder_;
+    while (!existing.empty() && !std::filesystem::exists(existing, error) &&
+           existing != existing.parent_path())
+        existing = existing.parent_path();
+    if (existing.empty()) existing = ".";
+    if (existing != folder_ || !std::filesystem::exists(folder_, error)) {
+        const char* cause = !std::filesystem::is_directory(existing, error) ? "Not a directory"
+                            : ::access(existing.c_str(), W_OK | X_OK) != 0  ? "Permission denied"
+                                                                            : nullptr;
+        if (cause != nullptr)
+            throw InputError("-o", "cannot make the folder " + folder_.string() + ": " + cause);
+    }
+}
+
+void ExplainOutput::make_folder() {
+    std::error_code error;
     for (std::filesystem::path p = folder_; !p.empty() && !std::filesystem::exists(p, error);
          p = p.parent_path()) {
         created_.push_back(p);
@@ -34,6 +54,7 @@ ExplainOutput::ExplainOutput(std::filesystem::path folder, std::string title,
     if (error) {
         std::error_code ignored;
         for (const std::filesystem::path& p : created_) std::filesystem::remove(p, ignored);
+        created_.clear();
         throw InputError("-o",
                          "cannot make the folder " + folder_.string() + ": " + error.message());
     }
@@ -51,8 +72,7 @@ void ExplainOutput::check_input(const std::filesystem::path& path, const std::st
 }
 
 void ExplainOutput::add(const std::string& file, std::vector<std::uint8_t> bytes) {
-    outputs_.check(folder_ / file, "-o");
-    outputs_.add(folder_ / file, std::move(bytes));
+    pending_.emplace_back(file, std::move(bytes));
     files_.push_back(file);
 }
 
@@ -115,6 +135,12 @@ void ExplainOutput::commit() {
     html += "</body></html>\n";
     add("index.html", std::vector<std::uint8_t>(html.begin(), html.end()));
     files_.pop_back();  // index.html is listed last by file_names()
+    make_folder();
+    for (auto& [file, bytes] : pending_) {
+        outputs_.check(folder_ / file, "-o");
+        outputs_.add(folder_ / file, std::move(bytes));
+    }
+    pending_.clear();
     outputs_.commit();
     committed_ = true;
 }

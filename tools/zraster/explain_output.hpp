@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "figure.hpp"
@@ -15,8 +16,8 @@ namespace zraster::cli {
 
 class ExplainOutput {
   public:
-    // Creates `folder` when missing; throws InputError("-o", ...) when it cannot be one. The
-    // folders it creates are removed again unless commit() succeeds: a failed run leaves nothing.
+    // Throws InputError("-o", ...) when `folder` cannot be one. The folder (and missing parents)
+    // is made by commit(), after the work: a run refused, failed or killed leaves nothing.
     ExplainOutput(std::filesystem::path folder, std::string title, std::string introduction);
     ~ExplainOutput();
     ExplainOutput(const ExplainOutput&) = delete;
@@ -33,13 +34,15 @@ class ExplainOutput {
     // name.png, an animated PNG of the frames (each shown delay_ms).
     void animation(const std::string& name, const std::vector<RgbaImage>& frames, int delay_ms,
                    const std::string& caption);
-    // Writes every file and index.html.
+    // Makes the folder and writes every file and index.html (the folders it made are removed
+    // again when the writing fails).
     void commit();
     // The files written (or to be written), index.html last.
     std::vector<std::string> file_names() const;
 
   private:
     void add(const std::string& file, std::vector<std::uint8_t> bytes);
+    void make_folder();
     struct Entry {
         std::string file, caption;
     };
@@ -47,6 +50,8 @@ class ExplainOutput {
     std::string title_, introduction_;
     std::vector<Entry> entries_;
     std::vector<std::string> files_;
+    // The encoded files, checked and handed to outputs_ once the folder exists (commit()).
+    std::vector<std::pair<std::string, std::vector<std::uint8_t>>> pending_;
     OutputFiles outputs_;
     std::vector<std::filesystem::path> created_;  // deepest first
     bool committed_ = false;

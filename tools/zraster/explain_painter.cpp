@@ -60,13 +60,21 @@ void explain_painter(const ExplainInput& in, ExplainOutput& out) {
     };
     PainterOptions options;
     options.observer = &observer;
+    options.progress = in.options.progress;
     options.max_comparisons = painter_comparison_budget(in.options.limits, input);
     const PainterResult result =
         painter_sort(std::move(polygons), Viewport{in.options.width, in.options.height}, options);
     const glm::vec3 bg = in.options.background * 255.0f;
     const Rgba background{std::uint8_t(bg.x), std::uint8_t(bg.y), std::uint8_t(bg.z), 255};
+    const std::vector<std::size_t> counts = frame_counts(result.order.size(), in.step);
+    check_explain_pixels(counts.size(),
+                         std::uint64_t(in.options.width) * std::uint64_t(in.options.height),
+                         in.max_pixels, fmt::format("explain painter's {} frames", counts.size()),
+                         "or raise --step");
     std::vector<RgbaImage> frames;
-    for (const std::size_t n : frame_counts(result.order.size(), in.step)) {
+    for (const std::size_t n : counts) {
+        in.report("explain painter: painting the frames",
+                  double(frames.size()) / double(counts.size()));
         RgbaImage image(in.options.width, in.options.height, background);
         for (std::size_t i = 0; i < n; ++i) {
             const ScreenPolygon& p = result.order[i];
@@ -83,6 +91,7 @@ void explain_painter(const ExplainInput& in, ExplainOutput& out) {
                                "red outline: pieces of split polygons; yellow: moved ahead",
                                n, result.order.size(), input)));
     }
+    in.report("explain painter: encoding the pictures", 0.0);
     for (std::size_t i = 0; i < frames.size(); ++i)
         out.still(fmt::format("painter-{:02}", i + 1), frames[i],
                   fmt::format("painting order, frame {} of {}", i + 1, frames.size()));

@@ -54,6 +54,16 @@ RgbaImage level_picture(const RgbaImage& base, const std::vector<RegionRecord>& 
 }  // namespace
 
 void explain_warnock(const ExplainInput& in, ExplainOutput& out) {
+    // Counted before the subdivision: halving the larger side down to one pixel takes at most
+    // 1 + ceil(log2(side)) levels (any edge in the scene reaches the last), and a picture each,
+    // and the result.
+    std::size_t most_levels = 1;
+    for (int side = std::max(in.options.width, in.options.height); side > 1; side -= side / 2)
+        ++most_levels;
+    check_explain_pixels(
+        most_levels + 1, std::uint64_t(in.options.width) * std::uint64_t(in.options.height),
+        in.max_pixels,
+        fmt::format("explain warnock's {} pictures (levels and result)", most_levels + 1));
     const std::vector<ScreenPolygon> polygons = project_scene(in.scene, in.options);
     std::vector<RegionRecord> records;
     WarnockObserver observer;
@@ -66,6 +76,7 @@ void explain_warnock(const ExplainInput& in, ExplainOutput& out) {
     const std::size_t levels = result.stats.regions_per_level.size();
     std::vector<RgbaImage> frames;
     for (std::size_t level = 0; level < levels; ++level) {
+        in.report("explain warnock: drawing the levels", double(level) / double(levels));
         std::size_t counts[5] = {};
         for (const RegionRecord& r : records)
             if (r.level == level) ++counts[std::size_t(r.outcome)];
@@ -76,9 +87,12 @@ void explain_warnock(const ExplainInput& in, ExplainOutput& out) {
                         level, result.stats.regions_per_level[level], counts[0], counts[1],
                         counts[2], counts[3], counts[4])));
     }
-    for (std::size_t i = 0; i < frames.size(); ++i)
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+        in.report("explain warnock: encoding the pictures", double(i) / double(frames.size()));
         out.still(fmt::format("warnock-level-{:02}", i), frames[i],
                   fmt::format("the regions of subdivision level {} and the leaves above it", i));
+    }
+    in.report("explain warnock: encoding the animation", 0.0);
     out.animation("warnock-animation", frames, 800, "the subdivision level by level");
     out.still("warnock-result", base, "the image Warnock's algorithm drew");
 }

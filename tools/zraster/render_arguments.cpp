@@ -18,7 +18,6 @@
 #include "command_line.hpp"
 
 namespace zraster::cli {
-namespace {
 
 // Digits only (at most 19): CLI11 reads "-5" into an unsigned as 2^64 - 5, no limit at all.
 CLI::Validator whole_number(bool zero_allowed) {
@@ -34,6 +33,8 @@ CLI::Validator whole_number(bool zero_allowed) {
         },
         zero_allowed ? "UINT" : "POSITIVE");
 }
+
+namespace {
 
 // --eye, --target: finite, within the coordinates a camera may use.
 glm::dvec3 parse_position(const std::string& option, const std::string& text) {

@@ -70,6 +70,9 @@ struct RenderArguments {
 
 // The scene (positional), size, threads, camera and pipeline options.
 void add_render_arguments(CLI::App& cmd, RenderArguments& arguments);
+// The check of the budget flags: digits only, at most 19 (CLI11 reads "-5" into an unsigned as
+// 2^64 - 5).
+CLI::Validator whole_number(bool zero_allowed);
 // How `render` draws a frame: --visibility, --aa, --msaa.
 void add_frame_arguments(CLI::App& cmd, RenderArguments& arguments);
 
