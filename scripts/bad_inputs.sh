@@ -546,8 +546,21 @@ row "--reversed-z --depth-compare less (a warning: nothing passes)" render built
 rm -f out.png
 # explain's pictures past their budget (each frame is held until the folder is written): refused
 # before the first frame, and no folder made.
-row "explain zbuffer: nine frames of 8192x8192 (past --max-explain-pixels)" explain zbuffer sphere:2000 --size 8192x8192 -o out.d
+row "explain zbuffer: eight frames of 8192x8192 (past --max-explain-pixels)" explain zbuffer sphere:2000 --size 8192x8192 -o out.d
 row "explain hiz: its views at 8192x8192 (past --max-explain-pixels)" explain hiz city:2000 --size 8192x8192 -o out.d
+rm -rf out.d
+# A cells file as pvs's output, FIFOs nothing writes as --views-json and --list (opening them
+# waited for ever), OBJ vertices of 5 numbers, glTF placements and accessors glTF 2.0 forbids.
+unchanged_row "pvs -o naming its own cells file" cells/two.cells.json pvs cells/two.cells.json -o ./cells/two.cells.json
+mkfifo views.fifo list.fifo
+row "batch --views-json naming a FIFO nothing writes" batch tri.off -o out.d --size 8x8 --views-json views.fifo
+row "batch --list naming a FIFO nothing writes" batch --list list.fifo -o out.d --size 8x8
+printf "v 0 0 0 1 1\nv 1 0 0\nv 0 1 0\nf 1 2 3\n" >fivenumbers.obj
+row "OBJ vertex of 5 numbers" render fivenumbers.obj -o out.png
+printf '{"asset":{"version":"2.0"},"nodes":[{"rotation":[0,0,10,0]}],"scenes":[{"nodes":[0]}]}' >rotation.gltf
+row "glTF node rotation that is not a unit quaternion" render rotation.gltf -o out.png
+printf '{"asset":{"version":"2.0"},"accessors":[{"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0}' >zeros.gltf
+row "glTF accessor of zeros (no bufferView)" render zeros.gltf -o out.png
 rm -rf out.d
 echo
 echo "$n inputs; $failures broke the contract (exit 2, one line, nothing left)."
