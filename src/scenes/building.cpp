@@ -334,10 +334,11 @@ std::optional<BuildingSpec> parse_building_spec(std::string_view spec) {
         !parse_count(size.substr(x + 1), columns))
         throw malformed();
     if (colon != rest.npos && !parse_count(rest.substr(colon + 1), seed)) throw malformed();
-    if (rows < 1 || columns < 1 || rows > std::uint64_t(kMaxBuildingRooms) ||
-        columns > std::uint64_t(kMaxBuildingRooms) ||
+    if (rows < 1 || columns < 1 || rows > std::uint64_t(kMaxBuildingSide) ||
+        columns > std::uint64_t(kMaxBuildingSide) ||
         rows * columns > std::uint64_t(kMaxBuildingRooms))
         throw InputError(file, "R x C out of range (at least 1 x 1, at most " +
+                                   std::to_string(kMaxBuildingSide) + " a side and " +
                                    std::to_string(kMaxBuildingRooms) + " rooms)");
     return BuildingSpec{int(rows), int(columns), seed};
 }

@@ -14,6 +14,9 @@ struct BuildingSpec {
 };
 
 inline constexpr int kMaxBuildingRooms = 65'536;  // rows * columns
+// Rooms a side: a row of 32,768 rooms reaches coordinates where the rooms' float bounds and the
+// portals between them no longer meet exactly (an instance then seems to reach the next cell).
+inline constexpr int kMaxBuildingSide = 16'384;
 
 // nullopt when `spec` does not start with "building:"; throws InputError when it does but is
 // malformed or out of range.

@@ -289,6 +289,17 @@ TEST(CliLimits, FlagsWithoutEffectAreRefused) {
 // Every camera and lighting number has a range (docs/limits.md), the same for the flags and for
 // the cameras of a --views-json file, whose messages name the file, camera and field.
 // Whole numbers are decimal: CLI11 alone read "010" as octal 8 and "0x10" as 16.
+// Procedural buildings: 16,384 rooms a side (a row of 32,768 was refused by its own cell checks:
+// the rooms' float bounds no longer meet the portals exactly) and 65,536 rooms in all.
+TEST(CliLimits, BuildingSizes) {
+    const auto dir = temp_dir("cli-limits-building");
+    for (const char* spec : {"building:1x16385", "building:32768x1", "building:257x256"})
+        expect_refused(dir, std::string("render ") + spec + " --size 8x8 -o out.png",
+                       std::string("zraster: ") + spec +
+                           ": R x C out of range (at least 1 x 1, at most 16384 a side and 65536 "
+                           "rooms)\n");
+}
+
 TEST(CliLimits, WholeNumbersAreReadInDecimal) {
     const auto dir = temp_dir("cli-limits-decimal");
     const CommandResult ten =
