@@ -244,7 +244,10 @@ TEST(Budgets, CoveredSamplesExactly) {
         paths = {{"depth test off", [&](const RenderOptions& o) { return render(soup, o); }},
                  {"multisampled",
                   [&](const RenderOptions& o) { return render_multisampled(soup, o, 4); }}};
-    for (const auto& [name, draw] : paths) {
+    for (const auto& path : paths) {
+        // (Named copies: clang does not let lambdas capture structured bindings.)
+        const std::string& name = path.first;
+        const auto& draw = path.second;
         SCOPED_TRACE(name);
         RenderOptions options = name == "multisampled" ? soup_options() : no_depth_test;
         const RenderResult full = draw(options);
