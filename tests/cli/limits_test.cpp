@@ -319,6 +319,14 @@ TEST(CliLimits, WholeNumbersAreReadInDecimal) {
                    "zraster: --frames: expected a whole number, got '1 '\n");
     expect_refused(dir, "render builtin:cube --threads 2.0 -o out.png",
                    "zraster: --threads: expected a whole number, got '2.0'\n");
+    // Numbers are decimal too (strtod took hex; a trailing space was "Could not convert").
+    expect_refused(dir, "render builtin:cube --fovy '60 ' -o out.png",
+                   "zraster: --fovy: expected a decimal number, got '60 '\n");
+    expect_refused(dir, "render builtin:cube --fovy 0x1p5 -o out.png",
+                   "zraster: --fovy: expected a decimal number, got '0x1p5'\n");
+    // An option given twice (CLI11: "At Most 1 required but received 2").
+    expect_refused(dir, "render builtin:cube -o out.png -o out.png",
+                   "zraster: --output: given 2 times: give it once\n");
 }
 
 TEST(CliLimits, CameraNumbersHaveRanges) {

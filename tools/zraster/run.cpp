@@ -17,7 +17,7 @@
 #include "batch_limits.hpp"
 #include "bench_command.hpp"
 #include "command_line.hpp"
-#include "decimal_integers.hpp"
+#include "decimal_numbers.hpp"
 #include "explain_command.hpp"
 #include "info_command.hpp"
 #include "io/text_util.hpp"
@@ -27,6 +27,19 @@
 #include "view_command.hpp"
 
 namespace zraster::cli {
+namespace {
+
+// CLI11's words for an option given twice ("--output: At Most 1 required but received 2").
+std::string parse_error_cause(const std::string& text) {
+    const std::string_view marker = ": At Most 1 required but received ";
+    const std::size_t at = text.find(marker);
+    if (at == std::string::npos) return text;
+    return text.substr(0, at) + ": given " + text.substr(at + marker.size()) +
+           " times: give it once";
+}
+
+}  // namespace
+
 int run_zraster(std::vector<std::string> args) {
     CLI::App app{"zraster: an exact, fast CPU rasterizer", "zraster"};
     app.require_subcommand(0, 1);
@@ -94,7 +107,7 @@ int run_zraster(std::vector<std::string> args) {
                    "texture past it is not used, with a warning")
         ->capture_default_str();
     for (CLI::App* sub : app.get_subcommands({})) sub->fallthrough();
-    read_integers_in_decimal(app);
+    read_numbers_in_decimal(app);
 
     // `zraster -o x.png --size ...` means `zraster render -o x.png --size ...`. The flags above
     // may come first (`zraster --load-in-process render FILE`, `zraster --load-in-process -o
@@ -146,7 +159,7 @@ int run_zraster(std::vector<std::string> args) {
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        fmt::print(stderr, "zraster: {}\n", io::one_line(e.what()));
+        fmt::print(stderr, "zraster: {}\n", io::one_line(parse_error_cause(e.what())));
         return kExitBadInput;
     }
 

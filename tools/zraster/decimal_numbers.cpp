@@ -1,5 +1,5 @@
-// See decimal_integers.hpp.
-#include "decimal_integers.hpp"
+// See decimal_numbers.hpp.
+#include "decimal_numbers.hpp"
 
 #include <string>
 
@@ -24,16 +24,27 @@ CLI::Validator decimal() {
         "", "decimal");
 }
 
+CLI::Validator decimal_number() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            if (text.find_first_of(" \t\r\nxXpP") != std::string::npos)
+                return "expected a decimal number, got '" + text + "'";
+            return {};
+        },
+        "", "decimal number");
+}
+
 }  // namespace
 
-void read_integers_in_decimal(CLI::App& app) {
+void read_numbers_in_decimal(CLI::App& app) {
     for (CLI::Option* option : app.get_options()) {
         // ("UINT:POSITIVE": the type, then what a check added to it.)
         const std::string type = option->get_type_name();
         const std::string base = type.substr(0, type.find(':'));
         if (base == "INT" || base == "UINT") option->transform(decimal());
+        if (base == "FLOAT") option->transform(decimal_number());
     }
-    for (CLI::App* sub : app.get_subcommands({})) read_integers_in_decimal(*sub);
+    for (CLI::App* sub : app.get_subcommands({})) read_numbers_in_decimal(*sub);
 }
 
 }  // namespace zraster::cli
