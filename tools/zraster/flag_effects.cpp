@@ -6,22 +6,24 @@
 namespace zraster::cli {
 namespace {
 
-// The depth test's settings apply to the z-buffer's depth buffer: the other algorithms order
-// surfaces by their own means (painter's sort, BSP, Warnock's subdivision, the A-buffer's lists)
-// and MSAA keeps its own per-sample depths, always nearest-wins.
+// The first depth-test flag given (null: none). They set the z-buffer's depth buffer: the other
+// algorithms order surfaces by their own means (painter's sort, BSP, Warnock's subdivision, the
+// A-buffer's lists), MSAA keeps its own per-sample depths (nearest wins), svg draws none.
+const char* depth_test_flag(const RenderArguments& a) {
+    return a.no_depth_test                                    ? "--no-depth-test"
+           : a.no_depth_write                                 ? "--no-depth-write"
+           : !a.depth_compare.empty()                         ? "--depth-compare"
+           : a.depth_format != RenderArguments{}.depth_format ? "--depth-format"
+                                                              : nullptr;
+}
+
 void check_depth_test_flags(const RenderArguments& a) {
     if (a.visibility == "zbuffer" && !a.msaa) return;
-    const RenderArguments defaults;
-    const char* flag = a.no_depth_test                           ? "--no-depth-test"
-                       : a.no_depth_write                        ? "--no-depth-write"
-                       : !a.depth_compare.empty()                ? "--depth-compare"
-                       : a.depth_format != defaults.depth_format ? "--depth-format"
-                                                                 : nullptr;
-    if (flag == nullptr) return;
-    throw InputError(flag, a.msaa ? "sets the z-buffer's depth test, which --msaa does not use "
-                                    "(its samples keep the nearest surface)"
-                                  : "sets the z-buffer's depth test, which --visibility " +
-                                        a.visibility + " does not use");
+    if (const char* flag = depth_test_flag(a))
+        throw InputError(flag, a.msaa ? "sets the z-buffer's depth test, which --msaa does not "
+                                        "use (its samples keep the nearest surface)"
+                                      : "sets the z-buffer's depth test, which --visibility " +
+                                            a.visibility + " does not use");
 }
 
 // The cleared depth buffer holds the far end (1, or 0 with reversed-Z): compares that nothing
@@ -78,15 +80,10 @@ std::vector<std::string> check_flags_take_effect(const RenderArguments& a) {
 }
 
 void check_svg_flags_take_effect(const RenderArguments& a, bool edges, bool edge_width_given) {
-    RenderArguments no_depth_buffer = a;
-    no_depth_buffer.visibility = "painter";  // svg orders polygons: no depth buffer
-    try {
-        check_depth_test_flags(no_depth_buffer);
-    } catch (const InputError& e) {
-        throw InputError(e.file(),
-                         "sets the z-buffer's depth test: svg orders polygons "
-                         "(--order), it keeps no depth buffer");
-    }
+    if (const char* flag = depth_test_flag(a))
+        throw InputError(flag,
+                         "sets the z-buffer's depth test: svg orders polygons (--order), "
+                         "it keeps no depth buffer");
     if (!edges && (a.edge_color != RenderArguments{}.edge_color || edge_width_given))
         throw InputError(edge_width_given ? "--edge-width" : "--edge-color",
                          "styles the outlines --edges draws: give --edges");
