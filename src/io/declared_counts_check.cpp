@@ -499,6 +499,20 @@ class OffHeaderReader {
                                      std::to_string(vertices_) + " vertices (0 to " +
                                      std::to_string(vertices_ - 1) + ")");
         }
+        // What follows the indices is the face's color (numbers) or a comment; Assimp reads a
+        // number's prefix of anything else ("junk" was taken without a word).
+        while (q < line_end) {
+            while (q < line_end && (*q == ' ' || *q == '\t' || *q == '\r')) ++q;
+            if (q == line_end || *q == '#') break;
+            const char* token = q;
+            while (q < line_end && *q != ' ' && *q != '\t' && *q != '\r') ++q;
+            const std::string_view text(token, static_cast<std::size_t>(q - token));
+            if (text.find_first_not_of("0123456789+-.eE") != std::string_view::npos ||
+                text.find_first_of("0123456789") == std::string_view::npos)
+                throw InputError(path.string(), "malformed OFF file: " + where() + ": '" +
+                                                    one_line(std::string(text.substr(0, 32))) +
+                                                    "' after its indices is not a color number");
+        }
     }
 
     // 1-based, counting a CR LF, a lone CR or a lone LF as one line end.

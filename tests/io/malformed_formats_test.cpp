@@ -204,6 +204,9 @@ std::vector<Malformed> malformed_files() {
          "malformed OFF file: OFF face 0 (line 6): vertex index '-1' is not a number of 0 or more"},
         {"few.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n",
          "malformed OFF file: OFF face 0 (line 6) declares 3 vertices but lists 2 indices"},
+        {"junk.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 junk\n",
+         "malformed OFF file: OFF face 0 (line 6): 'junk' after its indices is not a color "
+         "number"},
         // Random bytes that Assimp's ASE importer takes for a file of nodes without meshes (it
         // then draws a placeholder skeleton).
         {"random.ase", pseudo_random(4096, 5, '\0'),
