@@ -561,6 +561,8 @@ printf '{"asset":{"version":"2.0"},"nodes":[{"rotation":[0,0,10,0]}],"scenes":[{
 row "glTF node rotation that is not a unit quaternion" render rotation.gltf -o out.png
 printf '{"asset":{"version":"2.0"},"accessors":[{"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0}' >zeros.gltf
 row "glTF accessor of zeros (no bufferView)" render zeros.gltf -o out.png
+printf "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 junk\n" >junk.off
+row "OFF face with a word after its indices" render junk.off -o out.png
 rm -rf out.d
 echo
 echo "$n inputs; $failures broke the contract (exit 2, one line, nothing left)."
