@@ -8,22 +8,19 @@
 #include <string_view>
 #include <system_error>
 
+#include "batch_inputs.hpp"
+
 namespace zraster::cli {
 namespace {
 
 constexpr std::size_t kMaxRecordBytes = std::size_t(1) << 20;
 
-// FNV-1a 64, continued from `hash`.
-std::uint64_t fnv1a(std::string_view text, std::uint64_t hash = 0xcbf29ce484222325ull) {
-    for (const char c : text) hash = (hash ^ static_cast<unsigned char>(c)) * 0x100000001b3ull;
-    return hash;
-}
-
 // The paths in order, each ended by a NUL (which no path holds).
 template <typename Paths, typename AsString>
 std::uint64_t paths_hash(const Paths& paths, AsString as_string) {
-    std::uint64_t hash = fnv1a("");
-    for (const auto& p : paths) hash = fnv1a(std::string_view("\0", 1), fnv1a(as_string(p), hash));
+    std::uint64_t hash = fnv1a64("");
+    for (const auto& p : paths)
+        hash = fnv1a64(std::string_view("\0", 1), fnv1a64(as_string(p), hash));
     return hash;
 }
 
@@ -77,12 +74,12 @@ void BatchHistory::add(const std::string& line) {
     const std::vector<std::string> outputs = strings_of(record.value("outputs", nlohmann::json()));
     entry.outputs_hash = paths_hash(outputs, [](const std::string& s) { return s; });
     entry.reads = strings_of(record.value("reads", nlohmann::json()));
-    entries_[fnv1a(record["input"].get<std::string>())] = std::move(entry);
+    entries_[fnv1a64(record["input"].get<std::string>())] = std::move(entry);
 }
 
 const std::vector<std::string>* BatchHistory::written(
     const std::string& input, const std::vector<std::filesystem::path>& outputs) const {
-    const auto it = entries_.find(fnv1a(input));
+    const auto it = entries_.find(fnv1a64(input));
     if (it == entries_.end() || !it->second.written) return nullptr;
     const std::uint64_t hash =
         paths_hash(outputs, [](const std::filesystem::path& p) { return p.string(); });

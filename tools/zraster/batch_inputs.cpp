@@ -175,8 +175,7 @@ Shard parse_shard(const std::string& text) {
     return shard;
 }
 
-std::uint64_t fnv1a64(std::string_view text) {
-    std::uint64_t hash = 0xcbf29ce484222325ull;
+std::uint64_t fnv1a64(std::string_view text, std::uint64_t hash) {
     for (const char c : text) {
         hash ^= static_cast<unsigned char>(c);
         hash *= 0x100000001b3ull;

@@ -45,8 +45,9 @@ struct Shard {
 };
 // "K/N" with 0 <= K < N; throws InputError naming --shard.
 Shard parse_shard(const std::string& text);
-// FNV-1a, 64 bits, of the bytes of `text`: stable across runs, machines and versions.
-std::uint64_t fnv1a64(std::string_view text);
+// FNV-1a, 64 bits, of the bytes of `text`: stable across runs, machines and versions. `hash`:
+// the hash of the bytes before `text`, to hash a sequence piece by piece.
+std::uint64_t fnv1a64(std::string_view text, std::uint64_t hash = 0xcbf29ce484222325ull);
 // fnv1a64(input.stem) % shard.count == shard.index: an input's shard depends on its own output
 // path only, not on the other inputs.
 bool in_shard(const BatchInput& input, const Shard& shard);

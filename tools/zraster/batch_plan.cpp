@@ -33,6 +33,16 @@ int batch_job_threads(int threads, int jobs) {
     return std::max(1, total / std::max(jobs, 1));
 }
 
+namespace {
+
+// --log, or OUTDIR/batch.jsonl.
+std::filesystem::path batch_log_path(const BatchArguments& a) {
+    return a.log.empty() ? std::filesystem::path(a.out_dir) / "batch.jsonl"
+                         : std::filesystem::path(a.log);
+}
+
+}  // namespace
+
 BatchSettings batch_settings(const BatchArguments& a, int jobs) {
     if (a.out_dir.empty()) throw InputError("-o", "the output folder is empty");
     const bool views = a.views > 0 || !a.views_json.empty();
@@ -57,9 +67,7 @@ BatchSettings batch_settings(const BatchArguments& a, int jobs) {
     s.out_dir = a.out_dir;
     s.force = a.force;
     if (!a.force)
-        s.history = std::make_shared<const BatchHistory>(
-            BatchHistory::read(a.log.empty() ? std::filesystem::path(a.out_dir) / "batch.jsonl"
-                                             : std::filesystem::path(a.log)));
+        s.history = std::make_shared<const BatchHistory>(BatchHistory::read(batch_log_path(a)));
     return s;
 }
 
@@ -145,8 +153,7 @@ void plan_inputs(const BatchArguments& a, std::istream& standard_input, const Sh
                                       (paths.size() > 1 ? ", ..." : "") + ")");
     for (const BatchInput& input : all) log.check_input(input.source, "");
     check_existing_log(a);
-    plan.log = a.log.empty() ? std::filesystem::path(a.out_dir) / "batch.jsonl"
-                             : std::filesystem::path(a.log);
+    plan.log = batch_log_path(a);
     std::error_code ec;
     const std::filesystem::path log_file = std::filesystem::weakly_canonical(plan.log, ec);
     check_output_clashes(all, [&](const BatchInput& input) {
