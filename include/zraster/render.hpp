@@ -112,6 +112,12 @@ struct RenderLimits {
     // hold minutes of such work (a 2 KB glTF placing a half-screen triangle 50,000 times). Past
     // it, LimitExceeded "max_covered_samples".
     std::uint64_t max_covered_samples = std::uint64_t{1} << 31;
+    // The frame's working memory, estimated from the counts before anything is allocated (see
+    // estimated_frame_bytes): the per-vertex and per-triangle budgets above allow 100 million
+    // of each, about 15 GB, and a small file placing a mesh a million times reaches them. Past
+    // it, LimitExceeded "max_frame_bytes". 4 GiB holds 30 million instanced vertices with
+    // their triangles and a 4K frame.
+    std::uint64_t max_frame_bytes = std::uint64_t{4} << 30;
 
     // The object-space visibility algorithms (visibility.hpp, and the SVG writer): their work
     // grows faster than their input (random, interpenetrating triangles split without end), so
@@ -143,6 +149,27 @@ struct RenderLimits {
     // region quadtree + 4 per pixel + 10^7.
     std::uint64_t max_warnock_classifications = 0;
 };
+
+// What a frame holds, the figures of max_frame_bytes' estimate (measured as the peak memory of
+// frames of 1 to 60 million vertices, rounded up): a vertex in the vertex stage (its clip and
+// screen positions, attributes and outcodes) and the camera fit's world position; a triangle in
+// assembly and binning (its setup record and the tiles it overlaps, for triangles of a few
+// pixels); a pixel and sample of the targets a frame allocates (color, depth, normal, ids,
+// coverage counts). Targets the caller passes are its own memory and not counted.
+inline constexpr std::uint64_t kFrameBytesPerVertex = 100;
+inline constexpr std::uint64_t kFrameBytesPerTriangle = 50;
+inline constexpr std::uint64_t kFrameBytesPerSample = 36;
+// vertices * kFrameBytesPerVertex + triangles * kFrameBytesPerTriangle + target_samples *
+// kFrameBytesPerSample, saturated at 2^64 - 1.
+ZRASTER_API std::uint64_t estimated_frame_bytes(std::uint64_t vertices, std::uint64_t triangles,
+                                                std::uint64_t target_samples);
+// Throws LimitExceeded(source, "max_frame_bytes"), naming the estimate, the counts and the
+// limit, when that estimate is past limits.max_frame_bytes. render() checks it before allocating;
+// a front end that copies the scene first (a camera fit over its world positions) checks it
+// before that copy.
+ZRASTER_API void check_frame_memory(std::string_view source, std::uint64_t vertices,
+                                    std::uint64_t triangles, std::uint64_t target_samples,
+                                    const RenderLimits& limits);
 
 // A frame's threads are capped at this many per hardware thread: oneTBB cannot make an arena of
 // millions of threads (it crashes), and more than a few per core only compete for the cores.

@@ -56,7 +56,8 @@ struct PyScene {
     // An owning copy, for the frames only an owning scene can draw (visibility algorithms other
     // than the z-buffer, antialiasing). Made once, with the GIL held.
     const Scene& owning() const;
-    std::size_t triangle_count() const;
+    std::size_t triangle_count() const;  // over instances
+    std::size_t vertex_count() const;    // over instances
 
   private:
     mutable std::shared_ptr<const Scene> owning_copy_;

@@ -172,6 +172,10 @@ py::dict render(PyRenderer& r, const py::object& scene_object, const py::object&
     }
     RenderOptions options;
     try {
+        // Before the camera fit's copy of every instanced vertex.
+        check_frame_memory(
+            scene->spec, scene->vertex_count(), scene->triangle_count(), 0,
+            {.max_frame_bytes = cli::parse_byte_size("--max-frame-bytes", a.max_frame_bytes_text)});
         const std::vector<glm::vec3> world =
             camera ? std::vector<glm::vec3>() : scene->world_positions();
         options = cli::make_render_options(a, world, camera);
@@ -179,6 +183,8 @@ py::dict render(PyRenderer& r, const py::object& scene_object, const py::object&
         for (const std::string& w : cli::check_flags_take_effect(a))
             if (PyErr_WarnEx(PyExc_UserWarning, with_keyword_names(w).c_str(), 1) != 0)
                 throw py::error_already_set();  // warnings turned into errors
+    } catch (const LimitExceeded&) {
+        throw;  // about the scene, naming its limit
     } catch (const InputError& e) {
         throw InputError(keyword_name(e.file()), with_keyword_names(e.cause()));
     }

@@ -196,6 +196,12 @@ std::size_t PyScene::triangle_count() const {
     return n;
 }
 
+std::size_t PyScene::vertex_count() const {
+    std::size_t n = 0;
+    for (const InstanceView& instance : instances) n += meshes[instance.mesh].positions.count;
+    return n;
+}
+
 const Scene& PyScene::owning() const {
     if (owned) return *owned;
     if (owning_copy_) return *owning_copy_;

@@ -250,6 +250,7 @@ class Renderer:
         *,
         max_bin_bytes: int = ...,
         max_covered_samples: int = ...,
+        max_frame_bytes: int | str = ...,
         eye: Vec3 = ...,
         target: Vec3 = ...,
         up: Vec3 = ...,

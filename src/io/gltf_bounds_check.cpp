@@ -84,11 +84,12 @@ class Checker {
           options_(options),
           policy_(path, options.allow_outside_references) {}
 
-    void run() {
+    // Returns the nodes the importer makes of the scene's node graph (see instances()).
+    std::uint64_t run() {
         buffers();
         views();
         accessors();
-        instances();
+        return instances();
     }
 
   private:
@@ -216,11 +217,16 @@ class Checker {
 
     // Meshes placed by the scene's node graph, counted without expanding it: a node places its
     // own mesh once per path from a root to it. Refuses a cycle and a count past the budget.
-    void instances() {
+    // Returns the nodes the importer makes: it copies a node once per path to it too, meshes or
+    // not (saturated at 2^64 - 1).
+    std::uint64_t instances() {
         const json& nodes = array("nodes");
         const json& meshes = array("meshes");
         const std::uint64_t limit = options_.max_instances;
-        std::vector<std::uint64_t> placed(nodes.size(), 0);
+        std::vector<std::uint64_t> placed(nodes.size(), 0), copies(nodes.size(), 0);
+        const auto add = [](std::uint64_t a, std::uint64_t b) {
+            return a > UINT64_MAX - b ? UINT64_MAX : a + b;
+        };
         std::vector<std::uint8_t> state(nodes.size(), 0);  // 0 new, 1 on the path, 2 done
         const auto child_list = [&](std::size_t n) -> const json* {
             const auto it = nodes[n].is_object() ? nodes[n].find("children") : nodes[n].end();
@@ -255,30 +261,37 @@ class Checker {
                                 ? std::max<std::uint64_t>(1, primitives->size())
                                 : 1;
                 }
+                std::uint64_t below = 1;
                 if (children)
                     for (const json& c : *children)
-                        if (c.is_number_unsigned() && c.get<std::uint64_t>() < nodes.size())
+                        if (c.is_number_unsigned() && c.get<std::uint64_t>() < nodes.size()) {
                             total = std::min(limit + 1, total + placed[c.get<std::size_t>()]);
+                            below = add(below, copies[c.get<std::size_t>()]);
+                        }
                 placed[n] = std::min(limit + 1, total);
+                copies[n] = below;
                 state[n] = 2;
                 stack.pop_back();
             }
         }
         // What the scene places: its root nodes (every node if it names no scene).
-        std::uint64_t total = 0;
+        std::uint64_t total = 0, made = 0;
         const json& scenes = array("scenes");
         const auto scene_index = unsigned_member(document_, "scene", 0).value_or(0);
         if (scene_index < scenes.size() && scenes[scene_index].is_object()) {
             const auto roots = scenes[scene_index].find("nodes");
             if (roots != scenes[scene_index].end() && roots->is_array())
                 for (const json& r : *roots)
-                    if (r.is_number_unsigned() && r.get<std::uint64_t>() < nodes.size())
+                    if (r.is_number_unsigned() && r.get<std::uint64_t>() < nodes.size()) {
                         total = std::min(limit + 1, total + placed[r.get<std::size_t>()]);
+                        made = add(made, copies[r.get<std::size_t>()]);
+                    }
         }
         if (total > limit)
             throw LimitExceeded(path_.string(), "max_instances",
                                 "the node graph places more than " + std::to_string(limit) +
                                     " meshes (max_instances; nodes sharing children multiply)");
+        return made;
     }
 
     const std::filesystem::path& path_;
@@ -296,8 +309,8 @@ void check_gltf_bounds(const std::filesystem::path& path, const std::string& jso
     const json document = json::parse(json_text, nullptr, false);
     if (document.is_discarded() || !document.is_object()) return;
     check_gltf_schema(path, document);
-    Checker(path, document, glb_binary, options).run();
-    check_gltf_decode_budget(path, document, options);
+    const std::uint64_t nodes = Checker(path, document, glb_binary, options).run();
+    check_gltf_decode_budget(path, document, options, nodes);
 }
 
 }  // namespace zraster::io

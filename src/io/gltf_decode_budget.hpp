@@ -16,10 +16,12 @@
 namespace zraster::io {
 
 // Throws LimitExceeded(limit "max_triangles" or "max_geometry_bytes") naming the counts or the
-// bytes and the limit. Primitives of
-// every mesh count (Assimp decodes all of them, placed or not), once each (node placements share
-// them). Malformed members are left to the other checks and to Assimp.
+// bytes and the limit. Primitives of every mesh count (Assimp decodes all of them, placed or
+// not), once each (node placements share them); so do the `importer_nodes` nodes the importer
+// makes of the node graph (one per path from a root to a node: nodes sharing children multiply,
+// meshes or not), about 1.1 KB each. Malformed members are left to the other checks and to
+// Assimp.
 void check_gltf_decode_budget(const std::filesystem::path& path, const nlohmann::json& document,
-                              const LoadOptions& options);
+                              const LoadOptions& options, std::uint64_t importer_nodes);
 
 }  // namespace zraster::io

@@ -206,7 +206,7 @@ void resolve_target(T* data, std::size_t& pitch, const TargetField& field, int w
 }  // namespace
 
 void validate_scene(Frame& frame, const SceneView& scene, std::string_view source,
-                    const RenderOptions& options) {
+                    const RenderOptions& options, std::uint64_t target_samples) {
     const RenderLimits& limits = options.limits;
     const auto refuse = [&](const std::string& cause) {
         throw InputError(std::string(source), cause);
@@ -235,6 +235,7 @@ void validate_scene(Frame& frame, const SceneView& scene, std::string_view sourc
     if (vertices > std::min(limits.max_vertices, kMaxFrameVertices))
         refuse(std::to_string(vertices) + " vertices over all instances, more than the limit of " +
                std::to_string(std::min(limits.max_vertices, kMaxFrameVertices)));
+    check_frame_memory(source, vertices, triangles, target_samples, limits);
     frame.meshes.resize(scene.meshes.size());
     for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
         frame.meshes[m] = FrameMesh{};

@@ -12,11 +12,12 @@
 
 namespace zraster::detail {
 
-// The scene's consistency, its size against options.limits, and every array of every mesh an
-// instance uses; fills frame.meshes (bounds computed where the view has none) and
+// The scene's consistency, its size against options.limits (the frame's memory with
+// `target_samples` pixels and samples of targets the frame allocates), and every array of every
+// mesh an instance uses; fills frame.meshes (bounds computed where the view has none) and
 // frame.mesh_flags. Vertex indices are checked by the front end and check_indices.
 void validate_scene(Frame& frame, const SceneView& scene, std::string_view source,
-                    const RenderOptions& options);
+                    const RenderOptions& options, std::uint64_t target_samples);
 
 // Mesh m's vertex colors, checked as validate_scene checks them (none or one per position,
 // every component finite; an InputError naming the mesh and the color otherwise): their least

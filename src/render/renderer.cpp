@@ -36,8 +36,9 @@ namespace {
 
 // Options and scene are checked before anything is allocated: a frame that would need absurd
 // memory, or a scene whose arrays disagree (read out of bounds later), is an InputError here.
+// `own_targets`: the frame allocates its targets (counted in its memory).
 void validate(detail::Frame& frame, const SceneView& scene, std::string_view source,
-              const RenderOptions& options) {
+              const RenderOptions& options, bool own_targets) {
     if (options.width < 1 || options.height < 1 || options.width > kMaxViewport ||
         options.height > kMaxViewport)
         throw InputError("", "image size " + std::to_string(options.width) + "x" +
@@ -50,7 +51,7 @@ void validate(detail::Frame& frame, const SceneView& scene, std::string_view sou
                                  std::to_string(options.height) + " is " + std::to_string(pixels) +
                                  " pixels, more than the limit of " +
                                  std::to_string(limits.max_pixels));
-    detail::validate_scene(frame, scene, source, options);
+    detail::validate_scene(frame, scene, source, options, own_targets ? pixels : 0);
     if (options.clip_planes.size() > std::size_t(kMaxUserClipPlanes))
         throw InputError("", "at most " + std::to_string(kMaxUserClipPlanes) +
                                  " user clip planes are supported");
@@ -120,7 +121,7 @@ std::span<const glm::vec3> world_points(detail::Frame& frame) {
 void render_frame_in_arena(detail::Frame& frame, const SceneView& scene, std::string_view source,
                            const RenderOptions& options, const Destination& destination,
                            RenderStats& stats) {
-    validate(frame, scene, source, options);
+    validate(frame, scene, source, options, destination.caller == nullptr);
     frame.instance_outcomes = nullptr;
     if (destination.instance_outcomes != nullptr) {
         destination.instance_outcomes->clear();

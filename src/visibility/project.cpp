@@ -86,6 +86,11 @@ FrameContext make_frame_context(const Scene& scene, const RenderOptions& options
         throw InputError("", "at most " + std::to_string(kMaxUserClipPlanes) +
                                  " user clip planes are supported");
     if (options.camera) check_camera(*options.camera, options.width, options.height);
+    // The same estimate as render()'s: the camera fit's copy and the projection grow with the
+    // instanced vertices and triangles (the polygons kept have budgets of their own).
+    check_frame_memory(scene.name, scene.vertex_count(), scene.triangle_count(),
+                       std::uint64_t(options.width) * std::uint64_t(options.height),
+                       options.limits);
     // Vertex colors as the renderer checks them: shading reads them by vertex, and a NaN would
     // spread over whole triangles.
     if (std::any_of(scene.meshes.begin(), scene.meshes.end(),

@@ -2,6 +2,9 @@
 // files claiming 2^40 faces are refused quickly with exit status 2, one line naming the option or
 // file, no output file, and (outside sanitizer builds, whose shadow memory needs terabytes of
 // address space) within a 2 GiB address-space limit: no big allocation was attempted.
+#include <zraster/render.hpp>
+#include <zraster/scenes.hpp>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -605,6 +608,41 @@ TEST(CliLimits, CoveredSamplesExactly) {
                    "--max-covered-samples: expected a whole number, got '1e9'");
 }
 
+// The frame's memory estimate (RenderLimits::max_frame_bytes) from the command: exactly the
+// estimate renders, a byte less is refused naming the scene and the flag, before the camera fit
+// copies the scene (its world positions) for render, the classic visibility paths, bench and
+// the viewer alike; the flag takes a size.
+TEST(CliLimits, FrameMemoryExactly) {
+    const auto dir = temp_dir("cli-limits-frame-memory");
+    // sphere:2000 placed once; 64x64 targets.
+    const Scene scene = make_procedural_scene("sphere:2000");
+    const std::uint64_t geometry =
+        estimated_frame_bytes(scene.vertex_count(), scene.triangle_count(), 0);
+    const std::uint64_t frame =
+        estimated_frame_bytes(scene.vertex_count(), scene.triangle_count(), 64 * 64);
+    const std::string run = "render sphere:2000 --size 64x64 -o out.png --max-frame-bytes ";
+    const CommandResult exact = run_limited(run + std::to_string(frame), dir);
+    EXPECT_EQ(exact.exit_code, 0) << exact.output;
+    std::filesystem::remove(dir / "out.png");
+    expect_refused(dir, run + std::to_string(frame - 1),
+                   "zraster: sphere:2000: the frame needs about ");
+    expect_refused(dir, run + std::to_string(frame - 1),
+                   "; raise it with --max-frame-bytes SIZE (e.g. 8G)");
+    // Before the camera fit: the scene alone is past the limit (no target samples named).
+    expect_refused(dir, run + std::to_string(geometry - 1),
+                   std::to_string(scene.vertex_count()) + " vertices and " +
+                       std::to_string(scene.triangle_count()) + " triangles over all instances)");
+    for (const char* other : {"--visibility painter", "--visibility warnock", "--aa 2 --msaa"})
+        expect_refused(dir, run + std::to_string(frame - 1) + " " + other,
+                       "--max-frame-bytes SIZE");
+    expect_refused(dir, "bench sphere:2000 --size 64x64 --frames 1 --max-frame-bytes 1K",
+                   "--max-frame-bytes SIZE");
+    expect_refused(dir, run + "0", "--max-frame-bytes: must be more than 0 bytes");
+    expect_refused(dir, run + "lots",
+                   "--max-frame-bytes: expected a size in bytes like 4G, 512M or 1000000, got "
+                   "'lots'");
+}
+
 // A fragment budget raised past what the machine holds: the A-buffer's allocation fails under
 // the 2 GiB address-space limit and the run ends naming the budget (exit 2), not with "out of
 // memory" (exit 1). Before, the pool doubled to 3.3 GB and the command said "out of memory".
@@ -632,7 +670,7 @@ TEST(CliLimits, RaisedLimitsPastTheMachinesMemoryAreExitTwo) {
     const auto dir = temp_dir("cli-limits-out-of-memory");
     const CommandResult r = run_limited(
         "render builtin:cube --size 1024x1024 --aa 16 --max-pixels 9999999999999999999 "
-        "--max-bin-bytes 9999999999999999999 -o out.png",
+        "--max-bin-bytes 9999999999999999999 --max-frame-bytes 1T -o out.png",
         dir);
     EXPECT_EQ(r.exit_code, 2) << r.output;
     EXPECT_EQ(r.output.rfind("zraster: out of memory: the run needs more than this machine", 0), 0u)

@@ -72,6 +72,46 @@ TEST(LoadBudgets, AGraphOfBillionsIsRefusedBeforeItIsExpanded) {
     }
 }
 
+// The importer copies a node once per path to it, meshes or not: 30 levels of empty nodes, each
+// holding the one below twice, are 2^31 nodes from a 500-byte file (it ran out of memory at
+// 7.8 GB). Counted in the geometry's bytes, exactly.
+TEST(LoadBudgets, NodesSharingChildrenAreCountedInTheImportersBytes) {
+    const auto dir = test::temp_dir("budgets-empty-nodes");
+    // Node 0 places the triangle; node 1 holds node 2 twice, ..., node `levels` holds the empty
+    // leaf node levels + 1 twice: 1 + (2^(levels + 1) - 1) nodes copied.
+    const auto empty_tree = [](int levels) {
+        std::string json = shared_children_gltf(0, 1);
+        std::string nodes = R"({"mesh":0})";
+        for (int level = 1; level <= levels; ++level)
+            nodes += R"(,{"children":[)" + std::to_string(level + 1) + "," +
+                     std::to_string(level + 1) + "]}";
+        nodes += ",{}";
+        json.replace(json.find(R"({"mesh":0})"), 10, nodes);
+        json.replace(json.find(R"("nodes":[0])"), 11, R"("nodes":[0,1])");
+        return json;
+    };
+    const auto model = dir / "tree.gltf";
+    test::write_bytes(model, empty_tree(3));  // 16 nodes, one triangle (180 bytes)
+    LoadOptions o;
+    o.max_geometry_bytes = 16 * 1152 + 180;
+    EXPECT_EQ(load_scene(model, o).instances.size(), 1u);
+    --o.max_geometry_bytes;
+    test::expect_limit_exceeded([&] { load_scene(model, o); }, model, "max_geometry_bytes",
+                                "and the node graph's 16 nodes decode to about 18612 bytes");
+    const auto huge = dir / "huge.gltf";
+    test::write_bytes(huge, empty_tree(30));
+    for (const LoadIsolation isolation : {LoadIsolation::InProcess, LoadIsolation::WorkerProcess}) {
+        LoadOptions defaults;
+        defaults.isolation = isolation;
+        test::expect_limit_exceeded(
+            [&] { load_scene(huge, defaults); }, huge, "max_geometry_bytes",
+            "the meshes' 1 primitives and the node graph's 2147483648 nodes decode to about "
+            "2359296 MiB of geometry, more than max_geometry_bytes (1024 MiB) (the importer "
+            "copies an accessor into every primitive that reads it, and a node once per path to "
+            "it)");
+    }
+}
+
 // The budgets of LoadOptions are LimitExceeded naming the field, in process and through the
 // worker process (whose message carries the name): what lets the command name its flag.
 TEST(LoadBudgets, BudgetRefusalsNameTheirLimitInProcessAndThroughTheWorker) {
@@ -160,23 +200,24 @@ TEST(LoadBudgets, DecodedGeometryIsCountedInBytesPerPrimitive) {
         SCOPED_TRACE(isolation == LoadIsolation::InProcess ? "in process" : "worker");
         LoadOptions o;
         o.isolation = isolation;
-        o.max_geometry_bytes = 1800;
+        // 10 x 180 bytes, and the one node placing them: 1152.
+        o.max_geometry_bytes = 2952;
         EXPECT_EQ(load_scene(model, o).meshes.size(), 10u);
-        o.max_geometry_bytes = 1799;
+        o.max_geometry_bytes = 2951;
         test::expect_limit_exceeded(
             [&] { load_scene(model, o); }, model, "max_geometry_bytes",
-            "the meshes' 10 primitives decode to about 1800 bytes of geometry, more than "
-            "max_geometry_bytes (1799 bytes) (the importer copies an accessor into every "
-            "primitive that reads it)");
+            "the meshes' 10 primitives and the node graph's 1 node decode to about 2952 bytes of "
+            "geometry, more than max_geometry_bytes (2951 bytes) (the importer copies an "
+            "accessor into every primitive that reads it, and a node once per path to it)");
     }
     // A morph target's attributes are decoded too: 72 bytes more a primitive.
     const auto morphed = dir / "morphed.gltf";
     test::write_bytes(
         morphed, shared_accessor_gltf(10, "", R"("POSITION":0},"targets":[{"POSITION":0}],"x":{)"));
     LoadOptions o;
-    o.max_geometry_bytes = 2519;
+    o.max_geometry_bytes = 2520 + 1152 - 1;
     test::expect_limit_exceeded([&] { load_scene(morphed, o); }, morphed, "max_geometry_bytes",
-                                "decode to about 2520 bytes of geometry");
+                                "decode to about 3672 bytes of geometry");
 }
 
 // A 578-byte glTF whose one sparse accessor declares 150 million vertices (one of them given):
@@ -200,7 +241,8 @@ TEST(LoadBudgets, ASparseAccessorOfMillionsIsRefusedByItsBytes) {
         o.isolation = isolation;
         test::expect_limit_exceeded(
             [&] { load_scene(model, o); }, model, "max_geometry_bytes",
-            "the meshes' 1 primitives decode to about 10871 MiB of geometry, more than "
+            "the meshes' 1 primitives and the node graph's 1 node decode to about 10871 MiB of "
+            "geometry, more than "
             "max_geometry_bytes (1024 MiB)");
     }
 }

@@ -132,6 +132,66 @@ TEST(Limits, BinRecordsOfLargeTrianglesDrawnOverEachOther) {
     EXPECT_NO_THROW(render(scene, o));
 }
 
+// The frame's memory, estimated from the counts over all instances before anything is
+// allocated: exactly at the estimate it renders, a byte less is refused (in well under a second,
+// before the vertex stage); the caller's targets are the caller's memory and not counted.
+TEST(Limits, FrameMemoryIsEstimatedBeforeAnythingIsAllocated) {
+    EXPECT_EQ(RenderLimits{}.max_frame_bytes, std::uint64_t{4} << 30);
+    Scene scene = make_procedural_scene("sphere:2000");
+    const Instance one = scene.instances[0];
+    scene.instances.assign(50, one);
+    const std::uint64_t vertices = scene.vertex_count(), triangles = scene.triangle_count();
+    RenderOptions o;
+    o.width = 64;
+    o.height = 48;
+    const std::uint64_t with_targets = estimated_frame_bytes(vertices, triangles, 64 * 48);
+    EXPECT_EQ(with_targets, vertices * 100 + triangles * 50 + 64 * 48 * 36);
+    o.limits.max_frame_bytes = with_targets;
+    EXPECT_NO_THROW(render(scene, o));
+    --o.limits.max_frame_bytes;
+    try {
+        render(scene, o);
+        ADD_FAILURE() << "no LimitExceeded";
+    } catch (const LimitExceeded& e) {
+        EXPECT_EQ(e.limit(), "max_frame_bytes");
+        EXPECT_EQ(e.file(), scene.name);
+        EXPECT_EQ(e.cause(), "the frame needs about " +
+                                 std::to_string((with_targets + (1 << 20) - 1) >> 20) + " MiB (" +
+                                 std::to_string(vertices) + " vertices and " +
+                                 std::to_string(triangles) +
+                                 " triangles over all instances, 3072 target samples), more than "
+                                 "max_frame_bytes (" +
+                                 std::to_string((with_targets + (1 << 20) - 2) >> 20) + " MiB)");
+    }
+    // Into the caller's targets: the vertices and triangles alone.
+    RenderTargets targets;
+    targets.color.resize(64 * 48 * 4);
+    targets.depth.resize(64 * 48);
+    TargetViews views = view_of(targets);
+    views.width = 64;
+    views.height = 48;
+    std::vector<MeshView> meshes;
+    std::vector<InstanceView> instances;
+    const SceneView view = view_of(scene, meshes, instances);
+    o.limits.max_frame_bytes = estimated_frame_bytes(vertices, triangles, 0);
+    EXPECT_NO_THROW(render(view, o, views));
+    --o.limits.max_frame_bytes;
+    EXPECT_THROW(render(view, o, views), LimitExceeded);
+    // A mesh placed a million times is refused at once with the defaults, long before the
+    // vertex and triangle budgets (100 million each) that it stays within.
+    std::vector<Mesh> small;
+    small.push_back(make_uv_sphere(1.0f, 4, 8));  // 45 vertices, 64 triangles
+    scene = scene_from_meshes(std::move(small));
+    scene.instances.assign(1'000'000, scene.instances[0]);
+    RenderOptions defaults;
+    defaults.width = 64;
+    defaults.height = 48;
+    ASSERT_LT(scene.triangle_count(), defaults.limits.max_triangles);
+    expect_refused(scene, defaults, "more than max_frame_bytes (4096 MiB)");
+    // Saturated, not wrapped.
+    EXPECT_EQ(estimated_frame_bytes(UINT64_MAX / 50, 1, 1), UINT64_MAX);
+}
+
 // Millions of instances of one mesh: counted before the vertex stage sizes its arrays (whose
 // 32-bit vertex count would otherwise wrap).
 TEST(Limits, InstanceCountCannotWrapTheVertexCount) {

@@ -19,15 +19,11 @@
 namespace zraster::cli {
 namespace {
 
-// Working memory of the pipeline (RenderLimits' figures): about 100 bytes per vertex in the
-// vertex stage, 50 per triangle in binning; 36 per pixel and sample for the targets (color,
-// depth, normal, ids, coverage). Encoded outputs wait in memory until the file's are written:
-// at most about 48 bytes per pixel (color, depth, z, range, normal, ids and a point per pixel).
-constexpr std::uint64_t kPipelineBytesPerVertex = 100;
-constexpr std::uint64_t kPipelineBytesPerTriangle = 50;
-constexpr std::uint64_t kTargetBytesPerSample = 36;
+// Encoded outputs wait in memory until the files are written: at most about 48 bytes per pixel
+// (color, depth, z, range, normal, ids and a point per pixel). The pipeline's working memory is
+// render()'s estimate (estimated_frame_bytes).
 constexpr std::uint64_t kOutputBytesPerPixel = 48;
-static_assert(kMinBytesPerTriangle == 3 * sizeof(std::uint32_t) + kPipelineBytesPerTriangle);
+static_assert(kMinBytesPerTriangle == 3 * sizeof(std::uint32_t) + kFrameBytesPerTriangle);
 
 std::string mebibytes(std::uint64_t bytes) {
     if (bytes < (1u << 20)) return fmt::format("{:.0f} KiB", double(bytes) / 1024.0);
@@ -53,27 +49,6 @@ std::uint64_t scene_bytes(const Scene& scene) {
 
 }  // namespace
 
-std::uint64_t parse_byte_size(const std::string& option, const std::string& text) {
-    std::uint64_t value = 0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    std::string unit(end, text.data() + text.size());
-    for (char& c : unit) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    int shift = -1;
-    if (ec == std::errc() && end != text.data()) {
-        const char* const units[] = {"", "k", "m", "g", "t"};
-        for (int i = 0; i < 5; ++i)
-            for (const std::string tail : {"", "b", "ib"})
-                if (unit == units[i] + tail && (i > 0 || tail != "ib")) shift = 10 * i;
-    }
-    if (shift < 0)
-        throw InputError(option,
-                         "expected a size in bytes like 4G, 512M or 1000000, got '" + text + "'");
-    if (value == 0) throw InputError(option, "must be more than 0 bytes");
-    if (value > (~std::uint64_t{0} >> shift))
-        throw InputError(option, "'" + text + "' is more than 2^64 bytes");
-    return value << shift;
-}
-
 std::uint64_t default_max_memory(int jobs) {
     const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
     const std::uint64_t physical =
@@ -91,20 +66,17 @@ std::uint64_t estimated_memory(const Scene& scene, const std::vector<RenderArgum
         vertices += scene.meshes.at(instance.mesh).positions.size();
         triangles += scene.meshes.at(instance.mesh).triangle_count();
     }
-    // World-space positions for the camera fit, then the pipeline's arrays.
-    const std::uint64_t geometry = scene_bytes(scene) + vertices * sizeof(glm::vec3) +
-                                   vertices * kPipelineBytesPerVertex +
-                                   triangles * kPipelineBytesPerTriangle;
-    std::uint64_t largest_frame = 0, outputs = 0;
+    std::uint64_t largest_samples = 0, outputs = 0;
     for (const RenderArguments& a : views) {
         const glm::ivec2 size = parse_size("--size", a.size, kMaxViewport);
         const std::uint64_t pixels = std::uint64_t(size.x) * std::uint64_t(size.y);
         const int per_side = a.visibility == "abuffer" && a.aa == 1 ? 4 : std::max(a.aa, 1);
         const std::uint64_t samples = std::uint64_t(per_side) * std::uint64_t(per_side);
-        largest_frame = std::max(largest_frame, pixels * samples * kTargetBytesPerSample);
+        largest_samples = std::max(largest_samples, pixels * samples);
         outputs += pixels * kOutputBytesPerPixel;
     }
-    return geometry + largest_frame + outputs;
+    return scene_bytes(scene) + estimated_frame_bytes(vertices, triangles, largest_samples) +
+           outputs;
 }
 
 void check_batch_limits(const Scene& scene, const std::vector<RenderArguments>& views,

@@ -18,10 +18,6 @@ struct BatchLimits {
     std::uint64_t max_memory = 0;     // bytes one file may take while it is rendered
 };
 
-// "N", "NK", "NM", "NG", "NT" (powers of 1024; "KiB", "KB", "k" and the like accepted too).
-// Throws InputError naming `option`.
-std::uint64_t parse_byte_size(const std::string& option, const std::string& text);
-
 // 3/4 of the physical memory, shared among `jobs` files rendered at once.
 std::uint64_t default_max_memory(int jobs);
 

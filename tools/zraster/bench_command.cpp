@@ -36,6 +36,9 @@ void add_bench_command(CLI::App& app, BenchArguments& a) {
     cmd->add_option("--frames", a.frames, "Timed frames")->capture_default_str();
     cmd->add_option("--warmup", a.warmup, "Untimed frames before them")->capture_default_str();
     cmd->add_option("--threads", a.threads, "Worker threads (0: all cores)")->capture_default_str();
+    cmd->add_option("--max-frame-bytes", a.max_frame_bytes_text,
+                    "Refuse scenes whose frame needs more working memory than this (e.g. 8G)")
+        ->capture_default_str();
     cmd->add_flag("--no-cull", a.no_cull, "Disable back-face culling");
     cmd->add_flag("--no-hierarchical-z", a.no_hierarchical_z,
                   "Disable hierarchical z (same image, to measure what it saves)");
@@ -108,6 +111,8 @@ int run_bench(const BenchArguments& a) {
                                        std::to_string(RenderLimits{}.max_pixels) +
                                        " (render --max-pixels raises it; bench does not)");
     const int threads = capped_threads("--threads", checked_thread_count("--threads", a.threads));
+    const std::uint64_t max_frame_bytes =
+        parse_byte_size("--max-frame-bytes", a.max_frame_bytes_text);
     OutputFiles outputs;  // --out, checked before any work
     check_output(outputs, a.out, {".png"}, "--out");
     outputs.check_input(a.scene, "");
@@ -124,7 +129,8 @@ int run_bench(const BenchArguments& a) {
     options.strategy = shading_strategy(a.strategy);
     // The same fit_camera framing render() does for an unset camera, computed once: refitting
     // every frame would time a scan over all vertices that glbench does not do per frame.
-    check_instanced_vertices(scene);
+    options.limits.max_frame_bytes = max_frame_bytes;
+    check_instanced_vertices(scene, max_frame_bytes);
     options.camera = fit_camera(scene.world_positions());
     const Camera& cam = *options.camera;
     const std::size_t tris = scene.triangle_count();

@@ -18,6 +18,7 @@ struct BenchArguments {
     int frames = 20;
     int warmup = 2;
     int threads = 0;
+    std::string max_frame_bytes_text = "4G";  // RenderLimits::max_frame_bytes, as a size
     bool no_cull = false;
     bool no_hierarchical_z = false;
     bool no_cluster_culling = false;

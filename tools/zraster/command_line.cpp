@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <thread>
@@ -63,14 +64,39 @@ std::string limit_advice(const std::string& limit) {
         {"max_memory", "--max-memory"},
         {"max_triangulation_work", "--max-triangulation-work"},
     };
+    static const std::pair<const char*, const char*> kSizeFlags[] = {
+        {"max_geometry_bytes", "--max-geometry-memory"},
+        {"max_frame_bytes", "--max-frame-bytes"},
+    };
     for (const auto& [name, flag] : kFlags)
         if (limit == name) return fmt::format("; raise it with {} N", flag);
-    if (limit == "max_geometry_bytes")
-        return "; raise it with --max-geometry-memory SIZE (e.g. 4G)";
+    for (const auto& [name, flag] : kSizeFlags)
+        if (limit == name) return fmt::format("; raise it with {} SIZE (e.g. 8G)", flag);
     return "";
 }
 
-void check_instanced_vertices(const Scene& scene) {
+std::uint64_t parse_byte_size(const std::string& option, const std::string& text) {
+    std::uint64_t value = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    std::string unit(end, text.data() + text.size());
+    for (char& c : unit) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    int shift = -1;
+    if (ec == std::errc() && end != text.data()) {
+        const char* const units[] = {"", "k", "m", "g", "t"};
+        for (int i = 0; i < 5; ++i)
+            for (const std::string tail : {"", "b", "ib"})
+                if (unit == units[i] + tail && (i > 0 || tail != "ib")) shift = 10 * i;
+    }
+    if (shift < 0)
+        throw InputError(option,
+                         "expected a size in bytes like 4G, 512M or 1000000, got '" + text + "'");
+    if (value == 0) throw InputError(option, "must be more than 0 bytes");
+    if (value > (~std::uint64_t{0} >> shift))
+        throw InputError(option, "'" + text + "' is more than 2^64 bytes");
+    return value << shift;
+}
+
+void check_instanced_vertices(const Scene& scene, std::uint64_t max_frame_bytes) {
     const std::uint64_t limit = RenderLimits{}.max_vertices;
     if (scene.vertex_count() > limit)
         throw LimitExceeded(scene.name, "max_vertices",
@@ -78,6 +104,8 @@ void check_instanced_vertices(const Scene& scene) {
                                 " vertices over all instances (the meshes times their "
                                 "placements), more than the renderer's limit of " +
                                 std::to_string(limit));
+    check_frame_memory(scene.name, scene.vertex_count(), scene.triangle_count(), 0,
+                       RenderLimits{.max_frame_bytes = max_frame_bytes});
 }
 
 glm::dvec3 parse_vec3(const std::string& option, const std::string& text) {

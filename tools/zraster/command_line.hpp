@@ -22,9 +22,14 @@ inline constexpr int kExitSomeFilesFailed = 3;  // `zraster batch`: the others w
 // message ("; raise it with --max-bsp-polygons N"); empty for a limit without one.
 std::string limit_advice(const std::string& limit);
 
+// "N", "NK", "NM", "NG", "NT" (powers of 1024; "KiB", "KB", "k" and the like accepted too).
+// Throws InputError naming `option`.
+std::uint64_t parse_byte_size(const std::string& option, const std::string& text);
+
 // The instanced vertices of `scene` (what a camera fit copies) within the renderer's vertex limit
-// (RenderLimits::max_vertices), checked before anything is copied: LimitExceeded otherwise.
-void check_instanced_vertices(const Scene& scene);
+// (RenderLimits::max_vertices) and its frame within `max_frame_bytes` (check_frame_memory,
+// without targets), checked before anything is copied: LimitExceeded otherwise.
+void check_instanced_vertices(const Scene& scene, std::uint64_t max_frame_bytes);
 
 // Enough digits (17 significant) to read back the same double; -0 written as 0. For the flag
 // values the command makes and the numbers of the JSON it writes.

@@ -92,6 +92,10 @@ void add_render_arguments(CLI::App& cmd, RenderArguments& a) {
                    "samples than this")
         ->check(whole_number(false))
         ->capture_default_str();
+    cmd.add_option("--max-frame-bytes", a.max_frame_bytes_text,
+                   "Refuse frames whose working memory, estimated from the vertices and "
+                   "triangles over all instances and the image, is more than this (e.g. 8G)")
+        ->capture_default_str();
     cmd.add_option("--threads", a.threads, "Worker threads (0: all cores)")->capture_default_str();
     cmd.add_option("--eye", a.eye, "Camera position X,Y,Z (default: frame the bounding sphere)");
     cmd.add_option("--target", a.target, "Point looked at X,Y,Z");
@@ -286,7 +290,7 @@ RenderOptions make_render_options(const RenderArguments& a, const Scene& scene) 
     if (a.portal_cull != "off" && !scene.cells)
         throw InputError("--portal-cull",
                          "the scene has no cells (building:RxC or a .cells.json file)");
-    check_instanced_vertices(scene);
+    check_instanced_vertices(scene, parse_byte_size("--max-frame-bytes", a.max_frame_bytes_text));
     const std::vector<glm::vec3> world = scene.world_positions();
     try {
         return make_render_options(a, world, std::nullopt);
@@ -324,6 +328,7 @@ RenderOptions make_render_options(const RenderArguments& a,
     o.limits.max_pixels = a.max_pixels;
     o.limits.max_bin_bytes = a.max_bin_bytes;
     o.limits.max_covered_samples = a.max_covered_samples;
+    o.limits.max_frame_bytes = parse_byte_size("--max-frame-bytes", a.max_frame_bytes_text);
     o.limits.max_painter_comparisons = a.max_painter_comparisons;
     o.limits.max_bsp_polygons = a.max_bsp_polygons;
     o.limits.max_warnock_classifications = a.max_warnock_classifications;

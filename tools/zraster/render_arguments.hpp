@@ -28,6 +28,7 @@ struct RenderArguments {
     std::uint64_t max_pixels = RenderLimits{}.max_pixels;
     std::uint64_t max_bin_bytes = RenderLimits{}.max_bin_bytes;
     std::uint64_t max_covered_samples = RenderLimits{}.max_covered_samples;
+    std::string max_frame_bytes_text = "4G";  // RenderLimits::max_frame_bytes, as a size
     // Budgets of the object-space algorithms (0: automatic, scaled to the input).
     std::uint64_t max_painter_comparisons = 0, max_bsp_polygons = 0;
     std::uint64_t max_warnock_classifications = 0;

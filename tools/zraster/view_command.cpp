@@ -77,7 +77,8 @@ int run_view(const ViewArguments& a) {
     std::vector<std::filesystem::path> files_read;
     const Scene scene = load_scene_or_procedural(a.render.scene, nullptr, nullptr, &files_read);
     check_screenshot_path(a, files_read);
-    check_instanced_vertices(scene);
+    check_instanced_vertices(scene,
+                             parse_byte_size("--max-frame-bytes", a.render.max_frame_bytes_text));
     const std::vector<glm::vec3> world = scene.world_positions();
     std::optional<ViewState> state;
     try {
