@@ -564,6 +564,23 @@ row "glTF accessor of zeros (no bufferView)" render zeros.gltf -o out.png
 printf "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 junk\n" >junk.off
 row "OFF face with a word after its indices" render junk.off -o out.png
 rm -rf out.d
+# Frames past their memory: a mesh placed many times (the frame estimated before the camera fit
+# copies it), and 30 levels of empty glTF nodes each holding the next twice (2^31 nodes the
+# importer copies per path: 7.8 GB before it failed).
+row "a frame past --max-frame-bytes (the estimate of its vertices, triangles and targets)" render sphere:2000 --size 64x64 --max-frame-bytes 1M -o out.png
+python3 - <<'PY'
+import json
+nodes = [{"mesh": 0}] + [{"children": [level + 1, level + 1]} for level in range(1, 31)] + [{}]
+document = json.load(open("zeros.gltf"))
+document["nodes"], document["scenes"] = nodes, [{"nodes": [0, 1]}]
+document["buffers"] = [{"byteLength": 36, "uri": "data:application/octet-stream;base64,"
+                        "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]
+document["bufferViews"] = [{"buffer": 0, "byteLength": 36}]
+document["accessors"][0]["bufferView"] = 0
+json.dump(document, open("nodes2e31.gltf", "w"))
+PY
+row "glTF of 30 levels of empty nodes sharing children (2^31 nodes in the importer)" render nodes2e31.gltf -o out.png
+rm -f out.png
 echo
 echo "$n inputs; $failures broke the contract (exit 2, one line, nothing left)."
 [ "$failures" -eq 0 ]
