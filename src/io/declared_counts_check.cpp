@@ -1,6 +1,7 @@
 #include "io/declared_counts_check.hpp"
 
 #include "io/gltf_bounds_check.hpp"
+#include "io/obj_number_token.hpp"
 #include "io/text_util.hpp"
 #include "io/triangulation_budget.hpp"
 
@@ -107,7 +108,7 @@ void check_ply_lists(const std::filesystem::path& path, std::size_t header_bytes
     bool has_list = false;
     for (const auto& properties : layout)
         for (const PlyProperty& p : properties) has_list |= p.list;
-    if (!has_list) return;
+    if (!has_list && !ascii) return;
     std::ifstream in(path, std::ios::binary);
     const std::string file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     std::uint64_t at = std::min<std::uint64_t>(header_bytes, file.size());
@@ -162,10 +163,20 @@ void check_ply_lists(const std::filesystem::path& path, std::size_t header_bytes
                 // Each entry takes at least a digit and a separator of what is left.
                 const std::uint64_t available = end - at;
                 at = line_end + 1;
+                // Assimp reads a number's prefix ("0x" as 0, "1e5x" as 1e5) without a word.
+                const auto check_number = [&](const PlyProperty& p, const std::string& word) {
+                    if (!is_number_word(word))
+                        throw InputError(path.string(), "malformed PLY file: " + elements[e].name +
+                                                            " " + std::to_string(r) + "'s " +
+                                                            p.name + ": " + not_a_number(word));
+                };
                 for (const PlyProperty& p : layout[e]) {
                     std::string token;
                     if (!(words >> token)) break;
-                    if (!p.list) continue;
+                    if (!p.list) {
+                        check_number(p, token);
+                        continue;
+                    }
                     // A length that is not digits: Assimp reads "-3" as a huge length.
                     if (token.find_first_not_of("0123456789") != std::string::npos) {
                         if (token.size() > 1 && token[0] == '-' &&
@@ -181,7 +192,10 @@ void check_ply_lists(const std::filesystem::path& path, std::size_t header_bytes
                     if (length > available / 2 + 1) refuse(elements[e].name, length);
                     check_corners(r, p, false, token);
                     for (std::uint64_t i = 0; i < length && words >> token; ++i) {
-                        if (!check_indices || !p.vertex_indices()) continue;
+                        if (!check_indices || !p.vertex_indices()) {
+                            check_number(p, token);
+                            continue;
+                        }
                         long long index = -1;
                         const auto [end_of, error] =
                             std::from_chars(token.data(), token.data() + token.size(), index);

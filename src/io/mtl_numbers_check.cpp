@@ -70,6 +70,17 @@ void check_mtl_numbers(const std::filesystem::path& obj, const std::filesystem::
             refuse("'" + std::string(words[0]) + "' of 2 numbers; a color is 1 or 3");
         if (color && numbers == 0)
             refuse("'" + std::string(words[0]) + "' without a number; a color is 1 or 3");
+        // An illumination model is one of the specification's 0 to 10 (Assimp read the word
+        // into an int: 4294967296 wrapped).
+        const auto model = [](std::string_view w) {
+            const std::size_t first = std::min(w.find_first_not_of('0'), w.size() - 1);
+            return w.substr(first);  // leading zeros dropped, "0" kept
+        };
+        if (words[0] == "illum" && numbers > 0 &&
+            (numbers != 1 || words[1].find_first_not_of("0123456789") != std::string_view::npos ||
+             model(words[1]).size() > 2 || std::stoi(std::string(model(words[1]))) > 10))
+            refuse("'illum " + std::string(words[1].substr(0, 40)) + (numbers > 1 ? " ..." : "") +
+                   "': the illumination model is one whole number from 0 to 10");
     }
 }
 

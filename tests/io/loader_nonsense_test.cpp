@@ -126,7 +126,14 @@ TEST(LoaderNonsense, MtlWordsThatAreNotNumbersAreRefusedNamingTheLibrary) {
           Case{"Ns 1e5x", "'1e5x' is not a number"}, Case{"d 0.5,", "'0.5,' is not a number"},
           Case{"Ka 0 0 0x1", "'0x1' is not a number"},
           Case{"Kd 0.5 0.5", "'Kd' of 2 numbers; a color is 1 or 3"},
-          Case{"Ks", "'Ks' without a number; a color is 1 or 3"}}) {
+          Case{"Ks", "'Ks' without a number; a color is 1 or 3"},
+          Case{"illum 4294967296",
+               "'illum 4294967296': the illumination model is one whole number from 0 to 10"},
+          Case{"illum 11", "'illum 11': the illumination model is one whole number from 0 to 10"},
+          Case{"illum 2 3",
+               "'illum 2 ...': the illumination model is one whole number from 0 to 10"},
+          Case{"illum 2.0",
+               "'illum 2.0': the illumination model is one whole number from 0 to 10"}}) {
         SCOPED_TRACE(c.statement);
         const auto dir = test::temp_dir("nonsense-mtl");
         const auto mtl = dir / "m.mtl";
@@ -143,10 +150,40 @@ TEST(LoaderNonsense, MtlWordsThatAreNotNumbersAreRefusedNamingTheLibrary) {
     }
     // Comments end a statement.
     const auto dir = test::temp_dir("nonsense-mtl-good");
-    test::write_bytes(dir / "m.mtl", "newmtl red\nKd 1 0 0 # red\nd 0.5\nNs 10 #\n");
+    test::write_bytes(dir / "m.mtl", "newmtl red\nKd 1 0 0 # red\nd 0.5\nNs 10 #\nillum 010\n");
     test::write_bytes(dir / "m.obj",
                       "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n");
     EXPECT_EQ(load_scene(dir / "m.obj").materials.size(), 2u);
+}
+
+// ASCII PLY values are numbers: Assimp read the prefix of "0x" (0) and "1e5x" without a word.
+TEST(LoaderNonsense, AsciiPlyWordsThatAreNotNumbersAreRefusedByName) {
+    const std::string head =
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+        "property float z\n";
+    const std::string faces = "element face 1\nproperty list uchar int vertex_indices\n";
+    struct Case {
+        std::string text, cause;
+    };
+    for (const Case& c : {
+             Case{head + faces + "end_header\n0 0 0x\n1 0 0\n0 1 0\n3 0 1 2\n",
+                  "malformed PLY file: vertex 0's z: '0x' is not a number"},
+             Case{head + "end_header\n0 0 0\n1e5x 0 0\n0 1 0\n",
+                  "malformed PLY file: vertex 1's x: '1e5x' is not a number"},
+             Case{head + "element face 1\nproperty list uchar float texcoord\nend_header\n"
+                         "0 0 0\n1 0 0\n0 1 0\n2 0.5 0,5\n",
+                  "malformed PLY file: face 0's texcoord: '0,5' is not a number"},
+         }) {
+        SCOPED_TRACE(c.cause);
+        const auto path = test::write_fixture("nonsense-ply-numbers", "n.ply", c.text);
+        for (const LoadIsolation isolation : kIsolations)
+            test::expect_input_error([&] { load_scene(path, isolated(isolation)); }, path, c.cause);
+    }
+    const auto good = test::write_fixture(
+        "nonsense-ply-good", "g.ply",
+        head + faces + "end_header\n-0.5 +1 1e-3\n1.5E+1 0 0\n0 1. 0\n3 0 1 2\n");
+    for (const LoadIsolation isolation : kIsolations)
+        EXPECT_EQ(load_scene(good, isolated(isolation)).meshes.at(0).indices.size(), 3u);
 }
 
 TEST(LoaderNonsense, GltfVersionsThatAreNot2NAreRefused) {
