@@ -65,18 +65,20 @@ std::optional<StructuredLightSensor> sensor_argument(py::handle object) {
     type_error("sensor", "None, 'ideal', 'kinect' or a zraster.StructuredLightSensor", object);
 }
 
-void depth_camera_images(const DepthCameraImages& images, const SceneView& scene,
-                         const RenderOptions& options, const Camera& camera) {
+StructuredLightStats depth_camera_images(const DepthCameraImages& images, const SceneView& scene,
+                                         const RenderOptions& options, const Camera& camera) {
     const std::size_t n = std::size_t(options.width) * std::size_t(options.height);
     const std::span<float> z(images.z, n);
     metric_depth(camera, depth_clear_value(options), {images.depth, n}, z);
+    StructuredLightStats stats;
     if (images.sensor) {
         RenderOptions used = options;
         used.camera = camera;
-        apply_structured_light(*images.sensor, scene, used, z, {images.normal, n});
+        stats = apply_structured_light(*images.sensor, scene, used, z, {images.normal, n});
     }
     if (images.range != nullptr)
         range_from_z(camera, options.width, options.height, z, {images.range, n});
+    return stats;
 }
 
 void bind_depth_camera(py::module_& m) {

@@ -27,9 +27,9 @@ struct DepthCameraImages {
 
 // z (metric depth), measured through the sensor if there is one, then range, for a frame
 // rendered with `options` by `camera` (RenderStats::camera). Makes no Python call: runs without
-// the GIL.
-void depth_camera_images(const DepthCameraImages& images, const SceneView& scene,
-                         const RenderOptions& options, const Camera& camera);
+// the GIL. Returns the sensor's counts (all zero without one).
+StructuredLightStats depth_camera_images(const DepthCameraImages& images, const SceneView& scene,
+                                         const RenderOptions& options, const Camera& camera);
 
 void bind_depth_camera(py::module_& m);
 

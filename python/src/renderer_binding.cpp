@@ -12,6 +12,7 @@
 #include "arrays.hpp"
 #include "binding.hpp"
 #include "command_line.hpp"
+#include "depth_camera_outputs.hpp"
 #include "depth_outputs.hpp"
 #include "errors.hpp"
 #include "flag_effects.hpp"
@@ -232,6 +233,7 @@ py::dict render(PyRenderer& r, const py::object& scene_object, const py::object&
     const bool pipeline = cli::renders_with_pipeline(a);
     // Other algorithms draw owning scenes into their own targets, copied into the arrays.
     const Scene* owning = pipeline ? nullptr : &scene->owning();
+    StructuredLightStats sensor_stats;
     try {
         py::gil_scoped_release release;
         const std::lock_guard<std::mutex> lock(r.mutex);
@@ -270,12 +272,17 @@ py::dict render(PyRenderer& r, const py::object& scene_object, const py::object&
             r.stats = result.stats;
         }
         if (metric)
-            r.post_arena->execute(
-                [&] { depth_camera_images(depth_camera, scene->view(), options, r.stats.camera); });
+            r.post_arena->execute([&] {
+                sensor_stats =
+                    depth_camera_images(depth_camera, scene->view(), options, r.stats.camera);
+            });
         r.rendered = true;
     } catch (const InputError& e) {
         throw InputError(keyword_name(e.file()), with_keyword_names(e.cause()));
     }
+    if (const auto warning = cli::sensor_warning(sensor_stats))
+        if (PyErr_WarnEx(PyExc_UserWarning, (scene->spec + ": " + *warning).c_str(), 1) != 0)
+            throw py::error_already_set();
     py::dict result;
     for (const Output o : order) result[kOutputNames[o]] = arrays[o];
     return result;

@@ -1,6 +1,8 @@
 """The depth camera: metric z, range, point clouds and the Kinect-style sensor model, against
 the geometry they measure and against the command's outputs."""
 
+import warnings
+
 import numpy as np
 import pytest
 
@@ -117,6 +119,20 @@ def test_the_sensor_loses_pixels_and_quantizes_depth():
     steps = fb / (seen * 0.125)  # whole numbers of 1/8-pixel disparity steps
     np.testing.assert_allclose(steps, np.round(steps), atol=1e-3)
     assert len(np.unique(np.round(steps))) > 20
+
+
+def test_a_sensor_that_measures_nothing_warns():
+    scene = zraster.load("builtin:default")
+    renderer = zraster.Renderer(W, H)
+    nothing = zraster.StructuredLightSensor(baseline=1e-300)
+    with pytest.warns(UserWarning, match=r"^builtin:default: the sensor measured none of the \d+ "
+                                         r"pixels that see the scene \("):
+        z = renderer.render(scene, None, "z", sensor=nothing)["z"]
+    assert not z.any()
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert renderer.render(scene, None, "z", sensor=zraster.StructuredLightSensor(
+            max_range=100))["z"].any()
 
 
 def test_the_same_seed_gives_the_same_image():

@@ -123,10 +123,12 @@ class Checker {
                 std::string scheme = text.substr(0, 5);
                 for (char& c : scheme) c = char(std::tolower(static_cast<unsigned char>(c)));
                 if (text.starts_with('/') || scheme == "file:")
-                    throw InputError(path_.string(),
-                                     "buffer " + std::to_string(i) + "'s URI '" + one_line(text) +
-                                         "' is an absolute path: glTF buffers are read relative "
-                                         "to the model's folder only");
+                    throw InputError(
+                        path_.string(),
+                        "buffer " + std::to_string(i) + "'s URI '" + one_line(text) +
+                            (scheme == "file:" ? "' is a file: URL" : "' is an absolute path") +
+                            ": glTF buffers are read relative to the model's folder "
+                            "only (a relative URI such as 'data.bin')");
                 if (text.starts_with("data:")) {
                     data = data_uri_bytes(text);
                 } else if (const auto file = path_.parent_path() / text;

@@ -101,8 +101,12 @@ Scene make_procedural_scene(std::string_view spec) {
         throw InputError(file, "N out of range (1.." + std::to_string(limit) + ")");
 
     std::uint64_t seed = 1;
-    if (parts.size() == 3 && parse_unsigned(parts[2], seed) != ParseResult::Ok)
-        throw InputError(file, malformed_message);
+    if (parts.size() == 3) {
+        const ParseResult seed_parsed = parse_unsigned(parts[2], seed);
+        if (seed_parsed == ParseResult::OutOfRange)
+            throw InputError(file, "SEED out of range (0..18446744073709551615)");
+        if (seed_parsed != ParseResult::Ok) throw InputError(file, malformed_message);
+    }
 
     if (kind == "sphere") return single_mesh_scene(make_bench_sphere(long(n)), spec);
     if (kind == "city") return single_mesh_scene(make_bench_city(long(n), seed), spec);

@@ -279,6 +279,34 @@ TEST(DepthCameraCommand, KinectSensorIsTheLibrarysAndFollowsTheSeed) {
     EXPECT_GT(frame.sensor_stats.measured, 1000u);
 }
 
+// A sensor that measures none of the pixels in view (a baseline of 1e-300: every disparity
+// rounds to nothing) writes its all-zero images with a warning giving the counts by cause; one
+// that measures some says nothing.
+TEST(DepthCameraCommand, ASensorThatMeasuresNothingSaysSo) {
+    const auto dir = temp_dir("cli-kinect-nothing");
+    const std::string kinect = "render " + kView + " -o c.png --sensor kinect --z-out z.npy ";
+    StructuredLightSensor sensor;
+    sensor.baseline = 1e-300;
+    const DepthFrame frame = render_depth_frame(make_procedural_scene("builtin:sphere"),
+                                                view_options(view_camera()), sensor);
+    ASSERT_EQ(frame.sensor_stats.measured, 0u);
+    const StructuredLightStats& s = frame.sensor_stats;
+    const CommandResult r = run_zraster(kinect + "--sensor-baseline 1e-300", dir);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_EQ(r.output,
+              "warning: builtin:sphere: the sensor measured none of the " +
+                  std::to_string(s.outside_projector + s.grazing + s.shadowed + s.out_of_range) +
+                  " pixels that see the scene (" + std::to_string(s.outside_projector) +
+                  " outside the projector's image, " + std::to_string(s.grazing) + " too steep, " +
+                  std::to_string(s.shadowed) + " shadowed, " + std::to_string(s.out_of_range) +
+                  " outside its range): its z and range are all 0; check the sensor's "
+                  "baseline, ranges and incidence\n");
+    EXPECT_EQ(read_npy(dir / "z.npy"), frame.z);
+    const CommandResult measured = run_zraster(kinect, dir);
+    EXPECT_EQ(measured.exit_code, 0);
+    EXPECT_EQ(measured.output, "");
+}
+
 TEST(DepthCameraCommand, BadFlagsExitTwoNamingTheOptionWithoutWritingAnything) {
     const struct {
         std::string flags, option;

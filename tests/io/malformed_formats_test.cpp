@@ -102,11 +102,11 @@ std::vector<Malformed> malformed_files() {
         {"absolute.gltf",
          R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":4,"uri":"/etc/passwd"}]})",
          "buffer 0's URI '/etc/passwd' is an absolute path: glTF buffers are read relative to "
-         "the model's folder only"},
+         "the model's folder only (a relative URI such as 'data.bin')"},
         {"url.gltf",
          R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":4,"uri":"FILE:///dev/zero"}]})",
-         "buffer 0's URI 'FILE:///dev/zero' is an absolute path: glTF buffers are read relative "
-         "to the model's folder only"},
+         "buffer 0's URI 'FILE:///dev/zero' is a file: URL: glTF buffers are read relative to "
+         "the model's folder only (a relative URI such as 'data.bin')"},
         {"scene.gltf", R"({"asset":{"version":"2.0"},"scene":5,"scenes":[{"nodes":[]}]})",
          "malformed glTF file: glTF \"scene\" 5 is not one of the file's 1 scenes"},
         // JSON under another name: Assimp's glTF importers would read it.

@@ -55,10 +55,9 @@ TEST(ProceduralSpec, BenchScenesAreOneMeshOneIdentityInstanceDefaultMaterial) {
 }
 
 TEST(ProceduralSpec, MalformedSpecs) {
-    for (const char* spec :
-         {"sphere:", "sphere:abc", "sphere:10:2", "sphere:1e6", "sphere:-5", "sphere: 5",
-          "sphere:5 ", "sphere:+5", "city:5:", "city:5:x", "city:5:1:2", "soup::1",
-          "soup:5:18446744073709551616", "cube:5", "soup:0x10"})
+    for (const char* spec : {"sphere:", "sphere:abc", "sphere:10:2", "sphere:1e6", "sphere:-5",
+                             "sphere: 5", "sphere:5 ", "sphere:+5", "city:5:", "city:5:x",
+                             "city:5:1:2", "soup::1", "cube:5", "soup:0x10"})
         EXPECT_EQ(error_of(spec), malformed) << spec;
 }
 
@@ -68,6 +67,8 @@ TEST(ProceduralSpec, OutOfRange) {
     EXPECT_EQ(error_of("sphere:99999999999999999999999"), "N out of range (1..20000000)");
     EXPECT_EQ(error_of("city:2000001"), "N out of range (1..2000000)");
     EXPECT_EQ(error_of("city:0:4"), "N out of range (1..2000000)");
+    EXPECT_EQ(error_of("soup:5:18446744073709551616"),
+              "SEED out of range (0..18446744073709551615)");
     // The full message names the spec like a file.
     try {
         make_procedural_scene("city:0");

@@ -285,6 +285,16 @@ Camera apply_intrinsics(const DepthCameraArguments& a, const Camera& camera, int
     return pinhole;
 }
 
+std::optional<std::string> sensor_warning(const StructuredLightStats& s) {
+    const std::uint64_t seen = s.outside_projector + s.grazing + s.shadowed + s.out_of_range;
+    if (s.measured > 0 || seen == 0) return std::nullopt;
+    return fmt::format(
+        "the sensor measured none of the {} pixels that see the scene ({} outside the "
+        "projector's image, {} too steep, {} shadowed, {} outside its range): its z and range "
+        "are all 0; check the sensor's baseline, ranges and incidence",
+        seen, s.outside_projector, s.grazing, s.shadowed, s.out_of_range);
+}
+
 void add_depth_camera_outputs(const DepthCameraArguments& a, const Scene& scene,
                               const RenderOptions& options, const RenderTargets& t,
                               OutputFiles& outputs) {
@@ -296,8 +306,10 @@ void add_depth_camera_outputs(const DepthCameraArguments& a, const Scene& scene,
     if (a.sensor == "kinect") {
         std::vector<MeshView> meshes;
         std::vector<InstanceView> instances;
-        apply_structured_light(sensor_of(a), view_of(scene, meshes, instances), options, z,
-                               t.normal);
+        const StructuredLightStats stats = apply_structured_light(
+            sensor_of(a), view_of(scene, meshes, instances), options, z, t.normal);
+        if (const auto warning = sensor_warning(stats))
+            fmt::print(stderr, "warning: {}: {}\n", scene.name, *warning);
     }
     if (!a.z_out.empty()) {
         if (lower_extension(a.z_out) == ".npy") {

@@ -2,6 +2,7 @@
 // point-cloud outputs, a pinhole camera from intrinsics, the camera written as JSON, and the
 // structured-light sensor model.
 #pragma once
+#include <zraster/depth_camera.hpp>
 #include <zraster/output_files.hpp>
 #include <zraster/render.hpp>
 #include <zraster/scene.hpp>
@@ -42,6 +43,11 @@ bool depth_camera_needs_normals(const DepthCameraArguments& arguments);
 // image of `width` x `height`; unchanged without --intrinsics.
 Camera apply_intrinsics(const DepthCameraArguments& arguments, const Camera& camera, int width,
                         int height);
+
+// A warning when the sensor measured none of the pixels that see the scene (its settings, such
+// as a baseline of 1e-300, can leave every one unmeasured): the counts by cause. nullopt when it
+// measured some, or nothing was in view.
+std::optional<std::string> sensor_warning(const StructuredLightStats& stats);
 
 // The requested outputs' bytes, added to `outputs` (options: those the frame was rendered
 // with, their camera the one used).
