@@ -67,8 +67,10 @@ TEST(ExplainCommand, EveryAlgorithmWritesItsPicturesAndAnIndexNamingThem) {
     };
     for (const ExplainCase& c : cases) {
         const auto dir = temp_dir(std::string("explain-") + c.algorithm);
-        const CommandResult r = run_zraster(
-            std::string("explain ") + c.algorithm + " " + c.scene + " --size 160x120 -o out", dir);
+        // (The 2D algorithms draw their own figures: no scene, no size.)
+        const std::string scene = *c.scene ? std::string(c.scene) + " --size 160x120" : "";
+        const CommandResult r =
+            run_zraster(std::string("explain ") + c.algorithm + " " + scene + " -o out", dir);
         ASSERT_EQ(r.exit_code, 0) << c.algorithm << ": " << r.output;
         const std::set<std::string> files = explain_folder_files(dir / "out");
         EXPECT_NE(r.output.find(std::to_string(files.size()) + " files in out"), std::string::npos)
@@ -176,6 +178,15 @@ TEST(ExplainCommand, BadInputIsExitTwoWithOneLine) {
     EXPECT_TRUE(single_line(missing.output)) << missing.output;
     EXPECT_FALSE(std::filesystem::exists(dir / "out" / "index.html"));
     std::ofstream(dir / "file") << "x";
+    // A scene or a frame option given to an algorithm that draws its own figures.
+    for (const char* run :
+         {"explain cohen-sutherland builtin:cube -o out", "explain dda -o out --size 100x100",
+          "explain bresenham -o out --step 2"})
+        EXPECT_EQ(run_zraster(run, dir).exit_code, 2) << run;
+    EXPECT_EQ(run_zraster("explain cohen-sutherland city:20 -o out", dir).output,
+              "zraster: city:20: cohen-sutherland draws its own figures: it takes no scene, and no "
+              "size, camera, shading or --step (only -o and the --max- budgets)\n");
+    EXPECT_FALSE(std::filesystem::exists(dir / "out"));
     const CommandResult not_folder = run_zraster("explain dda -o file", dir);
     EXPECT_EQ(not_folder.exit_code, 2);
     EXPECT_EQ(not_folder.output, "zraster: -o: file exists and is not a folder\n");

@@ -114,10 +114,24 @@ void add_explain_command(CLI::App& app, ExplainArguments& a) {
                     "Refuse runs whose pictures (every frame counted) take more pixels than this")
         ->check(whole_number(false))
         ->capture_default_str();
+    cmd->parse_complete_callback([cmd, &a] {
+        for (const CLI::Option* option : cmd->get_options())
+            if (option->count() > 0) a.given.push_back(option->get_name());
+    });
 }
 
 int run_explain(const ExplainArguments& a) {
     const ExplainedAlgorithm& algorithm = find_algorithm(a.algorithm);
+    // The 2D algorithms draw their own segments and polygons: a scene, a camera or --step would
+    // change nothing (budget flags are accepted everywhere, as docs/limits.md says).
+    if (!algorithm.uses_scene)
+        for (const std::string& name : a.given)
+            if (name != "algorithm" && name != "--output" && !name.starts_with("--max-"))
+                throw InputError(
+                    name == "scene" ? a.render.scene : name,
+                    std::string(a.algorithm) +
+                        " draws its own figures: it takes no scene, and no size, camera, "
+                        "shading or --step (only -o and the --max- budgets)");
     Scene scene;
     RenderOptions options;
     std::vector<std::filesystem::path> files_read;  // besides the model: textures, buffers

@@ -17,6 +17,7 @@ struct ExplainArguments {
     std::string output;
     int step = 0;  // frames: every step-th triangle or polygon (0: about 8 frames)
     std::uint64_t max_pixels = kDefaultMaxExplainPixels;  // of all pictures (explain_budget.hpp)
+    std::vector<std::string> given;  // the options and positionals given, by name ("--size")
 };
 
 void add_explain_command(CLI::App& app, ExplainArguments& arguments);
