@@ -181,7 +181,11 @@ py::dict render(PyRenderer& r, const py::object& scene_object, const py::object&
             camera ? std::vector<glm::vec3>() : scene->world_positions();
         options = cli::make_render_options(a, world, camera);
         cli::check_frame_arguments(a);
-        for (const std::string& w : cli::check_flags_take_effect(a))
+        std::vector<std::string> warnings = cli::check_flags_take_effect(a);
+        if (a.texture_filter != cli::RenderArguments{}.texture_filter || a.alpha_mode == "opaque")
+            for (std::string& w : cli::scene_flag_warnings(a, scene->owning()))
+                warnings.push_back(std::move(w));
+        for (const std::string& w : warnings)
             if (PyErr_WarnEx(PyExc_UserWarning, with_keyword_names(w).c_str(), 1) != 0)
                 throw py::error_already_set();  // warnings turned into errors
     } catch (const LimitExceeded&) {

@@ -274,6 +274,19 @@ def test_a_compare_that_passes_nothing_warns(cube):
     assert (out["color"] == out["color"][0, 0]).all()  # the background only
 
 
+def test_settings_that_change_nothing_in_the_scene_warn():
+    renderer = zraster.Renderer(8, 8)
+    cube = zraster.load("builtin:cube")
+    with pytest.warns(UserWarning, match="^texture_filter: builtin:cube has no textured surface"):
+        renderer.render(cube, texture_filter="nearest")
+    with pytest.warns(UserWarning, match="^alpha_mode opaque: every surface of builtin:cube is "
+                                         "opaque already"):
+        renderer.render(cube, alpha_mode="opaque")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        renderer.render(zraster.load("builtin:default"), texture_filter="nearest")
+
+
 def test_a_scene_of_triangles_without_area_is_refused():
     flat = zraster.Mesh(np.array([[0, 0, 0], [1, 1, 1], [2, 2, 2]], np.float32),
                         np.array([[0, 1, 2]], np.uint32))

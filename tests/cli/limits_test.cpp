@@ -206,6 +206,41 @@ TEST(CliLimits, EmptyValuesAndNewlinesInNames) {
 
 // A flag that would change nothing in the frame the others ask for is refused by name; a depth
 // compare that nothing passes is drawn, with a warning saying why the image is empty.
+// Flags that change nothing in the scene given (a service may pass them to every file): a
+// warning naming the flag and the scene, the image as without them; none where they act.
+TEST(CliLimits, FlagsWithoutEffectInTheSceneWarn) {
+    const auto dir = temp_dir("cli-limits-no-effect-scene");
+    // A transparent triangle (MTL d 0.5), untextured.
+    write(dir / "glass.mtl", "newmtl glass\nKd 1 0 0\nd 0.5\n");
+    write(dir / "glass.obj",
+          "mtllib glass.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl glass\nf 1 2 3\n");
+    const std::pair<const char*, const char*> warned[] = {
+        {"render builtin:cube -o a.png --size 8x8 --texture-filter nearest",
+         "warning: --texture-filter: builtin:cube has no textured surface: the filter changes "
+         "nothing\n"},
+        {"render builtin:cube -o a.png --size 8x8 --alpha-mode opaque",
+         "warning: --alpha-mode opaque: every surface of builtin:cube is opaque already: it "
+         "changes nothing\n"},
+        {"render glass.obj -o a.png --size 8x8 --texture-filter bilinear",
+         "warning: --texture-filter: glass.obj has no textured surface: the filter changes "
+         "nothing\n"},
+    };
+    for (const auto& [arguments, message] : warned) {
+        SCOPED_TRACE(arguments);
+        const CommandResult r = run_zraster(arguments, dir);
+        EXPECT_EQ(r.exit_code, 0);
+        EXPECT_EQ(r.output, message);
+    }
+    for (const char* arguments : {"render builtin:default -o a.png --size 8x8 --texture-filter "
+                                  "nearest",
+                                  "render glass.obj -o a.png --size 8x8 --alpha-mode opaque"}) {
+        SCOPED_TRACE(arguments);
+        const CommandResult r = run_zraster(arguments, dir);
+        EXPECT_EQ(r.exit_code, 0);
+        EXPECT_EQ(r.output, "");
+    }
+}
+
 TEST(CliLimits, FlagsWithoutEffectAreRefused) {
     const auto dir = temp_dir("cli-limits-no-effect");
     const std::pair<const char*, const char*> cases[] = {

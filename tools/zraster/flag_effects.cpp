@@ -3,6 +3,8 @@
 
 #include <zraster/error.hpp>
 
+#include "render/material_alpha.hpp"
+
 namespace zraster::cli {
 namespace {
 
@@ -77,6 +79,33 @@ std::vector<std::string> check_flags_take_effect(const RenderArguments& a) {
                          "give one of them");
     check_shading_flags(a);
     return depth_compare_warnings(a);
+}
+
+std::vector<std::string> scene_flag_warnings(const RenderArguments& a, const Scene& scene) {
+    const bool filter = a.texture_filter != RenderArguments{}.texture_filter && !a.no_textures;
+    const bool opaque = a.alpha_mode == "opaque";
+    if (!filter && !opaque) return {};
+    RenderOptions as_the_file_says;  // alpha as the file says, textures as the flags say
+    as_the_file_says.textures = !a.no_textures;
+    bool textured = false, all_opaque = true;
+    for (const Instance& instance : scene.instances) {
+        const Mesh& mesh = scene.meshes.at(instance.mesh);
+        const Material& m =
+            scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
+        const bool uvs = !a.no_textures && !mesh.uvs.empty();
+        textured |= uvs && (m.base_color_texture || m.opacity_texture);
+        all_opaque &= detail::effective_alpha_mode(m, uvs, detail::least_vertex_alpha(mesh.colors),
+                                                   as_the_file_says) == AlphaMode::Opaque;
+    }
+    const std::string name = scene.name.empty() ? "the scene" : scene.name;
+    std::vector<std::string> warnings;
+    if (filter && !textured)
+        warnings.push_back("--texture-filter: " + name +
+                           " has no textured surface: the filter changes nothing");
+    if (opaque && all_opaque)
+        warnings.push_back("--alpha-mode opaque: every surface of " + name +
+                           " is opaque already: it changes nothing");
+    return warnings;
 }
 
 void check_svg_flags_take_effect(const RenderArguments& a, bool edges, bool edge_width_given) {
