@@ -155,6 +155,10 @@ TEST(BatchErrors, BadUsageIsExitTwoWithNothingWritten) {
         {"in -o out --size 0x10", "--size"},
         {"in -o out --aa 3 --msaa", "--aa"},
         {"empty -o out", "no mesh files"},
+        {"builtin:cube -o out",
+         "builtin:cube: batch renders model files and folders of them; a procedural scene "
+         "(builtin:, sphere:, city:, soup:, building:) is for zraster render"},
+        {"in city:20 -o out", "city:20: batch renders model files"},
         {"-o out", "no inputs"},
         {"in", "--output-dir"},
     };

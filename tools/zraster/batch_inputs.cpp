@@ -3,6 +3,7 @@
 
 #include <zraster/error.hpp>
 #include <zraster/load.hpp>
+#include <zraster/scenes.hpp>
 
 #include <algorithm>
 #include <cctype>
@@ -82,6 +83,10 @@ std::vector<BatchInput> find_inputs(const std::vector<std::string>& paths,
         std::error_code ec;
         if (std::filesystem::is_directory(path, ec))
             add_folder(path, skip, inputs);
+        else if (is_procedural_spec(text) && !std::filesystem::exists(path, ec))
+            throw InputError(text,
+                             "batch renders model files and folders of them; a procedural scene "
+                             "(builtin:, sphere:, city:, soup:, building:) is for zraster render");
         else
             inputs.push_back({path, without_extension(path.filename().string())});
     }
