@@ -206,6 +206,29 @@ TEST(CliLimits, EmptyValuesAndNewlinesInNames) {
 
 // A flag that would change nothing in the frame the others ask for is refused by name; a depth
 // compare that nothing passes is drawn, with a warning saying why the image is empty.
+// A camera or clip planes that leave nothing of the scene in view: the background, with a
+// warning giving the counts; a frame showing something says nothing.
+TEST(CliLimits, AFrameWithNothingInViewWarns) {
+    const auto dir = temp_dir("cli-limits-nothing-in-view");
+    const std::pair<const char*, const char*> cases[] = {
+        {"render builtin:cube -o a.png --size 8x8 --near 1e29 --far 1e30",
+         "warning: builtin:cube: none of its 12 triangles is in view (1 of 1 instances outside "
+         "the view volume, 0 triangles outside it or the clip planes, 0 covering no pixel "
+         "center): the image shows only the background\n"},
+        {"render builtin:cube -o a.png --size 8x8 --clip-plane 1,0,0,-5",
+         "warning: builtin:cube: none of its 12 triangles is in view (0 of 1 instances outside "
+         "the view volume, 12 triangles outside it or the clip planes, 0 covering no pixel "
+         "center): the image shows only the background\n"},
+        {"render builtin:cube -o a.png --size 8x8 --clip-plane 1,0,0,0", ""},
+    };
+    for (const auto& [arguments, message] : cases) {
+        SCOPED_TRACE(arguments);
+        const CommandResult r = run_zraster(arguments, dir);
+        EXPECT_EQ(r.exit_code, 0);
+        EXPECT_EQ(r.output, message);
+    }
+}
+
 // Flags that change nothing in the scene given (a service may pass them to every file): a
 // warning naming the flag and the scene, the image as without them; none where they act.
 TEST(CliLimits, FlagsWithoutEffectInTheSceneWarn) {

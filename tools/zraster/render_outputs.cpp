@@ -65,6 +65,18 @@ RenderedFrame render_outputs(const RenderArguments& a, const Scene& scene, Outpu
     const RenderTargets& t = result->targets;
     frame.stats = result->stats;
     frame.render_ms = since(render_start);
+    // A camera or clip planes that exclude everything give the background alone: legal, but
+    // rarely meant (a near plane of 1e29, opposing clip planes).
+    const RenderStats& s = frame.stats;
+    if (notes != nullptr && renders_with_pipeline(a) && options.view == DebugView::None &&
+        s.triangles_rasterized == 0 && s.triangles_backface_culled == 0 &&
+        scene.triangle_count() > 0)
+        fmt::print(notes,
+                   "warning: {}: none of its {} triangles is in view ({} of {} instances outside "
+                   "the view volume, {} triangles outside it or the clip planes, {} covering no "
+                   "pixel center): the image shows only the background\n",
+                   scene.name, scene.triangle_count(), s.instances_frustum_culled, s.instances,
+                   s.triangles_trivially_rejected + s.triangles_clipped, s.triangles_no_coverage);
 
     const Clock::time_point encode_start = Clock::now();
     // RGBA -> RGB: the alpha channel is always opaque. Byte by byte: a 3-byte copy_n per pixel
