@@ -182,8 +182,9 @@ py::dict render(PyRenderer& r, const py::object& scene_object, const py::object&
         options = cli::make_render_options(a, world, camera);
         cli::check_frame_arguments(a);
         std::vector<std::string> warnings = cli::check_flags_take_effect(a);
-        if (a.texture_filter != cli::RenderArguments{}.texture_filter || a.alpha_mode == "opaque")
-            for (std::string& w : cli::scene_flag_warnings(a, scene->owning()))
+        if (a.texture_filter != cli::RenderArguments{}.texture_filter || a.alpha_mode == "opaque" ||
+            a.interpolation == "linear")
+            for (std::string& w : cli::scene_flag_warnings(a, scene->owning(), wanted[kNormal]))
                 warnings.push_back(std::move(w));
         for (const std::string& w : warnings)
             if (PyErr_WarnEx(PyExc_UserWarning, with_keyword_names(w).c_str(), 1) != 0)

@@ -247,6 +247,9 @@ TEST(CliLimits, FlagsWithoutEffectInTheSceneWarn) {
         {"render glass.obj -o a.png --size 8x8 --texture-filter bilinear",
          "warning: --texture-filter: glass.obj has no textured surface: the filter changes "
          "nothing\n"},
+        {"render builtin:sphere -o a.png --size 8x8 --shading flat --interpolation linear",
+         "warning: --interpolation linear: with --shading flat, builtin:sphere interpolates "
+         "nothing (no texture, no vertex colors, no normal output): it changes nothing\n"},
     };
     for (const auto& [arguments, message] : warned) {
         SCOPED_TRACE(arguments);
@@ -256,7 +259,11 @@ TEST(CliLimits, FlagsWithoutEffectInTheSceneWarn) {
     }
     for (const char* arguments : {"render builtin:default -o a.png --size 8x8 --texture-filter "
                                   "nearest",
-                                  "render glass.obj -o a.png --size 8x8 --alpha-mode opaque"}) {
+                                  "render glass.obj -o a.png --size 8x8 --alpha-mode opaque",
+                                  "render builtin:sphere -o a.png --size 8x8 --shading flat "
+                                  "--interpolation linear --normal-out n.png",
+                                  "render builtin:default -o a.png --size 8x8 --shading flat "
+                                  "--interpolation linear"}) {
         SCOPED_TRACE(arguments);
         const CommandResult r = run_zraster(arguments, dir);
         EXPECT_EQ(r.exit_code, 0);

@@ -81,19 +81,22 @@ std::vector<std::string> check_flags_take_effect(const RenderArguments& a) {
     return depth_compare_warnings(a);
 }
 
-std::vector<std::string> scene_flag_warnings(const RenderArguments& a, const Scene& scene) {
+std::vector<std::string> scene_flag_warnings(const RenderArguments& a, const Scene& scene,
+                                             bool normal_output) {
     const bool filter = a.texture_filter != RenderArguments{}.texture_filter && !a.no_textures;
     const bool opaque = a.alpha_mode == "opaque";
-    if (!filter && !opaque) return {};
+    const bool linear = a.interpolation == "linear" && a.shading == "flat" && !normal_output;
+    if (!filter && !opaque && !linear) return {};
     RenderOptions as_the_file_says;  // alpha as the file says, textures as the flags say
     as_the_file_says.textures = !a.no_textures;
-    bool textured = false, all_opaque = true;
+    bool textured = false, all_opaque = true, colored = false;
     for (const Instance& instance : scene.instances) {
         const Mesh& mesh = scene.meshes.at(instance.mesh);
         const Material& m =
             scene.materials.at(mesh.material < scene.materials.size() ? mesh.material : 0);
         const bool uvs = !a.no_textures && !mesh.uvs.empty();
         textured |= uvs && (m.base_color_texture || m.opacity_texture);
+        colored |= !mesh.colors.empty();
         all_opaque &= detail::effective_alpha_mode(m, uvs, detail::least_vertex_alpha(mesh.colors),
                                                    as_the_file_says) == AlphaMode::Opaque;
     }
@@ -102,6 +105,10 @@ std::vector<std::string> scene_flag_warnings(const RenderArguments& a, const Sce
     if (filter && !textured)
         warnings.push_back("--texture-filter: " + name +
                            " has no textured surface: the filter changes nothing");
+    if (linear && !textured && !colored)
+        warnings.push_back("--interpolation linear: with --shading flat, " + name +
+                           " interpolates nothing (no texture, no vertex colors, no normal output)"
+                           ": it changes nothing");
     if (opaque && all_opaque)
         warnings.push_back("--alpha-mode opaque: every surface of " + name +
                            " is opaque already: it changes nothing");

@@ -18,8 +18,10 @@ std::vector<std::string> check_flags_take_effect(const RenderArguments& a);
 
 // Warnings (without "warning: ") for flags that change nothing in this scene, which a service
 // may pass to every file: --texture-filter when no instance is textured, --alpha-mode opaque when
-// every instance is opaque already.
-std::vector<std::string> scene_flag_warnings(const RenderArguments& a, const Scene& scene);
+// every instance is opaque already, --interpolation linear with flat shading when nothing is
+// interpolated (no texture, no vertex colors, no `normal_output`).
+std::vector<std::string> scene_flag_warnings(const RenderArguments& a, const Scene& scene,
+                                             bool normal_output);
 
 // The same for `zraster svg`, which draws no depth buffer and strokes outlines only with its
 // --edges (`edges`); `edge_width_given`: --edge-width was given.

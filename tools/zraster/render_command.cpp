@@ -88,7 +88,7 @@ int run_render(const RenderArguments& a) {
     Scene scene = load_scene_or_procedural(a.scene, nullptr, &outputs);
     if (!a.pvs.empty()) attach_pvs(a.pvs, scene);
     const double load_ms = since(load_start);
-    for (const std::string& w : scene_flag_warnings(a, scene))
+    for (const std::string& w : scene_flag_warnings(a, scene, !a.normal_out.empty()))
         fmt::print(stderr, "warning: {}\n", w);
     const RenderedFrame frame = render_outputs(a, scene, outputs, stderr_progress(), stderr);
     const VisibilityStats& visibility_stats = frame.visibility;
