@@ -580,6 +580,43 @@ document["accessors"][0]["bufferView"] = 0
 json.dump(document, open("nodes2e31.gltf", "w"))
 PY
 row "glTF of 30 levels of empty nodes sharing children (2^31 nodes in the importer)" render nodes2e31.gltf -o out.png
+# Non-glTF expansion (issue 27, H18-H20, H3, H9, H15): counted before the importer reads them.
+python3 - <<'PY'
+depth = 30
+node = lambda k: ('<node id="n%d"><instance_geometry url="#g"/></node>' % k if k == depth else
+                  '<node id="n%d"><instance_node url="#n%d"/><node id="m%d"><translate>0.1 0 0</translate>'
+                  '<instance_node url="#n%d"/></node></node>' % (k, k + 1, k, k + 1))
+open("graph2e30.dae", "w").write(
+    '<?xml version="1.0"?><COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">'
+    '<library_geometries><geometry id="g"><mesh><source id="p"><float_array id="pa" count="9">0 0 0 1 0 0 0 1 0'
+    '</float_array><technique_common><accessor source="#pa" count="3" stride="3"><param name="X" type="float"/>'
+    '<param name="Y" type="float"/><param name="Z" type="float"/></accessor></technique_common></source>'
+    '<vertices id="v"><input semantic="POSITION" source="#p"/></vertices><triangles count="1">'
+    '<input semantic="VERTEX" source="#v" offset="0"/><p>0 1 2</p></triangles></mesh></geometry></library_geometries>'
+    '<library_nodes>' + ''.join(node(k) for k in range(1, depth + 1)) + '</library_nodes><library_visual_scenes>'
+    '<visual_scene id="s">' + node(0) + '</visual_scene></library_visual_scenes><scene><instance_visual_scene url="#s"/>'
+    '</scene></COLLADA>')
+open("m200k.mtl", "w").write("".join("newmtl m%d\nKd 1 0 0\n" % i for i in range(200000)))
+open("mdef200k.obj", "w").write("mtllib m200k.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m0\nf 1 2 3\n")
+open("loads100k.lws", "w").write("LWSC\n3\n\nFirstFrame 1\nLastFrame 1\n\n" +
+                                 "".join("LoadObjectLayer 1 tri.obj\nPosition %d 0 0\n" % i for i in range(100000)))
+PY
+row "COLLADA of 30 levels of nodes placing the next twice (<instance_node>: 2^30 placements)" render graph2e30.dae -o out.png
+row "OBJ whose material library defines 200,000 materials" render mdef200k.obj -o out.png
+printf 'mtllib sparse.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' >sparsemtl.obj
+printf 'newmtl m\nKd 1 0 0\n' >sparse.mtl
+truncate -s 20G sparse.mtl
+row "OBJ whose material library is a 20 GiB (sparse) file" render sparsemtl.obj -o out.png
+rm -f sparse.mtl
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' >tri.obj
+row "LightWave scene loading one object 100,000 times" render loads100k.lws -o out.png
+mkdir -p lws.d
+printf 'LWSC\n3\n\nFirstFrame 1\nLastFrame 1\n\nLoadObjectLayer 1 ../tri.obj\n' >lws.d/outside.lws
+row "LightWave scene loading an object outside its folder" render lws.d/outside.lws -o out.png
+printf 'newmtl m\nKd 1 1 1\nmap_Ka amb.png\n' >amb.mtl
+printf 'mtllib amb.mtl\nusemtl m\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' >amb.obj
+printf 'not an image zraster reads' >amb.png
+row "-o over a texture the model's MTL names (map_Ka) that zraster does not read" render amb.obj -o amb.png
 rm -f out.png
 echo
 echo "$n inputs; $failures broke the contract (exit 2, one line, nothing left)."

@@ -52,10 +52,17 @@ struct LoadOptions {
     // before Assimp reads it. The default, 2^28 (one face of 16,384 corners, or 10 million
     // pentagons), is about 4 s of triangulation (measured: one face at the budget).
     std::uint64_t max_triangulation_work = std::uint64_t{1} << 28;
+    // The model file, and each file it makes the importer read whole (a LightWave scene's
+    // objects, a material library: these within min(max_file_bytes, 64 MiB), being text).
     std::size_t max_file_bytes = std::size_t{4} << 30;
     // Meshes placed by the node hierarchy (instances). Nodes that share children multiply: a
     // 1.5 KB glTF can place billions; it is refused before the hierarchy is expanded.
     std::size_t max_instances = 1'000'000;
+    // Materials a file defines (OBJ: the `newmtl` statements of its material libraries, counted
+    // before Assimp reads them; other formats: the materials Assimp made). Assimp's OBJ importer
+    // takes about 34 KB a material: 200,000 `newmtl` lines of a 4.7 MB library reached 6.8 GB.
+    // The default keeps that within about 1 GB.
+    std::size_t max_materials = 20'000;
 
     // External references (glTF buffers and images, OBJ material libraries and textures) must be
     // regular files inside the model's folder, once symbolic links are followed: a buffer URI

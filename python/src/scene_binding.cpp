@@ -128,7 +128,8 @@ std::shared_ptr<PyScene> load(const py::object& path_object, const std::string& 
                               const py::object& max_triangles, const py::object& max_texture_side,
                               const py::object& max_texture_bytes,
                               const py::object& max_geometry_bytes,
-                              const py::object& max_triangulation_work) {
+                              const py::object& max_triangulation_work,
+                              const py::object& max_materials) {
     if (!py::isinstance<py::str>(path_object) && !py::hasattr(path_object, "__fspath__"))
         type_error("path", "a str or os.PathLike", path_object);
     const auto path = py::module_::import("os").attr("fspath")(path_object);
@@ -159,6 +160,8 @@ std::shared_ptr<PyScene> load(const py::object& path_object, const std::string& 
         std::size_t(integer_in_range(max_geometry_bytes, "max_geometry_bytes", 1, kMost));
     options.max_triangulation_work = std::uint64_t(
         integer_in_range(max_triangulation_work, "max_triangulation_work", 1, 1LL << 40));
+    options.max_materials =
+        std::size_t(integer_in_range(max_materials, "max_materials", 1, 1'000'000'000));
     std::shared_ptr<const Scene> owned;
     std::vector<std::string> warnings;
     {
@@ -313,6 +316,7 @@ zraster.load() returns a Scene too (its meshes owned by zraster).)")
           "max_texture_bytes"_a = py::int_(LoadOptions{}.max_texture_bytes),
           "max_geometry_bytes"_a = py::int_(LoadOptions{}.max_geometry_bytes),
           "max_triangulation_work"_a = py::int_(LoadOptions{}.max_triangulation_work),
+          "max_materials"_a = py::int_(LoadOptions{}.max_materials),
           R"(Loads a scene: a mesh file or a procedural spec, as `zraster render` reads it.
 
 path: a file (OBJ with MTL, PLY, STL, glTF 2.0 .gltf/.glb, 3DS, OFF and the other formats
@@ -328,6 +332,8 @@ max_geometry_bytes: a glTF file whose accessors decode to more (each accessor on
   that reads it) is refused before it is read.
 max_triangulation_work: an OBJ or PLY file whose polygons of more than 4 corners sum to more
   corners^2 is refused before it is read (their triangulation takes quadratic time).
+max_materials: a model that defines more materials is refused (an OBJ's material libraries
+  are counted before they are read).
 max_texture_side, max_texture_bytes: textures wider or taller are reduced (halved as their mip
   levels are); the decoded bytes of a model's textures stay within the budget (a texture past it
   is not used). Both with a LoadWarning.

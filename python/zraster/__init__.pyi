@@ -130,6 +130,7 @@ def load(
     max_texture_bytes: int = 536870912,
     max_geometry_bytes: int = 1073741824,
     max_triangulation_work: int = 268435456,
+    max_materials: int = 20000,
 ) -> Scene: ...
 
 class Camera:

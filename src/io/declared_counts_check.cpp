@@ -1,6 +1,8 @@
 #include "io/declared_counts_check.hpp"
 
+#include "io/collada_instances_check.hpp"
 #include "io/gltf_bounds_check.hpp"
+#include "io/lightwave_scene_check.hpp"
 #include "io/obj_number_token.hpp"
 #include "io/text_util.hpp"
 #include "io/triangulation_budget.hpp"
@@ -623,6 +625,14 @@ void check_declared_counts(const std::filesystem::path& path, std::uintmax_t fil
         check_gltf_bounds(
             path, std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()),
             std::nullopt, options);
+        return;
+    }
+    if (extension == ".dae") {
+        check_collada_instances(path, options);
+        return;
+    }
+    if (extension == ".lws" || head.starts_with("LWSC")) {
+        check_lightwave_scene(path, options);
         return;
     }
     for (const char* other : {".obj", ".ply", ".stl", ".glb", ".3ds"})

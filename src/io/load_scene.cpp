@@ -104,7 +104,8 @@ class MaterialTable {
         if (is_obj(path)) {
             // The caller's scan when it made one (load_any's, before the import): one a file.
             io::ObjMaterialLibraries libraries =
-                scanned != nullptr ? *scanned : io::scan_obj_material_libraries(path, policy);
+                scanned != nullptr ? *scanned
+                                   : io::scan_obj_material_libraries(path, policy, options);
             warnings.insert(warnings.end(), libraries.warnings.begin(), libraries.warnings.end());
             warnings.insert(warnings.end(), libraries.notices.begin(), libraries.notices.end());
             obj_missing_library_ = !libraries.warnings.empty();
@@ -163,7 +164,7 @@ io::LoadedScene load_any(const std::filesystem::path& path, const LoadOptions& o
     // Its material libraries' numbers too: Assimp fails on a short color in its own words. The
     // scan's materials serve the conversion after the import.
     const io::ObjMaterialLibraries libraries = io::scan_obj_material_libraries(
-        path, io::ReferencePolicy(path, options.allow_outside_references));
+        path, io::ReferencePolicy(path, options.allow_outside_references), options);
     try {
         return io::load_scene_with_assimp(path, options, &libraries);
     } catch (const LimitExceeded&) {
@@ -232,6 +233,12 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
         if (ai == nullptr && !refusals.empty())
             throw InputError(file, io::refusal_text(refusals.front(), "refused"));
         if (ai == nullptr) throw malformed(importer.GetErrorString());
+        // (An OBJ's libraries were counted before the import.)
+        if (!is_obj(path) && ai->mNumMaterials > options.max_materials)
+            throw LimitExceeded(file, "max_materials",
+                                "it defines " + std::to_string(ai->mNumMaterials) +
+                                    " materials, more than max_materials (" +
+                                    std::to_string(options.max_materials) + ")");
         // Checked before post-processing, which rejects faceless meshes as "invalid".
         if (count_polygons(*ai) == 0) {
             for (unsigned m = 0; m < ai->mNumMeshes; ++m)
@@ -240,6 +247,9 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
                         file,
                         "no triangles in it (no mesh, only nodes: is it really a model in the " +
                             io::format_name(path) + " format?)");
+            // A file whose geometry is in a refused reference (a LightWave scene's object).
+            if (!refusals.empty())
+                throw InputError(file, io::refusal_text(refusals.front(), "refused"));
             throw InputError(file, "no triangles");
         }
         // Validation first: Debian's Assimp keeps its assertions, and triangulating a face with

@@ -1,12 +1,15 @@
 // What Assimp's OBJ importer does not tell: whether the material libraries an OBJ names exist
 // (it only logs a missing one and invents placeholder materials for the `usemtl` names).
 #pragma once
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <set>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include <zraster/load.hpp>
 
 #include "io/mtl_dissolve.hpp"
 #include "io/reference_policy.hpp"
@@ -40,7 +43,26 @@ MaterialLibraryChoice resolve_material_library(const std::filesystem::path& obj_
 // the rest of the line relative to the OBJ's directory, else "<obj name>.mtl" beside it.
 // Libraries `policy` refuses (outside the model's folder, not regular files) are not read, with
 // a warning. Each library found is also read for MTL `d` over `Tr` (mtl_dissolve.hpp).
+// Throws LimitExceeded past the budgets (check_material_library, check_material_count).
 ObjMaterialLibraries scan_obj_material_libraries(const std::filesystem::path& obj_path,
-                                                 const ReferencePolicy& policy);
+                                                 const ReferencePolicy& policy,
+                                                 const LoadOptions& options);
+
+// The largest material library read: MTL files are text of a few KB to MB; 64 MiB (or
+// max_file_bytes when smaller). Assimp reads a library whole: a 20 GiB one hung the loader.
+std::uintmax_t max_material_library_bytes(const LoadOptions& options);
+// Throws LimitExceeded (max_file_bytes) naming the OBJ and the library when `mtl` is larger
+// than max_material_library_bytes; before anything reads it.
+void check_material_library(const std::filesystem::path& obj_path, const std::filesystem::path& mtl,
+                            const LoadOptions& options);
+// Makes `policy` note every texture file a library's statements name (map_Kd, map_Ka, bump, ...:
+// the statement's last word, beside the library), read by zraster or not: files_read lists them,
+// and a command's outputs must not replace a file the model names.
+void note_named_textures(const std::filesystem::path& mtl, const ReferencePolicy& policy);
+
+// Throws LimitExceeded (max_materials) when the libraries define more than max_materials
+// materials (`newmtl` statements, counted before Assimp reads them).
+void check_material_count(const std::filesystem::path& obj_path, std::size_t count,
+                          const LoadOptions& options);
 
 }  // namespace zraster::io

@@ -46,9 +46,11 @@ std::optional<std::vector<std::string>> library_materials(const std::filesystem:
 
 std::optional<ObjFallback> read_statements(const std::filesystem::path& obj_path,
                                            const std::vector<Chunk>& chunks,
-                                           const ReferencePolicy& policy, Statements& out) {
+                                           const ReferencePolicy& policy,
+                                           const LoadOptions& options, Statements& out) {
     out.policy = policy;
     std::set<std::filesystem::path> read;
+    std::size_t materials = 0;  // newmtl statements of the libraries read
     for (const Chunk& chunk : chunks) {
         for (const Event& e : chunk.events) {
             out.events.push_back(&e);
@@ -58,13 +60,17 @@ std::optional<ObjFallback> read_statements(const std::filesystem::path& obj_path
             // A library named again keeps no copy of its names: the first entry holds them (a
             // file may name one library thousands of times).
             if (l.file && read.insert(*l.file).second) {
+                check_material_library(obj_path, *l.file, options);
                 std::optional<std::vector<std::string>> names = library_materials(*l.file);
                 if (!names)
                     return ObjFallback{chunk.first_line + e.line + 1,
                                        "material library " + l.file->string() +
                                            " that Assimp may read differently"};
                 l.materials = std::move(*names);
+                materials += l.materials.size();
+                check_material_count(obj_path, materials, options);
                 check_mtl_numbers(obj_path, *l.file, &out.notices);
+                note_named_textures(*l.file, policy);
                 out.dissolve.read(*l.file);
             }
             out.libraries.push_back(std::move(l));
@@ -132,13 +138,20 @@ const aiMaterial* Materials::assimp_material(const std::string& name) {
         // Each library once: a file may name the same one thousands of times, and Assimp would
         // read (and keep the materials of) every repetition.
         std::set<std::string> named;
+        // Each usemtl name once between two libraries: Assimp looks a name up among the
+        // materials it has in a linear search, so N names used once each took time quadratic
+        // in N (20,000: 12 s). A name used again reads the same material.
+        std::set<std::string> used;
         for (const Event* e : events_) {
             if (e->kind == EventKind::Library) {
                 const LibraryLoad& l = libraries_[library++];
                 if (!l.file) continue;
                 const std::string file = std::filesystem::absolute(*l.file).string();
-                if (named.insert(file).second) text += "mtllib " + file + "\n";
-            } else if (e->kind == EventKind::Material) {
+                if (named.insert(file).second) {
+                    text += "mtllib " + file + "\n";
+                    used.clear();
+                }
+            } else if (e->kind == EventKind::Material && used.insert(e->text).second) {
                 text += "usemtl " + e->text + "\n";
             }
         }
@@ -152,13 +165,17 @@ const aiMaterial* Materials::assimp_material(const std::string& name) {
         } catch (const std::exception&) {
             ai_ = nullptr;
         }
-        if (ai_ != nullptr) textures_.emplace(*ai_, path_, policy_, options_, warnings_);
+        if (ai_ != nullptr) {
+            textures_.emplace(*ai_, path_, policy_, options_, warnings_);
+            // By name, the first of a name (a linear search per name was quadratic too).
+            for (unsigned i = 0; i < ai_->mNumMaterials; ++i)
+                if (ai_->mMaterials[i] != nullptr)
+                    by_name_.emplace(material_name(*ai_->mMaterials[i]), ai_->mMaterials[i]);
+        }
     }
     if (ai_ == nullptr) return nullptr;
-    for (unsigned i = 0; i < ai_->mNumMaterials; ++i)
-        if (ai_->mMaterials[i] != nullptr && material_name(*ai_->mMaterials[i]) == name)
-            return ai_->mMaterials[i];
-    return nullptr;
+    const auto it = by_name_.find(name);
+    return it == by_name_.end() ? nullptr : it->second;
 }
 
 }  // namespace zraster::io::obj

@@ -60,7 +60,8 @@ struct Statements {
 // Assimp path's library check.
 std::optional<ObjFallback> read_statements(const std::filesystem::path& obj_path,
                                            const std::vector<Chunk>& chunks,
-                                           const ReferencePolicy& policy, Statements& out);
+                                           const ReferencePolicy& policy,
+                                           const LoadOptions& options, Statements& out);
 
 // The scene's materials, made on first use of each usemtl name. The constructor adds the
 // warnings for missing libraries.
@@ -92,6 +93,7 @@ class Materials {
     std::map<std::string, std::uint32_t> map_;
     std::unique_ptr<Assimp::Importer> importer_;
     const aiScene* ai_ = nullptr;
+    std::map<std::string, const aiMaterial*> by_name_;  // ai_'s materials
     std::optional<TextureLoader> textures_;
     std::vector<std::string> refusals_;  // files the confined Assimp was refused
 };

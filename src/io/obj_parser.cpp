@@ -254,7 +254,8 @@ std::variant<LoadedScene, ObjFallback> read_obj(const std::filesystem::path& pat
     // material.
     obj::Statements statements;
     const ReferencePolicy policy(path, options.allow_outside_references);
-    if (auto fallback = obj::read_statements(path, chunks, policy, statements)) return *fallback;
+    if (auto fallback = obj::read_statements(path, chunks, policy, options, statements))
+        return *fallback;
     obj::Structure structure = obj::replay_statements(chunks, offsets.faces, statements.libraries);
     const obj::OutputMeshes output = obj::output_meshes(structure, chunks, offsets.faces);
     obj::check_triangle_count(output.triangles, file, options);

@@ -60,6 +60,7 @@ std::string limit_advice(const std::string& limit) {
         {"max_explain_pixels", "--max-explain-pixels"},
         {"max_covered_samples", "--max-covered-samples"},
         {"max_instances", "--max-instances"},
+        {"max_materials", "--max-materials"},
         {"max_triangles", "--max-triangles"},
         {"max_memory", "--max-memory"},
         {"max_triangulation_work", "--max-triangulation-work"},
@@ -161,6 +162,7 @@ namespace {
 bool g_load_in_process = false;
 bool g_allow_outside_references = false;
 std::size_t g_max_instances = LoadOptions{}.max_instances;
+std::size_t g_max_materials = LoadOptions{}.max_materials;
 std::size_t g_max_load_triangles = LoadOptions{}.max_triangles;
 int g_max_texture_side = LoadOptions{}.max_texture_side;
 std::size_t g_max_texture_bytes = LoadOptions{}.max_texture_bytes;
@@ -185,6 +187,10 @@ void set_max_instances(std::size_t max_instances) {
     g_max_instances = max_instances;
 }
 
+void set_max_materials(std::size_t max_materials) {
+    g_max_materials = max_materials;
+}
+
 void set_max_load_triangles(std::size_t max_triangles) {
     g_max_load_triangles = max_triangles;
 }
@@ -202,6 +208,7 @@ LoadOptions command_load_options() {
     options.isolation = g_load_in_process ? LoadIsolation::InProcess : LoadIsolation::WorkerProcess;
     options.allow_outside_references = g_allow_outside_references;
     options.max_instances = g_max_instances;
+    options.max_materials = g_max_materials;
     options.max_triangles = g_max_load_triangles;
     options.max_texture_side = g_max_texture_side;
     options.max_texture_bytes = g_max_texture_bytes;

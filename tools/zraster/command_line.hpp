@@ -68,6 +68,8 @@ void set_load_in_process(bool in_process);
 void set_allow_outside_references(bool allow);
 // The --max-instances option (LoadOptions::max_instances).
 void set_max_instances(std::size_t max_instances);
+// The --max-materials option (LoadOptions::max_materials).
+void set_max_materials(std::size_t max_materials);
 // The command's --max-triangles (LoadOptions::max_triangles; `zraster batch` sets its own).
 void set_max_load_triangles(std::size_t max_triangles);
 // --max-triangulation-work (LoadOptions::max_triangulation_work).

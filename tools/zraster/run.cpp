@@ -77,6 +77,12 @@ int run_zraster(std::vector<std::string> args) {
                    "share children multiply them)")
         ->check(CLI::Range(std::size_t{1}, std::size_t{1'000'000'000}))
         ->capture_default_str();
+    std::size_t max_materials = LoadOptions{}.max_materials;
+    app.add_option("--max-materials", max_materials,
+                   "Refuse models that define more materials than this (an OBJ's material "
+                   "libraries are counted before they are read)")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{1'000'000'000}))
+        ->capture_default_str();
     // `zraster batch` has its own --max-triangles (over a file's instances, with --max-memory),
     // which takes precedence after `batch`.
     std::size_t max_load_triangles = LoadOptions{}.max_triangles;
@@ -166,6 +172,7 @@ int run_zraster(std::vector<std::string> args) {
     set_load_in_process(load_in_process);
     set_allow_outside_references(allow_outside_references);
     set_max_instances(max_instances);
+    set_max_materials(max_materials);
     set_max_load_triangles(max_load_triangles);
     set_max_triangulation_work(max_triangulation_work);
     try {

@@ -1,0 +1,222 @@
+#include "io/collada_instances_check.hpp"
+
+#include <zraster/error.hpp>
+
+#include <algorithm>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace zraster::io {
+
+namespace {
+
+constexpr std::uint32_t kNoVisualScene = ~std::uint32_t{0};
+
+struct Node {
+    std::string id;
+    std::uint64_t geometries = 0;          // <instance_geometry>, <instance_controller>
+    std::vector<std::uint32_t> children;   // nested <node>s
+    std::vector<std::string> instanced;    // <instance_node url="#..."> targets
+    std::vector<std::uint32_t> instances;  // resolved
+};
+
+struct VisualScene {
+    std::string id;
+    std::vector<std::uint32_t> roots;
+};
+
+std::uint64_t collada_sum(std::uint64_t a, std::uint64_t b) {
+    return std::min(kManyColladaNodes, a + b);  // both at most 2^62: no overflow
+}
+
+bool is_xml_name_char(char c) {
+    return c != '>' && c != '/' && c != ' ' && c != '\t' && c != '\n' && c != '\r';
+}
+
+// The value of attribute `name` in a start tag's text (after its element name), "" if none.
+std::string xml_attribute(std::string_view tag, std::string_view name) {
+    for (std::size_t at = tag.find(name); at != std::string_view::npos;
+         at = tag.find(name, at + 1)) {
+        if (at == 0 || !(tag[at - 1] == ' ' || tag[at - 1] == '\t' || tag[at - 1] == '\n' ||
+                         tag[at - 1] == '\r'))
+            continue;
+        std::size_t i = at + name.size();
+        while (i < tag.size() && (tag[i] == ' ' || tag[i] == '\t' || tag[i] == '\n')) ++i;
+        if (i >= tag.size() || tag[i] != '=') continue;
+        ++i;
+        while (i < tag.size() && (tag[i] == ' ' || tag[i] == '\t' || tag[i] == '\n')) ++i;
+        if (i >= tag.size() || (tag[i] != '"' && tag[i] != '\'')) continue;
+        const char quote = tag[i];
+        const std::size_t end = tag.find(quote, i + 1);
+        if (end == std::string_view::npos) return {};
+        return std::string(tag.substr(i + 1, end - i - 1));
+    }
+    return {};
+}
+
+// The element name without a namespace prefix.
+std::string_view xml_local_name(std::string_view name) {
+    const std::size_t colon = name.rfind(':');
+    return colon == std::string_view::npos ? name : name.substr(colon + 1);
+}
+
+}  // namespace
+
+ColladaExpansion count_collada_expansion(std::string_view doc, const std::string& file) {
+    std::vector<Node> nodes;
+    std::vector<VisualScene> scenes;
+    std::string chosen_scene;
+    std::vector<std::uint32_t> open;       // enclosing <node>s
+    std::uint32_t scene = kNoVisualScene;  // enclosing <visual_scene>
+    std::size_t i = 0;
+    while ((i = doc.find('<', i)) != std::string_view::npos) {
+        if (doc.compare(i, 4, "<!--") == 0) {
+            const std::size_t end = doc.find("-->", i + 4);
+            if (end == std::string_view::npos) break;
+            i = end + 3;
+            continue;
+        }
+        if (doc.compare(i, 9, "<![CDATA[") == 0) {
+            const std::size_t end = doc.find("]]>", i + 9);
+            if (end == std::string_view::npos) break;
+            i = end + 3;
+            continue;
+        }
+        const std::size_t close = doc.find('>', i);
+        if (close == std::string_view::npos) break;
+        std::string_view tag = doc.substr(i + 1, close - i - 1);
+        i = close + 1;
+        if (tag.empty() || tag[0] == '?' || tag[0] == '!') continue;
+        const bool end_tag = tag[0] == '/';
+        if (end_tag) tag.remove_prefix(1);
+        const bool empty_element = !tag.empty() && tag.back() == '/';
+        std::size_t name_end = 0;
+        while (name_end < tag.size() && is_xml_name_char(tag[name_end])) ++name_end;
+        const std::string_view name = xml_local_name(tag.substr(0, name_end));
+        const std::string_view rest = tag.substr(name_end);
+        if (end_tag) {
+            if (name == "node" && !open.empty()) open.pop_back();
+            if (name == "visual_scene") scene = kNoVisualScene;
+            continue;
+        }
+        if (name == "node") {
+            const auto index = static_cast<std::uint32_t>(nodes.size());
+            nodes.push_back(Node{xml_attribute(rest, "id"), 0, {}, {}, {}});
+            if (!open.empty())
+                nodes[open.back()].children.push_back(index);
+            else if (scene != kNoVisualScene)
+                scenes[scene].roots.push_back(index);
+            if (!empty_element) open.push_back(index);
+        } else if (name == "visual_scene") {
+            scenes.push_back(VisualScene{xml_attribute(rest, "id"), {}});
+            scene = empty_element ? kNoVisualScene : static_cast<std::uint32_t>(scenes.size() - 1);
+        } else if (name == "instance_visual_scene") {
+            const std::string url = xml_attribute(rest, "url");
+            if (url.starts_with('#')) chosen_scene = url.substr(1);
+        } else if (!open.empty()) {
+            if (name == "instance_geometry" || name == "instance_controller")
+                ++nodes[open.back()].geometries;
+            else if (name == "instance_node") {
+                const std::string url = xml_attribute(rest, "url");
+                if (url.starts_with('#')) nodes[open.back()].instanced.push_back(url.substr(1));
+            }
+        }
+    }
+    if (scenes.empty()) return {};
+
+    std::unordered_map<std::string, std::uint32_t> by_id;
+    for (std::uint32_t n = 0; n < nodes.size(); ++n)
+        if (!nodes[n].id.empty()) by_id.emplace(nodes[n].id, n);
+    for (Node& node : nodes)
+        for (const std::string& target : node.instanced)
+            if (auto it = by_id.find(target); it != by_id.end())
+                node.instances.push_back(it->second);  // (unresolved: Assimp warns, skips)
+
+    // Each node's expansion, depth first without recursion (nesting may be deep).
+    enum : std::uint8_t { kNew, kActive, kDone };
+    std::vector<std::uint8_t> state(nodes.size(), kNew);
+    std::vector<ColladaExpansion> expansion(nodes.size());
+    auto visit = [&](std::uint32_t root) {
+        struct Frame {
+            std::uint32_t node;
+            std::size_t next;  // over children, then instances
+        };
+        std::vector<Frame> stack;
+        if (state[root] == kDone) return;
+        stack.push_back({root, 0});
+        state[root] = kActive;
+        while (!stack.empty()) {
+            Frame& f = stack.back();
+            const Node& node = nodes[f.node];
+            const std::size_t count = node.children.size() + node.instances.size();
+            if (f.next < count) {
+                const std::uint32_t next = f.next < node.children.size()
+                                               ? node.children[f.next]
+                                               : node.instances[f.next - node.children.size()];
+                ++f.next;
+                if (state[next] == kActive)
+                    throw InputError(file, "malformed COLLADA file: node '" + nodes[next].id +
+                                               "' places itself (through <instance_node>)");
+                if (state[next] == kNew) {
+                    state[next] = kActive;
+                    stack.push_back({next, 0});
+                }
+                continue;
+            }
+            ColladaExpansion e{1, std::min(kManyColladaNodes, node.geometries)};
+            for (std::uint32_t c : node.children) {
+                e.nodes = collada_sum(e.nodes, expansion[c].nodes);
+                e.placements = collada_sum(e.placements, expansion[c].placements);
+            }
+            for (std::uint32_t c : node.instances) {
+                e.nodes = collada_sum(e.nodes, expansion[c].nodes);
+                e.placements = collada_sum(e.placements, expansion[c].placements);
+            }
+            expansion[f.node] = e;
+            state[f.node] = kDone;
+            stack.pop_back();
+        }
+    };
+
+    const VisualScene* shown = &scenes.front();
+    for (const VisualScene& s : scenes)
+        if (!chosen_scene.empty() && s.id == chosen_scene) shown = &s;
+    ColladaExpansion total;
+    for (std::uint32_t root : shown->roots) {
+        visit(root);
+        total.nodes = collada_sum(total.nodes, expansion[root].nodes);
+        total.placements = collada_sum(total.placements, expansion[root].placements);
+    }
+    return total;
+}
+
+void check_collada_instances(const std::filesystem::path& path, const LoadOptions& options) {
+    std::ifstream in(path, std::ios::binary);
+    const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string file = path.string();
+    const ColladaExpansion e = count_collada_expansion(doc, file);
+    auto count = [](std::uint64_t n) {
+        return n >= kManyColladaNodes ? "more than 2^62" : std::to_string(n);
+    };
+    if (e.placements > options.max_instances)
+        throw LimitExceeded(file, "max_instances",
+                            "its nodes place " + count(e.placements) +
+                                " meshes (nodes placed again by <instance_node> multiply), more "
+                                "than max_instances (" +
+                                std::to_string(options.max_instances) + ")");
+    // (e.nodes is at most 2^62: in long double the product is exact enough and cannot wrap.)
+    const long double bytes = static_cast<long double>(e.nodes) * kColladaBytesPerNode;
+    if (bytes > static_cast<long double>(options.max_geometry_bytes))
+        throw LimitExceeded(file, "max_geometry_bytes",
+                            "its node hierarchy expands to " + count(e.nodes) +
+                                " nodes (nodes placed again by <instance_node> are copied), "
+                                "about " +
+                                std::to_string(static_cast<std::uint64_t>(bytes / (1 << 20))) +
+                                " MiB, more than max_geometry_bytes (" +
+                                std::to_string(options.max_geometry_bytes >> 20) + " MiB)");
+}
+
+}  // namespace zraster::io

@@ -1,0 +1,236 @@
+// What a small non-glTF file can expand into is counted before the importer reads it: COLLADA
+// nodes placed again by <instance_node>, an OBJ's materials and material libraries, a LightWave
+// scene's object loads and objects; and every file a model names counts as one it read.
+#include <zraster/load.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <string>
+
+#include "io/io_test_util.hpp"
+#include "support/test_support.hpp"
+
+namespace zraster {
+namespace {
+
+constexpr LoadIsolation kExpansionIsolations[] = {LoadIsolation::InProcess,
+                                                  LoadIsolation::WorkerProcess};
+
+const char* expansion_isolation_name(LoadIsolation isolation) {
+    return isolation == LoadIsolation::InProcess ? "in process" : "worker";
+}
+
+// Refused within a second (before the importer expands anything).
+template <typename Action>
+void expect_refused_quickly(Action&& action) {
+    const auto start = std::chrono::steady_clock::now();
+    action();
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));
+}
+
+// Node n_k places n_{k+1} twice (once through a child node m_k), n_depth places a triangle:
+// 2^depth placements, 3 * 2^depth - 2 nodes once expanded.
+std::string expansion_collada_graph(int depth) {
+    std::string library;
+    auto node = [&](int k) {
+        if (k == depth)
+            return "<node id=\"n" + std::to_string(k) + "\"><instance_geometry url=\"#g\"/></node>";
+        const std::string next = "#n" + std::to_string(k + 1);
+        return "<node id=\"n" + std::to_string(k) + "\"><instance_node url=\"" + next +
+               "\"/><node id=\"m" + std::to_string(k) +
+               "\"><translate>0.1 0 0</translate><instance_node url=\"" + next +
+               "\"/></node></node>";
+    };
+    for (int k = 1; k <= depth; ++k) library += node(k);
+    return R"(<?xml version="1.0"?><COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1"><asset><up_axis>Y_UP</up_axis></asset>)"
+           R"(<library_geometries><geometry id="g"><mesh><source id="p"><float_array id="pa" count="9">0 0 0 1 0 0 0 1 0</float_array>)"
+           R"(<technique_common><accessor source="#pa" count="3" stride="3"><param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/></accessor></technique_common></source>)"
+           R"(<vertices id="v"><input semantic="POSITION" source="#p"/></vertices><triangles count="1"><input semantic="VERTEX" source="#v" offset="0"/><p>0 1 2</p></triangles></mesh></geometry></library_geometries>)"
+           "<library_nodes>" +
+           library + "</library_nodes><library_visual_scenes><visual_scene id=\"s\">" + node(0) +
+           "</visual_scene></library_visual_scenes><scene><instance_visual_scene "
+           "url=\"#s\"/></scene></COLLADA>";
+}
+
+TEST(LoaderExpansion, ColladaInstanceNodesAreCountedBeforeTheImport) {
+    const auto dir = test::temp_dir("expansion-dae");
+    const auto model = dir / "graph.dae";
+    test::write_bytes(model, expansion_collada_graph(4));  // 16 placements, 46 nodes
+    for (const LoadIsolation isolation : kExpansionIsolations) {
+        SCOPED_TRACE(expansion_isolation_name(isolation));
+        LoadOptions o;
+        o.isolation = isolation;
+        o.max_instances = 16;
+        o.max_geometry_bytes = 46 * 1300;
+        EXPECT_EQ(load_scene(model, o).instances.size(), 16u);
+        LoadOptions fewer = o;
+        fewer.max_instances = 15;
+        test::expect_limit_exceeded([&] { load_scene(model, fewer); }, model, "max_instances",
+                                    "its nodes place 16 meshes");
+        LoadOptions smaller = o;
+        smaller.max_geometry_bytes = 46 * 1300 - 1;
+        test::expect_limit_exceeded([&] { load_scene(model, smaller); }, model,
+                                    "max_geometry_bytes", "expands to 46 nodes");
+    }
+    // 2^30 placements from 5 KB: it reached 7.8 GB in the importer.
+    const auto huge = dir / "huge.dae";
+    test::write_bytes(huge, expansion_collada_graph(30));
+    for (const LoadIsolation isolation : kExpansionIsolations) {
+        SCOPED_TRACE(expansion_isolation_name(isolation));
+        LoadOptions o;
+        o.isolation = isolation;
+        expect_refused_quickly([&] {
+            test::expect_limit_exceeded([&] { load_scene(huge, o); }, huge, "max_instances",
+                                        "its nodes place 1073741824 meshes");
+        });
+    }
+    // A node placing itself: the importer recursed until its stack overflowed.
+    std::string cycle = expansion_collada_graph(3);
+    const std::string geometry = "<instance_geometry url=\"#g\"/>";
+    cycle.replace(cycle.find(geometry), geometry.size(), geometry + "<instance_node url=\"#n1\"/>");
+    const auto looped = dir / "cycle.dae";
+    test::write_bytes(looped, cycle);
+    test::expect_input_error([&] { load_scene(looped); }, looped,
+                             "malformed COLLADA file: node 'n1' places itself");
+}
+
+// An OBJ using each of n materials once.
+void write_used_materials(const std::filesystem::path& dir, int n) {
+    std::string mtl, obj = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    for (int i = 0; i < n; ++i) {
+        mtl += "newmtl m" + std::to_string(i) + "\nKd 1 0 0\n";
+        obj += "usemtl m" + std::to_string(i) + "\nf 1 2 3\n";
+    }
+    test::write_bytes(dir / "m.mtl", mtl);
+    test::write_bytes(dir / "m.obj", obj);
+}
+
+TEST(LoaderExpansion, MaterialsAreCountedBeforeTheImport) {
+    const auto dir = test::temp_dir("expansion-materials");
+    write_used_materials(dir, 3);
+    const auto model = dir / "m.obj";
+    for (const LoadIsolation isolation : kExpansionIsolations) {
+        SCOPED_TRACE(expansion_isolation_name(isolation));
+        LoadOptions o;
+        o.isolation = isolation;
+        o.max_materials = 3;
+        EXPECT_EQ(load_scene(model, o).materials.size(), 4u);  // with the default material
+        o.max_materials = 2;
+        test::expect_limit_exceeded([&] { load_scene(model, o); }, model, "max_materials",
+                                    "its material libraries define 3 materials, more than "
+                                    "max_materials (2)");
+    }
+    // Past the default: refused at once (200,000 took 6.8 GB in the importer).
+    const auto many = test::temp_dir("expansion-materials-many");
+    write_used_materials(many, 20'001);
+    expect_refused_quickly([&] {
+        test::expect_limit_exceeded([&] { load_scene(many / "m.obj"); }, many / "m.obj",
+                                    "max_materials", "define 20001 materials");
+    });
+}
+
+TEST(LoaderExpansion, ManyMaterialsUsedOnceEachLoadInLinearTime) {
+    // Each name was looked up by a linear search (ours and Assimp's): 20,000 took 12 s.
+    const auto dir = test::temp_dir("expansion-materials-used");
+    write_used_materials(dir, 20'000);
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_EQ(load_scene(dir / "m.obj").materials.size(), 20'001u);
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+}
+
+TEST(LoaderExpansion, AMaterialLibraryIsHeldToItsSizeBeforeItIsRead) {
+    const auto dir = test::temp_dir("expansion-mtl-size");
+    const std::string mtl = "newmtl m\nKd 1 0 0\n# " + std::string(200, 'x') + "\n";
+    test::write_bytes(dir / "m.mtl", mtl);
+    const auto model = dir / "m.obj";
+    test::write_bytes(model, "mtllib m.mtl\nusemtl m\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    LoadOptions o;
+    o.max_file_bytes = mtl.size();  // a library within min(max_file_bytes, 64 MiB)
+    EXPECT_EQ(load_scene(model, o).materials.size(), 2u);
+    o.max_file_bytes = mtl.size() - 1;
+    test::expect_limit_exceeded([&] { load_scene(model, o); }, model, "max_file_bytes",
+                                "bytes a material library may have");
+    // 20 GiB (sparse): the load hung reading it.
+    std::filesystem::resize_file(dir / "m.mtl", std::uintmax_t{20} << 30);
+    expect_refused_quickly([&] {
+        test::expect_limit_exceeded([&] { load_scene(model); }, model, "max_file_bytes",
+                                    "is 21474836480 bytes, more than the 67108864 bytes");
+    });
+}
+
+std::string expansion_lightwave_scene(const std::string& object, int loads) {
+    std::string text = "LWSC\n3\n\nFirstFrame 1\nLastFrame 1\n\n";
+    for (int i = 0; i < loads; ++i)
+        text += "LoadObjectLayer 1 " + object + "\nPosition " + std::to_string(i) + " 0 0\n";
+    return text;
+}
+
+TEST(LoaderExpansion, LightWaveObjectLoadsAreCountedBeforeTheImport) {
+    const auto dir = test::temp_dir("expansion-lws");
+    const std::string object = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    test::write_bytes(dir / "t.obj", object);
+    const auto scene = dir / "s.lws";
+    test::write_bytes(scene, expansion_lightwave_scene("t.obj", 3));
+    for (const LoadIsolation isolation : kExpansionIsolations) {
+        SCOPED_TRACE(expansion_isolation_name(isolation));
+        LoadOptions o;
+        o.isolation = isolation;
+        o.max_instances = 3 * 200;
+        o.max_geometry_bytes = 3 * object.size() * 15;
+        EXPECT_EQ(load_scene(scene, o).triangle_count(), 3u);
+        LoadOptions fewer = o;
+        fewer.max_instances = 3 * 200 - 1;
+        test::expect_limit_exceeded([&] { load_scene(scene, fewer); }, scene, "max_instances",
+                                    "it loads objects more than 2 times");
+        LoadOptions smaller = o;
+        smaller.max_geometry_bytes = 3 * object.size() * 15 - 1;
+        test::expect_limit_exceeded([&] { load_scene(scene, smaller); }, scene,
+                                    "max_geometry_bytes", "its 3 object loads read");
+    }
+    // 100,000 loads hung the importer (quadratic); a 20 GiB object too.
+    const auto many = dir / "many.lws";
+    test::write_bytes(many, expansion_lightwave_scene("t.obj", 100'000));
+    test::write_bytes(dir / "big.obj", object);
+    std::filesystem::resize_file(dir / "big.obj", std::uintmax_t{20} << 30);
+    const auto big = dir / "big.lws";
+    test::write_bytes(big, expansion_lightwave_scene("big.obj", 1));
+    for (const LoadIsolation isolation : kExpansionIsolations) {
+        SCOPED_TRACE(expansion_isolation_name(isolation));
+        LoadOptions o;
+        o.isolation = isolation;
+        expect_refused_quickly([&] {
+            test::expect_limit_exceeded([&] { load_scene(many, o); }, many, "max_instances",
+                                        "it loads objects more than 5000 times");
+            test::expect_limit_exceeded([&] { load_scene(big, o); }, big, "max_file_bytes",
+                                        "its object 'big.obj' is 21474836480 bytes");
+        });
+    }
+}
+
+TEST(LoaderExpansion, ALightWaveObjectOutsideTheFolderIsNamed) {
+    const auto root = test::temp_dir("expansion-lws-outside");
+    std::filesystem::create_directories(root / "m");
+    test::write_bytes(root / "secret.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const auto scene = root / "m" / "s.lws";
+    test::write_bytes(scene, expansion_lightwave_scene("../secret.obj", 1));
+    test::expect_input_error([&] { load_scene(scene); }, scene,
+                             "its object '../secret.obj' is outside the model's folder");
+    LoadOptions o;
+    o.allow_outside_references = true;
+    EXPECT_EQ(load_scene(scene, o).triangle_count(), 1u);
+}
+
+TEST(LoaderExpansion, EveryTextureAnMtlNamesIsAFileTheModelRead) {
+    const auto dir = test::temp_dir("expansion-named-textures");
+    test::write_bytes(dir / "amb.png", "not read by zraster");
+    test::write_bytes(dir / "m.mtl", "newmtl m\nKd 1 1 1\nmap_Ka amb.png\n");
+    const auto model = dir / "m.obj";
+    test::write_bytes(model, "mtllib m.mtl\nusemtl m\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    std::vector<std::filesystem::path> read;
+    load_scene(model, {}, nullptr, &read);
+    const auto amb = std::filesystem::canonical(dir / "amb.png");
+    EXPECT_NE(std::find(read.begin(), read.end(), amb), read.end());
+}
+
+}  // namespace
+}  // namespace zraster
