@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <optional>
@@ -172,9 +174,13 @@ void check_ply_lists(const std::filesystem::path& path, std::size_t header_bytes
                                                             " " + std::to_string(r) + "'s " +
                                                             p.name + ": " + not_a_number(word));
                 };
+                bool complete = true;  // every property read
                 for (const PlyProperty& p : layout[e]) {
                     std::string token;
-                    if (!(words >> token)) break;
+                    if (!(words >> token)) {
+                        complete = false;
+                        break;
+                    }
                     if (!p.list) {
                         check_number(p, token);
                         continue;
@@ -206,6 +212,13 @@ void check_ply_lists(const std::filesystem::path& path, std::size_t header_bytes
                         if (index < 0 || std::uint64_t(index) >= vertices) refuse_index(r, token);
                     }
                 }
+                // A word past the declared properties ("3 0 1 2 5" for a face of one list):
+                // Assimp skipped it without a word.
+                if (std::string extra; complete && words >> extra)
+                    throw InputError(path.string(), "malformed PLY file: " + elements[e].name +
+                                                        " " + std::to_string(r) + " has a word '" +
+                                                        one_line(extra.substr(0, 40)) +
+                                                        "' past its declared properties");
                 continue;
             }
             for (const PlyProperty& p : layout[e]) {
@@ -517,6 +530,7 @@ class OffHeaderReader {
         }
         // What follows the indices is the face's color (numbers) or a comment; Assimp reads a
         // number's prefix of anything else ("junk" was taken without a word).
+        std::size_t colors = 0;
         while (q < line_end) {
             while (q < line_end && (*q == ' ' || *q == '\t' || *q == '\r')) ++q;
             if (q == line_end || *q == '#') break;
@@ -528,7 +542,20 @@ class OffHeaderReader {
                 throw InputError(path.string(), "malformed OFF file: " + where() + ": '" +
                                                     one_line(std::string(text.substr(0, 32))) +
                                                     "' after its indices is not a color number");
+            // A color is a colormap index, RGB or RGBA, each 0..1 or 0..255 (zraster does not
+            // use face colors; nonsense values were taken without a word).
+            const double value = std::strtod(std::string(text).c_str(), nullptr);
+            if (!std::isfinite(value) || value < 0.0 || value > 255.0)
+                throw InputError(path.string(), "malformed OFF file: " + where() + ": color '" +
+                                                    one_line(std::string(text.substr(0, 32))) +
+                                                    "' is outside 0..255");
+            ++colors;
         }
+        if (colors == 2 || colors > 4)
+            throw InputError(path.string(), "malformed OFF file: " + where() + " has " +
+                                                std::to_string(colors) +
+                                                " color numbers after its indices (a color is "
+                                                "1 (a colormap index), 3 (RGB) or 4 (RGBA))");
     }
 
     // 1-based, counting a CR LF, a lone CR or a lone LF as one line end.

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 #include <string_view>
@@ -17,9 +18,26 @@ namespace zraster::io {
 
 namespace {
 
-constexpr std::array<std::string_view, 17> kNumeric = {"Ka", "Kd", "Ks",  "Ke",    "Tf",    "Ns",
-                                                       "Ni", "d",  "Tr",  "illum", "Pr",    "Pm",
-                                                       "Ps", "Pc", "Pcr", "aniso", "anisor"};
+constexpr std::array<std::string_view, 18> kNumeric = {
+    "Ka",    "Kd", "Ks", "Ke", "Tf", "Ns",  "Ni",    "d",      "Tr",
+    "illum", "Pr", "Pm", "Ps", "Pc", "Pcr", "aniso", "anisor", "sharpness"};
+
+// The ranges of the statements zraster reads but does not use (Kd, Ks, Ns, d and Tr are
+// checked where the material is converted): a value outside is warned about, once a library
+// and statement.
+struct UnusedRange {
+    std::string_view keyword;
+    double lo, hi;
+    const char* range;
+};
+constexpr UnusedRange kUnusedRanges[] = {
+    {"Ka", 0.0, 1.0, "0..1"},     {"Ke", 0.0, 1.0, "0..1"},
+    {"Tf", 0.0, 1.0, "0..1"},     {"Ni", 0.001, 10.0, "0.001..10"},
+    {"Pr", 0.0, 1.0, "0..1"},     {"Pm", 0.0, 1.0, "0..1"},
+    {"Ps", 0.0, 1.0, "0..1"},     {"Pc", 0.0, 1.0, "0..1"},
+    {"Pcr", 0.0, 1.0, "0..1"},    {"aniso", 0.0, 1.0, "0..1"},
+    {"anisor", 0.0, 1.0, "0..1"}, {"sharpness", 0.0, 1000.0, "0..1000"},
+};
 
 bool blank(char c) {
     return c == ' ' || c == '\t' || c == '\r';
@@ -32,6 +50,7 @@ void check_mtl_numbers(const std::filesystem::path& obj, const std::filesystem::
     std::ifstream in(library, std::ios::binary);
     std::string line;
     bool decal_seen = false;
+    std::vector<std::string_view> warned;  // kUnusedRanges keywords warned about
     std::vector<std::string_view> words;
     for (std::size_t number = 1; std::getline(in, line); ++number) {
         words.clear();
@@ -70,6 +89,25 @@ void check_mtl_numbers(const std::filesystem::path& obj, const std::filesystem::
             refuse("'" + std::string(words[0]) + "' of 2 numbers; a color is 1 or 3");
         if (color && numbers == 0)
             refuse("'" + std::string(words[0]) + "' without a number; a color is 1 or 3");
+        if (color && numbers > 3)
+            refuse("'" + std::string(words[0]) + "' of " + std::to_string(numbers) +
+                   " numbers; a color is 1 or 3");
+        for (const UnusedRange& r : kUnusedRanges) {
+            if (words[0] != r.keyword || numbers == 0 || warnings == nullptr ||
+                std::find(warned.begin(), warned.end(), r.keyword) != warned.end())
+                continue;
+            for (std::size_t k = 1; k <= numbers; ++k) {
+                const double value = std::strtod(std::string(words[k]).c_str(), nullptr);
+                if (value >= r.lo && value <= r.hi) continue;  // (NaN fails both)
+                std::string statement(words[0]);
+                for (std::size_t j = 1; j <= numbers; ++j)
+                    statement.append(" ").append(words[j].substr(0, 24));
+                warnings->push_back(where() + "'" + statement + "' is outside " + r.range +
+                                    "; zraster does not use it (ignored)");
+                warned.push_back(r.keyword);
+                break;
+            }
+        }
         // An illumination model is one of the specification's 0 to 10 (Assimp read the word
         // into an int: 4294967296 wrapped).
         const auto model = [](std::string_view w) {

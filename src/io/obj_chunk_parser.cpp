@@ -47,6 +47,20 @@ int parse_floats(const char* q, const char* e, float* out, int max) {
     }
 }
 
+// Whether every word of a v, vt or vn statement before a comment is a number (and the line holds
+// no control character).
+[[gnu::noinline]] bool numbers_only(const char* q, const char* e) {
+    if (has_control(q, e)) return false;
+    while (true) {
+        q = skip_blanks(q, e);
+        if (q == e || *q == '#') return true;
+        const char* word = q;
+        q = skip_word(q, e);
+        if (!is_number_word(std::string_view(word, static_cast<std::size_t>(q - word))))
+            return false;
+    }
+}
+
 // The same for a face corner (v, v/vt, v//vn, v/vt/vn, or a form left to Assimp): the first
 // part between slashes that is not a whole number ("1x", "1.5"). A word starting with '#' is a
 // comment Assimp refuses its own way.
@@ -230,6 +244,13 @@ class ChunkParser {
             if (count < 0)
                 if (const std::string_view w = first_non_number(q, e); !w.empty())
                     return error(line, not_a_number(w));
+            // Assimp read the first three of more, and failed on fewer far away.
+            if (count >= 0)
+                return error(line, "a normal of " + std::to_string(count) +
+                                       (count == 1 ? " number" : " numbers") +
+                                       "; a normal is x y z");
+            if (numbers_only(q, e))
+                return error(line, "a normal of more than 3 numbers; a normal is x y z");
             return leave(line, "normal that is not 3 numbers");
         }
         // Exactly as convert_mesh's copy_normals: normalised in double, usable when finite

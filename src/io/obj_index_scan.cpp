@@ -105,9 +105,19 @@ void check_numbers(std::string_view line, const std::string& file, std::size_t n
     const bool values = keyword == "v" || keyword == "vt" || keyword == "vn";
     const bool corners = keyword == "f" || keyword == "l" || keyword == "p";
     if ((!values && !corners) || has_control(line)) return;
-    for (std::size_t at = keyword.size(); at < line.size();) {
+    std::size_t numbers = 0;
+    for (std::size_t at = keyword.size(); at <= line.size();) {
         while (at < line.size() && is_blank(line[at])) ++at;
-        if (at == line.size() || line[at] == '#') return;
+        if (at == line.size() || line[at] == '#') {
+            // As zraster's reader: Assimp read the first three of more.
+            if (keyword == "vn" && numbers != 3)
+                throw InputError(file, "line " + std::to_string(number) + ": a normal of " +
+                                           std::to_string(numbers) +
+                                           (numbers == 1 ? " number" : " numbers") +
+                                           "; a normal is x y z");
+            return;
+        }
+        ++numbers;
         const std::size_t end = word_end(at);
         if (values) {
             const std::string_view w = line.substr(at, end - at);
