@@ -47,17 +47,18 @@ int parse_floats(const char* q, const char* e, float* out, int max) {
     }
 }
 
-// Whether every word of a v, vt or vn statement before a comment is a number (and the line holds
-// no control character).
-[[gnu::noinline]] bool numbers_only(const char* q, const char* e) {
-    if (has_control(q, e)) return false;
+// How many words a v, vt or vn statement has before a comment when every one is a number, else
+// -1 (or when the line holds a control character).
+[[gnu::noinline]] int number_words(const char* q, const char* e) {
+    if (has_control(q, e)) return -1;
+    int words = 0;
     while (true) {
         q = skip_blanks(q, e);
-        if (q == e || *q == '#') return true;
+        if (q == e || *q == '#') return words;
         const char* word = q;
         q = skip_word(q, e);
-        if (!is_number_word(std::string_view(word, static_cast<std::size_t>(q - word))))
-            return false;
+        if (!is_number_word(std::string_view(word, static_cast<std::size_t>(q - word)))) return -1;
+        ++words;
     }
 }
 
@@ -249,8 +250,9 @@ class ChunkParser {
                 return error(line, "a normal of " + std::to_string(count) +
                                        (count == 1 ? " number" : " numbers") +
                                        "; a normal is x y z");
-            if (numbers_only(q, e))
-                return error(line, "a normal of more than 3 numbers; a normal is x y z");
+            if (const int words = number_words(q, e); words > 3)
+                return error(
+                    line, "a normal of " + std::to_string(words) + " numbers; a normal is x y z");
             return leave(line, "normal that is not 3 numbers");
         }
         // Exactly as convert_mesh's copy_normals: normalised in double, usable when finite
