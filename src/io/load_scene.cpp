@@ -17,6 +17,7 @@
 #include "io/input_file_check.hpp"
 #include "io/load_worker.hpp"
 #include "io/mtl_dissolve.hpp"
+#include "io/named_files.hpp"
 #include "io/obj_index_scan.hpp"
 #include "io/obj_material_libraries.hpp"
 #include "io/obj_parser.hpp"
@@ -332,6 +333,8 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
     }
     // One line each: they quote names and paths from the file.
     for (const std::string& w : warnings) loaded.warnings.push_back(file + ": " + io::one_line(w));
+    // Images no material zraster reads uses (a clearcoat texture) are the model's files too.
+    if (!is_obj(path)) io::note_gltf_images(path, policy);
     loaded.files_read = policy.files_read();
     return loaded;
 }

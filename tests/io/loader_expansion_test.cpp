@@ -232,5 +232,34 @@ TEST(LoaderExpansion, EveryTextureAnMtlNamesIsAFileTheModelRead) {
     EXPECT_NE(std::find(read.begin(), read.end(), amb), read.end());
 }
 
+TEST(LoaderExpansion, EveryImageAGltfNamesIsAFileTheModelRead) {
+    const auto dir = test::temp_dir("expansion-gltf-images");
+    test::write_bytes(dir / "cc.png", "not read by zraster");
+    test::write_bytes(dir / "a b.png", "not read either");
+    const auto model = dir / "m.gltf";
+    test::write_bytes(
+        model,
+        R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
+        R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],)"
+        R"("materials":[{"extensions":{"KHR_materials_clearcoat":{"clearcoatFactor":1,)"
+        R"("clearcoatTexture":{"index":0}}}}],"textures":[{"source":0}],)"
+        R"("images":[{"uri":"cc.png"},{"uri":"a%20b.png"}],)"
+        R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3",)"
+        R"("min":[0,0,0],"max":[1,1,0]}],"bufferViews":[{"buffer":0,"byteLength":36}],)"
+        R"("buffers":[{"uri":"data:application/octet-stream;base64,)"
+        R"(AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA","byteLength":36}]})");
+    for (const LoadIsolation isolation : kExpansionIsolations) {
+        SCOPED_TRACE(expansion_isolation_name(isolation));
+        LoadOptions o;
+        o.isolation = isolation;
+        std::vector<std::filesystem::path> read;
+        load_scene(model, o, nullptr, &read);
+        for (const char* name : {"cc.png", "a b.png"})
+            EXPECT_NE(std::find(read.begin(), read.end(), std::filesystem::canonical(dir / name)),
+                      read.end())
+                << name;
+    }
+}
+
 }  // namespace
 }  // namespace zraster
