@@ -161,13 +161,16 @@ io::LoadedScene load_any(const std::filesystem::path& path, const LoadOptions& o
     // looked wrong comes first: Assimp's messages name neither the line nor, often, the cause
     // ("vertex index out of range" for a coordinate that is not a number).
     const io::ObjFallback& fallback = std::get<io::ObjFallback>(fast);
-    io::check_obj_indices(path, options);  // what Assimp would clamp or drop without a word
+    std::string color_warning;  // a vertex color outside 0..1, which neither path uses
+    io::check_obj_indices(path, options, &color_warning);  // what Assimp would clamp or drop
     // Its material libraries' numbers too: Assimp fails on a short color in its own words. The
     // scan's materials serve the conversion after the import.
     const io::ObjMaterialLibraries libraries = io::scan_obj_material_libraries(
         path, io::ReferencePolicy(path, options.allow_outside_references), options);
     try {
-        return io::load_scene_with_assimp(path, options, &libraries);
+        io::LoadedScene loaded = io::load_scene_with_assimp(path, options, &libraries);
+        if (!color_warning.empty()) loaded.warnings.push_back(path.string() + ": " + color_warning);
+        return loaded;
     } catch (const LimitExceeded&) {
         throw;
     } catch (const InputError& e) {

@@ -213,6 +213,13 @@ class ChunkParser {
             // scan tells them apart.)
             return leave(line, "vertex coordinate that is not a plain number");
         }
+        if (n == 6 && !c_.color_outside_line)
+            for (int k = 3; k < 6; ++k)
+                if (!(v[k] >= 0.0f && v[k] <= 1.0f)) {
+                    c_.color_outside_line = line;
+                    std::copy(v + 3, v + 6, c_.color_outside);
+                    break;
+                }
         if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
             c_.non_finite_positions.emplace_back(static_cast<std::uint32_t>(positions_), line);
         // Three push_backs inline, where insert's range path is a call.

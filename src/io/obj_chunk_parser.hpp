@@ -67,6 +67,10 @@ struct Chunk {
     // reads that slot as a normal index.
     std::optional<std::uint32_t> uv_slot_without_uvs;
     std::optional<Problem> problem;
+    // The first `v x y z r g b` whose color is outside 0..1 or not finite (zraster does not use
+    // OBJ vertex colors: warned about once a file): its line and color.
+    std::optional<std::uint32_t> color_outside_line;
+    float color_outside[3] = {0, 0, 0};
 };
 
 // The chunk holding the file's face (or value) number `index`, given the number before each

@@ -9,9 +9,11 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -93,7 +95,8 @@ bool has_control(std::string_view line) {
 // numbers, and the parts of face, line and point corners that are not whole numbers, refused as
 // zraster's reader refuses them (Assimp would read their numeric prefix). Statements start in
 // the line's first column, as both readers take them.
-void check_numbers(std::string_view line, const std::string& file, std::size_t number) {
+void check_numbers(std::string_view line, const std::string& file, std::size_t number,
+                   std::string* warning) {
     const auto refuse = [&](std::string_view w) {
         throw InputError(file, "line " + std::to_string(number) + ": " + not_a_number(w));
     };
@@ -106,10 +109,21 @@ void check_numbers(std::string_view line, const std::string& file, std::size_t n
     const bool corners = keyword == "f" || keyword == "l" || keyword == "p";
     if ((!values && !corners) || has_control(line)) return;
     std::size_t numbers = 0;
+    std::string_view colors[3];  // a vertex's 4th to 6th numbers
     for (std::size_t at = keyword.size(); at <= line.size();) {
         while (at < line.size() && is_blank(line[at])) ++at;
         if (at == line.size() || line[at] == '#') {
             // As zraster's reader: Assimp read the first three of more.
+            if (keyword == "v" && numbers == 6 && warning != nullptr && warning->empty()) {
+                float rgb[3];
+                for (int k = 0; k < 3; ++k)
+                    rgb[k] = std::strtof(std::string(colors[k]).c_str(), nullptr);
+                for (const float c : rgb)
+                    if (!(c >= 0.0f && c <= 1.0f)) {
+                        *warning = vertex_color_outside_warning(number, rgb);
+                        break;
+                    }
+            }
             if (keyword == "vn" && numbers != 3)
                 throw InputError(file, "line " + std::to_string(number) + ": a normal of " +
                                            std::to_string(numbers) +
@@ -122,6 +136,7 @@ void check_numbers(std::string_view line, const std::string& file, std::size_t n
         if (values) {
             const std::string_view w = line.substr(at, end - at);
             if (!is_number_word(w)) refuse(w);
+            if (numbers >= 4 && numbers <= 6) colors[numbers - 4] = w;
         } else {
             const std::string_view w = line.substr(at, end - at);
             for (std::size_t from = 0; from <= w.size();) {
@@ -178,7 +193,16 @@ void count_continued_faces(const std::string& text, const std::filesystem::path&
 
 }  // namespace
 
-void check_obj_indices(const std::filesystem::path& path, const LoadOptions& options) {
+std::string vertex_color_outside_warning(std::size_t line, const float* rgb) {
+    std::ostringstream text;
+    text << "line " << line << ": vertex color (" << rgb[0] << ", " << rgb[1] << ", " << rgb[2]
+         << ") is outside 0..1; zraster does not use OBJ vertex colors (ignored)";
+    return text.str();
+}
+
+void check_obj_indices(const std::filesystem::path& path, const LoadOptions& options,
+                       std::string* warning) {
+    if (warning != nullptr) warning->clear();
     std::ifstream in(path, std::ios::binary);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     std::vector<std::string_view> lines;
@@ -213,7 +237,7 @@ void check_obj_indices(const std::filesystem::path& path, const LoadOptions& opt
     std::vector<std::string_view> w;
     std::vector<Corner> corners;
     for (std::size_t l = 0; l < lines.size(); ++l) {
-        check_numbers(lines[l], path.string(), l + 1);
+        check_numbers(lines[l], path.string(), l + 1, warning);
         words(lines[l], w);
         if (w.empty()) continue;
         const auto refuse = [&](const std::string& cause) {

@@ -11,6 +11,7 @@
 #include <zraster/load.hpp>
 
 #include <filesystem>
+#include <string>
 
 namespace zraster::io {
 
@@ -19,6 +20,13 @@ namespace zraster::io {
 // "FILE: line N: 'WORD' is not a number" for a coordinate or index that is not one (as the reader
 // refuses it: obj_number_token.hpp), and "FILE: line N: a face of C corners; at most 32767".
 // Throws LimitExceeded past options.max_triangulation_work (triangulation_budget.hpp).
-void check_obj_indices(const std::filesystem::path& path, const LoadOptions& options);
+// `warning`, when given, receives the first vertex color outside 0..1
+// (vertex_color_outside_warning), empty when there is none.
+void check_obj_indices(const std::filesystem::path& path, const LoadOptions& options,
+                       std::string* warning = nullptr);
+
+// "line N: vertex color (r, g, b) is outside 0..1; zraster does not use OBJ vertex colors
+// (ignored)": what both OBJ paths warn, once a file.
+std::string vertex_color_outside_warning(std::size_t line, const float* rgb);
 
 }  // namespace zraster::io

@@ -15,6 +15,7 @@
 #include <zraster/error.hpp>
 
 #include "io/obj_chunk_parser.hpp"
+#include "io/obj_index_scan.hpp"
 #include "io/obj_materials.hpp"
 #include "io/obj_mesh_builder.hpp"
 #include "io/obj_numbers.hpp"
@@ -266,8 +267,17 @@ std::variant<LoadedScene, ObjFallback> read_obj(const std::filesystem::path& pat
     obj::check_finite_positions(built, chunks, offsets, structure, output.meshes, file);
     std::variant<LoadedScene, ObjFallback> result =
         obj::assemble_scene(path, built, structure, output.meshes, statements, options);
-    if (LoadedScene* loaded = std::get_if<LoadedScene>(&result))
+    if (LoadedScene* loaded = std::get_if<LoadedScene>(&result)) {
         loaded->files_read = policy.files_read();
+        for (const obj::Chunk& c : chunks)
+            if (c.color_outside_line) {
+                loaded->warnings.push_back(
+                    file + ": " +
+                    vertex_color_outside_warning(c.first_line + *c.color_outside_line + 1,
+                                                 c.color_outside));
+                break;
+            }
+    }
     return result;
 }
 

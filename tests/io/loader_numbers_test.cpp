@@ -75,6 +75,33 @@ TEST(LoaderNumbers, ObjNormalsOfOtherThanThreeNumbersAreRefused) {
     }
 }
 
+TEST(LoaderNumbers, ObjVertexColorsOutOfRangeWarnOncePerFile) {
+    const auto dir = test::temp_dir("numbers-vertex-colors");
+    const std::string pentagon = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv -1 0 0\nf 1 2 3 4 5\n";
+    for (const auto& [color, shown] :
+         std::vector<std::pair<std::string, std::string>>{{"255 0 0", "(255, 0, 0)"},
+                                                          {"-1 -1 -1", "(-1, -1, -1)"},
+                                                          {"inf 0 0", "(inf, 0, 0)"}}) {
+        SCOPED_TRACE(color);
+        int variant = 0;
+        for (const std::string& prefix : {std::string(), pentagon}) {
+            const auto path = dir / ("c" + std::to_string(variant++) + ".obj");
+            test::write_bytes(path, prefix + "v 0 0 0 " + color + "\nv 1 0 0 " + color +
+                                        "\nv 0 1 0 0.5 0.5 0.5\nf -3 -2 -1\n");
+            const std::size_t line = prefix.empty() ? 1 : 7;
+            for (const LoadIsolation isolation : kNumberIsolations) {
+                std::vector<std::string> warnings;
+                load_scene(path, numbers_isolated(isolation), &warnings);
+                ASSERT_EQ(warnings.size(), 1u);
+                EXPECT_EQ(warnings[0], path.string() + ": line " + std::to_string(line) +
+                                           ": vertex color " + shown +
+                                           " is outside 0..1; zraster does not use OBJ vertex "
+                                           "colors (ignored)");
+            }
+        }
+    }
+}
+
 TEST(LoaderNumbers, MtlColorsOfFourNumbersAreRefusedAndUnusedValuesOutOfRangeWarn) {
     const auto dir = test::temp_dir("numbers-mtl");
     const auto obj = dir / "m.obj";
