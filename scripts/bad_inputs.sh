@@ -617,6 +617,8 @@ printf 'newmtl m\nKd 1 1 1\nmap_Ka amb.png\n' >amb.mtl
 printf 'mtllib amb.mtl\nusemtl m\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' >amb.obj
 printf 'not an image zraster reads' >amb.png
 row "-o over a texture the model's MTL names (map_Ka) that zraster does not read" render amb.obj -o amb.png
+printf "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 300 0 0\n" >color300.off
+row "OFF face color of 300 (colors are 0..255)" render color300.off -o out.png
 rm -f out.png
 echo
 echo "$n inputs; $failures broke the contract (exit 2, one line, nothing left)."

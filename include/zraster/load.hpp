@@ -104,8 +104,10 @@ struct LoadOptions {
 // material member of the wrong type; unusable normals) are
 // appended to *warnings when it is given, one line each, starting with the file name.
 // The other files the model named and the loader read (glTF buffers and images, material
-// libraries, textures, a cells file's mesh files and theirs), canonical and sorted, are appended
-// to *files_read when it is given: a caller that writes files must not replace them.
+// libraries, textures, a cells file's mesh files and theirs), and those it names but zraster does
+// not read (every MTL map_* or bump statement's file, every glTF image: a clearcoat texture),
+// canonical and sorted, are appended to *files_read when it is given: a caller that writes files
+// must not replace them.
 // Throws InputError (one line naming the file and the cause) for a missing or unreadable file,
 // an unknown format, malformed or truncated content (an OBJ or MTL word that is not a number
 // included), no triangles (or none with an area), or NaN/Inf coordinates; LimitExceeded past a
