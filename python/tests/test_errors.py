@@ -120,7 +120,8 @@ def test_bad_renderer_arguments():
 def test_bad_load_budgets():
     for name, value in (("max_instances", -1), ("max_instances", 2**70), ("max_triangles", 0),
                         ("max_texture_side", 2**63), ("max_texture_bytes", -5),
-                        ("max_geometry_bytes", 0), ("max_triangulation_work", 2**41)):
+                        ("max_geometry_bytes", 0), ("max_triangulation_work", 2**41),
+                        ("max_materials", 0), ("max_materials", 2**40)):
         with raises(zraster.InputError, name, "must be in", str(value)):
             zraster.load("builtin:cube", **{name: value})
     with raises(TypeError, "max_texture_side", "integer", "float"):
@@ -213,6 +214,13 @@ def test_load_budgets_raise_limit_exceeded(tmp_path, isolation):
     with raises(zraster.LimitExceeded, "line 6: a polygon of 5 corners") as info:
         zraster.load(pentagon, isolation=isolation, max_triangulation_work=24)
     assert info.value.limit == "max_triangulation_work"
+    (tmp_path / "m.mtl").write_text("newmtl a\nKd 1 0 0\nnewmtl b\nKd 0 1 0\n")
+    materials = tmp_path / "materials.obj"
+    materials.write_text("mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n")
+    assert len(zraster.load(materials, isolation=isolation, max_materials=2).materials) >= 2
+    with raises(zraster.LimitExceeded, "define 2 materials, more than max_materials (1)") as info:
+        zraster.load(materials, isolation=isolation, max_materials=1)
+    assert info.value.limit == "max_materials"
     with raises(zraster.LimitExceeded, "more than max_geometry_bytes (100 bytes)") as info:
         zraster.load(path, isolation=isolation, max_geometry_bytes=100)
     assert info.value.limit == "max_geometry_bytes"

@@ -517,6 +517,8 @@ TEST(CliLimits, LoaderBudgetsNameTheirFlags) {
           "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
           "property float z\nelement face 2\nproperty list uchar int vertex_indices\n"
           "end_header\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 1 3 2\n");
+    write(dir / "m.mtl", "newmtl a\nKd 1 0 0\nnewmtl b\nKd 0 1 0\n");
+    write(dir / "materials.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n");
     for (const std::string isolation : {"", "--load-in-process "}) {
         expect_refused(dir, isolation + "render shared.gltf --max-instances 7 -o out.png",
                        "zraster: shared.gltf: the node graph places more than 7 meshes "
@@ -528,7 +530,13 @@ TEST(CliLimits, LoaderBudgetsNameTheirFlags) {
         expect_refused(dir, isolation + "info two.ply --max-triangles 1",
                        "zraster: two.ply: too many triangles (2, limit 1); raise it with "
                        "--max-triangles N\n");
+        expect_refused(dir, isolation + "render materials.obj --max-materials 1 -o out.png",
+                       "zraster: materials.obj: its material libraries define 2 materials, "
+                       "more than max_materials (1); raise it with --max-materials N\n");
     }
+    EXPECT_EQ(
+        run_limited("render materials.obj --max-materials 2 --size 8x8 -o out.png", dir).exit_code,
+        0);
     // Within the budgets the same files load.
     const CommandResult r =
         run_limited("render shared.gltf --max-instances 8 --size 8x8 -o out.png", dir);
