@@ -654,7 +654,10 @@ void check_declared_counts(const std::filesystem::path& path, std::uintmax_t fil
             std::nullopt, options);
         return;
     }
-    if (extension == ".dae") {
+    // (Assimp reads COLLADA by its root element under another name, an .xml too.)
+    if (extension == ".dae" ||
+        (extension != ".obj" && extension != ".ply" && extension != ".stl" && extension != ".off" &&
+         head.find("<COLLADA") != std::string::npos)) {
         check_collada_instances(path, options);
         return;
     }

@@ -79,15 +79,14 @@ void check_lightwave_scene(const std::filesystem::path& path, const LoadOptions&
         }
         ++loads;
         object_bytes += static_cast<long double>(it->second);
-        if (loads > max_loads)
-            throw LimitExceeded(
-                file, "max_instances",
-                "it loads objects more than " + std::to_string(max_loads) +
-                    " times (the importer combines the loads in time quadratic in their number; "
-                    "each counts " +
-                    std::to_string(kLightWaveLoadWeight) + " placements of max_instances, " +
-                    std::to_string(options.max_instances) + ")");
     }
+    if (loads > max_loads)
+        throw LimitExceeded(file, "max_instances",
+                            "it loads objects " + std::to_string(loads) + " times, more than " +
+                                std::to_string(max_loads) + " (max_instances / " +
+                                std::to_string(kLightWaveLoadWeight) +
+                                ": the importer combines the loads in time quadratic in their "
+                                "number)");
     const long double bytes = object_bytes * kLightWaveBytesPerObjectByte;
     if (bytes > static_cast<long double>(options.max_geometry_bytes))
         throw LimitExceeded(file, "max_geometry_bytes",
