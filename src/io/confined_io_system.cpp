@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <optional>
+#include <system_error>
 
 namespace zraster::io {
 
@@ -27,7 +29,19 @@ bool ConfinedIOSystem::allowed(const char* file) const {
         if (std::find(refusals_.begin(), refusals_.end(), line) == refusals_.end())
             refusals_.push_back(line);
     }
-    return check.verdict == ReferencePolicy::Verdict::Readable;
+    if (check.verdict != ReferencePolicy::Verdict::Readable) return false;
+    std::error_code ec;
+    const std::uintmax_t size = std::filesystem::file_size(file, ec);
+    if (!ec && size > max_bytes_) {
+        std::string line = "'";
+        line.append(file).append("' is ").append(std::to_string(size));
+        line.append(" bytes, more than max_file_bytes (").append(std::to_string(max_bytes_));
+        line.append(")").append(1, kAdviceMark);
+        if (std::find(refusals_.begin(), refusals_.end(), line) == refusals_.end())
+            refusals_.push_back(line);
+        return false;
+    }
+    return true;
 }
 
 bool ConfinedIOSystem::Exists(const char* file) const {

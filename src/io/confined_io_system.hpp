@@ -4,6 +4,7 @@
 #pragma once
 #include <assimp/DefaultIOSystem.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,10 @@ class ConfinedIOSystem : public Assimp::DefaultIOSystem {
         rewrite_libraries_ = true;
     }
 
+    // Refuses files larger than `max_bytes` (LoadOptions::max_file_bytes): Assimp reads a
+    // referenced file whole (a LightWave scene's 20 GiB object hung the loader).
+    void limit_file_size(std::uintmax_t max_bytes) { max_bytes_ = max_bytes; }
+
     bool Exists(const char* file) const override;
     Assimp::IOStream* Open(const char* file, const char* mode = "rb") override;
 
@@ -42,6 +47,7 @@ class ConfinedIOSystem : public Assimp::DefaultIOSystem {
     std::vector<std::string>& refusals_;
     bool rewrite_libraries_ = false;
     std::string obj_model_;
+    std::uintmax_t max_bytes_ = ~std::uintmax_t{0};
 };
 
 }  // namespace zraster::io

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <string>
 
+#include "io/confined_io_system.hpp"
 #include "io/io_test_util.hpp"
 #include "support/test_support.hpp"
 
@@ -205,6 +206,26 @@ TEST(LoaderExpansion, LightWaveObjectLoadsAreCountedBeforeTheImport) {
                                         "its object 'big.obj' is 21474836480 bytes");
         });
     }
+}
+
+// Whatever else an importer opens is held to max_file_bytes too, before it is read.
+TEST(LoaderExpansion, TheImportersFilesAreHeldToTheFileSizeLimit) {
+    const auto dir = test::temp_dir("expansion-io-size");
+    const auto model = dir / "m.lws";
+    test::write_bytes(model, "LWSC\n");
+    test::write_bytes(dir / "small.obj", "0123456789");
+    test::write_bytes(dir / "large.obj", "01234567890");
+    std::vector<std::string> refusals;
+    io::ConfinedIOSystem files(io::ReferencePolicy(model, false), refusals);
+    files.limit_file_size(10);
+    Assimp::IOStream* small = files.Open((dir / "small.obj").c_str());
+    ASSERT_NE(small, nullptr);
+    files.Close(small);
+    EXPECT_EQ(files.Open((dir / "large.obj").c_str()), nullptr);
+    ASSERT_EQ(refusals.size(), 1u);
+    EXPECT_EQ(io::refusal_text(refusals[0], "refused"),
+              "'" + (dir / "large.obj").string() +
+                  "' is 11 bytes, more than max_file_bytes (10): refused");
 }
 
 TEST(LoaderExpansion, ALightWaveObjectOutsideTheFolderIsNamed) {
