@@ -96,8 +96,12 @@ TEST(LoaderExpansion, ColladaInstanceNodesAreCountedBeforeTheImport) {
 }
 
 // An OBJ using each of n materials once.
-void write_used_materials(const std::filesystem::path& dir, int n) {
-    std::string mtl, obj = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n";
+// With `pentagon`, the file starts with a face zraster's reader leaves to Assimp: the Assimp path.
+void write_used_materials(const std::filesystem::path& dir, int n, bool pentagon = false) {
+    std::string mtl, obj = std::string(pentagon ? "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv -1 0 0\n"
+                                                  "f 1 2 3 4 5\n"
+                                                : "") +
+                           "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n";
     for (int i = 0; i < n; ++i) {
         mtl += "newmtl m" + std::to_string(i) + "\nKd 1 0 0\n";
         obj += "usemtl m" + std::to_string(i) + "\nf 1 2 3\n";
@@ -108,19 +112,21 @@ void write_used_materials(const std::filesystem::path& dir, int n) {
 
 TEST(LoaderExpansion, MaterialsAreCountedBeforeTheImport) {
     const auto dir = test::temp_dir("expansion-materials");
-    write_used_materials(dir, 3);
     const auto model = dir / "m.obj";
-    for (const LoadIsolation isolation : kExpansionIsolations) {
-        SCOPED_TRACE(expansion_isolation_name(isolation));
-        LoadOptions o;
-        o.isolation = isolation;
-        o.max_materials = 3;
-        EXPECT_EQ(load_scene(model, o).materials.size(), 4u);  // with the default material
-        o.max_materials = 2;
-        test::expect_limit_exceeded([&] { load_scene(model, o); }, model, "max_materials",
-                                    "its material libraries define 3 materials, more than "
-                                    "max_materials (2)");
-    }
+    for (const bool pentagon : {false, true})
+        for (const LoadIsolation isolation : kExpansionIsolations) {
+            write_used_materials(dir, 3, pentagon);
+            SCOPED_TRACE(pentagon ? "the Assimp path" : "zraster's reader");
+            SCOPED_TRACE(expansion_isolation_name(isolation));
+            LoadOptions o;
+            o.isolation = isolation;
+            o.max_materials = 3;
+            EXPECT_EQ(load_scene(model, o).materials.size(), 4u);  // with the default material
+            o.max_materials = 2;
+            test::expect_limit_exceeded([&] { load_scene(model, o); }, model, "max_materials",
+                                        "its material libraries define 3 materials, more than "
+                                        "max_materials (2)");
+        }
     // Past the default: refused at once (200,000 took 6.8 GB in the importer).
     const auto many = test::temp_dir("expansion-materials-many");
     write_used_materials(many, 20'001);
