@@ -252,9 +252,10 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
                         file,
                         "no triangles in it (no mesh, only nodes: is it really a model in the " +
                             io::format_name(path) + " format?)");
-            // A file whose geometry is in a refused reference (a LightWave scene's object).
+            // The geometry may be in a refused reference (an object of a scene): name it.
             if (!refusals.empty())
-                throw InputError(file, io::refusal_text(refusals.front(), "refused"));
+                throw InputError(file,
+                                 "no triangles; " + io::refusal_text(refusals.front(), "refused"));
             throw InputError(file, "no triangles");
         }
         // Validation first: Debian's Assimp keeps its assertions, and triangulating a face with
