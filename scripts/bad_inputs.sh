@@ -567,7 +567,7 @@ rm -rf out.d
 # Frames past their memory: a mesh placed many times (the frame estimated before the camera fit
 # copies it), and 30 levels of empty glTF nodes each holding the next twice (2^31 nodes the
 # importer copies per path: 7.8 GB before it failed).
-row "a frame past --max-frame-bytes (the estimate of its vertices, triangles and targets)" render sphere:2000 --size 64x64 --max-frame-bytes 1M -o out.png
+row "a frame past --max-frame-bytes (the estimate of its vertices, triangles and targets)" render sphere:2000 --size 64x64 --max-frame-bytes 100K -o out.png
 python3 - <<'PY'
 import json
 nodes = [{"mesh": 0}] + [{"children": [level + 1, level + 1]} for level in range(1, 31)] + [{}]

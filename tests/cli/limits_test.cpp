@@ -692,7 +692,7 @@ TEST(CliLimits, FrameMemoryExactly) {
     expect_refused(dir, run + std::to_string(frame - 1),
                    "zraster: sphere:2000: the frame needs about ");
     expect_refused(dir, run + std::to_string(frame - 1),
-                   "; raise it with --max-frame-bytes SIZE (e.g. 8G)");
+                   "; raise it with --max-frame-bytes SIZE (bytes, or with a unit: 512M, 16G)");
     // Before the camera fit: the scene alone is past the limit (no target samples named).
     expect_refused(dir, run + std::to_string(geometry - 1),
                    std::to_string(scene.vertex_count()) + " vertices and " +
@@ -702,6 +702,13 @@ TEST(CliLimits, FrameMemoryExactly) {
                        "--max-frame-bytes SIZE");
     expect_refused(dir, "bench sphere:2000 --size 64x64 --frames 1 --max-frame-bytes 1K",
                    "--max-frame-bytes SIZE");
+    // Multisampling's sample buffers count: 2896^2 x 64 samples (its pixel limit raised).
+    expect_refused(dir,
+                   "render builtin:cube --size 2896x2896 --aa 8 --msaa --max-pixels "
+                   "9999999999999999999 -o out.png",
+                   "536756224 target samples), more than max_frame_bytes (4096 MiB)");
+    // A small limit is told in bytes, as given.
+    expect_refused(dir, run + "1K", "more than max_frame_bytes (1024 bytes)");
     expect_refused(dir, run + "0", "--max-frame-bytes: must be more than 0 bytes");
     expect_refused(dir, run + "lots",
                    "--max-frame-bytes: expected a size in bytes like 4G, 512M or 1000000, got "
