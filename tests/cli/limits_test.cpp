@@ -229,6 +229,26 @@ TEST(CliLimits, AFrameWithNothingInViewWarns) {
     }
 }
 
+// A path past the system's 4095 bytes: the one line still ends with the cause (the quote is
+// cut in its middle, not at its end).
+TEST(CliLimits, APathPastTheSystemsLimitKeepsItsCause) {
+    const auto dir = temp_dir("cli-limits-long-path");
+    std::string path = ".";
+    for (int level = 0; level < 17; ++level) path += "/" + std::string(250, 'd');
+    for (const std::string flag : {"-o", "--depth-out"}) {
+        const std::string output = flag == "-o" ? "" : " -o a.png";
+        const CommandResult r = run_zraster(
+            "render builtin:cube --size 8x8" + output + " " + flag + " " + path + "/o.png", dir);
+        EXPECT_EQ(r.exit_code, 2);
+        EXPECT_EQ(r.output.find('\n'), r.output.size() - 1);
+        EXPECT_TRUE(
+            r.output.ends_with("/o.png: cannot write: the path is 4274 bytes long, more "
+                               "than the limit of 4095\n"))
+            << r.output.substr(r.output.size() - std::min<std::size_t>(r.output.size(), 200));
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "a.png"));
+}
+
 // Flags that change nothing in the scene given (a service may pass them to every file): a
 // warning naming the flag and the scene, the image as without them; none where they act.
 TEST(CliLimits, FlagsWithoutEffectInTheSceneWarn) {
