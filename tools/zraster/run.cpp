@@ -192,8 +192,10 @@ int run_zraster(std::vector<std::string> args) {
         // The default budgets keep a run within a few GB: past them is a request this machine
         // cannot hold (a budget or --max-pixels raised), the user's to change, not a bug.
         fmt::print(stderr,
-                   "zraster: out of memory: the run needs more than this machine gives it; "
-                   "lower --size, --aa or a budget raised past its default (docs/limits.md)\n");
+                   "zraster: out of memory: the run needs more than this machine gives it "
+                   "(the default budgets fit a few GB; a model file may be up to 4 GiB): lower "
+                   "--size or --aa, a budget raised past its default, or the model's size "
+                   "(docs/limits.md)\n");
         return kExitBadInput;
     } catch (const std::exception& e) {
         fmt::print(stderr, "zraster: internal error: {}\n", io::one_line(e.what()));
