@@ -332,6 +332,32 @@ TEST(CliLimits, FlagsWithoutEffectAreRefused) {
         {"svg builtin:cube -o out.svg --depth-compare less",
          "zraster: --depth-compare: sets the z-buffer's depth test: svg orders polygons "
          "(--order), it keeps no depth buffer\n"},
+        {"render builtin:cube -o out.png --no-depth-test --depth-format d16",
+         "zraster: --depth-format: sets the depth test, which --no-depth-test turns off (nothing "
+         "is tested, nothing written)\n"},
+        {"render builtin:cube -o out.png --no-depth-test --no-depth-write",
+         "zraster: --no-depth-write: sets the depth test, which --no-depth-test turns off "
+         "(nothing is tested, nothing written)\n"},
+        {"render builtin:cube -o out.png --wireframe --depth-compare always",
+         "zraster: --depth-compare: sets the depth test: --wireframe draws every edge, with no "
+         "depth test\n"},
+        {"render builtin:cube -o out.png --wireframe --light-dir 0,0,1",
+         "zraster: --light-dir: shades surfaces, which --wireframe does not fill (it draws the "
+         "edges alone)\n"},
+        {"render builtin:cube -o out.png --wireframe --no-textures",
+         "zraster: --no-textures: sets the surfaces' textures, which --wireframe does not fill\n"},
+        {"render builtin:cube -o out.png --view depth --shading flat",
+         "zraster: --shading: shades the image, which --view depth replaces\n"},
+        {"render builtin:cube -o out.png --view normals --point-light 0,2,0",
+         "zraster: --point-light: shades the image, which --view normals replaces\n"},
+        {"render builtin:cube -o out.png --visibility warnock --front-to-back",
+         "zraster: --front-to-back: is a stage of the z-buffer's pipeline, which --visibility "
+         "warnock does not use\n"},
+        {"render builtin:cube -o out.png --ortho --infinite-far",
+         "zraster: --infinite-far: moves a perspective projection's far plane to infinity: "
+         "--ortho keeps its far plane\n"},
+        {"render builtin:cube -o out.png --z-out z.npy --sensor kinect --sensor-seed 3",
+         "zraster: --sensor-seed: seeds --sensor-noise, which is 0: there is no noise to seed\n"},
     };
     for (const auto& [arguments, message] : cases) {
         SCOPED_TRACE(arguments);
@@ -342,7 +368,11 @@ TEST(CliLimits, FlagsWithoutEffectAreRefused) {
     EXPECT_TRUE(std::filesystem::is_empty(dir));
     // The same flags where they act are taken.
     for (const char* arguments :
-         {"render builtin:cube -o a.png --size 8x8 --no-depth-test --depth-format d16",
+         {"render builtin:cube -o a.png --size 8x8 --depth-compare lequal --depth-format d16",
+          "render builtin:cube -o a.png --size 8x8 --view hiz --light-dir 0,0,1",
+          "render builtin:cube -o a.png --size 8x8 --wireframe --cull none",
+          "render builtin:cube -o a.png --size 8x8 --z-out z.npy --sensor kinect --sensor-noise "
+          "0.5 --sensor-seed 3",
           "render builtin:cube -o a.png --size 8x8 --aa 2 --depth-compare lequal",
           "render builtin:cube -o a.png --size 8x8 --wireframe --edge-color 255,0,0",
           "render builtin:cube -o a.png --size 8x8 --shading flat --light-dir 0,0,1",
