@@ -129,19 +129,22 @@ struct Part {
 
 Part buffer_part(const json& document, std::optional<std::uint64_t> glb_binary) {
     std::uint64_t declared = 0, count = 0, largest = 0, largest_index = 0;
+    bool chunk = false;  // the largest is a GLB's BIN chunk, longer than its byteLength
     const json& buffers = array_member(document, "buffers");
     for (std::size_t i = 0; i < buffers.size(); ++i) {
         const json& b = buffers[i];
         const auto length = b.is_object() ? b.find("byteLength") : b.end();
         if (length == b.end() || !length->is_number_unsigned()) continue;
         std::uint64_t n = length->get<std::uint64_t>();
-        if (i == 0 && glb_binary && !b.contains("uri")) n = std::max(n, *glb_binary);
+        const bool longer = i == 0 && glb_binary && !b.contains("uri") && *glb_binary > n;
+        if (longer) n = *glb_binary;
         declared = saturated_add(declared, n);
         ++count;
-        if (n >= largest) largest = n, largest_index = i;
+        if (n >= largest) largest = n, largest_index = i, chunk = longer;
     }
     Part part{saturated_mul(declared, kBufferByteBytes), ""};
-    part.what = count == 1 ? "buffer " + std::to_string(largest_index) + " (byteLength " +
+    part.what = count == 1 ? "buffer " + std::to_string(largest_index) +
+                                 (chunk ? " (the GLB's BIN chunk of " : " (byteLength ") +
                                  byte_text(largest) + ", read whole by the importer)"
                            : "the " + std::to_string(count) + " buffers (byteLength " +
                                  byte_text(declared) + " in all, each read whole by the importer)";
