@@ -596,7 +596,8 @@ def base(uri="h27.bin", length=36):
                            "min": [0, 0, 0], "max": [1, 1, 0]}],
             "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
             "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0}
-open("h27.bin", "wb").write(tri + struct.pack('<I', 0) + struct.pack('<16f', *([1.0] * 16)))
+open("h27.bin", "wb").write(tri + struct.pack('<I', 0) + struct.pack('<16f', *([1.0] * 16))
+                            + struct.pack('<12H', *([0, 1, 2, 3] * 3)) + struct.pack('<12f', *([0.25] * 12)))
 open("deep.gltf", "w").write('{"asset":{"version":"2.0"},"extras":' + '[' * 200000 + ']' * 200000 + '}')
 with open("sparse6g.bin", "wb") as f: f.write(tri); f.truncate(6 * 2**30)
 json.dump(base("sparse6g.bin", 6 * 2**30), open("buffer6g.gltf", "w"))
@@ -609,7 +610,10 @@ d["animations"] = [{"samplers": [{"input": 1, "output": 2}], "channels": [{"samp
 json.dump(d, open("keys1e8.gltf", "w"))
 d = base(length=104)
 d["bufferViews"] += [{"buffer": 0, "byteOffset": 36, "byteLength": 4}, {"buffer": 0, "byteOffset": 40, "byteLength": 64}]
-d["accessors"] += [{"componentType": 5123, "count": 3, "type": "VEC4"}, {"componentType": 5126, "count": 3, "type": "VEC4"},
+d["buffers"][0]["byteLength"] = 176
+d["bufferViews"] += [{"buffer": 0, "byteOffset": 104, "byteLength": 24}, {"buffer": 0, "byteOffset": 128, "byteLength": 48}]
+d["accessors"] += [{"bufferView": 3, "componentType": 5123, "count": 3, "type": "VEC4"},
+                   {"bufferView": 4, "componentType": 5126, "count": 3, "type": "VEC4"},
                    {"componentType": 5126, "count": 2000, "type": "MAT4", "sparse": sparse}]
 d["meshes"][0]["primitives"][0]["attributes"].update({"JOINTS_0": 1, "WEIGHTS_0": 2})
 nodes = [{"children": [k + 1, k + 1]} for k in range(12)] + [{"mesh": 0, "skin": 0}]

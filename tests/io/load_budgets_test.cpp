@@ -96,13 +96,14 @@ TEST(LoadBudgets, NodesSharingChildrenAreCountedInTheImportersBytes) {
         return json;
     };
     const auto model = dir / "tree.gltf";
-    test::write_bytes(model, empty_tree(3));  // 16 nodes, one triangle (180 bytes), its buffer
+    // 16 nodes, one triangle (180 bytes, and 1976 for the primitive itself), its buffer.
+    test::write_bytes(model, empty_tree(3));
     LoadOptions o;
-    o.max_geometry_bytes = 16 * 1152 + 180 + 36;
+    o.max_geometry_bytes = 16 * 1152 + 180 + 1976 + 36;
     EXPECT_EQ(load_scene(model, o).instances.size(), 1u);
     --o.max_geometry_bytes;
     test::expect_limit_exceeded([&] { load_scene(model, o); }, model, "max_geometry_bytes",
-                                "and the node graph's 16 nodes decode to about 18648 bytes");
+                                "and the node graph's 16 nodes decode to about 20624 bytes");
     const auto huge = dir / "huge.gltf";
     test::write_bytes(huge, empty_tree(30));
     for (const LoadIsolation isolation : {LoadIsolation::InProcess, LoadIsolation::WorkerProcess}) {
@@ -196,7 +197,8 @@ TEST(LoadBudgets, AnAccessorReadByManyPrimitivesIsCountedForEach) {
 }
 
 // The bytes decoded, per primitive: 3 vertices of one attribute (24 bytes each) and 3 drawn
-// indices (36 bytes each) make 180 bytes a primitive; the buffer of 36 bytes is read once.
+// indices (36 bytes each) make 180 bytes a primitive, and the primitive itself 1976 more; the
+// buffer of 36 bytes is read once.
 TEST(LoadBudgets, DecodedGeometryIsCountedInBytesPerPrimitive) {
     const auto dir = test::temp_dir("budgets-geometry-bytes");
     const auto model = dir / "shared.gltf";
@@ -205,14 +207,14 @@ TEST(LoadBudgets, DecodedGeometryIsCountedInBytesPerPrimitive) {
         SCOPED_TRACE(isolation == LoadIsolation::InProcess ? "in process" : "worker");
         LoadOptions o;
         o.isolation = isolation;
-        // 10 x 180 bytes, the one node placing them (1152) and the buffer (36).
-        o.max_geometry_bytes = 2988;
+        // 10 x (180 + 1976) bytes, the one node placing them (1152) and the buffer (36).
+        o.max_geometry_bytes = 22748;
         EXPECT_EQ(load_scene(model, o).meshes.size(), 10u);
-        o.max_geometry_bytes = 2987;
+        o.max_geometry_bytes = 22747;
         test::expect_limit_exceeded(
             [&] { load_scene(model, o); }, model, "max_geometry_bytes",
-            "the meshes' 10 primitives and the node graph's 1 node decode to about 2988 bytes of "
-            "geometry, more than max_geometry_bytes (2987 bytes) (the importer copies an "
+            "the meshes' 10 primitives and the node graph's 1 node decode to about 22748 bytes of "
+            "geometry, more than max_geometry_bytes (22747 bytes) (the importer copies an "
             "accessor into every primitive that reads it, and a node once per path to it)");
     }
     // A morph target's attributes are decoded too: 72 bytes more a primitive.
@@ -220,9 +222,9 @@ TEST(LoadBudgets, DecodedGeometryIsCountedInBytesPerPrimitive) {
     test::write_bytes(
         morphed, shared_accessor_gltf(10, "", R"("POSITION":0},"targets":[{"POSITION":0}],"x":{)"));
     LoadOptions o;
-    o.max_geometry_bytes = 2520 + 1152 + 36 - 1;
+    o.max_geometry_bytes = 2520 + 19760 + 1152 + 36 - 1;
     test::expect_limit_exceeded([&] { load_scene(morphed, o); }, morphed, "max_geometry_bytes",
-                                "decode to about 3708 bytes of geometry");
+                                "decode to about 23468 bytes of geometry");
 }
 
 // A 578-byte glTF whose one sparse accessor declares 150 million vertices (one of them given):
@@ -381,12 +383,12 @@ TEST(LoadBudgets, AGltfBufferCountsItsWholeByteLength) {
     test::write_bytes(dir / "data.bin", data);
     test::write_bytes(model, with_buffer(4096));
     LoadOptions o;
-    o.max_geometry_bytes = 180 + 1152 + 4096;  // the triangle, its node, the buffer
+    o.max_geometry_bytes = 180 + 1976 + 1152 + 4096;  // the triangle, its node, the buffer
     EXPECT_EQ(load_scene(model, o).meshes.size(), 1u);
     --o.max_geometry_bytes;
     test::expect_limit_exceeded([&] { load_scene(model, o); }, model, "max_geometry_bytes",
-                                "the file decodes to about 5428 bytes in the importer, more than "
-                                "max_geometry_bytes (5427 bytes), mostly buffer 0 (byteLength "
+                                "the file decodes to about 7404 bytes in the importer, more than "
+                                "max_geometry_bytes (7403 bytes), mostly buffer 0 (byteLength "
                                 "4096 bytes, read whole by the importer): about 4096 bytes");
     // 6 GiB of a sparse file: refused with the defaults, before anything is read.
     std::filesystem::resize_file(dir / "data.bin", std::uint64_t{6} << 30);
@@ -444,7 +446,7 @@ TEST(LoadBudgets, AnimationKeysAreCountedPerChannelTarget) {
     // the triangle (180), its node (1152) and the buffer (52).
     test::write_bytes(model, animated_gltf(1000, 1, 50));
     LoadOptions o;
-    o.max_geometry_bytes = 232000 + 180 + 1152 + 52;
+    o.max_geometry_bytes = 232000 + 180 + 1976 + 1152 + 52;
     EXPECT_EQ(load_scene(model, o).meshes.size(), 1u);
     --o.max_geometry_bytes;
     test::expect_limit_exceeded([&] { load_scene(model, o); }, model, "max_geometry_bytes",
@@ -453,7 +455,7 @@ TEST(LoadBudgets, AnimationKeysAreCountedPerChannelTarget) {
     // Two targets of the same sampler: its keys twice, its dense copies once.
     const auto two = dir / "two.gltf";
     test::write_bytes(two, animated_gltf(1000, 2, 1));
-    o.max_geometry_bytes = 448000 + 180 + 2 * 1152 + 52;  // one primitive, two nodes
+    o.max_geometry_bytes = 448000 + 180 + 1976 + 2 * 1152 + 52;  // one primitive, two nodes
     EXPECT_EQ(load_scene(two, o).instances.size(), 2u);
     --o.max_geometry_bytes;
     test::expect_limit_exceeded([&] { load_scene(two, o); }, two, "max_geometry_bytes",
@@ -519,19 +521,19 @@ TEST(LoadBudgets, SkinBonesAreCountedPerPlacement) {
         std::string(4, '\0') + bytes_of<float>({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});
     test::write_bytes(dir / "data.bin", data);
     const auto model = dir / "skinned.gltf";
-    // 4 joints placed twice: 2 x (4 x 1178 + 12 x 8) = 9616 bytes, and 4 inverse bind matrices
-    // (a sparse accessor's dense copy and the importer's: 4 x 128); the primitive's 3 attributes
-    // and drawn indices (3 x 3 x 24 + 3 x 36 = 324), 7 nodes copied (the two above, the mesh's
-    // twice, 4 joints: 8064) and the buffer (176).
-    test::write_bytes(model, skinned_gltf(4, 1));
+    // 4 joints placed 4 times: 4 x (4 x 1178 + 12 x 8) = 19232 bytes, and 4 inverse bind
+    // matrices (a sparse accessor's dense copy and the importer's: 4 x 128); the primitive's 3
+    // attributes and drawn indices (3 x 3 x 24 + 3 x 36 = 324) and itself (1976), 11 nodes copied
+    // (the three above once, twice and four times, 4 joints: 12672) and the buffer (176).
+    test::write_bytes(model, skinned_gltf(4, 2));
     LoadOptions o;
-    o.max_geometry_bytes = 9616 + 512 + 324 + 8064 + 176;
-    EXPECT_EQ(load_scene(model, o).instances.size(), 2u);
+    o.max_geometry_bytes = 19232 + 512 + 324 + 1976 + 12672 + 176;
+    EXPECT_EQ(load_scene(model, o).instances.size(), 4u);
     --o.max_geometry_bytes;
     test::expect_limit_exceeded([&] { load_scene(model, o); }, model, "max_geometry_bytes",
-                                "mostly the skins' 8 bones (a bone per joint for each of 2 "
+                                "mostly the skins' 16 bones (a bone per joint for each of 4 "
                                 "placements of a skinned primitive: the importer makes them each "
-                                "time) and 4 inverse bind matrices: about 10128 bytes");
+                                "time) and 4 inverse bind matrices: about 19744 bytes");
     const auto many = dir / "many.gltf";
     test::write_bytes(many, skinned_gltf(2000, 12));
     const auto matrices = dir / "matrices.gltf";
@@ -569,7 +571,7 @@ TEST(LoadBudgets, MaterialsThePrimitivesUseAreCounted) {
     const auto model = dir / "materials.gltf";
     test::write_bytes(model, json);
     LoadOptions o;
-    o.max_geometry_bytes = 2988 + 5 * 13346;  // 5 materials used (twice each)
+    o.max_geometry_bytes = 22748 + 5 * 13346;  // 5 materials used (twice each)
     EXPECT_EQ(load_scene(model, o).meshes.size(), 10u);
     --o.max_geometry_bytes;
     test::expect_limit_exceeded([&] { load_scene(model, o); }, model, "max_geometry_bytes",
