@@ -92,8 +92,9 @@ int run_zraster(std::vector<std::string> args) {
         ->capture_default_str();
     std::string max_geometry_memory = "1G";
     app.add_option("--max-geometry-memory", max_geometry_memory,
-                   "Refuse glTF files whose accessors decode to more bytes than this (e.g. 2G; "
-                   "an accessor counts once per primitive that reads it)")
+                   "Refuse glTF files the importer would decode to more bytes than this (e.g. "
+                   "2G; an accessor counts once per primitive that reads it; buffers, animation "
+                   "keys, skin bones per placement and materials count too)")
         ->capture_default_str();
     int max_texture_side = LoadOptions{}.max_texture_side;
     app.add_option("--max-texture-side", max_texture_side,
