@@ -220,6 +220,12 @@ TEST(CliLimits, AFrameWithNothingInViewWarns) {
          "the view volume, 12 triangles outside it or the clip planes, 0 covering no pixel "
          "center): the image shows only the background\n"},
         {"render builtin:cube -o a.png --size 8x8 --clip-plane 1,0,0,0", ""},
+        // In view, but every depth rounds to the cleared far plane.
+        {"render builtin:cube -o a.png --size 32x32 --near 1e-20 --far 1e30 --depth-format d16",
+         "warning: builtin:cube: 6 triangles in view, but none of their fragments passed the "
+         "depth test: the image shows only the background (is --depth-format d16 too coarse for "
+         "the near and far planes?)\n"},
+        {"render builtin:cube -o a.png --size 32x32 --depth-format d16", ""},
     };
     for (const auto& [arguments, message] : cases) {
         SCOPED_TRACE(arguments);
