@@ -82,6 +82,7 @@ RenderedFrame render_outputs(const RenderArguments& a, const Scene& scene, Outpu
     // near/far ratio rounds every depth to the cleared far plane (d16, near 1e-20).
     else if (notes != nullptr && renders_with_pipeline(a) && options.view == DebugView::None &&
              !a.no_depth_test && s.triangles_rasterized > 0 && s.fragments_passed == 0 &&
+             s.fragments_blended == 0 && s.fragments_alpha_discarded == 0 &&
              check_flags_take_effect(a).empty())
         fmt::print(notes,
                    "warning: {}: {} triangles in view, but none of their fragments passed the "
