@@ -567,7 +567,7 @@ rm -rf out.d
 # Frames past their memory: a mesh placed many times (the frame estimated before the camera fit
 # copies it), and 30 levels of empty glTF nodes each holding the next twice (2^31 nodes the
 # importer copies per path: 7.8 GB before it failed).
-row "a frame past --max-frame-bytes (the estimate of its vertices, triangles and targets)" render sphere:2000 --size 64x64 --max-frame-bytes 1M -o out.png
+row "a frame past --max-frame-bytes (the estimate of its vertices, triangles and targets)" render sphere:2000 --size 64x64 --max-frame-bytes 100K -o out.png
 python3 - <<'PY'
 import json
 nodes = [{"mesh": 0}] + [{"children": [level + 1, level + 1]} for level in range(1, 31)] + [{}]
@@ -580,6 +580,63 @@ document["accessors"][0]["bufferView"] = 0
 json.dump(document, open("nodes2e31.gltf", "w"))
 PY
 row "glTF of 30 levels of empty nodes sharing children (2^31 nodes in the importer)" render nodes2e31.gltf -o out.png
+# What a small glTF expands into in the importer (issue 27), each refused by its estimate before
+# the importer reads the file: JSON nested 200,000 deep (the importer's parser crashed), a
+# buffer declaring 6 GiB of a sparse file (read whole: 6.3 GB), an animation of 10^8 sparse keys
+# (7.5 GB), 2,000 joints placed 4,096 times (a bone per joint per placement: 7.8 GB), 200,000
+# primitives each with its own material (3.09 GB); and a material number outside its glTF range
+# (a warning).
+python3 - <<'PY'
+import json, struct
+tri = struct.pack('<9f', 0, 0, 0, 1, 0, 0, 0, 1, 0)
+def base(uri="h27.bin", length=36):
+    return {"asset": {"version": "2.0"}, "buffers": [{"uri": uri, "byteLength": length}],
+            "bufferViews": [{"buffer": 0, "byteLength": 36}],
+            "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                           "min": [0, 0, 0], "max": [1, 1, 0]}],
+            "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+            "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0}
+open("h27.bin", "wb").write(tri + struct.pack('<I', 0) + struct.pack('<16f', *([1.0] * 16))
+                            + struct.pack('<12H', *([0, 1, 2, 3] * 3)) + struct.pack('<12f', *([0.25] * 12)))
+open("deep.gltf", "w").write('{"asset":{"version":"2.0"},"extras":' + '[' * 200000 + ']' * 200000 + '}')
+with open("sparse6g.bin", "wb") as f: f.write(tri); f.truncate(6 * 2**30)
+json.dump(base("sparse6g.bin", 6 * 2**30), open("buffer6g.gltf", "w"))
+d = base(length=104)
+d["bufferViews"] += [{"buffer": 0, "byteOffset": 36, "byteLength": 4}, {"buffer": 0, "byteOffset": 40, "byteLength": 64}]
+sparse = {"count": 1, "indices": {"bufferView": 1, "componentType": 5125}, "values": {"bufferView": 2}}
+d["accessors"] += [{"componentType": 5126, "count": 10**8, "type": "SCALAR", "min": [0], "max": [1], "sparse": sparse},
+                   {"componentType": 5126, "count": 10**8, "type": "VEC3", "sparse": sparse}]
+d["animations"] = [{"samplers": [{"input": 1, "output": 2}], "channels": [{"sampler": 0, "target": {"node": 0, "path": "translation"}}]}]
+json.dump(d, open("keys1e8.gltf", "w"))
+d = base(length=104)
+d["bufferViews"] += [{"buffer": 0, "byteOffset": 36, "byteLength": 4}, {"buffer": 0, "byteOffset": 40, "byteLength": 64}]
+d["buffers"][0]["byteLength"] = 176
+d["bufferViews"] += [{"buffer": 0, "byteOffset": 104, "byteLength": 24}, {"buffer": 0, "byteOffset": 128, "byteLength": 48}]
+d["accessors"] += [{"bufferView": 3, "componentType": 5123, "count": 3, "type": "VEC4"},
+                   {"bufferView": 4, "componentType": 5126, "count": 3, "type": "VEC4"},
+                   {"componentType": 5126, "count": 2000, "type": "MAT4", "sparse": sparse}]
+d["meshes"][0]["primitives"][0]["attributes"].update({"JOINTS_0": 1, "WEIGHTS_0": 2})
+nodes = [{"children": [k + 1, k + 1]} for k in range(12)] + [{"mesh": 0, "skin": 0}]
+joints = list(range(len(nodes), len(nodes) + 2000))
+nodes += [{"name": "j%d" % j} for j in range(2000)]
+d["nodes"], d["scenes"], d["skins"] = nodes, [{"nodes": [0] + joints}], [{"joints": joints, "inverseBindMatrices": 3}]
+json.dump(d, open("bones8m.gltf", "w"))
+d = base()
+d["materials"] = [{} for _ in range(200000)]
+d["meshes"][0]["primitives"] = [{"attributes": {"POSITION": 0}, "material": i} for i in range(200000)]
+json.dump(d, open("materials200k.gltf", "w"))
+d = base()
+d["materials"] = [{"pbrMetallicRoughness": {"metallicFactor": -5}, "emissiveFactor": [-5, 0, 0]}]
+d["meshes"][0]["primitives"][0]["material"] = 0
+json.dump(d, open("metallic.gltf", "w"))
+PY
+row "glTF JSON nested 200,000 deep (the importer's parser crashed)" render deep.gltf -o out.png
+row "glTF buffer declaring 6 GiB of a sparse file (read whole: 6.3 GB)" render buffer6g.gltf -o out.png
+row "glTF animation of 10^8 sparse keys in 1 KB (7.5 GB)" render keys1e8.gltf -o out.png
+row "glTF skin of 2,000 joints placed 4,096 times (a bone per joint per placement: 7.8 GB)" render bones8m.gltf -o out.png
+row "glTF of 200,000 primitives each with its own material (3.09 GB)" render materials200k.gltf -o out.png
+row "glTF metallicFactor -5 and emissiveFactor -5 (a warning)" render metallic.gltf -o out.png --size 8x8
+rm -f sparse6g.bin
 # Non-glTF expansion (issue 27, H18-H20, H3, H9, H15): counted before the importer reads them.
 python3 - <<'PY'
 depth = 30

@@ -26,15 +26,21 @@ class InputError : public std::runtime_error {
 
     // Causes quote the input (names, texture paths, a library's message): line breaks and other
     // control characters there would break the one-line contract; they become spaces and '?'.
-    // A quote of megabytes (a 10 MB field name) is cut, at a character boundary.
+    // A quote of megabytes (a 10 MB field name) is cut in its middle, at character boundaries:
+    // the head names what is quoted, the tail keeps the reason that follows a long quote (a
+    // path of 5 KB "is too long").
     static constexpr std::size_t kMaxCauseBytes = 4096;
     static std::string one_line(std::string text) {
         if (text.size() > kMaxCauseBytes) {
-            std::size_t keep = kMaxCauseBytes - 64;
-            while (keep > 0 && (static_cast<unsigned char>(text[keep]) & 0xC0) == 0x80) --keep;
-            const std::size_t cut = text.size() - keep;
-            text.resize(keep);
-            text += "... (" + std::to_string(cut) + " more bytes)";
+            const auto continuation = [&](std::size_t i) {
+                return (static_cast<unsigned char>(text[i]) & 0xC0) == 0x80;
+            };
+            std::size_t head = kMaxCauseBytes / 2;
+            while (head > 0 && continuation(head)) --head;
+            std::size_t tail = text.size() - (kMaxCauseBytes / 2 - 64);
+            while (tail < text.size() && continuation(tail)) ++tail;
+            text = text.substr(0, head) + "... (" + std::to_string(tail - head) +
+                   " bytes cut) ..." + text.substr(tail);
         }
         for (char& c : text) {
             if (c == '\n' || c == '\r')

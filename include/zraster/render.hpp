@@ -161,15 +161,19 @@ inline constexpr std::uint64_t kFrameBytesPerTriangle = 50;
 inline constexpr std::uint64_t kFrameBytesPerSample = 36;
 // vertices * kFrameBytesPerVertex + triangles * kFrameBytesPerTriangle + target_samples *
 // kFrameBytesPerSample, saturated at 2^64 - 1.
-ZRASTER_API std::uint64_t estimated_frame_bytes(std::uint64_t vertices, std::uint64_t triangles,
-                                                std::uint64_t target_samples);
+// `bytes_per_sample`: what the path keeps per sample (multisampling: its coverage and depth
+// per sample, 8 bytes, and the resolved targets' share).
+ZRASTER_API std::uint64_t estimated_frame_bytes(
+    std::uint64_t vertices, std::uint64_t triangles, std::uint64_t target_samples,
+    std::uint64_t bytes_per_sample = kFrameBytesPerSample);
 // Throws LimitExceeded(source, "max_frame_bytes"), naming the estimate, the counts and the
 // limit, when that estimate is past limits.max_frame_bytes. render() checks it before allocating;
 // a front end that copies the scene first (a camera fit over its world positions) checks it
 // before that copy.
 ZRASTER_API void check_frame_memory(std::string_view source, std::uint64_t vertices,
                                     std::uint64_t triangles, std::uint64_t target_samples,
-                                    const RenderLimits& limits);
+                                    const RenderLimits& limits,
+                                    std::uint64_t bytes_per_sample = kFrameBytesPerSample);
 
 // A frame's threads are capped at this many per hardware thread: oneTBB cannot make an arena of
 // millions of threads (it crashes), and more than a few per core only compete for the cores.

@@ -78,7 +78,9 @@ std::array<bool, kOutputCount> wanted_outputs(py::handle outputs, std::vector<Ou
         const std::string name = item.cast<std::string>();
         for (int k = 0; k < kOutputCount; ++k)
             if (name == kOutputNames[k]) {
-                if (!wanted[std::size_t(k)]) order.push_back(Output(k));
+                if (wanted[std::size_t(k)])
+                    input_error("outputs", "'" + name + "' given twice: give it once");
+                order.push_back(Output(k));
                 wanted[std::size_t(k)] = true;
                 return;
             }

@@ -239,6 +239,8 @@ def test_bad_outputs(cube):
         r.render(cube, outputs=())
     with raises(TypeError, "outputs", "int"):
         r.render(cube, outputs=3)
+    with raises(zraster.InputError, "outputs", "'color' given twice: give it once"):
+        r.render(cube, outputs=("color", "depth", "color"))
 
 
 @pytest.mark.parametrize("keywords,kind,fragments", [

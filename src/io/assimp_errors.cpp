@@ -83,6 +83,12 @@ std::string format_name(const std::filesystem::path& path) {
 }
 
 std::string assimp_error_cause(const std::filesystem::path& path, const std::string& text) {
+    // The importer's allocation failed: the file expands past the memory the process may use, in
+    // a part of the format no budget counts (a C++ exception's name says nothing to a user).
+    if (text.find("bad_alloc") != std::string::npos)
+        return "the importer ran out of memory reading it: it expands past the memory this "
+               "process may use, in a part of the " +
+               format_name(path) + " format zraster does not count before reading";
     const std::string detail = std::string(kDetail) + text + ")";
     if (const std::optional<std::string> reference = quoted_reference(text))
         return "the file it refers to, '" + *reference + "', is missing or cannot be read" + detail;

@@ -85,7 +85,7 @@ class Checker {
           policy_(path, options.allow_outside_references) {}
 
     // Returns the nodes the importer makes of the scene's node graph (see instances()).
-    std::uint64_t run() {
+    GltfImporterCounts run() {
         buffers();
         views();
         accessors();
@@ -220,8 +220,8 @@ class Checker {
     // Meshes placed by the scene's node graph, counted without expanding it: a node places its
     // own mesh once per path from a root to it. Refuses a cycle and a count past the budget.
     // Returns the nodes the importer makes: it copies a node once per path to it too, meshes or
-    // not (saturated at 2^64 - 1).
-    std::uint64_t instances() {
+    // not (saturated at 2^64 - 1), and the paths to each node.
+    GltfImporterCounts instances() {
         const json& nodes = array("nodes");
         const json& meshes = array("meshes");
         const std::uint64_t limit = options_.max_instances;
@@ -230,6 +230,7 @@ class Checker {
             return a > UINT64_MAX - b ? UINT64_MAX : a + b;
         };
         std::vector<std::uint8_t> state(nodes.size(), 0);  // 0 new, 1 on the path, 2 done
+        std::vector<std::size_t> finished;                 // children before their parents
         const auto child_list = [&](std::size_t n) -> const json* {
             const auto it = nodes[n].is_object() ? nodes[n].find("children") : nodes[n].end();
             return it != nodes[n].end() && it->is_array() ? &*it : nullptr;
@@ -273,11 +274,13 @@ class Checker {
                 placed[n] = std::min(limit + 1, total);
                 copies[n] = below;
                 state[n] = 2;
+                finished.push_back(n);
                 stack.pop_back();
             }
         }
         // What the scene places: its root nodes (every node if it names no scene).
         std::uint64_t total = 0, made = 0;
+        std::vector<std::uint64_t> paths(nodes.size(), 0);
         const json& scenes = array("scenes");
         const auto scene_index = unsigned_member(document_, "scene", 0).value_or(0);
         if (scene_index < scenes.size() && scenes[scene_index].is_object()) {
@@ -287,13 +290,20 @@ class Checker {
                     if (r.is_number_unsigned() && r.get<std::uint64_t>() < nodes.size()) {
                         total = std::min(limit + 1, total + placed[r.get<std::size_t>()]);
                         made = add(made, copies[r.get<std::size_t>()]);
+                        paths[r.get<std::size_t>()] = add(paths[r.get<std::size_t>()], 1);
                     }
         }
+        // Parents before their children: a node's paths reach each of its children.
+        for (auto n = finished.rbegin(); n != finished.rend(); ++n)
+            if (const json* children = child_list(*n); children && paths[*n] > 0)
+                for (const json& c : *children)
+                    if (c.is_number_unsigned() && c.get<std::uint64_t>() < nodes.size())
+                        paths[c.get<std::size_t>()] = add(paths[c.get<std::size_t>()], paths[*n]);
         if (total > limit)
             throw LimitExceeded(path_.string(), "max_instances",
                                 "the node graph places more than " + std::to_string(limit) +
                                     " meshes (max_instances; nodes sharing children multiply)");
-        return made;
+        return {made, std::move(paths), glb_binary_};
     }
 
     const std::filesystem::path& path_;
@@ -304,14 +314,49 @@ class Checker {
     std::vector<std::uint64_t> buffer_bytes_, view_bytes_, view_stride_;
 };
 
+// The deepest nesting of arrays and objects in `text` (strings skipped), stopping past `limit`;
+// `at` is where it first went past `limit`.
+std::size_t json_depth(const std::string& text, std::size_t limit, std::size_t& at) {
+    std::size_t depth = 0, deepest = 0;
+    bool in_string = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (in_string) {
+            if (c == '\\')
+                ++i;
+            else if (c == '"')
+                in_string = false;
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == '[' || c == '{') {
+            deepest = std::max(deepest, ++depth);
+            if (depth > limit) {
+                at = i;
+                return depth;
+            }
+        } else if ((c == ']' || c == '}') && depth > 0) {
+            --depth;
+        }
+    }
+    return deepest;
+}
+
 }  // namespace
 
 void check_gltf_bounds(const std::filesystem::path& path, const std::string& json_text,
                        std::optional<std::uint64_t> glb_binary, const LoadOptions& options) {
+    // Assimp's JSON parser recurses once per level: 200,000 nested arrays in "extras" (a 400 KB
+    // file) overflowed its stack (SIGSEGV, in process). glTF's own structure nests fewer than 20.
+    std::size_t at = 0;
+    if (json_depth(json_text, kMaxGltfJsonDepth, at) > kMaxGltfJsonDepth)
+        throw InputError(path.string(),
+                         "malformed glTF file: its JSON nests arrays and objects more than " +
+                             std::to_string(kMaxGltfJsonDepth) + " levels deep (at byte " +
+                             std::to_string(at) + " of the JSON; glTF needs fewer than 20)");
     const json document = json::parse(json_text, nullptr, false);
     if (document.is_discarded() || !document.is_object()) return;
     check_gltf_schema(path, document);
-    const std::uint64_t nodes = Checker(path, document, glb_binary, options).run();
+    const GltfImporterCounts nodes = Checker(path, document, glb_binary, options).run();
     check_gltf_decode_budget(path, document, options, nodes);
 }
 

@@ -12,6 +12,11 @@
 
 namespace zraster::io {
 
+// The deepest a glTF document's JSON may nest arrays and objects: Assimp's parser recurses per
+// level (200,000 levels crashed it); glTF's own structure needs fewer than 20.
+inline constexpr std::size_t kMaxGltfJsonDepth = 256;
+
+// Throws InputError("malformed glTF file: its JSON nests ... more than 256 levels deep") first.
 // `json` is the glTF document (a .gltf file, or a GLB's JSON chunk); `glb_binary` the length of
 // a GLB's BIN chunk, if any. Buffers with a uri are sized from their data: URI or from the file
 // beside `path`. Throws InputError("malformed glTF file: ...") for a buffer view

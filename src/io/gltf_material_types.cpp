@@ -49,12 +49,51 @@ class MaterialTypes {
                    "using 1 (glTF's default)");
             member(*pbr, "roughnessFactor", &json::is_number, "a number",
                    "using 1 (glTF's default)");
+            fraction(*pbr, "metallicFactor");
         }
         numbers(material_, "emissiveFactor", 3, "0, 0, 0");
+        const auto emissive = material_.find("emissiveFactor");
+        if (emissive != material_.end() && emissive->is_array() && emissive->size() == 3 &&
+            std::any_of(emissive->begin(), emissive->end(),
+                        [](const json& x) { return x.is_number() && !(x >= 0 && x <= 1); }))
+            unused("emissiveFactor " + shown(*emissive) + " is outside glTF's range [0, 1]");
+        // Extensions' numbers (KHR_materials_emissive_strength, KHR_materials_ior).
+        const auto extensions = material_.find("extensions");
+        if (extensions == material_.end() || !extensions->is_object()) return;
+        const json* strength =
+            extension_number(*extensions, "KHR_materials_emissive_strength", "emissiveStrength");
+        if (strength && !(*strength >= 0))
+            unused("KHR_materials_emissive_strength emissiveStrength " + shown(*strength) +
+                   " is negative (glTF's range: 0 or more)");
+        const json* ior = extension_number(*extensions, "KHR_materials_ior", "ior");
+        if (ior && !(*ior >= 1 || *ior == 0))
+            unused("KHR_materials_ior ior " + shown(*ior) +
+                   " is outside glTF's range (1 or more, or 0)");
     }
 
   private:
     void warn(const std::string& what) { out_.push_back(label_ + ": " + what); }
+
+    // A number out of its glTF range that zraster does not shade with (metallic, emission, index
+    // of refraction): said, and left unused, as it would be in range.
+    void unused(const std::string& what) {
+        warn(what + "; not used (zraster does not shade with it)");
+    }
+
+    // A number member in [0, 1] when it is a number (its type is checked by member()).
+    void fraction(const json& holder, const char* key) {
+        const auto it = holder.find(key);
+        if (it != holder.end() && it->is_number() && !(*it >= 0 && *it <= 1))
+            unused(std::string(key) + " " + shown(*it) + " is outside glTF's range [0, 1]");
+    }
+
+    // extensions.NAME.KEY when it is a number.
+    static const json* extension_number(const json& extensions, const char* name, const char* key) {
+        const auto extension = extensions.find(name);
+        if (extension == extensions.end() || !extension->is_object()) return nullptr;
+        const auto value = extension->find(key);
+        return value != extension->end() && value->is_number() ? &*value : nullptr;
+    }
 
     void member(const json& holder, const char* key, bool (json::*is)() const noexcept,
                 const char* expected, const char* used) {

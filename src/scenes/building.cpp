@@ -310,10 +310,15 @@ class BuildingMaker {
     std::vector<std::optional<Doorway>> doors_;
 };
 
-bool parse_count(std::string_view text, std::uint64_t& value) {
-    if (text.empty() || text.size() > 19 || text.find_first_not_of("0123456789") != text.npos)
-        return false;
-    return std::from_chars(text.data(), text.data() + text.size(), value).ec == std::errc();
+enum class Parsed { Ok, Malformed, OutOfRange };
+
+// Decimal digits only, up to 2^64 - 1.
+Parsed parse_count(std::string_view text, std::uint64_t& value) {
+    if (text.empty() || text.find_first_not_of("0123456789") != text.npos) return Parsed::Malformed;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error == std::errc::result_out_of_range) return Parsed::OutOfRange;
+    return error == std::errc() && end == text.data() + text.size() ? Parsed::Ok
+                                                                    : Parsed::Malformed;
 }
 
 }  // namespace
@@ -330,12 +335,18 @@ std::optional<BuildingSpec> parse_building_spec(std::string_view spec) {
     const std::string_view size = rest.substr(0, colon);
     const auto x = size.find('x');
     std::uint64_t rows = 0, columns = 0, seed = 1;
-    if (x == size.npos || !parse_count(size.substr(0, x), rows) ||
-        !parse_count(size.substr(x + 1), columns))
-        throw malformed();
-    if (colon != rest.npos && !parse_count(rest.substr(colon + 1), seed)) throw malformed();
-    if (rows < 1 || columns < 1 || rows > std::uint64_t(kMaxBuildingSide) ||
-        columns > std::uint64_t(kMaxBuildingSide) ||
+    if (x == size.npos) throw malformed();
+    const Parsed r = parse_count(size.substr(0, x), rows);
+    const Parsed c = parse_count(size.substr(x + 1), columns);
+    if (r == Parsed::Malformed || c == Parsed::Malformed) throw malformed();
+    if (colon != rest.npos) {
+        const Parsed s = parse_count(rest.substr(colon + 1), seed);
+        if (s == Parsed::Malformed) throw malformed();
+        if (s == Parsed::OutOfRange)
+            throw InputError(file, "SEED out of range (0..18446744073709551615)");
+    }
+    if (r == Parsed::OutOfRange || c == Parsed::OutOfRange || rows < 1 || columns < 1 ||
+        rows > std::uint64_t(kMaxBuildingSide) || columns > std::uint64_t(kMaxBuildingSide) ||
         rows * columns > std::uint64_t(kMaxBuildingRooms))
         throw InputError(file, "R x C out of range (at least 1 x 1, at most " +
                                    std::to_string(kMaxBuildingSide) + " a side and " +

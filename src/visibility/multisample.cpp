@@ -65,6 +65,10 @@ RenderResult render_multisampled(const Scene& scene, const RenderOptions& option
                                  " samples exceeds the limit of " +
                                  std::to_string(options.limits.max_pixels) +
                                  " (RenderLimits::max_pixels, --max-pixels)");
+    // Its sample buffers with the frame's memory (make_frame_context counts pixels only):
+    // coverage and depth, 8 bytes a sample, and the resolved targets' share.
+    check_frame_memory(scene.name, scene.vertex_count(), scene.triangle_count(), total,
+                       options.limits, 8 + (kFrameBytesPerSample + n * n - 1) / (n * n));
     const std::vector<ScreenPolygon> polygons = project_scene(scene, options, true);
     // Every polygon's coverage and depth are computed per sample, hidden or not (there is no
     // hierarchical z here): that work is bounded before any is done.

@@ -220,6 +220,12 @@ TEST(CliLimits, AFrameWithNothingInViewWarns) {
          "the view volume, 12 triangles outside it or the clip planes, 0 covering no pixel "
          "center): the image shows only the background\n"},
         {"render builtin:cube -o a.png --size 8x8 --clip-plane 1,0,0,0", ""},
+        // In view, but every depth rounds to the cleared far plane.
+        {"render builtin:cube -o a.png --size 32x32 --near 1e-20 --far 1e30 --depth-format d16",
+         "warning: builtin:cube: 6 triangles in view, but none of their fragments passed the "
+         "depth test: the image shows only the background (is --depth-format d16 too coarse for "
+         "the near and far planes?)\n"},
+        {"render builtin:cube -o a.png --size 32x32 --depth-format d16", ""},
     };
     for (const auto& [arguments, message] : cases) {
         SCOPED_TRACE(arguments);
@@ -227,6 +233,26 @@ TEST(CliLimits, AFrameWithNothingInViewWarns) {
         EXPECT_EQ(r.exit_code, 0);
         EXPECT_EQ(r.output, message);
     }
+}
+
+// A path past the system's 4095 bytes: the one line still ends with the cause (the quote is
+// cut in its middle, not at its end).
+TEST(CliLimits, APathPastTheSystemsLimitKeepsItsCause) {
+    const auto dir = temp_dir("cli-limits-long-path");
+    std::string path = ".";
+    for (int level = 0; level < 17; ++level) path += "/" + std::string(250, 'd');
+    for (const std::string flag : {"-o", "--depth-out"}) {
+        const std::string output = flag == "-o" ? "" : " -o a.png";
+        const CommandResult r = run_zraster(
+            "render builtin:cube --size 8x8" + output + " " + flag + " " + path + "/o.png", dir);
+        EXPECT_EQ(r.exit_code, 2);
+        EXPECT_EQ(r.output.find('\n'), r.output.size() - 1);
+        EXPECT_TRUE(
+            r.output.ends_with("/o.png: cannot write: the path is 4274 bytes long, more "
+                               "than the limit of 4095\n"))
+            << r.output.substr(r.output.size() - std::min<std::size_t>(r.output.size(), 200));
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "a.png"));
 }
 
 // Flags that change nothing in the scene given (a service may pass them to every file): a
@@ -312,6 +338,32 @@ TEST(CliLimits, FlagsWithoutEffectAreRefused) {
         {"svg builtin:cube -o out.svg --depth-compare less",
          "zraster: --depth-compare: sets the z-buffer's depth test: svg orders polygons "
          "(--order), it keeps no depth buffer\n"},
+        {"render builtin:cube -o out.png --no-depth-test --depth-format d16",
+         "zraster: --depth-format: sets the depth test, which --no-depth-test turns off (nothing "
+         "is tested, nothing written)\n"},
+        {"render builtin:cube -o out.png --no-depth-test --no-depth-write",
+         "zraster: --no-depth-write: sets the depth test, which --no-depth-test turns off "
+         "(nothing is tested, nothing written)\n"},
+        {"render builtin:cube -o out.png --wireframe --depth-compare always",
+         "zraster: --depth-compare: sets the depth test: --wireframe draws every edge, with no "
+         "depth test\n"},
+        {"render builtin:cube -o out.png --wireframe --light-dir 0,0,1",
+         "zraster: --light-dir: shades surfaces, which --wireframe does not fill (it draws the "
+         "edges alone)\n"},
+        {"render builtin:cube -o out.png --wireframe --no-textures",
+         "zraster: --no-textures: sets the surfaces' textures, which --wireframe does not fill\n"},
+        {"render builtin:cube -o out.png --view depth --shading flat",
+         "zraster: --shading: shades the image, which --view depth replaces\n"},
+        {"render builtin:cube -o out.png --view normals --point-light 0,2,0",
+         "zraster: --point-light: shades the image, which --view normals replaces\n"},
+        {"render builtin:cube -o out.png --visibility warnock --front-to-back",
+         "zraster: --front-to-back: is a stage of the z-buffer's pipeline, which --visibility "
+         "warnock does not use\n"},
+        {"render builtin:cube -o out.png --ortho --infinite-far",
+         "zraster: --infinite-far: moves a perspective projection's far plane to infinity: "
+         "--ortho keeps its far plane\n"},
+        {"render builtin:cube -o out.png --z-out z.npy --sensor kinect --sensor-seed 3",
+         "zraster: --sensor-seed: seeds --sensor-noise, which is 0: there is no noise to seed\n"},
     };
     for (const auto& [arguments, message] : cases) {
         SCOPED_TRACE(arguments);
@@ -322,7 +374,11 @@ TEST(CliLimits, FlagsWithoutEffectAreRefused) {
     EXPECT_TRUE(std::filesystem::is_empty(dir));
     // The same flags where they act are taken.
     for (const char* arguments :
-         {"render builtin:cube -o a.png --size 8x8 --no-depth-test --depth-format d16",
+         {"render builtin:cube -o a.png --size 8x8 --depth-compare lequal --depth-format d16",
+          "render builtin:cube -o a.png --size 8x8 --view hiz --light-dir 0,0,1",
+          "render builtin:cube -o a.png --size 8x8 --wireframe --cull none",
+          "render builtin:cube -o a.png --size 8x8 --z-out z.npy --sensor kinect --sensor-noise "
+          "0.5 --sensor-seed 3",
           "render builtin:cube -o a.png --size 8x8 --aa 2 --depth-compare lequal",
           "render builtin:cube -o a.png --size 8x8 --wireframe --edge-color 255,0,0",
           "render builtin:cube -o a.png --size 8x8 --shading flat --light-dir 0,0,1",
@@ -700,7 +756,7 @@ TEST(CliLimits, FrameMemoryExactly) {
     expect_refused(dir, run + std::to_string(frame - 1),
                    "zraster: sphere:2000: the frame needs about ");
     expect_refused(dir, run + std::to_string(frame - 1),
-                   "; raise it with --max-frame-bytes SIZE (e.g. 8G)");
+                   "; raise it with --max-frame-bytes SIZE (bytes, or with a unit: 512M, 16G)");
     // Before the camera fit: the scene alone is past the limit (no target samples named).
     expect_refused(dir, run + std::to_string(geometry - 1),
                    std::to_string(scene.vertex_count()) + " vertices and " +
@@ -710,6 +766,13 @@ TEST(CliLimits, FrameMemoryExactly) {
                        "--max-frame-bytes SIZE");
     expect_refused(dir, "bench sphere:2000 --size 64x64 --frames 1 --max-frame-bytes 1K",
                    "--max-frame-bytes SIZE");
+    // Multisampling's sample buffers count: 2896^2 x 64 samples (its pixel limit raised).
+    expect_refused(dir,
+                   "render builtin:cube --size 2896x2896 --aa 8 --msaa --max-pixels "
+                   "9999999999999999999 -o out.png",
+                   "536756224 target samples), more than max_frame_bytes (4096 MiB)");
+    // A small limit is told in bytes, as given.
+    expect_refused(dir, run + "1K", "more than max_frame_bytes (1024 bytes)");
     expect_refused(dir, run + "0", "--max-frame-bytes: must be more than 0 bytes");
     expect_refused(dir, run + "lots",
                    "--max-frame-bytes: expected a size in bytes like 4G, 512M or 1000000, got "

@@ -77,6 +77,30 @@ TEST(ViewCommand, ScreenshotNamesOfTheLongestLengthAndFifos) {
     EXPECT_TRUE(std::filesystem::is_regular_file(dir / name));
 }
 
+// A frame refused by a budget: with --screenshot the run ends refused (exit 2, its line, no
+// screenshot); without one, each refusal is told once on stderr.
+TEST(ViewCommand, RefusedFramesAreNotHidden) {
+    const auto dir = temp_dir("view-refused");
+    const std::string refused =
+        "sphere:200 --size 32x24 --no-hud --visibility bsp "
+        "--max-bsp-polygons 10 --frames 2";
+    const CommandResult shot = run_viewer(refused + " --screenshot s.png", dir);
+    VIEWER_OR_SKIP(shot);
+    EXPECT_EQ(shot.exit_code, 2) << shot.output;
+    EXPECT_EQ(shot.output.rfind("zraster: --screenshot: the last frame was not drawn: sphere:200: "
+                                "BSP tree: ",
+                                0),
+              0u)
+        << shot.output;
+    EXPECT_EQ(shot.output.find('\n'), shot.output.size() - 1) << shot.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "s.png"));
+    const CommandResult told = run_viewer(refused, dir);
+    EXPECT_EQ(told.exit_code, 0) << told.output;
+    EXPECT_EQ(told.output.rfind("warning: view: frame not drawn: sphere:200: BSP tree: ", 0), 0u)
+        << told.output;
+    EXPECT_EQ(told.output.find("warning", 1), std::string::npos) << told.output;  // once
+}
+
 TEST(ViewCommand, HudDrawsOnlyItsBandAtTheTop) {
     const auto dir = temp_dir("view-hud");
     const CommandResult v =

@@ -5,6 +5,11 @@
 #include <zraster/load.hpp>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <initializer_list>
+#include <iterator>
 #include <string>
 
 #include "io/io_test_util.hpp"
@@ -91,13 +96,14 @@ TEST(LoadBudgets, NodesSharingChildrenAreCountedInTheImportersBytes) {
         return json;
     };
     const auto model = dir / "tree.gltf";
-    test::write_bytes(model, empty_tree(3));  // 16 nodes, one triangle (180 bytes)
+    // 16 nodes, one triangle (180 bytes, and 1976 for the primitive itself), its buffer.
+    test::write_bytes(model, empty_tree(3));
     LoadOptions o;
-    o.max_geometry_bytes = 16 * 1152 + 180;
+    o.max_geometry_bytes = 16 * 1152 + 180 + 1976 + 36;
     EXPECT_EQ(load_scene(model, o).instances.size(), 1u);
     --o.max_geometry_bytes;
     test::expect_limit_exceeded([&] { load_scene(model, o); }, model, "max_geometry_bytes",
-                                "and the node graph's 16 nodes decode to about 18612 bytes");
+                                "and the node graph's 16 nodes decode to about 20624 bytes");
     const auto huge = dir / "huge.gltf";
     test::write_bytes(huge, empty_tree(30));
     for (const LoadIsolation isolation : {LoadIsolation::InProcess, LoadIsolation::WorkerProcess}) {
@@ -191,7 +197,8 @@ TEST(LoadBudgets, AnAccessorReadByManyPrimitivesIsCountedForEach) {
 }
 
 // The bytes decoded, per primitive: 3 vertices of one attribute (24 bytes each) and 3 drawn
-// indices (36 bytes each) make 180 bytes a primitive.
+// indices (36 bytes each) make 180 bytes a primitive, and the primitive itself 1976 more; the
+// buffer of 36 bytes is read once.
 TEST(LoadBudgets, DecodedGeometryIsCountedInBytesPerPrimitive) {
     const auto dir = test::temp_dir("budgets-geometry-bytes");
     const auto model = dir / "shared.gltf";
@@ -200,14 +207,14 @@ TEST(LoadBudgets, DecodedGeometryIsCountedInBytesPerPrimitive) {
         SCOPED_TRACE(isolation == LoadIsolation::InProcess ? "in process" : "worker");
         LoadOptions o;
         o.isolation = isolation;
-        // 10 x 180 bytes, and the one node placing them: 1152.
-        o.max_geometry_bytes = 2952;
+        // 10 x (180 + 1976) bytes, the one node placing them (1152) and the buffer (36).
+        o.max_geometry_bytes = 22748;
         EXPECT_EQ(load_scene(model, o).meshes.size(), 10u);
-        o.max_geometry_bytes = 2951;
+        o.max_geometry_bytes = 22747;
         test::expect_limit_exceeded(
             [&] { load_scene(model, o); }, model, "max_geometry_bytes",
-            "the meshes' 10 primitives and the node graph's 1 node decode to about 2952 bytes of "
-            "geometry, more than max_geometry_bytes (2951 bytes) (the importer copies an "
+            "the meshes' 10 primitives and the node graph's 1 node decode to about 22748 bytes of "
+            "geometry, more than max_geometry_bytes (22747 bytes) (the importer copies an "
             "accessor into every primitive that reads it, and a node once per path to it)");
     }
     // A morph target's attributes are decoded too: 72 bytes more a primitive.
@@ -215,9 +222,9 @@ TEST(LoadBudgets, DecodedGeometryIsCountedInBytesPerPrimitive) {
     test::write_bytes(
         morphed, shared_accessor_gltf(10, "", R"("POSITION":0},"targets":[{"POSITION":0}],"x":{)"));
     LoadOptions o;
-    o.max_geometry_bytes = 2520 + 1152 - 1;
+    o.max_geometry_bytes = 2520 + 19760 + 1152 + 36 - 1;
     test::expect_limit_exceeded([&] { load_scene(morphed, o); }, morphed, "max_geometry_bytes",
-                                "decode to about 3672 bytes of geometry");
+                                "decode to about 23468 bytes of geometry");
 }
 
 // A 578-byte glTF whose one sparse accessor declares 150 million vertices (one of them given):
@@ -306,6 +313,269 @@ TEST(LoadBudgets, ACycleOfNodesIsRefusedByName) {
     text.replace(text.find(mesh_node), mesh_node.size(), R"({"mesh":0,"children":[2]})");
     test::write_bytes(model, text);
     test::expect_input_error([&] { load_scene(model); }, model, "is its own ancestor");
+}
+
+// --- What else a small glTF expands into (issue 27): each counted in max_geometry_bytes before
+// the importer reads the file, the message naming what dominates. ---
+
+// The little-endian bytes of `values` (floats, or 16-bit unsigned integers).
+template <typename T>
+std::string bytes_of(std::initializer_list<T> values) {
+    std::string out(values.size() * sizeof(T), '\0');
+    std::memcpy(out.data(), std::data(values), out.size());
+    return out;
+}
+
+// Assimp's JSON parser recursed once per level: 200,000 nested arrays in "extras" (400 KB) were
+// a SIGSEGV in process. glTF nests fewer than 20 levels: past 256 the file is refused first.
+TEST(LoadBudgets, GltfJsonNestedPastAFixedDepthIsRefusedBeforeTheImporter) {
+    const auto dir = test::temp_dir("budgets-json-depth");
+    const auto nested = [](std::size_t levels) {  // the document's object is one level
+        std::string json = shared_accessor_gltf(1);
+        return "{\"extras\":" + std::string(levels - 1, '[') + std::string(levels - 1, ']') + "," +
+               json.substr(1);
+    };
+    const auto deepest = dir / "deepest.gltf";
+    test::write_bytes(deepest, nested(256));
+    EXPECT_EQ(load_scene(deepest).meshes.size(), 1u);
+    const auto deeper = dir / "deeper.gltf";
+    test::write_bytes(deeper, nested(257));
+    test::expect_input_error([&] { load_scene(deeper); }, deeper,
+                             "malformed glTF file: its JSON nests arrays and objects more than "
+                             "256 levels deep (at byte 265 of the JSON; glTF needs fewer than 20)");
+    // 200,000 levels, as a .gltf and as a GLB's JSON chunk, in process and through the worker.
+    const auto deep = dir / "deep.gltf";
+    std::string json = nested(200000);
+    test::write_bytes(deep, json);
+    json.append((4 - json.size() % 4) % 4, ' ');
+    const auto u32 = [](std::size_t v) {
+        std::string out(4, '\0');
+        for (int k = 0; k < 4; ++k) out[k] = char((v >> (8 * k)) & 0xff);
+        return out;
+    };
+    const auto glb = dir / "deep.glb";
+    test::write_bytes(
+        glb, "glTF" + u32(2) + u32(12 + 8 + json.size()) + u32(json.size()) + "JSON" + json);
+    for (const LoadIsolation isolation : {LoadIsolation::InProcess, LoadIsolation::WorkerProcess}) {
+        SCOPED_TRACE(isolation == LoadIsolation::InProcess ? "in process" : "worker");
+        LoadOptions o;
+        o.isolation = isolation;
+        for (const auto& file : {deep, glb})
+            test::expect_input_error([&] { load_scene(file, o); }, file,
+                                     "its JSON nests arrays and objects more than 256 levels "
+                                     "deep");
+    }
+}
+
+// A buffer is read whole, whatever its accessors use: a 392-byte file declaring 6 GiB of a sparse
+// file reached 6.3 GB. Its byteLength counts, a byte a byte.
+TEST(LoadBudgets, AGltfBufferCountsItsWholeByteLength) {
+    const auto dir = test::temp_dir("budgets-buffer");
+    const auto model = dir / "buffer.gltf";
+    const auto with_buffer = [&](std::uint64_t length) {
+        std::string json = shared_accessor_gltf(1);
+        const std::size_t from = json.find(R"("buffers":)");
+        return json.substr(0, from) + R"("buffers":[{"uri":"data.bin","byteLength":)" +
+               std::to_string(length) + "}]}";
+    };
+    std::string data = bytes_of<float>({0, 0, 0, 1, 0, 0, 0, 1, 0});
+    data.resize(4096);
+    test::write_bytes(dir / "data.bin", data);
+    test::write_bytes(model, with_buffer(4096));
+    LoadOptions o;
+    o.max_geometry_bytes = 180 + 1976 + 1152 + 4096;  // the triangle, its node, the buffer
+    EXPECT_EQ(load_scene(model, o).meshes.size(), 1u);
+    --o.max_geometry_bytes;
+    test::expect_limit_exceeded([&] { load_scene(model, o); }, model, "max_geometry_bytes",
+                                "the file decodes to about 7404 bytes in the importer, more than "
+                                "max_geometry_bytes (7403 bytes), mostly buffer 0 (byteLength "
+                                "4096 bytes, read whole by the importer): about 4096 bytes");
+    // 6 GiB of a sparse file: refused with the defaults, before anything is read.
+    std::filesystem::resize_file(dir / "data.bin", std::uint64_t{6} << 30);
+    test::write_bytes(model, with_buffer(std::uint64_t{6} << 30));
+    for (const LoadIsolation isolation : {LoadIsolation::InProcess, LoadIsolation::WorkerProcess}) {
+        SCOPED_TRACE(isolation == LoadIsolation::InProcess ? "in process" : "worker");
+        LoadOptions defaults;
+        defaults.isolation = isolation;
+        test::expect_limit_exceeded([&] { load_scene(model, defaults); }, model,
+                                    "max_geometry_bytes",
+                                    "more than max_geometry_bytes (1024 MiB), mostly buffer 0 "
+                                    "(byteLength 6144 MiB, read whole by the importer)");
+    }
+}
+
+// A triangle (data.bin: positions, then one sparse index and value) and an animation whose
+// channels sample `keys` keys (sparse accessors: zeros and one value), `targets` translation
+// targets (nodes 0..targets-1 each placing the triangle), `channels` channels per target.
+std::string animated_gltf(std::uint64_t keys, int targets, int channels) {
+    std::string nodes, roots, list;
+    for (int t = 0; t < targets; ++t) {
+        nodes += std::string(t ? "," : "") + R"({"mesh":0})";
+        roots += std::string(t ? "," : "") + std::to_string(t);
+        for (int c = 0; c < channels; ++c)
+            list += std::string(list.empty() ? "" : ",") + R"({"sampler":0,"target":{"node":)" +
+                    std::to_string(t) + R"(,"path":"translation"}})";
+    }
+    const std::string sparse =
+        R"("sparse":{"count":1,"indices":{"bufferView":1,"componentType":5125},)"
+        R"("values":{"bufferView":2}})";
+    return R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[)" + roots +
+           R"(]}],"nodes":[)" + nodes +
+           R"(],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"accessors":[)"
+           R"({"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],)"
+           R"("max":[1,1,0]},{"componentType":5126,"count":)" +
+           std::to_string(keys) + R"(,"type":"SCALAR","min":[0],"max":[1],)" + sparse +
+           R"(},{"componentType":5126,"count":)" + std::to_string(keys) + R"(,"type":"VEC3",)" +
+           sparse +
+           R"(}],"bufferViews":[{"buffer":0,"byteLength":36},{"buffer":0,"byteOffset":36,)"
+           R"("byteLength":4},{"buffer":0,"byteOffset":40,"byteLength":12}],)"
+           R"("buffers":[{"uri":"data.bin","byteLength":52}],)"
+           R"("animations":[{"samplers":[{"input":1,"output":2}],"channels":[)" +
+           list + "]}]}";
+}
+
+// Accessors no primitive reads were outside the budget: a 998-byte file whose one channel samples
+// a sparse accessor of 10^8 keys reached 7.5 GB. Each channel target's keys count (216 bytes a
+// key), and a sparse accessor's dense copy once (4 bytes a time, 12 a translation).
+TEST(LoadBudgets, AnimationKeysAreCountedPerChannelTarget) {
+    const auto dir = test::temp_dir("budgets-animation");
+    test::write_bytes(dir / "data.bin", bytes_of<float>({0, 0, 0, 1, 0, 0, 0, 1, 0}) +
+                                            std::string(4, '\0') + bytes_of<float>({1, 1, 1}));
+    const auto model = dir / "animated.gltf";
+    // 1,000 keys, one target named by 50 channels (the importer keeps one): 1000 x (216 + 16),
+    // the triangle (180), its node (1152) and the buffer (52).
+    test::write_bytes(model, animated_gltf(1000, 1, 50));
+    LoadOptions o;
+    o.max_geometry_bytes = 232000 + 180 + 1976 + 1152 + 52;
+    EXPECT_EQ(load_scene(model, o).meshes.size(), 1u);
+    --o.max_geometry_bytes;
+    test::expect_limit_exceeded([&] { load_scene(model, o); }, model, "max_geometry_bytes",
+                                "mostly the animations' 1000 keys (over 1 target of their "
+                                "channels): about 232000 bytes");
+    // Two targets of the same sampler: its keys twice, its dense copies once.
+    const auto two = dir / "two.gltf";
+    test::write_bytes(two, animated_gltf(1000, 2, 1));
+    o.max_geometry_bytes = 448000 + 180 + 1976 + 2 * 1152 + 52;  // one primitive, two nodes
+    EXPECT_EQ(load_scene(two, o).instances.size(), 2u);
+    --o.max_geometry_bytes;
+    test::expect_limit_exceeded([&] { load_scene(two, o); }, two, "max_geometry_bytes",
+                                "mostly the animations' 2000 keys (over 2 targets");
+    const auto huge = dir / "huge.gltf";
+    test::write_bytes(huge, animated_gltf(100000000, 1, 1));
+    for (const LoadIsolation isolation : {LoadIsolation::InProcess, LoadIsolation::WorkerProcess}) {
+        SCOPED_TRACE(isolation == LoadIsolation::InProcess ? "in process" : "worker");
+        LoadOptions defaults;
+        defaults.isolation = isolation;
+        test::expect_limit_exceeded([&] { load_scene(huge, defaults); }, huge, "max_geometry_bytes",
+                                    "the file decodes to about 22125 MiB in the importer, more "
+                                    "than max_geometry_bytes (1024 MiB), mostly the animations' "
+                                    "100000000 keys");
+    }
+}
+
+// A skinned triangle (JOINTS_0, WEIGHTS_0) whose skin lists `joints` distinct joint nodes and
+// `matrices` inverse bind matrices (a sparse accessor; as many as joints by default), its node
+// placed 2^levels times by nodes holding the one below twice.
+std::string skinned_gltf(int joints, int levels, std::uint64_t matrices = 0) {
+    std::string nodes, roots = "0", joint_list;
+    for (int level = 0; level < levels; ++level)
+        nodes += R"({"children":[)" + std::to_string(level + 1) + "," + std::to_string(level + 1) +
+                 "]},";
+    nodes += R"({"mesh":0,"skin":0})";
+    for (int j = 0; j < joints; ++j) {
+        const std::string index = std::to_string(levels + 1 + j);
+        nodes += R"(,{"name":"j)" + std::to_string(j) + "\"}";
+        roots += "," + index;
+        joint_list += std::string(j ? "," : "") + index;
+    }
+    const std::string ibm = R"(,"inverseBindMatrices":3)";
+    const std::string ibm_accessor =
+        R"(,{"componentType":5126,"count":)" +
+        std::to_string(matrices == 0 ? std::uint64_t(joints) : matrices) +
+        R"(,"type":"MAT4","sparse":{"count":1,"indices":{"bufferView":3,)"
+        R"("componentType":5125},"values":{"bufferView":4}}})";
+    return R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[)" + roots +
+           R"(]}],"nodes":[)" + nodes +
+           R"(],"meshes":[{"primitives":[{"attributes":{"POSITION":0,"JOINTS_0":1,)"
+           R"("WEIGHTS_0":2}}]}],"skins":[{"joints":[)" +
+           joint_list + "]" + ibm +
+           R"(}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3",)"
+           R"("min":[0,0,0],"max":[1,1,0]},{"bufferView":1,"componentType":5123,"count":3,)"
+           R"("type":"VEC4"},{"bufferView":2,"componentType":5126,"count":3,"type":"VEC4"})" +
+           ibm_accessor +
+           R"(],"bufferViews":[{"buffer":0,"byteLength":36},{"buffer":0,"byteOffset":36,)"
+           R"("byteLength":24},{"buffer":0,"byteOffset":60,"byteLength":48},{"buffer":0,)"
+           R"("byteOffset":108,"byteLength":4},{"buffer":0,"byteOffset":112,"byteLength":64}],)"
+           R"("buffers":[{"uri":"data.bin","byteLength":176}]})";
+}
+
+// The importer makes a bone per joint (1,178 bytes) for each placement of a skinned primitive,
+// and a weight (8 bytes) per joint influence of a vertex: 2,000 joints placed 4,096 times by a
+// 61 KB file reached 7.8 GB.
+TEST(LoadBudgets, SkinBonesAreCountedPerPlacement) {
+    const auto dir = test::temp_dir("budgets-skin");
+    std::string data =
+        bytes_of<float>({0, 0, 0, 1, 0, 0, 0, 1, 0}) +
+        bytes_of<std::uint16_t>({0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3}) +
+        bytes_of<float>({.25f, .25f, .25f, .25f, .25f, .25f, .25f, .25f, .25f, .25f, .25f, .25f}) +
+        std::string(4, '\0') + bytes_of<float>({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});
+    test::write_bytes(dir / "data.bin", data);
+    const auto model = dir / "skinned.gltf";
+    // 4 joints placed 4 times: 4 x (4 x 1178 + 12 x 8) = 19232 bytes, and 4 inverse bind
+    // matrices (a sparse accessor's dense copy and the importer's: 4 x 128); the primitive's 3
+    // attributes and drawn indices (3 x 3 x 24 + 3 x 36 = 324) and itself (1976), 11 nodes copied
+    // (the three above once, twice and four times, 4 joints: 12672) and the buffer (176).
+    test::write_bytes(model, skinned_gltf(4, 2));
+    LoadOptions o;
+    o.max_geometry_bytes = 19232 + 512 + 324 + 1976 + 12672 + 176;
+    EXPECT_EQ(load_scene(model, o).instances.size(), 4u);
+    --o.max_geometry_bytes;
+    test::expect_limit_exceeded([&] { load_scene(model, o); }, model, "max_geometry_bytes",
+                                "mostly the skins' 16 bones (a bone per joint for each of 4 "
+                                "placements of a skinned primitive: the importer makes them each "
+                                "time) and 4 inverse bind matrices: about 19744 bytes");
+    const auto many = dir / "many.gltf";
+    test::write_bytes(many, skinned_gltf(2000, 12));
+    const auto matrices = dir / "matrices.gltf";
+    test::write_bytes(matrices, skinned_gltf(1, 0, 100000000));
+    for (const LoadIsolation isolation : {LoadIsolation::InProcess, LoadIsolation::WorkerProcess}) {
+        SCOPED_TRACE(isolation == LoadIsolation::InProcess ? "in process" : "worker");
+        LoadOptions defaults;
+        defaults.isolation = isolation;
+        test::expect_limit_exceeded([&] { load_scene(many, defaults); }, many, "max_geometry_bytes",
+                                    "mostly the skins' 8192000 bones (a bone per joint for each "
+                                    "of 4096 placements");
+        // Inverse bind matrices: read once (a sparse accessor made dense) and copied, 128 bytes a
+        // matrix.
+        test::expect_limit_exceeded([&] { load_scene(matrices, defaults); }, matrices,
+                                    "max_geometry_bytes",
+                                    "the file decodes to about 12207 MiB in the importer, more "
+                                    "than max_geometry_bytes (1024 MiB), mostly the skins' 1 "
+                                    "bones (a bone per joint for each of 1 placements of a "
+                                    "skinned primitive: the importer makes them each time) and "
+                                    "100000000 inverse bind matrices");
+    }
+}
+
+// A material a primitive uses costs the import about 13 KB: 200,000 primitives of an 11 MB file,
+// each with its own empty material, reached 3.09 GB. Counted once per material used.
+TEST(LoadBudgets, MaterialsThePrimitivesUseAreCounted) {
+    const auto dir = test::temp_dir("budgets-materials");
+    std::string json = shared_accessor_gltf(10);
+    for (int p = 0, at = 0; p < 10; ++p) {
+        at = int(json.find(R"({"attributes")", std::size_t(at)));
+        json.insert(std::size_t(at) + 1, R"("material":)" + std::to_string(p % 5) + ",");
+        at += 2;
+    }
+    json.insert(1, R"("materials":[{},{},{},{},{}],)");
+    const auto model = dir / "materials.gltf";
+    test::write_bytes(model, json);
+    LoadOptions o;
+    o.max_geometry_bytes = 22748 + 5 * 13346;  // 5 materials used (twice each)
+    EXPECT_EQ(load_scene(model, o).meshes.size(), 10u);
+    --o.max_geometry_bytes;
+    test::expect_limit_exceeded([&] { load_scene(model, o); }, model, "max_geometry_bytes",
+                                "mostly the primitives' 5 materials: about 66730 bytes");
 }
 
 }  // namespace

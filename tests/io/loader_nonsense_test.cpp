@@ -463,7 +463,7 @@ TEST(LoaderNonsense, QuotesOfMegabytesAreCut) {
     } catch (const InputError& e) {
         EXPECT_LT(std::string(e.what()).size(), 4096 + cells.string().size() + 2);
         EXPECT_NE(e.cause().find("xxx... ("), std::string::npos);
-        EXPECT_NE(e.cause().find(" more bytes)"), std::string::npos);
+        EXPECT_NE(e.cause().find(" bytes cut) ...xxx"), std::string::npos);
     }
     const auto obj = dir / "long-name.obj";
     test::write_bytes(obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl " + huge + "\nf 1 2 3\n");

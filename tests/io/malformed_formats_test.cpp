@@ -330,6 +330,11 @@ TEST(MalformedFormats, AssimpMessagesAreTranslated) {
     EXPECT_EQ(io::assimp_error_cause("m.3mf", "Failed to open file m.3mf."),
               "not a valid 3MF file: the importer could not open its contents (Assimp: Failed to "
               "open file m.3mf.)");
+    // An allocation that failed inside the importer: no C++ name, no Assimp detail.
+    EXPECT_EQ(io::assimp_error_cause("m.dae", "std::bad_alloc"),
+              "the importer ran out of memory reading it: it expands past the memory this "
+              "process may use, in a part of the DAE format zraster does not count before "
+              "reading");
     EXPECT_EQ(io::assimp_detail("x (Assimp: y (z))"), "y (z)");
     EXPECT_EQ(io::assimp_detail("no detail"), std::nullopt);
 }

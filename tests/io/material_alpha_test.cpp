@@ -194,6 +194,39 @@ TEST(MaterialAlpha, GltfMembersOfTheWrongTypeWarnWithTheDefaultUsed) {
     EXPECT_TRUE(none.empty()) << none.front();
 }
 
+// Numbers outside their glTF ranges that zraster does not shade with (metallic, emission, index
+// of refraction) were accepted without a word: one warning each, naming the material and value.
+TEST(MaterialAlpha, GltfUnusedNumbersOutsideTheirRangesWarn) {
+    const auto path =
+        write_alpha_gltf("unused", R"({"name":"m","pbrMetallicRoughness":{"metallicFactor":-5},)"
+                                   R"("emissiveFactor":[1e30,0,0],"extensions":{)"
+                                   R"("KHR_materials_emissive_strength":{"emissiveStrength":-1},)"
+                                   R"("KHR_materials_ior":{"ior":-3}}})");
+    std::vector<std::string> warnings;
+    load_alpha_both_ways(path, &warnings);
+    const std::string prefix = path.string() + ": material 'm': ";
+    const std::string unused = "; not used (zraster does not shade with it)";
+    EXPECT_EQ(warnings,
+              (std::vector<std::string>{
+                  prefix + "metallicFactor -5 is outside glTF's range [0, 1]" + unused,
+                  prefix + "emissiveFactor [1e+30,0,0] is outside glTF's range [0, 1]" + unused,
+                  prefix +
+                      "KHR_materials_emissive_strength emissiveStrength -1 is negative (glTF's "
+                      "range: 0 or more)" +
+                      unused,
+                  prefix + "KHR_materials_ior ior -3 is outside glTF's range (1 or more, or 0)" +
+                      unused}));
+    // Their ranges' ends: no warning (emissiveStrength has no upper bound; ior 0 is allowed).
+    std::vector<std::string> none;
+    load_alpha_both_ways(
+        write_alpha_gltf("unused-ok",
+                         R"({"pbrMetallicRoughness":{"metallicFactor":1},"emissiveFactor":[0,1,0],)"
+                         R"("extensions":{"KHR_materials_emissive_strength":{"emissiveStrength":)"
+                         R"(1e38},"KHR_materials_ior":{"ior":0}}})"),
+        &none);
+    EXPECT_TRUE(none.empty()) << none.front();
+}
+
 // glTF factors outside their ranges (docs/limits.md): clamped, one warning each naming the
 // material, the value and what is used; a factor too large for a float is infinite and the
 // default color is used. roughnessFactor is checked itself (Assimp turns it into a shininess).

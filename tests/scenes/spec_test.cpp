@@ -78,6 +78,17 @@ TEST(ProceduralSpec, OutOfRange) {
     }
 }
 
+// Buildings take any 64-bit seed, as city: and soup: do (20 digits were "malformed").
+TEST(ProceduralSpec, BuildingSeeds) {
+    EXPECT_EQ(make_procedural_scene("building:2x2:18446744073709551615").name,
+              "building:2x2:18446744073709551615");
+    EXPECT_EQ(error_of("building:2x2:18446744073709551616"),
+              "SEED out of range (0..18446744073709551615)");
+    EXPECT_EQ(error_of("building:2x2:x"), "malformed scene spec: expected building:RxC[:SEED]");
+    EXPECT_EQ(error_of("building:99999999999999999999x2"),
+              "R x C out of range (at least 1 x 1, at most 16384 a side and 65536 rooms)");
+}
+
 TEST(ProceduralSpec, UnknownBuiltin) {
     EXPECT_THROW(make_procedural_scene("builtin:teapot"), InputError);
     EXPECT_THROW(make_procedural_scene("builtin:"), InputError);

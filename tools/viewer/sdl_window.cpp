@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <deque>
 #include <filesystem>
@@ -161,6 +162,7 @@ class ViewerWindow {
     FpsMeter fps_;
     RgbaImage shown_;  // what was last drawn into the window, HUD included
     ViewSummary summary_;
+    std::string error_told_;  // the last refusal printed to stderr (each one once in a row)
 };
 
 ViewerWindow::ViewerWindow(ViewSetup& setup) : s_(setup), worker_(setup.scene, setup.world) {
@@ -216,6 +218,12 @@ bool ViewerWindow::take_finished_frame() {
     std::optional<FrameResult> frame = worker_.take();
     if (!frame) return false;
     summary_.render_ms.push_back(frame->render_ms);
+    // A refused frame shows in the HUD, and on stderr too: with --no-hud or a script nobody
+    // watches, it would pass without a word. (With --screenshot, the run ends refused if its
+    // last frame is: told once, then.)
+    if (!frame->error.empty() && frame->error != error_told_ && s_.screenshot.empty())
+        std::fprintf(stderr, "warning: view: frame not drawn: %s\n", frame->error.c_str());
+    error_told_ = frame->error;
     std::vector<std::uint8_t> rgba = std::move(frame->rgba);
     latest_ = *frame;
     if (!rgba.empty()) {
@@ -289,6 +297,9 @@ ViewSummary ViewerWindow::run() {
         if (!handle_input(wait_ms)) break;
     }
     summary_.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    // A screenshot of a refused frame would be the last image drawn, or none: refused instead.
+    if (!s_.screenshot.empty() && !latest_.error.empty())
+        throw InputError("--screenshot", "the last frame was not drawn: " + latest_.error);
     if (!s_.screenshot.empty()) write_screenshot(s_.screenshot);
     return summary_;
 }

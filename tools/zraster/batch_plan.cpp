@@ -132,20 +132,17 @@ void check_log_against(const std::filesystem::path& log_path, const std::filesys
 }
 
 // The inputs, their outputs checked for clashes, the shard's share of them, the log.
-void plan_inputs(const BatchArguments& a, std::istream& standard_input, const Shard& shard,
+// `paths`: the inputs given and those the --list files name (read before the output folder is
+// made: a list a FIFO's writer never ends leaves nothing behind when the run is stopped).
+void plan_inputs(const BatchArguments& a, std::vector<std::string> paths, const Shard& shard,
                  BatchPlan& plan) {
     check_batch_settings(plan.settings);
     OutputFiles log;
     check_log(a, log, plan);
 
-    std::vector<std::string> paths = a.inputs;
     // The log may not be one of the files the run reads.
     log.check_input(a.views_json, "--views-json");
-    for (const std::string& list : a.lists) {
-        log.check_input(list, "--list");
-        const std::vector<std::string> listed = read_path_list(list, standard_input);
-        paths.insert(paths.end(), listed.begin(), listed.end());
-    }
+    for (const std::string& list : a.lists) log.check_input(list, "--list");
     if (paths.empty()) throw InputError("batch", "no inputs: give files, folders or --list FILE");
     const std::vector<BatchInput> all = find_inputs(paths, a.out_dir);
     if (all.empty())
@@ -172,6 +169,11 @@ BatchPlan plan_batch(const BatchArguments& a, std::istream& standard_input) {
     plan.jobs = batch_jobs(a);
     plan.settings = batch_settings(a, plan.jobs);
     const Shard shard = a.shard.empty() ? Shard{} : parse_shard(a.shard);
+    std::vector<std::string> paths = a.inputs;
+    for (const std::string& list : a.lists) {
+        const std::vector<std::string> listed = read_path_list(list, standard_input);
+        paths.insert(paths.end(), listed.begin(), listed.end());
+    }
     // The folders this run creates, deepest first: a plan refused below leaves none of them
     // behind (a failed run leaves nothing; fuzz_cli found the output folder left).
     std::vector<std::filesystem::path> created;
@@ -186,7 +188,7 @@ BatchPlan plan_batch(const BatchArguments& a, std::istream& standard_input) {
         throw InputError("-o " + a.out_dir, "cannot create the output folder" +
                                                 (ec ? ": " + ec.message() : std::string()));
     try {
-        plan_inputs(a, standard_input, shard, plan);
+        plan_inputs(a, std::move(paths), shard, plan);
     } catch (...) {
         for (const std::filesystem::path& p : created) std::filesystem::remove(p, ec);
         throw;

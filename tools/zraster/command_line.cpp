@@ -72,7 +72,8 @@ std::string limit_advice(const std::string& limit) {
     for (const auto& [name, flag] : kFlags)
         if (limit == name) return fmt::format("; raise it with {} N", flag);
     for (const auto& [name, flag] : kSizeFlags)
-        if (limit == name) return fmt::format("; raise it with {} SIZE (e.g. 8G)", flag);
+        if (limit == name)
+            return fmt::format("; raise it with {} SIZE (bytes, or with a unit: 512M, 16G)", flag);
     return "";
 }
 

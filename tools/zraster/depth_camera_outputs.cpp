@@ -246,6 +246,9 @@ void check_depth_camera_arguments(const DepthCameraArguments& a, const std::stri
                              "kinect changes only --z-out, --range-out and --points-out: give "
                              "one of them");
         if (ortho) throw InputError("--sensor", "kinect needs a perspective camera: not --ortho");
+        if (!a.seed.empty() && (!a.noise || *a.noise == 0.0))
+            throw InputError("--sensor-seed",
+                             "seeds --sensor-noise, which is 0: there is no noise to seed");
         sensor_of(a);
     }
 }

@@ -20,6 +20,20 @@ const char* depth_test_flag(const RenderArguments& a) {
 }
 
 void check_depth_test_flags(const RenderArguments& a) {
+    if (a.no_depth_test) {
+        // (depth_test_flag names --no-depth-test first: the others, without it.)
+        RenderArguments others = a;
+        others.no_depth_test = false;
+        if (const char* flag = depth_test_flag(others))
+            throw InputError(flag,
+                             "sets the depth test, which --no-depth-test turns off "
+                             "(nothing is tested, nothing written)");
+    }
+    if (a.wireframe)
+        if (const char* flag = depth_test_flag(a))
+            throw InputError(flag,
+                             "sets the depth test: --wireframe draws every edge, with no "
+                             "depth test");
     if (a.visibility == "zbuffer" && !a.msaa) return;
     if (const char* flag = depth_test_flag(a))
         throw InputError(flag, a.msaa ? "sets the z-buffer's depth test, which --msaa does not "
@@ -50,6 +64,7 @@ void check_pipeline_flags(const RenderArguments& a) {
     const char* flag = a.occlusion_cull                                 ? "--occlusion-cull"
                        : a.portal_cull != RenderArguments{}.portal_cull ? "--portal-cull"
                        : a.strategy != RenderArguments{}.strategy       ? "--shading-strategy"
+                       : a.front_to_back                                ? "--front-to-back"
                                                                         : nullptr;
     if (flag == nullptr) return;
     throw InputError(flag, std::string("is a stage of the z-buffer's pipeline, which ") +
@@ -57,7 +72,37 @@ void check_pipeline_flags(const RenderArguments& a) {
                                        : "--visibility " + a.visibility + " does not use"));
 }
 
+// The first flag that sets how surfaces are shaded or lit (null: none given).
+const char* shading_flag(const RenderArguments& a) {
+    return a.shading != RenderArguments{}.shading         ? "--shading"
+           : !a.light_dirs.empty()                        ? "--light-dir"
+           : !a.point_lights.empty()                      ? "--point-light"
+           : a.reflection != RenderArguments{}.reflection ? "--reflection"
+           : a.infinite_viewer                            ? "--infinite-viewer"
+                                                          : nullptr;
+}
+
+// The debug views that show no shaded color (docs/debug-views.md); the others draw over it.
+bool view_without_shading(const std::string& view) {
+    for (const char* v : {"depth", "normals", "overdraw", "ids", "tiles", "mip", "lod"})
+        if (view == v) return true;
+    return false;
+}
+
 void check_shading_flags(const RenderArguments& a) {
+    if (const char* flag = a.wireframe ? shading_flag(a) : nullptr)
+        throw InputError(flag,
+                         "shades surfaces, which --wireframe does not fill (it draws the "
+                         "edges alone)");
+    if (a.wireframe && (a.no_textures || a.texture_filter != RenderArguments{}.texture_filter))
+        throw InputError(a.no_textures ? "--no-textures" : "--texture-filter",
+                         "sets the surfaces' textures, which --wireframe does not fill");
+    if (const char* flag = view_without_shading(a.view) ? shading_flag(a) : nullptr)
+        throw InputError(flag, "shades the image, which --view " + a.view + " replaces");
+    if (a.ortho && a.infinite_far)
+        throw InputError("--infinite-far",
+                         "moves a perspective projection's far plane to infinity: --ortho keeps "
+                         "its far plane");
     if (a.shading == "unlit" && (!a.light_dirs.empty() || !a.point_lights.empty()))
         throw InputError(a.light_dirs.empty() ? "--point-light" : "--light-dir",
                          "lights nothing with --shading unlit (colors are drawn as they are)");

@@ -13,6 +13,7 @@
 
 #include "debug_view_legend.hpp"
 #include "depth_camera_outputs.hpp"
+#include "flag_effects.hpp"
 #include "output_maps.hpp"
 
 namespace zraster::cli {
@@ -77,6 +78,17 @@ RenderedFrame render_outputs(const RenderArguments& a, const Scene& scene, Outpu
                    "pixel center): the image shows only the background\n",
                    scene.name, scene.triangle_count(), s.instances_frustum_culled, s.instances,
                    s.triangles_trivially_rejected + s.triangles_clipped, s.triangles_no_coverage);
+    // Triangles in view, none of whose fragments passed: a depth format too coarse for the
+    // near/far ratio rounds every depth to the cleared far plane (d16, near 1e-20).
+    else if (notes != nullptr && renders_with_pipeline(a) && options.view == DebugView::None &&
+             !a.no_depth_test && s.triangles_rasterized > 0 && s.fragments_passed == 0 &&
+             s.fragments_blended == 0 && s.fragments_alpha_discarded == 0 &&
+             check_flags_take_effect(a).empty())
+        fmt::print(notes,
+                   "warning: {}: {} triangles in view, but none of their fragments passed the "
+                   "depth test: the image shows only the background (is --depth-format {} too "
+                   "coarse for the near and far planes?)\n",
+                   scene.name, s.triangles_rasterized, a.depth_format);
 
     const Clock::time_point encode_start = Clock::now();
     // RGBA -> RGB: the alpha channel is always opaque. Byte by byte: a 3-byte copy_n per pixel

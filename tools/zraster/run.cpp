@@ -98,8 +98,9 @@ int run_zraster(std::vector<std::string> args) {
         ->capture_default_str();
     std::string max_geometry_memory = "1G";
     app.add_option("--max-geometry-memory", max_geometry_memory,
-                   "Refuse glTF files whose accessors decode to more bytes than this (e.g. 2G; "
-                   "an accessor counts once per primitive that reads it)")
+                   "Refuse glTF files the importer would decode to more bytes than this (e.g. "
+                   "2G; an accessor counts once per primitive that reads it; buffers, animation "
+                   "keys, skin bones per placement and materials count too)")
         ->capture_default_str();
     int max_texture_side = LoadOptions{}.max_texture_side;
     app.add_option("--max-texture-side", max_texture_side,
@@ -199,8 +200,10 @@ int run_zraster(std::vector<std::string> args) {
         // The default budgets keep a run within a few GB: past them is a request this machine
         // cannot hold (a budget or --max-pixels raised), the user's to change, not a bug.
         fmt::print(stderr,
-                   "zraster: out of memory: the run needs more than this machine gives it; "
-                   "lower --size, --aa or a budget raised past its default (docs/limits.md)\n");
+                   "zraster: out of memory: the run needs more than this machine gives it "
+                   "(the default budgets fit a few GB; a model file may be up to 4 GiB): lower "
+                   "--size or --aa, a budget raised past its default, or the model's size "
+                   "(docs/limits.md)\n");
         return kExitBadInput;
     } catch (const std::exception& e) {
         fmt::print(stderr, "zraster: internal error: {}\n", io::one_line(e.what()));
