@@ -677,6 +677,24 @@ row "-o over a texture the model's MTL names (map_Ka) that zraster does not read
 printf "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 300 0 0\n" >color300.off
 row "OFF face color of 300 (colors are 0..255)" render color300.off -o out.png
 rm -f out.png
+# Settings that change nothing, found by the fourth hostile run: the depth test's flags with
+# --no-depth-test or --wireframe, shading with --wireframe or a view without shading, an infinite
+# far plane with --ortho, a sensor seed without noise; a 2D explain given a scene; a seed out of
+# range; batch given a procedural scene; a model's numbers a reader took a prefix of.
+row "--depth-format with --no-depth-test (changes nothing)" render builtin:cube --size 8x8 --no-depth-test --depth-format d16 -o out.png
+row "--light-dir with --wireframe (changes nothing)" render builtin:cube --size 8x8 --wireframe --light-dir 0,0,1 -o out.png
+row "--shading with --view depth (changes nothing)" render builtin:cube --size 8x8 --view depth --shading flat -o out.png
+row "--ortho --infinite-far (changes nothing)" render builtin:cube --size 8x8 --ortho --infinite-far -o out.png
+row "--sensor-seed without --sensor-noise" render builtin:cube --size 8x8 --z-out z.npy --sensor kinect --sensor-seed 3 -o out.png
+row "explain of a 2D algorithm given a scene" explain cohen-sutherland builtin:cube -o out.d
+row "building seed past 2^64 - 1" render building:2x2:18446744073709551616 -o out.png
+row "batch given a procedural scene" batch builtin:cube -o out.d
+printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0x\n1 0 0\n0 1 0\n3 0 1 2\n' >hexword.ply
+row "ASCII PLY coordinate '0x' (Assimp read 0)" render hexword.ply -o out.png
+printf 'newmtl m\nKd 1 0 0\nillum 4294967296\n' >illum.mtl
+printf "mtllib illum.mtl\n${tri}usemtl m\nf 1 2 3\n" >illum.obj
+row "MTL illum 4294967296 (Assimp wrapped it)" render illum.obj -o out.png
+rm -rf out.d out.png z.npy
 echo
 echo "$n inputs; $failures broke the contract (exit 2, one line, nothing left)."
 [ "$failures" -eq 0 ]
