@@ -125,8 +125,9 @@ inline void check_nothing_read_outside(const Scene& scene) {
 inline void check_load_refusal(const InputError& e, const std::string& file) {
     check_input_error(e, file);
     if (const auto* limit = dynamic_cast<const LimitExceeded*>(&e)) {
-        static const std::set<std::string> fields{"max_instances", "max_triangles",
-                                                  "max_file_bytes"};
+        static const std::set<std::string> fields{"max_instances",          "max_triangles",
+                                                  "max_file_bytes",         "max_geometry_bytes",
+                                                  "max_triangulation_work", "max_materials"};
         if (!fields.contains(limit->limit())) fail("LimitExceeded names '" + limit->limit() + "'");
     }
     for (const char* internal : {"aiMesh", "No suitable reader", "Failed to determine"})
