@@ -1,6 +1,7 @@
 #include "io/gltf_bounds_check.hpp"
 
 #include "io/gltf_decode_budget.hpp"
+#include "io/gltf_document.hpp"
 #include "io/gltf_schema_check.hpp"
 #include "io/reference_policy.hpp"
 #include "io/text_util.hpp"
@@ -53,16 +54,6 @@ std::uint64_t component_bytes(std::uint64_t type) {
         default:
             return 0;
     }
-}
-
-std::uint64_t components(const std::string& type) {
-    if (type == "SCALAR") return 1;
-    if (type == "VEC2") return 2;
-    if (type == "VEC3") return 3;
-    if (type == "VEC4" || type == "MAT2") return 4;
-    if (type == "MAT3") return 9;
-    if (type == "MAT4") return 16;
-    return 0;
 }
 
 // Bytes a base64 data: URI decodes to.
@@ -197,7 +188,7 @@ class Checker {
             const auto kind = a.find("type");
             if (!count || !type || kind == a.end() || !kind->is_string()) continue;
             const std::uint64_t element =
-                component_bytes(*type) * components(kind->get<std::string>());
+                component_bytes(*type) * gltf_type_components(kind->get<std::string>());
             const std::string name = "accessor " + std::to_string(i);
             range(name, a, *count, element, true);
             const auto sparse = a.find("sparse");

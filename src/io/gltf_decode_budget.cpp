@@ -1,6 +1,8 @@
 // See gltf_decode_budget.hpp.
 #include "io/gltf_decode_budget.hpp"
 
+#include "io/gltf_document.hpp"
+
 #include <zraster/error.hpp>
 
 #include <algorithm>
@@ -102,12 +104,8 @@ std::uint64_t element_bytes(const json& accessors, const json& index) {
     const auto type = accessor->find("type");
     if (type == accessor->end() || !type->is_string()) return 16;
     const std::string t = type->get<std::string>();
-    const std::uint64_t components = t == "SCALAR" ? 1
-                                     : t == "VEC2" ? 2
-                                     : t == "VEC3" ? 3
-                                     : t == "MAT3" ? 9
-                                     : t == "MAT4" ? 16
-                                                   : 4;
+    const std::uint64_t known = gltf_type_components(t);
+    const std::uint64_t components = known != 0 ? known : 4;
     return 4 * components;
 }
 

@@ -1,6 +1,8 @@
 // See gltf_schema_check.hpp.
 #include "io/gltf_schema_check.hpp"
 
+#include "io/gltf_document.hpp"
+
 #include <zraster/error.hpp>
 
 #include <cmath>
@@ -27,14 +29,7 @@ std::uint64_t element_bytes(const json& accessor) {
         !component->is_number_unsigned())
         return 0;
     const std::string t = type->get<std::string>();
-    const std::uint64_t n = t == "SCALAR" ? 1
-                            : t == "VEC2" ? 2
-                            : t == "VEC3" ? 3
-                            : t == "VEC4" ? 4
-                            : t == "MAT2" ? 4
-                            : t == "MAT3" ? 9
-                            : t == "MAT4" ? 16
-                                          : 0;
+    const std::uint64_t n = gltf_type_components(t);
     const std::uint64_t c = component->get<std::uint64_t>();
     const std::uint64_t bytes = c == 5120 || c == 5121 ? 1 : c == 5122 || c == 5123 ? 2 : 4;
     return n * bytes;
