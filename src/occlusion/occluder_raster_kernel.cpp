@@ -12,6 +12,7 @@
 // the dispatchers are compiled once (HWY_ONCE).
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "occlusion/occluder_raster_kernel.cpp"
+#include <hwy/cache_control.h>
 #include <hwy/foreach_target.h>  // must come before highway.h
 #include <hwy/highway.h>
 
@@ -141,6 +142,24 @@ HWY_INLINE void MergeIntoRows(const TileGrid& grid, std::size_t at, hn::Vec<DI> 
     hn::StoreU(hn::IfThenElse(live, new_near, near_depth), df, grid.near_depth + at);
 }
 
+// The rows a triangle touches are wherever it lies on the screen: at 1920x1080 the strips
+// outgrow the L2 cache, and the raster waited on their loads. Their first and last rows in each
+// strip are fetched a few triangles ahead (the triangle's rows span at most two lines an array).
+constexpr std::size_t kPrefetchAhead = 4;
+HWY_INLINE void PrefetchRows(const OccluderBatch& b, std::size_t i, const TileGrid& grid) {
+    const int tx0 = b.x0[i] / kOcclusionTileWidth, tx1 = b.x1[i] / kOcclusionTileWidth;
+    const int y0 = b.y0[i], y1 = std::max(b.y0[i], b.y1[i]);
+    for (int tx = tx0; tx <= tx1; ++tx) {
+        const std::size_t first = row_index(grid, tx, y0), last = row_index(grid, tx, y1);
+        hwy::Prefetch(grid.mask + first);
+        hwy::Prefetch(grid.mask + last);
+        hwy::Prefetch(grid.far_depth + first);
+        hwy::Prefetch(grid.far_depth + last);
+        hwy::Prefetch(grid.near_depth + first);
+        hwy::Prefetch(grid.near_depth + last);
+    }
+}
+
 void RasterizeOccluders(const OccluderBatch& b, std::size_t count, TileGrid grid) {
     namespace k = occluder_setup;
     const DF df;
@@ -148,7 +167,9 @@ void RasterizeOccluders(const OccluderBatch& b, std::size_t count, TileGrid grid
     const int lanes = static_cast<int>(hn::Lanes(df));
     const auto zero_i = hn::Zero(di);
     const auto width_i = hn::Set(di, kOcclusionTileWidth);
+    for (std::size_t i = 0; i < std::min(count, kPrefetchAhead); ++i) PrefetchRows(b, i, grid);
     for (std::size_t i = 0; i < count; ++i) {
+        if (i + kPrefetchAhead < count) PrefetchRows(b, i + kPrefetchAhead, grid);
         const TriangleBox box{
             b.x0[i], b.x1[i], b.y0[i], b.y1[i], b.field[k::kZDx][i], b.field[k::kZKx][i]};
         const int x0 = box.x0, tx0 = box.x0 / kOcclusionTileWidth;
