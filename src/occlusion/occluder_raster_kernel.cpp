@@ -85,15 +85,11 @@ HWY_INLINE RowSpans CoveredRows(const OccluderBatch& b, std::size_t i, const Tri
     const auto l1 = hn::Add(left_x1, hn::Mul(yf, left_step1));
     const auto r0 = hn::Add(right_x0, hn::Mul(yf, right_step0));
     const auto r1 = hn::Add(right_x1, hn::Mul(yf, right_step1));
-    const auto xl = hn::IfThenElse(hn::Gt(l0, l1), l0, l1);
-    const auto xr = hn::IfThenElse(hn::Lt(r0, r1), r0, r1);
+    const auto xl = GreaterOf(l0, l1);
+    const auto xr = LessOf(r0, r1);
     // First covered column and one past the last, clamped to the bounding box.
-    auto lo = hn::Add(xl, half);
-    lo = hn::IfThenElse(hn::Lt(lo, span_lo), span_lo, lo);
-    lo = hn::IfThenElse(hn::Gt(lo, span_hi), span_hi, lo);
-    auto hi = hn::Sub(xr, half);
-    hi = hn::IfThenElse(hn::Lt(hi, span_lo), span_lo, hi);
-    hi = hn::IfThenElse(hn::Gt(hi, span_hi), span_hi, hi);
+    const auto lo = LessOf(span_hi, GreaterOf(span_lo, hn::Add(xl, half)));
+    const auto hi = LessOf(span_hi, GreaterOf(span_lo, hn::Sub(xr, half)));
     RowSpans rows;
     rows.first = TruncInRange(lo);  // lo >= 0: truncation is its floor
     rows.end = hn::IfThenElse(row_valid, TruncInRange(hn::Ceil(hi)), rows.first);
@@ -106,7 +102,7 @@ HWY_INLINE RowSpans CoveredRows(const OccluderBatch& b, std::size_t i, const Tri
         hn::IfThenElse(z_dx_positive, hn::Sub(rows.end, hn::Set(di, 1)), rows.first), origin_x);
     const auto row_bound =
         hn::Add(rows.row_depth, hn::Mul(z_dx, hn::Add(hn::ConvertTo(df, row_extreme), z_kx)));
-    rows.row_bound = hn::IfThenElse(hn::Lt(row_bound, z_max), row_bound, z_max);
+    rows.row_bound = LessOf(row_bound, z_max);
     return rows;
 }
 
@@ -128,7 +124,7 @@ HWY_INLINE void MergeIntoRows(const TileGrid& grid, std::size_t at, hn::Vec<DI> 
     auto merged_mask = hn::IfThenZeroElse(hn::RebindMask(du, discard), mask);
     auto merged_near = hn::IfThenZeroElse(discard, near_depth);
     merged_mask = hn::Or(merged_mask, coverage);
-    merged_near = hn::IfThenElse(hn::Lt(merged_near, z), z, merged_near);
+    merged_near = GreaterOf(z, merged_near);
     const auto full_u = hn::Eq(merged_mask, full_mask);
     const auto full = hn::RebindMask(df, full_u);
     const auto covers_row = hn::RebindMask(df, hn::Eq(coverage, full_mask));
@@ -186,8 +182,7 @@ void RasterizeOccluders(const OccluderBatch& b, std::size_t count, TileGrid grid
                 const auto s = hn::Min(hn::Max(hn::Sub(rows.first, tile_x), zero_i), width_i);
                 const auto e = hn::Min(hn::Max(hn::Sub(rows.end, tile_x), zero_i), width_i);
                 const auto tile_bound = hn::Add(rows.row_depth, hn::Set(df, dx * (column + kx)));
-                const auto z =
-                    hn::IfThenElse(hn::Lt(rows.row_bound, tile_bound), rows.row_bound, tile_bound);
+                const auto z = LessOf(rows.row_bound, tile_bound);
                 MergeIntoRows(grid, row_index(grid, tx, y_first), s, e, z);
             }
         }

@@ -80,14 +80,6 @@ HWY_INLINE WindowLanes ToWindow(const ClipCorner* corners, const SetupView& view
     return t;
 }
 
-// The scalar twin's a < b ? a : b and a > b ? a : b, lane by lane (NaN lanes included).
-HWY_INLINE hn::Vec<DF> SelectMin(hn::Vec<DF> a, hn::Vec<DF> b) {
-    return hn::IfThenElse(hn::Lt(a, b), a, b);
-}
-HWY_INLINE hn::Vec<DF> SelectMax(hn::Vec<DF> a, hn::Vec<DF> b) {
-    return hn::IfThenElse(hn::Gt(a, b), a, b);
-}
-
 // Where a vector of triangles lands: facing, the pixels whose centers it may cover, margins.
 struct FootprintLanes {
     hn::Vec<DF> area2;                 // twice the signed area
@@ -113,24 +105,24 @@ HWY_INLINE FootprintLanes FootprintOf(const WindowLanes& t, const OccluderSource
     if (src.cull_back) box.keep = hn::And(box.keep, front);
     if (src.cull_front) box.keep = hn::AndNot(front, box.keep);
 
-    box.max_abs = SelectMax(hn::Abs(t.x[0]), hn::Abs(t.y[0]));
+    box.max_abs = GreaterOf(hn::Abs(t.x[0]), hn::Abs(t.y[0]));
     auto xmin = t.x[0], xmax = t.x[0], ymin = t.y[0], ymax = t.y[0];
     box.z_max = t.z[0];
     for (int v = 1; v < 3; ++v) {
-        box.max_abs = SelectMax(box.max_abs, hn::Abs(t.x[v]));
-        box.max_abs = SelectMax(box.max_abs, hn::Abs(t.y[v]));
-        xmin = SelectMin(xmin, t.x[v]);
-        xmax = SelectMax(xmax, t.x[v]);
-        ymin = SelectMin(ymin, t.y[v]);
-        ymax = SelectMax(ymax, t.y[v]);
-        box.z_max = SelectMax(box.z_max, t.z[v]);
+        box.max_abs = GreaterOf(box.max_abs, hn::Abs(t.x[v]));
+        box.max_abs = GreaterOf(box.max_abs, hn::Abs(t.y[v]));
+        xmin = LessOf(xmin, t.x[v]);
+        xmax = GreaterOf(xmax, t.x[v]);
+        ymin = LessOf(ymin, t.y[v]);
+        ymax = GreaterOf(ymax, t.y[v]);
+        box.z_max = GreaterOf(box.z_max, t.z[v]);
     }
     box.float_margin = hn::Add(view.float_margin_base, hn::Mul(box.max_abs, margin_per));
     box.margin = hn::Add(view.margin_base, hn::Mul(box.max_abs, margin_per));
-    box.x0 = SelectMax(hn::Ceil(hn::Sub(xmin, half)), zero);
-    box.x1 = SelectMin(hn::Floor(hn::Sub(xmax, half)), view.max_x);
-    box.y0 = SelectMax(hn::Ceil(hn::Sub(hn::Add(ymin, box.margin), half)), zero);
-    box.y1 = SelectMin(hn::Floor(hn::Sub(hn::Sub(ymax, box.margin), half)), view.max_y);
+    box.x0 = GreaterOf(hn::Ceil(hn::Sub(xmin, half)), zero);
+    box.x1 = LessOf(hn::Floor(hn::Sub(xmax, half)), view.max_x);
+    box.y0 = GreaterOf(hn::Ceil(hn::Sub(hn::Add(ymin, box.margin), half)), zero);
+    box.y1 = LessOf(hn::Floor(hn::Sub(hn::Sub(ymax, box.margin), half)), view.max_y);
     box.keep = hn::And(box.keep, hn::And(hn::Le(box.x0, box.x1), hn::Le(box.y0, box.y1)));
     box.row0 = hn::Add(box.y0, half);
     return box;
@@ -195,7 +187,7 @@ HWY_INLINE void SetupDepthPlane(const WindowLanes& t, const FootprintLanes& box,
     const auto gy = hn::Div(hn::Sub(hn::Mul(e1x, e2z), hn::Mul(e2x, e1z)), box.area2);
     const auto err1 = hn::Abs(hn::Sub(hn::Add(hn::Mul(gx, e1x), hn::Mul(gy, e1y)), e1z));
     const auto err2 = hn::Abs(hn::Sub(hn::Add(hn::Mul(gx, e2x), hn::Mul(gy, e2y)), e2z));
-    const auto residual = SelectMax(err1, err2);
+    const auto residual = GreaterOf(err1, err2);
     const auto extent =
         hn::Add(hn::Add(box.max_abs, hn::Sub(box.x1, box.x0)), hn::Sub(box.y1, box.y0));
     auto spread = hn::Mul(hn::Add(hn::Abs(gx), hn::Abs(gy)), hn::Add(extent, hn::Set(df, 4.0f)));

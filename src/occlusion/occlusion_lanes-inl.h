@@ -42,6 +42,33 @@ HWY_INLINE hn::Vec<DI> TruncInRange(hn::Vec<DF> v) {
 #endif
 }
 
+// a < b ? a : b and a > b ? a : b lane by lane, NaN and signed zeros included (the scalar
+// twins' selections). x86's min and max instructions are exactly these (they return the second
+// operand unless the first compares less, or greater): one instruction instead of a compare and
+// a blend. Elsewhere the compare and the select.
+HWY_INLINE hn::Vec<DF> LessOf(hn::Vec<DF> a, hn::Vec<DF> b) {
+#if HWY_ARCH_X86 && HWY_TARGET <= HWY_AVX3
+    return hn::Vec<DF>{_mm512_min_ps(a.raw, b.raw)};
+#elif HWY_ARCH_X86 && HWY_TARGET == HWY_AVX2
+    return hn::Vec<DF>{_mm256_min_ps(a.raw, b.raw)};
+#elif HWY_ARCH_X86 && (HWY_TARGET == HWY_SSE4 || HWY_TARGET == HWY_SSSE3)
+    return hn::Vec<DF>{_mm_min_ps(a.raw, b.raw)};
+#else
+    return hn::IfThenElse(hn::Lt(a, b), a, b);
+#endif
+}
+HWY_INLINE hn::Vec<DF> GreaterOf(hn::Vec<DF> a, hn::Vec<DF> b) {
+#if HWY_ARCH_X86 && HWY_TARGET <= HWY_AVX3
+    return hn::Vec<DF>{_mm512_max_ps(a.raw, b.raw)};
+#elif HWY_ARCH_X86 && HWY_TARGET == HWY_AVX2
+    return hn::Vec<DF>{_mm256_max_ps(a.raw, b.raw)};
+#elif HWY_ARCH_X86 && (HWY_TARGET == HWY_SSE4 || HWY_TARGET == HWY_SSSE3)
+    return hn::Vec<DF>{_mm_max_ps(a.raw, b.raw)};
+#else
+    return hn::IfThenElse(hn::Gt(a, b), a, b);
+#endif
+}
+
 }  // namespace zraster::detail::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
