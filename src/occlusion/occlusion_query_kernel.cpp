@@ -205,6 +205,9 @@ HWY_INLINE bool RectOccludedImpl(const TileGrid& grid, int x0, int y0, int x1, i
     const std::size_t row_stride = 2 * static_cast<std::size_t>(grid.tiles_x);
     const float* levels = grid.coarse + static_cast<std::size_t>(ty0) * row_stride + 2 * tx0;
     bool blocks_read = false;
+    const DU du;
+    const auto smallest = hn::RebindMask(
+        df, hn::Eq(hn::And(hn::Iota(du, 0), hn::Set(du, 1u)), hn::Zero(du)));  // even lanes
     if (tx1 - tx0 < tiles_per_vector) {  // one vector per row of tiles (the usual case)
         // Lanes past tx1 read the next tiles or the padding; in_rect masks them out.
         const auto in_rect = hn::FirstN(df, 2 * static_cast<std::size_t>(tx1 + 1 - tx0));
@@ -221,9 +224,6 @@ HWY_INLINE bool RectOccludedImpl(const TileGrid& grid, int x0, int y0, int x1, i
         // blocks with none, settles most visible rectangles. Both read, one branch: on random
         // rectangles a branch on either alone is unpredictable, and a mispredicted one costs
         // more than both loads.
-        const DU du;
-        const auto smallest = hn::RebindMask(
-            df, hn::Eq(hn::And(hn::Iota(du, 0), hn::Set(du, 1u)), hn::Zero(du)));  // even lanes
         if (!hn::AllFalse(df, hn::Or(hn::And(not_in_front, smallest),
                                      FirstBlocksSeen(grid, x0, y0, x1, y1, d))))
             return false;
@@ -240,8 +240,11 @@ HWY_INLINE bool RectOccludedImpl(const TileGrid& grid, int x0, int y0, int x1, i
             const auto in_rect = hn::FirstN(df, 2 * static_cast<std::size_t>(tx1 + 1 - tx));
             const auto not_in_front =
                 hn::AndNot(hn::Lt(hn::LoadU(df, levels + 2 * (tx - tx0)), d), in_rect);
-            if (!hn::AllFalse(df, not_in_front) &&
-                !SettleTiles(grid, not_in_front, tx, ty, x0, y0, x1, y1, depth, blocks_read))
+            if (hn::AllFalse(df, not_in_front)) continue;
+            // A tile with no bound in front: seen there (most visible rectangles end here,
+            // without the call).
+            if (!hn::AllFalse(df, hn::And(not_in_front, smallest))) return false;
+            if (!SettleTiles(grid, not_in_front, tx, ty, x0, y0, x1, y1, depth, blocks_read))
                 return false;
         }
     }
