@@ -46,8 +46,8 @@ inline void write_texture_fixture(const std::filesystem::path& path) {
     write_png8(path, 4, 4, 4, rgba);
 }
 
-// Companion files a fuzzed input may name: a material library, a texture and a glTF buffer
-// (one triangle: 3 float positions then 3 uint16 indices). Then every file, at most 1 MiB, of
+// Companion files a fuzzed input may name: a material library, a texture, a glTF buffer
+// (one triangle: 3 float positions then 3 uint16 indices) and an OBJ object (o.obj). Then every file, at most 1 MiB, of
 // the directories in $ZRASTER_FUZZ_FIXTURES (colon-separated; fuzz.sh passes the shared glTF
 // folders so that their .bin buffers and textures resolve).
 inline void write_fixtures(const std::filesystem::path& dir) {
@@ -60,6 +60,8 @@ inline void write_fixtures(const std::filesystem::path& dir) {
     std::string bin(reinterpret_cast<const char*>(positions), sizeof positions);
     bin.append(reinterpret_cast<const char*>(indices), sizeof indices);
     write_file(dir / "t.bin", bin);
+    // An object a LightWave scene may load (LoadObjectLayer 1 o.obj).
+    write_file(dir / "o.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     if (const char* list = std::getenv("ZRASTER_FUZZ_FIXTURES")) {
         std::string_view rest(list);
         while (!rest.empty()) {

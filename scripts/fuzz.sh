@@ -20,6 +20,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${ZRASTER_FUZZ_BUILD_DIR:-$root/build-asan}
 seconds=${1:-10}
 all_targets="fuzz_load_obj fuzz_load_ply fuzz_load_stl fuzz_load_gltf fuzz_load_off fuzz_load_3ds
+             fuzz_load_dae fuzz_load_lws
              fuzz_cells fuzz_pipeline fuzz_cluster_cull fuzz_cli fuzz_worker_message fuzz_mesh_view
              fuzz_gltf_graph fuzz_obj_mtl"
 targets=${ZRASTER_FUZZ_TARGETS:-$all_targets}
@@ -44,13 +45,13 @@ shared_patterns() {
         fuzz_load_gltf) echo "*.gltf *.glb" ;;
         fuzz_load_off) echo "*.off" ;;
         fuzz_load_3ds) echo "*.3ds" ;;
+        fuzz_load_dae) echo "*.dae" ;;
     esac
 }
 # Seconds for a target: SECONDS_PER_TARGET, but half of it (at least 1) for the two targets that
 # saturate in seconds (hundreds of thousands of executions a second: fuzz_cluster_cull,
 # fuzz_worker_message) and for the two generator targets (fuzz_gltf_graph, fuzz_obj_mtl, whose
-# inputs all build valid files), so that the short CI run (6 s) keeps within a few seconds of
-# what twelve targets took. Longer runs (ZRASTER_FUZZ_EVEN=1, or SECONDS_PER_TARGET over 60)
+# inputs all build valid files), which keeps the short CI run (6 s) short. Longer runs (ZRASTER_FUZZ_EVEN=1, or SECONDS_PER_TARGET over 60)
 # give every target the full time.
 target_seconds() {
     if [ "${ZRASTER_FUZZ_EVEN:-0}" = 1 ] || [ "$seconds" -gt 60 ]; then
@@ -70,6 +71,8 @@ dictionary() {
         fuzz_load_stl) echo stl ;;
         fuzz_load_gltf) echo gltf ;;
         fuzz_load_off) echo off ;;
+        fuzz_load_dae) echo dae ;;
+        fuzz_load_lws) echo lws ;;
         fuzz_cells) echo cells ;;
         fuzz_cli) echo cli ;;
     esac
