@@ -54,12 +54,6 @@ inline std::int32_t edge_at_row(const BlockJob& job, int k, int y) {
     return static_cast<std::int32_t>(std::int64_t{job.e[k]} + std::int64_t{job.step_y[k]} * y);
 }
 
-// (c + a * dx) + (b * dy): the same operations, in the same order, as PlaneEquation::at.
-template <class D, class V>
-HWY_INLINE V plane_at(D d, const PlaneEquation& p, V dx, float dy) {
-    return hn::Add(hn::Add(hn::Set(d, p.c), hn::Mul(hn::Set(d, p.a), dx)), hn::Set(d, p.b * dy));
-}
-
 // The corner attributes interpolated at barycentrics (b1, b2), as interpolation_weights and
 // interpolate_corners do it, operation for operation. With forward shading the fragments are
 // lit and store(color, TileBuffers::color) writes them; otherwise store(value, array) writes
@@ -144,6 +138,18 @@ int VisibilityRows(DF df, const BlockJob& job, TileBuffers& tile) {
         const auto off1 = hn::Mul(iota, hn::Set(di, job.step_x[1]));
         const auto off2 = hn::Mul(iota, hn::Set(di, job.step_x[2]));
         const auto dx = hn::ConvertTo(df, hn::Iota(di, job.plane_dx + x));
+        // The planes as PlaneEquation::at computes them, (c + a * dx) + (b * dy): the first
+        // sum is the same in every row (read in the loop, the planes were loaded again after
+        // each row's stores, which may alias them).
+        const auto along = [&](const PlaneEquation& p) {
+            return hn::Add(hn::Set(df, p.c), hn::Mul(hn::Set(df, p.a), dx));
+        };
+        const bool perspective = job.barycentrics && job.perspective;
+        const bool linear = job.barycentrics && !job.perspective;
+        const auto depth_x = along(t.depth);
+        const auto q_x = perspective ? along(t.q) : zero_f;
+        const auto b1_x = perspective ? along(t.p1) : linear ? along(t.l1) : zero_f;
+        const auto b2_x = perspective ? along(t.p2) : linear ? along(t.l2) : zero_f;
         for (int y = 0; y < job.height; ++y) {
             auto covered = valid;
             if (!job.full) {
@@ -153,7 +159,10 @@ int VisibilityRows(DF df, const BlockJob& job, TileBuffers& tile) {
                 covered = hn::AndNot(hn::Lt(hn::Or(e0, hn::Or(e1, e2)), zero_i), valid);
             }
             const float dy = static_cast<float>(job.plane_dy + y);
-            auto z = plane_at(df, t.depth, dx, dy);
+            const auto at_row = [&](hn::Vec<DF> row_x, const PlaneEquation& p) {
+                return hn::Add(row_x, hn::Set(df, p.b * dy));
+            };
+            auto z = at_row(depth_x, t.depth);
             z = hn::Add(hn::Min(hn::Max(z, zero_f), one_f), zero_f);
             const std::size_t at =
                 static_cast<std::size_t>((job.y0 + y) * kTileStride + job.x0 + x);
@@ -171,12 +180,12 @@ int VisibilityRows(DF df, const BlockJob& job, TileBuffers& tile) {
             if (!job.barycentrics) continue;
             hn::Vec<decltype(df)> b1, b2;
             if (job.perspective) {
-                const auto q = plane_at(df, t.q, dx, dy);
-                b1 = hn::Div(plane_at(df, t.p1, dx, dy), q);
-                b2 = hn::Div(plane_at(df, t.p2, dx, dy), q);
+                const auto q = at_row(q_x, t.q);
+                b1 = hn::Div(at_row(b1_x, t.p1), q);
+                b2 = hn::Div(at_row(b2_x, t.p2), q);
             } else {
-                b1 = plane_at(df, t.l1, dx, dy);
-                b2 = plane_at(df, t.l2, dx, dy);
+                b1 = at_row(b1_x, t.l1);
+                b2 = at_row(b2_x, t.l2);
             }
             store(hn::Set(du, job.corners ? job.corners->tag : 0u), tile.shade_tag);
             if (job.corners == nullptr) {
@@ -269,7 +278,7 @@ int VisibilityRowGroups(D16 d, const BlockJob& job, TileBuffers& tile) {
             covered = hn::AndNot(hn::Lt(hn::Or(e0, hn::Or(e1, e2)), zero_i), covered);
         }
         const auto dy = hn::ConvertTo(d, hn::Add(row_in_group, hn::Set(di, job.plane_dy + y)));
-        // plane_at with a per-lane dy: (c + a * dx) + (b * dy).
+        // PlaneEquation::at with a per-lane dy: (c + a * dx) + (b * dy).
         const auto plane = [&](const PlaneEquation& p) {
             return hn::Add(hn::Add(hn::Set(d, p.c), hn::Mul(hn::Set(d, p.a), dx)),
                            hn::Mul(hn::Set(d, p.b), dy));
