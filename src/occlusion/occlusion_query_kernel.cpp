@@ -200,8 +200,13 @@ HWY_INLINE bool RectOccludedImpl(const TileGrid& grid, int x0, int y0, int x1, i
     const DF df;
     const int tiles_per_vector = static_cast<int>(hn::Lanes(df)) / 2;
     const auto d = hn::Set(df, depth);
-    const int tx0 = x0 / kOcclusionTileWidth, tx1 = x1 / kOcclusionTileWidth;
-    const int ty0 = y0 / kOcclusionTileHeight, ty1 = y1 / kOcclusionTileHeight;
+    // Pixel bounds are inside the grid (>= 0): tiles by unsigned shifts, without the signed
+    // division's rounding fix-up on the way to the first load.
+    const auto tile_of = [](int p, unsigned side) {
+        return static_cast<int>(static_cast<unsigned>(p) / side);
+    };
+    const int tx0 = tile_of(x0, kOcclusionTileWidth), tx1 = tile_of(x1, kOcclusionTileWidth);
+    const int ty0 = tile_of(y0, kOcclusionTileHeight), ty1 = tile_of(y1, kOcclusionTileHeight);
     const std::size_t row_stride = 2 * static_cast<std::size_t>(grid.tiles_x);
     const float* levels = grid.coarse + static_cast<std::size_t>(ty0) * row_stride + 2 * tx0;
     bool blocks_read = false;
