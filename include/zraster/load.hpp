@@ -81,12 +81,26 @@ struct LoadOptions {
     std::size_t max_texture_bytes = std::size_t{512} << 20;
 
     LoadIsolation isolation = LoadIsolation::InProcess;
-    // WorkerProcess only: wall-clock limit of the child (its CPU time limit is this, rounded up,
-    // plus one second), and the address space it may add to what it inherits (0: no limit). The
-    // scene it sends back may be at most worker_memory_bytes long.
-    double worker_timeout_seconds = 300.0;
-    std::size_t worker_memory_bytes = std::size_t{8} << 30;
+    // WorkerProcess only. The importer's budgets, which bound the parts of a format zraster does
+    // not count before reading (a small file Assimp expands, in memory or in time, stops at them).
+    // The child's wall-clock limit (its CPU time limit is this, rounded up, plus one second);
+    // by default (kWorkerTimeoutFromFile) 30 s plus 1 s per MiB of the file. Past it:
+    // LimitExceeded "worker_timeout_seconds".
+    double worker_timeout_seconds = kWorkerTimeoutFromFile;
+    // The address space the child may add to what it inherits (0: no limit); by default
+    // (kWorkerMemoryFromBudgets) 256 MiB, 4 times the file's bytes and max_geometry_bytes: past
+    // it, LimitExceeded "max_geometry_bytes" (else "worker_memory_bytes"). The scene it sends
+    // back may be at most this long.
+    std::size_t worker_memory_bytes = kWorkerMemoryFromBudgets;
+
+    static constexpr double kWorkerTimeoutFromFile = -1.0;
+    static constexpr std::size_t kWorkerMemoryFromBudgets = ~std::size_t{0};
 };
+
+// The worker's budgets for a file of `file_bytes` under `options` (the defaults above resolved;
+// explicit values as they are).
+ZRASTER_API double worker_timeout_for(std::uint64_t file_bytes, const LoadOptions& options);
+ZRASTER_API std::size_t worker_memory_for(std::uint64_t file_bytes, const LoadOptions& options);
 
 // A file whose name ends in ".cells.json" is a cell graph file (docs/portals.md): the mesh
 // files it names placed as instances, with its cells and portals (Scene::cells, validated). Its

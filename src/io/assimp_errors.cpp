@@ -98,6 +98,13 @@ std::string assimp_error_cause(const std::filesystem::path& path, const std::str
     return "malformed or unsupported " + format + " file" + detail;
 }
 
+void throw_assimp_error(const std::filesystem::path& path, const std::string& text) {
+    const std::string cause = assimp_error_cause(path, text);
+    if (text.find("bad_alloc") != std::string::npos)
+        throw ImporterOutOfMemory(path.string(), cause);
+    throw InputError(path.string(), cause);
+}
+
 std::optional<std::string> assimp_detail(const std::string& cause) {
     const std::size_t at = cause.rfind(kDetail);
     if (at == std::string::npos || !cause.ends_with(")")) return std::nullopt;

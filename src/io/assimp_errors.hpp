@@ -6,6 +6,8 @@
 // here: a table of Assimp's known messages, and a fallback naming the format. Assimp's text stays
 // only as a trailing "(Assimp: ...)" detail.
 #pragma once
+#include <zraster/error.hpp>
+
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -23,5 +25,17 @@ std::optional<std::string> assimp_detail(const std::string& cause);
 
 // The format as messages name it: the extension in capitals ("ASE"), or "3D model".
 std::string format_name(const std::filesystem::path& path);
+
+// Assimp ran out of memory (its std::bad_alloc). In the caller's process an InputError like any
+// other; a worker process exits instead, and its parent names the budget the importer ran out of
+// (load_worker.cpp).
+class ImporterOutOfMemory : public InputError {
+  public:
+    using InputError::InputError;
+};
+
+// Throws the InputError for `path` that Assimp failed to read with message `text` (one line):
+// assimp_error_cause's, as an ImporterOutOfMemory when Assimp ran out of memory.
+[[noreturn]] void throw_assimp_error(const std::filesystem::path& path, const std::string& text);
 
 }  // namespace zraster::io

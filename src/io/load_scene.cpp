@@ -227,17 +227,14 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
     // Points and lines are not drawn: drop them while sorting primitives by type.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    // Assimp's own words only as a detail after ours (assimp_errors.hpp).
-    auto malformed = [&](const std::string& why) {
-        return InputError(file, io::assimp_error_cause(path, io::one_line(why)));
-    };
+    // Assimp's own words only as a detail after ours (io::throw_assimp_error).
     const aiScene* ai = nullptr;
     io::AssimpWarnings assimp_warnings;
     try {
         ai = importer.ReadFile(file, 0);
         if (ai == nullptr && !refusals.empty())
             throw InputError(file, io::refusal_text(refusals.front(), "refused"));
-        if (ai == nullptr) throw malformed(importer.GetErrorString());
+        if (ai == nullptr) io::throw_assimp_error(path, io::one_line(importer.GetErrorString()));
         // (An OBJ's libraries were counted before the import.)
         if (!is_obj(path) && ai->mNumMaterials > options.max_materials)
             throw LimitExceeded(file, "max_materials",
@@ -264,10 +261,10 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
         // normals. FlipUVs gives v = 0 at the image's first row, zraster's convention.
         ai = importer.ApplyPostProcessing(aiProcess_ValidateDataStructure | aiProcess_Triangulate |
                                           aiProcess_SortByPType | aiProcess_FlipUVs);
-        if (ai == nullptr) throw malformed(importer.GetErrorString());
+        if (ai == nullptr) io::throw_assimp_error(path, io::one_line(importer.GetErrorString()));
     } catch (const std::exception& e) {
         if (dynamic_cast<const InputError*>(&e)) throw;
-        throw malformed(e.what());
+        io::throw_assimp_error(path, io::one_line(e.what()));
     }
 
     const std::vector<io::NodeMesh> placements =

@@ -2,6 +2,7 @@
 
 #include <zraster/error.hpp>
 
+#include "io/assimp_errors.hpp"
 #include "io/obj_parser.hpp"
 #include "io/worker_message.hpp"
 
@@ -102,6 +103,15 @@ void set_limit(int resource, std::uintmax_t value) {
     sigset_t none;
     sigemptyset(&none);
     (void)::sigprocmask(SIG_SETMASK, &none, nullptr);
+#ifndef ZRASTER_SANITIZED
+    // Assimp prints to the standard streams (its assertions' "ai_assert failure in ..."): the
+    // parent says what happened, in one line. (Sanitized builds keep them: their reports.)
+    if (const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC); null >= 0) {
+        (void)::dup2(null, STDOUT_FILENO);
+        (void)::dup2(null, STDERR_FILENO);
+        ::close(null);
+    }
+#endif
 #ifdef ZRASTER_SANITIZED
     // libFuzzer's death callback would save the input as a finding from the child.
     __sanitizer_set_death_callback(nullptr);
@@ -124,6 +134,8 @@ void set_limit(int resource, std::uintmax_t value) {
     std::string message;
     try {
         message = encode_scene_message(import_with_assimp(path, options, true, obj_libraries));
+    } catch (const ImporterOutOfMemory&) {
+        child_out_of_memory();  // the parent names the budget
     } catch (const LimitExceeded& e) {
         message = encode_limit_message(e.limit(), e.cause());
     } catch (const InputError& e) {
@@ -146,8 +158,43 @@ std::string signal_name(int sig) {
 
 std::string seconds_text(double s) {
     char text[32];
-    std::snprintf(text, sizeof text, "%g", s);
+    std::snprintf(text, sizeof text, s >= 100 ? "%.0f" : "%.3g", s);
     return text;
+}
+
+std::string mebibytes_text(std::uint64_t bytes) {
+    return std::to_string((bytes + (std::uint64_t{1} << 20) - 1) >> 20) + " MiB";
+}
+
+// The importer ran out of its memory: the budget it was given, named by the option that sets
+// it (max_geometry_bytes when derived from the budgets).
+[[noreturn]] void throw_out_of_memory(const std::string& file, const std::filesystem::path& path,
+                                      std::size_t memory, const LoadOptions& options) {
+    const std::string format = format_name(path);
+    if (memory == 0)
+        throw InputError(file,
+                         "the importer ran out of memory reading it (no limit was set): it "
+                         "expands in a part of the " +
+                             format + " format zraster does not count before reading");
+    if (options.worker_memory_bytes == LoadOptions::kWorkerMemoryFromBudgets)
+        throw LimitExceeded(
+            file, "max_geometry_bytes",
+            "the importer ran out of its " + mebibytes_text(memory) +
+                " (256 MiB, 4 times the file's size and max_geometry_bytes) reading it: it "
+                "expands in a part of the " +
+                format + " format zraster does not count before reading");
+    throw LimitExceeded(file, "worker_memory_bytes",
+                        "the importer ran out of its " + mebibytes_text(memory) +
+                            " (worker_memory_bytes) reading it: it expands in a part of the " +
+                            format + " format zraster does not count before reading");
+}
+
+LimitExceeded out_of_time(const std::string& file, double timeout, const LoadOptions& options) {
+    const bool derived = options.worker_timeout_seconds == LoadOptions::kWorkerTimeoutFromFile;
+    return LimitExceeded(file, "worker_timeout_seconds",
+                         "the importer took longer than " + seconds_text(timeout) + " s" +
+                             (derived ? " (30 s and 1 s per MiB of the file)" : "") +
+                             " and was stopped");
 }
 
 // The child's process: killed and reaped unless it was reaped normally.
@@ -223,6 +270,12 @@ LoadedScene load_in_worker(const std::filesystem::path& path, const LoadOptions&
     const std::string file = path.string();
     // Our own checks (fuzzed, in this process): the common refusals need no child.
     precheck_assimp_input(path, options);
+    // The budgets for this file (the prechecks confirmed it is a regular file).
+    std::error_code size_error;
+    const std::uint64_t file_bytes = std::filesystem::file_size(path, size_error);
+    LoadOptions child_options = options;
+    child_options.worker_timeout_seconds = worker_timeout_for(size_error ? 0 : file_bytes, options);
+    child_options.worker_memory_bytes = worker_memory_for(size_error ? 0 : file_bytes, options);
 
     int fds[2];
     if (::pipe2(fds, O_CLOEXEC) != 0)
@@ -237,22 +290,18 @@ LoadedScene load_in_worker(const std::filesystem::path& path, const LoadOptions&
     }
     if (pid == 0) {
         ::close(fds[0]);
-        child_main(fds[1], path, obj_libraries, options);
+        child_main(fds[1], path, obj_libraries, child_options);
     }
     ::close(fds[1]);
     Child child(pid);
 
-    const double timeout = std::clamp(options.worker_timeout_seconds, 0.0, 1e7);
+    const double timeout = std::clamp(child_options.worker_timeout_seconds, 0.0, 1e7);
     const auto deadline = std::chrono::steady_clock::now() +
                           std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                               std::chrono::duration<double>(timeout));
-    const auto timed_out = [&] {
-        return InputError(
-            file, "the importer took longer than " + seconds_text(timeout) + " s and was stopped");
-    };
-    const std::uint64_t max_payload = options.worker_memory_bytes != 0
-                                          ? std::uint64_t(options.worker_memory_bytes)
-                                          : std::uint64_t(1) << 62;
+    const auto timed_out = [&] { return out_of_time(file, timeout, options); };
+    const std::size_t memory = child_options.worker_memory_bytes;
+    const std::uint64_t max_payload = memory != 0 ? std::uint64_t(memory) : std::uint64_t(1) << 62;
     std::vector<std::uint8_t> message;
     std::uint64_t expected = 0;  // total bytes, once the header is in
     std::vector<std::uint8_t> buffer(1 << 16);
@@ -313,17 +362,14 @@ LoadedScene load_in_worker(const std::filesystem::path& path, const LoadOptions&
     if (!status) throw timed_out();
     if (WIFSIGNALED(*status)) {
         const int sig = WTERMSIG(*status);
-        if (sig == SIGXCPU)
-            throw InputError(file, "the importer exceeded its CPU time limit and was stopped");
+        if (sig == SIGXCPU) throw out_of_time(file, timeout, options);
         if (sig == SIGKILL)
             throw InputError(file,
                              "the importer was killed (" + signal_name(sig) + "; out of memory?)");
         throw InputError(file, "the importer crashed (" + signal_name(sig) + ")");
     }
     if (WIFEXITED(*status) && WEXITSTATUS(*status) == kChildOutOfMemory)
-        throw InputError(file, "the importer ran out of memory (limit " +
-                                   std::to_string(options.worker_memory_bytes >> 20) +
-                                   " MiB beyond the caller's address space)");
+        throw_out_of_memory(file, path, memory, options);
     if (WIFEXITED(*status) && WEXITSTATUS(*status) != 0)
         throw InputError(
             file, "the importer failed (exit status " + std::to_string(WEXITSTATUS(*status)) + ")");
@@ -332,3 +378,23 @@ LoadedScene load_in_worker(const std::filesystem::path& path, const LoadOptions&
 }
 
 }  // namespace zraster::io
+
+namespace zraster {
+
+double worker_timeout_for(std::uint64_t file_bytes, const LoadOptions& options) {
+    if (options.worker_timeout_seconds != LoadOptions::kWorkerTimeoutFromFile)
+        return options.worker_timeout_seconds;
+    return 30.0 + double(file_bytes) / double(1 << 20);
+}
+
+std::size_t worker_memory_for(std::uint64_t file_bytes, const LoadOptions& options) {
+    if (options.worker_memory_bytes != LoadOptions::kWorkerMemoryFromBudgets)
+        return options.worker_memory_bytes;
+    // Saturating: 256 MiB + 4 * file_bytes + max_geometry_bytes.
+    const std::uint64_t most = std::uint64_t{1} << 62;
+    const std::uint64_t bytes = std::min(file_bytes, most / 8) * 4 + (std::uint64_t{256} << 20) +
+                                std::min<std::uint64_t>(options.max_geometry_bytes, most);
+    return std::size_t(std::min(bytes, most));
+}
+
+}  // namespace zraster

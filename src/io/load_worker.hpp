@@ -12,8 +12,10 @@
 namespace zraster::io {
 
 // Runs import_with_assimp(path, options, true, obj_libraries) in a forked child under the limits
-// of `options` and returns the validated scene it sends back. Throws InputError naming the file
-// for a bad file and for a child that crashed, was killed, timed out or ran out of memory.
+// of `options` (worker_timeout_for, worker_memory_for) and returns the validated scene it sends
+// back. Throws InputError naming the file for a bad file and for a child that crashed or was
+// killed; LimitExceeded for one that took longer than its time (worker_timeout_seconds) or ran
+// out of its memory (max_geometry_bytes, or worker_memory_bytes when that was set).
 LoadedScene load_in_worker(const std::filesystem::path& path, const LoadOptions& options,
                            const ObjMaterialLibraries* obj_libraries = nullptr);
 

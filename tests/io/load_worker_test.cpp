@@ -183,8 +183,8 @@ TEST(LoadWorker, HangIsStoppedAtTheTimeout) {
     LoadOptions options = worker_options();
     options.worker_timeout_seconds = 0.5;
     const auto start = std::chrono::steady_clock::now();
-    test::expect_input_error([&] { load_scene(path, options); }, path,
-                             "the importer took longer than 0.5 s and was stopped");
+    test::expect_limit_exceeded([&] { load_scene(path, options); }, path, "worker_timeout_seconds",
+                                "the importer took longer than 0.5 s and was stopped");
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
 }
 
@@ -196,7 +196,8 @@ TEST(LoadWorker, BusyLoopIsStoppedAtTheTimeout) {
     });
     LoadOptions options = worker_options();
     options.worker_timeout_seconds = 0.5;
-    test::expect_input_error([&] { load_scene(path, options); }, path, "the importer took longer");
+    test::expect_limit_exceeded([&] { load_scene(path, options); }, path, "worker_timeout_seconds",
+                                "the importer took longer");
 }
 
 TEST(LoadWorker, UnboundedAllocationHitsTheMemoryLimit) {
@@ -216,8 +217,45 @@ TEST(LoadWorker, UnboundedAllocationHitsTheMemoryLimit) {
     // AddressSanitizer's allocator reports the failed mapping itself and exits with status 1.
     test::expect_input_error([&] { load_scene(path, options); }, path, "the importer");
 #else
-    test::expect_input_error([&] { load_scene(path, options); }, path,
-                             "the importer ran out of memory (limit 256 MiB");
+    test::expect_limit_exceeded([&] { load_scene(path, options); }, path, "worker_memory_bytes",
+                                "the importer ran out of its 256 MiB (worker_memory_bytes)");
+#endif
+}
+
+// By default the importer's budgets follow the file and the loader's budgets: a small file in
+// a format zraster does not count before reading cannot take the importer past them.
+TEST(LoadWorker, DefaultBudgetsFollowTheFileAndTheGeometryBudget) {
+    LoadOptions options;
+    EXPECT_EQ(worker_timeout_for(0, options), 30.0);
+    EXPECT_EQ(worker_timeout_for(std::uint64_t{100} << 20, options), 130.0);
+    EXPECT_EQ(worker_memory_for(1000, options),
+              (std::size_t{256} << 20) + 4000 + options.max_geometry_bytes);
+    options.max_geometry_bytes = std::size_t{2} << 30;
+    EXPECT_EQ(worker_memory_for(std::uint64_t{1} << 30, options),
+              (std::size_t{256} << 20) + (std::size_t{4} << 30) + (std::size_t{2} << 30));
+    EXPECT_GE(worker_memory_for(~std::uint64_t{0}, options), std::size_t{1} << 61);  // saturates
+    options.worker_timeout_seconds = 5;
+    options.worker_memory_bytes = 123;
+    EXPECT_EQ(worker_timeout_for(1 << 30, options), 5.0);
+    EXPECT_EQ(worker_memory_for(1 << 30, options), 123u);
+}
+
+// A 38-byte NFF file whose sphere Assimp tessellates 10 times (21 million triangles): 6.4 GB
+// in the importer. With the default memory budget it stops at 256 MiB + 152 bytes +
+// max_geometry_bytes, named as max_geometry_bytes, the flag a user raises.
+TEST(LoadWorker, AFileThatExpandsInTheImporterStopsAtTheGeometryBudget) {
+    const auto dir = test::temp_dir("io-worker-expands");
+    const auto path = dir / "tess.nff";
+    test::write_bytes(path, "tess 10\nf 1 0 0 0 0 0 0 0 0\ns 0 0 0 1\n");
+    LoadOptions options = worker_options();
+    options.max_geometry_bytes = std::size_t{64} << 20;
+#ifdef ZRASTER_TEST_ASAN
+    test::expect_input_error([&] { load_scene(path, options); }, path, "the importer");
+#else
+    test::expect_limit_exceeded([&] { load_scene(path, options); }, path, "max_geometry_bytes",
+                                "the importer ran out of its 321 MiB (256 MiB, 4 times the "
+                                "file's size and max_geometry_bytes) reading it: it expands in a "
+                                "part of the NFF format zraster does not count before reading");
 #endif
 }
 

@@ -64,10 +64,13 @@ std::string limit_advice(const std::string& limit) {
         {"max_triangles", "--max-triangles"},
         {"max_memory", "--max-memory"},
         {"max_triangulation_work", "--max-triangulation-work"},
+        {"worker_timeout_seconds", "--max-load-seconds"},
     };
     static const std::pair<const char*, const char*> kSizeFlags[] = {
         {"max_geometry_bytes", "--max-geometry-memory"},
         {"max_frame_bytes", "--max-frame-bytes"},
+        // Set by batch only (its per-job memory).
+        {"worker_memory_bytes", "--max-memory"},
     };
     for (const auto& [name, flag] : kFlags)
         if (limit == name) return fmt::format("; raise it with {} N", flag);
@@ -175,6 +178,12 @@ void set_max_triangulation_work(std::uint64_t max_work) {
     g_max_triangulation_work = max_work;
 }
 
+double g_max_load_seconds = LoadOptions{}.worker_timeout_seconds;
+
+void set_max_load_seconds(double seconds) {
+    g_max_load_seconds = seconds;
+}
+
 void set_max_geometry_bytes(std::size_t max_bytes) {
     g_max_geometry_bytes = max_bytes;
 }
@@ -215,6 +224,7 @@ LoadOptions command_load_options() {
     options.max_texture_bytes = g_max_texture_bytes;
     options.max_geometry_bytes = g_max_geometry_bytes;
     options.max_triangulation_work = g_max_triangulation_work;
+    options.worker_timeout_seconds = g_max_load_seconds;
     return options;
 }
 

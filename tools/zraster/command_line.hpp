@@ -74,6 +74,9 @@ void set_max_materials(std::size_t max_materials);
 void set_max_load_triangles(std::size_t max_triangles);
 // --max-triangulation-work (LoadOptions::max_triangulation_work).
 void set_max_triangulation_work(std::uint64_t max_work);
+// The importer's time in its worker process (LoadOptions::worker_timeout_seconds; by default
+// LoadOptions::kWorkerTimeoutFromFile).
+void set_max_load_seconds(double seconds);
 // --max-geometry-memory (LoadOptions::max_geometry_bytes).
 void set_max_geometry_bytes(std::size_t max_bytes);
 // --max-texture-side and --max-texture-memory (LoadOptions::max_texture_side, max_texture_bytes).

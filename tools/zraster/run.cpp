@@ -96,11 +96,18 @@ int run_zraster(std::vector<std::string> args) {
                    "corners^2 than this (the importer's triangulation takes quadratic time)")
         ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40))
         ->capture_default_str();
+    double max_load_seconds = 0;
+    app.add_option("--max-load-seconds", max_load_seconds,
+                   "Stop the importer (Assimp, in its worker process) after this many seconds "
+                   "(default: 30 s plus 1 s per MiB of the file)")
+        ->check(CLI::Range(1.0, 1e6));
     std::string max_geometry_memory = "1G";
     app.add_option("--max-geometry-memory", max_geometry_memory,
                    "Refuse glTF files the importer would decode to more bytes than this (e.g. "
                    "2G; an accessor counts once per primitive that reads it; buffers, animation "
-                   "keys, skin bones per placement and materials count too)")
+                   "keys, skin bones per placement and materials count too), COLLADA and "
+                   "LightWave scenes that expand past it; the importer's memory in its worker "
+                   "process is 256 MiB, 4 times the file's size and this")
         ->capture_default_str();
     int max_texture_side = LoadOptions{}.max_texture_side;
     app.add_option("--max-texture-side", max_texture_side,
@@ -176,6 +183,8 @@ int run_zraster(std::vector<std::string> args) {
     set_max_materials(max_materials);
     set_max_load_triangles(max_load_triangles);
     set_max_triangulation_work(max_triangulation_work);
+    set_max_load_seconds(max_load_seconds > 0 ? max_load_seconds
+                                              : LoadOptions::kWorkerTimeoutFromFile);
     try {
         set_texture_limits(max_texture_side,
                            parse_byte_size("--max-texture-memory", max_texture_memory));
