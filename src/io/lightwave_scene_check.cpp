@@ -2,6 +2,7 @@
 
 #include <zraster/error.hpp>
 
+#include "io/obj_parser.hpp"
 #include "io/reference_policy.hpp"
 #include "io/text_util.hpp"
 
@@ -10,6 +11,7 @@
 #include <fstream>
 #include <map>
 #include <string>
+#include <string_view>
 #include <system_error>
 
 namespace zraster::io {
@@ -38,6 +40,36 @@ std::string lws_object_path(std::string_view line) {
     if (line.size() >= 2 && line.front() == '"' && line.back() == '"')
         line = line.substr(1, line.size() - 2);
     return std::string(line);
+}
+
+bool is_lightwave_scene(const std::filesystem::path& object) {
+    std::string extension = object.extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (extension == ".lws") return true;
+    std::ifstream in(object, std::ios::binary);
+    char head[4] = {};
+    in.read(head, sizeof head);
+    return in.gcount() == 4 && std::string_view(head, 4) == "LWSC";
+}
+
+// An object is read as the file it is, with the checks it would have if it were given directly
+// (the budgets of its format); a scene among the objects is refused (Assimp read one loading
+// itself until its stack overflowed, and two loading each other until stopped).
+void check_object(const std::filesystem::path& object, const std::string& name,
+                  const std::string& file, const LoadOptions& options) {
+    if (is_lightwave_scene(object))
+        throw InputError(file, "its object '" + name +
+                                   "' is a LightWave scene: a scene loads objects, not scenes");
+    const auto in_scene = [&](const InputError& e) {
+        return "its object '" + name + "': " + e.cause();
+    };
+    try {
+        (void)precheck_assimp_input(object, options);
+    } catch (const LimitExceeded& e) {
+        throw LimitExceeded(file, e.limit(), in_scene(e));
+    } catch (const InputError& e) {
+        throw InputError(file, in_scene(e));
+    }
 }
 
 }  // namespace
@@ -74,6 +106,7 @@ void check_lightwave_scene(const std::filesystem::path& path, const LoadOptions&
                                         "its object '" + name + "' is " + std::to_string(size) +
                                             " bytes, more than max_file_bytes (" +
                                             std::to_string(options.max_file_bytes) + ")");
+                check_object(object, name, file, options);
             }
             it = sizes.emplace(name, size).first;
         }

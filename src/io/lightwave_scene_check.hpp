@@ -2,7 +2,8 @@
 // every object and combines the scenes in time quadratic in the number of loads (20,000 loads of
 // a one-triangle object: 17 s; 100,000 of a 48 KB object did not finish in a minute). The scene
 // is scanned first: each object must be a readable file the reference policy allows (else an
-// InputError naming it) within max_file_bytes, and the loads are counted.
+// InputError naming it) within max_file_bytes, pass the checks it would have if given directly
+// and not be a scene itself; and the loads are counted.
 #pragma once
 #include <zraster/load.hpp>
 

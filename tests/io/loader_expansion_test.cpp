@@ -219,6 +219,40 @@ TEST(LoaderExpansion, LightWaveObjectLoadsAreCountedBeforeTheImport) {
     }
 }
 
+// A scene's objects are checked as if they were given directly (a COLLADA graph of 2^20
+// placements took the importer to 7.8 GB through a scene), and a scene among them is refused
+// (one loading itself crashed Assimp; two loading each other ran until stopped).
+TEST(LoaderExpansion, LightWaveObjectsAreCheckedAsTheFilesTheyAre) {
+    const auto dir = test::temp_dir("expansion-lws-objects");
+    test::write_bytes(dir / "graph.dae", expansion_collada_graph(20));
+    const auto graph = dir / "graph.lws";
+    test::write_bytes(graph, expansion_lightwave_scene("graph.dae", 1));
+    const auto self = dir / "self.lws";
+    test::write_bytes(self, expansion_lightwave_scene("self.lws", 1));
+    const auto a = dir / "a.lws", b = dir / "b.lws";
+    test::write_bytes(a, expansion_lightwave_scene("b.lws", 1));
+    test::write_bytes(b, "LWSC\n3\n\nLoadObjectLayer 1 a.lws\n");
+    test::write_bytes(dir / "renamed.obj", "LWSC\n3\n");
+    const auto renamed = dir / "renamed.lws";
+    test::write_bytes(renamed, expansion_lightwave_scene("renamed.obj", 1));
+    for (const LoadIsolation isolation : kExpansionIsolations) {
+        SCOPED_TRACE(expansion_isolation_name(isolation));
+        LoadOptions o;
+        o.isolation = isolation;
+        expect_refused_quickly([&] {
+            test::expect_limit_exceeded([&] { load_scene(graph, o); }, graph, "max_instances",
+                                        "its object 'graph.dae': its nodes place 1048576 meshes");
+            test::expect_input_error([&] { load_scene(self, o); }, self,
+                                     "its object 'self.lws' is a LightWave scene: a scene loads "
+                                     "objects, not scenes");
+            test::expect_input_error([&] { load_scene(a, o); }, a,
+                                     "its object 'b.lws' is a LightWave scene");
+            test::expect_input_error([&] { load_scene(renamed, o); }, renamed,
+                                     "its object 'renamed.obj' is a LightWave scene");
+        });
+    }
+}
+
 // Whatever else an importer opens is held to max_file_bytes too, before it is read.
 TEST(LoaderExpansion, TheImportersFilesAreHeldToTheFileSizeLimit) {
     const auto dir = test::temp_dir("expansion-io-size");
