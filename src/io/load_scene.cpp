@@ -16,6 +16,7 @@
 #include "io/gltf_material_types.hpp"
 #include "io/input_file_check.hpp"
 #include "io/load_worker.hpp"
+#include "io/mirrored_mesh.hpp"
 #include "io/mtl_dissolve.hpp"
 #include "io/named_files.hpp"
 #include "io/obj_index_scan.hpp"
@@ -323,12 +324,25 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
 
     if (recomputed) warnings.push_back(io::recomputed_normals_warning(*recomputed));
 
+    // A node that mirrors its mesh (a negative determinant) keeps the mesh's outside facing out:
+    // glTF defines the winding by the determinant, and modelling tools draw mirrored copies the
+    // same way. The renderer culls by the winding on screen, as OpenGL does, so such placements
+    // draw a copy of the mesh whose triangles turn the other way (one per mesh).
+    std::vector<unsigned> mirrored_mesh(ai->mNumMeshes, kUnset);
     for (const io::NodeMesh& p : placements) {
         if (our_mesh[p.mesh] == kUnset) continue;
-        const Mesh& mesh = scene.meshes[our_mesh[p.mesh]];
-        check_instance_finite(mesh, p.transform, labels[p.mesh], file);
+        check_instance_finite(scene.meshes[our_mesh[p.mesh]], p.transform, labels[p.mesh], file);
+        unsigned drawn = our_mesh[p.mesh];
+        if (glm::determinant(glm::mat3(p.transform)) < 0.0f) {
+            if (mirrored_mesh[p.mesh] == kUnset) {
+                mirrored_mesh[p.mesh] = static_cast<unsigned>(scene.meshes.size());
+                scene.meshes.push_back(io::with_winding_reversed(scene.meshes[drawn]));
+            }
+            drawn = mirrored_mesh[p.mesh];
+        }
+        const Mesh& mesh = scene.meshes[drawn];
         Instance instance;
-        instance.mesh = our_mesh[p.mesh];
+        instance.mesh = drawn;
         instance.transform = p.transform;
         instance.name = p.node_name.empty() ? mesh.name : p.node_name;
         scene.instances.push_back(std::move(instance));

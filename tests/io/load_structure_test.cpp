@@ -1,11 +1,13 @@
 // What load_scene builds: node transforms as instances, computed normals, welded OBJ vertices,
 // the uv convention, and what it keeps (degenerate triangles) or drops (points, lines).
 #include <zraster/load.hpp>
+#include <zraster/render.hpp>
 
 #include "io/io_test_util.hpp"
 #include "support/test_support.hpp"
 
 #include <cstring>
+#include <map>
 
 namespace zraster {
 namespace {
@@ -82,6 +84,64 @@ TEST(LoadStructure, NodeTransformsAccumulateParentFirst) {
     // Mesh bounds stay in mesh space.
     EXPECT_EQ(scene.meshes[0].bounds.lo, glm::vec3(0, 0, 0));
     EXPECT_EQ(scene.meshes[0].bounds.hi, glm::vec3(1, 1, 0));
+}
+
+// glTF: "the determinant of the node's global transform defines the winding order". A mirrored
+// placement draws a copy of the mesh turned the other way (one copy, shared by every mirrored
+// placement), so its outside faces out: the renderer, like OpenGL, culls by screen winding.
+TEST(LoadStructure, MirroredPlacementsKeepTheMeshsOutsideFacingOut) {
+    const auto dir = test::temp_dir("io-structure-mirrored");
+    const auto path = write_gltf(dir, R"([
+        {"name": "plain", "mesh": 0},
+        {"name": "mirrored", "translation": [3, 0, 0], "scale": [-1, 1, 1], "mesh": 0},
+        {"name": "mirrored twice", "scale": [-1, -1, 1], "translation": [0, 3, 0], "mesh": 0},
+        {"name": "parent", "matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1, 0, 0, 0, 0, 1],
+         "children": [4]},
+        {"name": "child of a mirror", "translation": [6, 0, 0], "mesh": 0}])",
+                                 "[0, 1, 2, 3]");
+    const Scene scene = load_scene(path);
+    ASSERT_EQ(scene.meshes.size(), 2u);
+    EXPECT_EQ(scene.meshes[0].indices, (std::vector<std::uint32_t>{0, 1, 2}));
+    EXPECT_EQ(scene.meshes[1].indices, (std::vector<std::uint32_t>{0, 2, 1}));
+    EXPECT_EQ(scene.meshes[1].name, "tri (mirrored)");
+    EXPECT_EQ(scene.meshes[1].positions, scene.meshes[0].positions);
+    std::map<std::string, std::uint32_t> mesh_of;
+    for (const Instance& i : scene.instances) mesh_of[i.name] = i.mesh;
+    EXPECT_EQ(mesh_of["plain"], 0u);
+    EXPECT_EQ(mesh_of["mirrored"], 1u);
+    EXPECT_EQ(mesh_of["mirrored twice"], 0u);  // a half turn, not a mirror
+    EXPECT_EQ(mesh_of["child of a mirror"], 1u);
+
+    // Drawn with back faces culled, each seen from 3 units in front of its middle on +z (the
+    // side the triangle faces): a mirrored placement shows as many pixels as the plain one,
+    // give or take the pixels its mirrored edges round to (it was culled whole before).
+    RenderOptions options;
+    options.width = 256;
+    options.height = 256;
+    options.cull = CullMode::Back;
+    options.id_targets = true;
+    const auto covered = [&](const char* name) {
+        Scene one = scene;
+        std::erase_if(one.instances, [&](const Instance& i) { return i.name != name; });
+        const Bounds3f box = one.bounds();
+        const glm::vec3 middle = 0.5f * (box.lo + box.hi);
+        Camera camera;
+        camera.eye = glm::dvec3(middle) + glm::dvec3(0, 0, 3);
+        camera.target = glm::dvec3(middle);
+        camera.near = 0.5;
+        camera.far = 10;
+        options.camera = camera;
+        const RenderResult result = render(one, options);
+        std::size_t n = 0;
+        for (const std::int32_t id : result.targets.instance_id) n += id >= 0;
+        return n;
+    };
+    const std::size_t plain = covered("plain");
+    EXPECT_GT(plain, 2000u);
+    EXPECT_NEAR(double(covered("mirrored")), double(plain), 0.1 * double(plain));
+    EXPECT_NEAR(double(covered("mirrored twice")), double(plain), 0.1 * double(plain));
+    // The z mirror turns the triangle to face -z: seen from +z it is its back, culled.
+    EXPECT_EQ(covered("child of a mirror"), 0u);
 }
 
 TEST(LoadStructure, TransformThatOverflowsIsNonFinite) {
