@@ -1,7 +1,9 @@
 // numpy arrays in: the checks and the one copy, when one is needed, of arrays.hpp.
 #include "arrays.hpp"
 
+#include <zraster/error.hpp>
 #include <zraster/precision.hpp>
+#include <zraster/render.hpp>
 
 #include <cmath>
 #include <cstdint>
@@ -63,6 +65,11 @@ FloatRows float_rows(py::handle object, std::size_t columns, const std::string& 
     if (a.ndim() != 2 || a.shape(1) != py::ssize_t(columns))
         input_error(argument,
                     "expected shape (N, " + std::to_string(columns) + "), got " + shape_text(a));
+    // Before any copy: a broadcast view of 10^9 rows is a few bytes, its copy 11 GiB.
+    if (const std::uint64_t most = RenderLimits{}.max_vertices; std::uint64_t(a.shape(0)) > most)
+        throw LimitExceeded(argument, "max_vertices",
+                            std::to_string(a.shape(0)) + " rows, more than the renderer's " +
+                                std::to_string(most) + " vertices");
     FloatRows rows;
     // Referenced as it is: float32 in native order, each row's floats adjacent, rows at a
     // positive stride (a stride of 0, numpy's broadcast rows, means "packed" to a MeshView).
@@ -95,7 +102,15 @@ Indices triangle_indices(py::handle object, std::size_t vertex_count, const std:
     const bool shape_ok =
         (a.ndim() == 2 && a.shape(1) == 3) || (a.ndim() == 1 && a.size() % 3 == 0);
     if (!shape_ok) input_error(argument, "expected shape (M, 3) or (3M,), got " + shape_text(a));
-    if (a.size() > 0) {
+    // Before any copy or temporary: a broadcast view of 3 * 10^9 indices is a few bytes.
+    if (const std::uint64_t most = RenderLimits{}.max_triangles; std::uint64_t(a.size() / 3) > most)
+        throw LimitExceeded(argument, "max_triangles",
+                            std::to_string(a.size() / 3) + " triangles, more than the renderer's " +
+                                std::to_string(most));
+    // The range by the smallest and largest index (no temporary the size of the array); the
+    // first index out of range is looked for only then.
+    if (a.size() > 0 && (a.attr("min")().attr("__lt__")(0).cast<bool>() ||
+                         a.attr("max")().attr("__ge__")(vertex_count).cast<bool>())) {
         py::object flat = a.attr("reshape")(-1);
         py::object bad = numpy().attr("flatnonzero")(
             (flat.attr("__lt__")(0)).attr("__or__")(flat.attr("__ge__")(vertex_count)));

@@ -48,20 +48,26 @@ void bind_errors(py::module_& m) {
         "a render limit): an InputError. e.limit names the budget, the keyword or LoadOptions "
         "field that raises it.";
     limit_exceeded->attr("limit") = "";
+    // Messages quote file names, which need not be UTF-8: their bytes come back as the
+    // surrogate escapes Python gave them (os.fsencode's inverse), never a decoding error.
+    static const auto text = [](const std::string& s) {
+        return py::reinterpret_steal<py::str>(
+            PyUnicode_DecodeUTF8(s.data(), py::ssize_t(s.size()), "surrogateescape"));
+    };
     // NOLINTNEXTLINE(performance-unnecessary-value-param): pybind11's translator signature
     py::register_exception_translator([](std::exception_ptr p) {
         try {
             if (p) std::rethrow_exception(p);
         } catch (const LimitExceeded& e) {
-            py::object error = py::handle(limit_exceeded->ptr())(e.what());
-            error.attr("source") = e.file();
-            error.attr("cause") = e.cause();
+            py::object error = py::handle(limit_exceeded->ptr())(text(e.what()));
+            error.attr("source") = text(e.file());
+            error.attr("cause") = text(e.cause());
             error.attr("limit") = e.limit();
             PyErr_SetObject(limit_exceeded->ptr(), error.ptr());
         } catch (const InputError& e) {
-            py::object error = py::handle(exception->ptr())(e.what());
-            error.attr("source") = e.file();
-            error.attr("cause") = e.cause();
+            py::object error = py::handle(exception->ptr())(text(e.what()));
+            error.attr("source") = text(e.file());
+            error.attr("cause") = text(e.cause());
             PyErr_SetObject(exception->ptr(), error.ptr());
         }
     });

@@ -132,9 +132,12 @@ std::shared_ptr<PyScene> load(const py::object& path_object, const std::string& 
                               const py::object& max_materials) {
     if (!py::isinstance<py::str>(path_object) && !py::hasattr(path_object, "__fspath__"))
         type_error("path", "a str or os.PathLike", path_object);
-    const auto path = py::module_::import("os").attr("fspath")(path_object);
+    const auto os = py::module_::import("os");
+    const auto path = os.attr("fspath")(path_object);
     if (!py::isinstance<py::str>(path)) type_error("path", "a str path", path);
-    const std::string spec = path.cast<std::string>();
+    // The file system's bytes for the name, as Python's open() uses them: a name that is not
+    // UTF-8 (a surrogate-escaped byte, '\udcff') is a valid path, not a conversion error.
+    const std::string spec = os.attr("fsencode")(path).cast<std::string>();
     // The system would read the path only up to it (Python's own open() refuses it too).
     if (spec.find('\0') != std::string::npos)
         input_error("path", "contains a NUL character: no file has such a name");

@@ -171,6 +171,23 @@ def test_bad_files():
         zraster.load("sphere:x")
     with raises(TypeError, "path", "int"):
         zraster.load(42)
+    # A name that is not UTF-8 is a path like any other (os.fsencode's bytes), not a conversion
+    # error.
+    with raises(zraster.InputError, "file not found") as info:
+        zraster.load("/no/such/\udcff.obj")
+    assert info.value.source == "/no/such/\udcff.obj"
+
+
+def test_huge_broadcast_arrays_are_refused_before_any_copy():
+    # A few bytes each as numpy views; copied, 36 GB and 11 GiB.
+    indices = np.broadcast_to(np.uint32(0), (3 * 10**9,))
+    with raises(zraster.LimitExceeded, "indices", "1000000000 triangles, more than") as info:
+        zraster.Mesh(TRIANGLE, indices)
+    assert info.value.limit == "max_triangles"
+    positions = np.broadcast_to(np.float32(0), (10**9, 3))
+    with raises(zraster.LimitExceeded, "positions", "1000000000 rows, more than") as info:
+        zraster.Mesh(positions, FACES)
+    assert info.value.limit == "max_vertices"
 
 
 # Ten levels of two children each above a node placing one triangle: 1024 placements.

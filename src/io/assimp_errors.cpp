@@ -52,6 +52,10 @@ constexpr Translation kTranslations[] = {
     {"Unable to open file", "cannot be opened"},
     {"Failed to open", "not a valid {} file: the importer could not open its contents"},
     {"is out of range", "a face names a vertex past the mesh's vertices"},
+    {"is already referenced by this node", "malformed {} file: a node places the same mesh twice"},
+    {"there are more than one nodes with",
+     "malformed {} file: a camera or light is placed by two nodes (a node with two parents?)"},
+    {"has the same name as aiMesh::mBones", "malformed {} file: a skin names the same joint twice"},
     {"Validation failed", "malformed {} file: the importer made an inconsistent scene of it"},
 };
 

@@ -1,6 +1,7 @@
 #include "io/confined_io_system.hpp"
 
 #include "io/mtl_for_assimp.hpp"
+#include "io/uri_escapes.hpp"
 
 #include <assimp/MemoryIOWrapper.h>
 
@@ -19,7 +20,7 @@ std::string refusal_text(const std::string& line, const std::string& verb) {
     return line.substr(0, mark) + ": " + verb + line.substr(mark + 1);
 }
 
-bool ConfinedIOSystem::allowed(const char* file) const {
+bool ConfinedIOSystem::allowed(const std::string& file) const {
     const ReferencePolicy::Check check = policy_.check(file);
     if (check.verdict == ReferencePolicy::Verdict::Refused) {
         std::string line = "'";
@@ -44,15 +45,28 @@ bool ConfinedIOSystem::allowed(const char* file) const {
     return true;
 }
 
+void ConfinedIOSystem::decode_uris_of(const std::string& model) {
+    // Assimp's glTF importers join a URI to the text before the model's last slash.
+    const std::size_t slash = model.find_last_of('/');
+    uri_folder_ = slash == std::string::npos ? std::string() : model.substr(0, slash + 1);
+}
+
+std::string ConfinedIOSystem::on_disk(const char* file) const {
+    const std::string text(file);
+    if (!uri_folder_ || !text.starts_with(*uri_folder_)) return text;
+    return uri_file(std::filesystem::path(*uri_folder_), text.substr(uri_folder_->size())).string();
+}
+
 bool ConfinedIOSystem::Exists(const char* file) const {
-    return allowed(file);
+    return allowed(on_disk(file));
 }
 
 Assimp::IOStream* ConfinedIOSystem::Open(const char* file, const char* mode) {
     // Only reading is confined; Assimp's importers never write.
-    if (!allowed(file)) return nullptr;
-    Assimp::IOStream* stream = Assimp::DefaultIOSystem::Open(file, mode);
-    if (stream == nullptr || !rewrite_libraries_ || obj_model_ == file) return stream;
+    const std::string name = on_disk(file);
+    if (!allowed(name)) return nullptr;
+    Assimp::IOStream* stream = Assimp::DefaultIOSystem::Open(name.c_str(), mode);
+    if (stream == nullptr || !rewrite_libraries_ || obj_model_ == name) return stream;
     std::string text(stream->FileSize(), '\0');
     const std::size_t read = text.empty() ? 0 : stream->Read(text.data(), 1, text.size());
     Close(stream);

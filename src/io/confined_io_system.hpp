@@ -5,6 +5,7 @@
 #include <assimp/DefaultIOSystem.h>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,16 +39,22 @@ class ConfinedIOSystem : public Assimp::DefaultIOSystem {
     // referenced file whole (a LightWave scene's 20 GiB object hung the loader).
     void limit_file_size(std::uintmax_t max_bytes) { max_bytes_ = max_bytes; }
 
+    // A model whose importer joins URIs to its folder as written (glTF): a file missing under
+    // that name but present under the URI's decoded name (%XX escapes) is the decoded one.
+    void decode_uris_of(const std::string& model);
+
     bool Exists(const char* file) const override;
     Assimp::IOStream* Open(const char* file, const char* mode = "rb") override;
 
   private:
-    bool allowed(const char* file) const;
+    bool allowed(const std::string& file) const;
+    std::string on_disk(const char* file) const;  // the file `file` names (decode_uris_of)
     ReferencePolicy policy_;
     std::vector<std::string>& refusals_;
     bool rewrite_libraries_ = false;
     std::string obj_model_;
     std::uintmax_t max_bytes_ = ~std::uintmax_t{0};
+    std::optional<std::string> uri_folder_;  // the model's folder as the importer spells it
 };
 
 }  // namespace zraster::io

@@ -5,6 +5,7 @@
 #include "io/gltf_schema_check.hpp"
 #include "io/reference_policy.hpp"
 #include "io/text_util.hpp"
+#include "io/uri_escapes.hpp"
 
 #include <zraster/error.hpp>
 
@@ -122,7 +123,7 @@ class Checker {
                             "only (a relative URI such as 'data.bin')");
                 if (text.starts_with("data:")) {
                     data = data_uri_bytes(text);
-                } else if (const auto file = path_.parent_path() / text;
+                } else if (const auto file = uri_file(path_.parent_path(), text);
                            policy_.check(file).verdict == ReferencePolicy::Verdict::Readable) {
                     // (A refused file is left to the loader, which names it.)
                     std::error_code ec;

@@ -222,7 +222,10 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
     const io::ReferencePolicy policy(path, options.allow_outside_references);
     std::vector<std::string> refusals;
     auto* io_system = new io::ConfinedIOSystem(policy, refusals);
-    if (is_obj(path)) io_system->rewrite_material_libraries(file);
+    if (is_obj(path))
+        io_system->rewrite_material_libraries(file);
+    else
+        io_system->decode_uris_of(file);
     io_system->limit_file_size(options.max_file_bytes);
     importer.SetIOHandler(io_system);  // the importer owns it
     // Points and lines are not drawn: drop them while sorting primitives by type.

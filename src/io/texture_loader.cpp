@@ -4,6 +4,7 @@
 #include "io/image_decode.hpp"
 #include "io/read_file.hpp"
 #include "io/text_util.hpp"
+#include "io/uri_escapes.hpp"
 
 #include <zraster/error.hpp>
 #include <zraster/image_io.hpp>
@@ -37,23 +38,6 @@ std::size_t texture_bytes(const Texture& texture) {
 
 constexpr const char* kBudgetOption =
     "LoadOptions::max_texture_bytes; the command's --max-texture-memory";
-
-// %XX escapes, as glTF URIs may carry them ("my%20texture.png").
-std::optional<std::string> percent_decoded(const std::string& s) {
-    if (s.find('%') == std::string::npos) return std::nullopt;
-    std::string out;
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        if (s[i] == '%' && i + 2 < s.size() &&
-            std::isxdigit(static_cast<unsigned char>(s[i + 1])) &&
-            std::isxdigit(static_cast<unsigned char>(s[i + 2]))) {
-            out.push_back(static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16)));
-            i += 2;
-        } else {
-            out.push_back(s[i]);
-        }
-    }
-    return out;
-}
 
 }  // namespace
 

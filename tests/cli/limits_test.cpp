@@ -226,7 +226,21 @@ TEST(CliLimits, AFrameWithNothingInViewWarns) {
          "depth test: the image shows only the background (is --depth-format d16 too coarse for "
          "the near and far planes?)\n"},
         {"render builtin:cube -o a.png --size 32x32 --depth-format d16", ""},
+        // In view, every triangle turned away (the eye inside a closed mesh).
+        {"render sphere:500 -o a.png --size 32x32 --eye 0,0,0.1 --target 0,0,-1",
+         "warning: sphere:500: the 308 triangles in view all face away from the camera and were "
+         "culled (--cull back): the image shows only the background (--cull none draws both "
+         "sides)\n"},
+        {"render sphere:500 -o a.png --size 32x32 --eye 0,0,0.1 --target 0,0,-1 --cull none", ""},
+        // Every surface fully transparent (an OBJ material of d 0).
+        {"render clear.obj -o a.png --size 32x32",
+         "warning: clear.obj: every surface in it is fully transparent (opacity 0 or below its "
+         "alpha cutoff, or vertex colors of alpha 0): the image shows only the background "
+         "(--alpha-mode opaque draws them opaque)\n"},
+        {"render clear.obj -o a.png --size 32x32 --alpha-mode opaque", ""},
     };
+    write(dir / "clear.mtl", "newmtl m\nKd 1 0 0\nd 0\n");
+    write(dir / "clear.obj", "mtllib clear.mtl\nusemtl m\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     for (const auto& [arguments, message] : cases) {
         SCOPED_TRACE(arguments);
         const CommandResult r = run_zraster(arguments, dir);

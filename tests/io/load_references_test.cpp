@@ -70,6 +70,28 @@ TEST(LoadReferences, GltfBufferOutsideTheFolderIsRefusedByName) {
     EXPECT_EQ(load_scene(model, in_process(true)).triangle_count(), 1u);
 }
 
+// glTF URIs may carry %XX escapes: "my%20model.bin" names "my model.bin" (the name as written
+// first: a file may have a '%' in its name), and an escaped "../" is outside like any other.
+TEST(LoadReferences, GltfBufferUrisAreReadWithTheirEscapesDecoded) {
+    const auto dir = fixture("refs-escapes");
+    test::write_bytes(dir / "model" / "my model.bin", triangle_bytes());
+    test::write_bytes(dir / "model" / "100%25.bin", triangle_bytes());
+    const auto spaced = dir / "model" / "spaced.gltf";
+    test::write_bytes(spaced, triangle_gltf("my%20model.bin"));
+    const auto literal = dir / "model" / "literal.gltf";
+    test::write_bytes(literal, triangle_gltf("100%25.bin"));
+    const auto escaped_up = dir / "model" / "up.gltf";
+    test::write_bytes(escaped_up, triangle_gltf("%2e%2e/outside.bin"));
+    for (const LoadIsolation isolation : {LoadIsolation::InProcess, LoadIsolation::WorkerProcess}) {
+        LoadOptions o = in_process();
+        o.isolation = isolation;
+        EXPECT_EQ(load_scene(spaced, o).triangle_count(), 1u);
+        EXPECT_EQ(load_scene(literal, o).triangle_count(), 1u);
+        test::expect_input_error([&] { load_scene(escaped_up, o); }, escaped_up,
+                                 "../outside.bin' is outside the model's folder");
+    }
+}
+
 TEST(LoadReferences, AbsolutePathsAndSymbolicLinksOutAreRefused) {
     const auto dir = fixture("refs-links");
     // An absolute URI (Assimp 5.2 joins it to the model's folder when the model's path is

@@ -18,6 +18,31 @@
 
 namespace zraster::cli {
 
+namespace {
+
+// Whether no surface of the scene can show: each instanced mesh's material blended at opacity
+// 0 or masked below its cutoff, or its vertex colors all of alpha 0 (textures aside: they may
+// hold alpha 1).
+bool fully_transparent(const Scene& scene) {
+    if (scene.instances.empty()) return false;
+    for (const Instance& instance : scene.instances) {
+        const Mesh& mesh = scene.meshes[instance.mesh];
+        const Material& m = scene.materials[mesh.material];
+        if (m.alpha_mode == AlphaMode::Opaque) return false;
+        const bool untextured = m.base_color_texture == nullptr && m.opacity_texture == nullptr;
+        const bool clear = untextured && (m.alpha_mode == AlphaMode::Mask
+                                              ? m.opacity < m.alpha_cutoff && mesh.colors.empty()
+                                              : m.opacity == 0.0f);
+        const bool colors_clear =
+            !mesh.colors.empty() && std::all_of(mesh.colors.begin(), mesh.colors.end(),
+                                                [](const glm::vec4& c) { return c.w == 0.0f; });
+        if (!clear && !colors_clear) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
 void check_render_outputs(const RenderArguments& a, OutputFiles& outputs) {
     if (a.output.empty()) throw InputError("-o", "the output path is empty");
     check_output(outputs, a.output, {".png"}, "-o");
@@ -78,6 +103,25 @@ RenderedFrame render_outputs(const RenderArguments& a, const Scene& scene, Outpu
                    "pixel center): the image shows only the background\n",
                    scene.name, scene.triangle_count(), s.instances_frustum_culled, s.instances,
                    s.triangles_trivially_rejected + s.triangles_clipped, s.triangles_no_coverage);
+    // Every triangle in view turned away: the camera inside a closed mesh, or a model wound
+    // the other way round.
+    else if (notes != nullptr && renders_with_pipeline(a) && options.view == DebugView::None &&
+             s.triangles_rasterized == 0 && s.triangles_backface_culled > 0)
+        fmt::print(notes,
+                   "warning: {}: the {} triangles in view all face away from the camera and were "
+                   "culled (--cull {}): the image shows only the background (--cull none draws "
+                   "both sides)\n",
+                   scene.name, s.triangles_backface_culled,
+                   options.cull == CullMode::Front ? "front" : "back");
+    // Surfaces that draw nothing: every material fully transparent, or every vertex color's
+    // alpha 0 (an AMF file without colors, as Assimp reads it).
+    else if (notes != nullptr && renders_with_pipeline(a) && options.view == DebugView::None &&
+             s.triangles_rasterized > 0 && s.fragments_passed == 0 && fully_transparent(scene))
+        fmt::print(notes,
+                   "warning: {}: every surface in it is fully transparent (opacity 0 or below its "
+                   "alpha cutoff, or vertex colors of alpha 0): the image shows only the "
+                   "background (--alpha-mode opaque draws them opaque)\n",
+                   scene.name);
     // Triangles in view, none of whose fragments passed: a depth format too coarse for the
     // near/far ratio rounds every depth to the cleared far plane (d16, near 1e-20).
     else if (notes != nullptr && renders_with_pipeline(a) && options.view == DebugView::None &&
