@@ -701,7 +701,9 @@ row "38-byte NFF whose sphere Assimp tessellates 10 times (6.4 GB in the importe
 printf 'AC3Db\nMATERIAL "m" rgb 1 1 1  amb 0.2 0.2 0.2  emis 0 0 0  spec 0 0 0  shi 10  trans 0\nOBJECT world\nkids 1\nOBJECT poly\nsubdiv 14\nnumvert 4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\nnumsurf 1\nSURF 0x10\nmat 0\nrefs 4\n0 0 0\n1 0 0\n2 0 0\n3 0 0\nkids 0\n' >subdiv14.ac
 row "AC3D quad subdivided 14 times (7.7 GB, past 60 s)" render subdiv14.ac -o out.png
 printf 'LWSC\n3\n\nFirstFrame 1\nLastFrame 1\n\nLoadObjectLayer 1 loop.lws\n' >loop.lws
-row "LightWave scene loading itself, with --max-load-seconds 2" --max-load-seconds 2 render loop.lws -o out.png
+row "LightWave scene loading itself" render loop.lws -o out.png
+buffer_gltf %2e%2e/secret.bin >model/escaped.gltf
+row "glTF buffer URI %2e%2e/secret.bin (an escaped ../)" render model/escaped.gltf -o out.png
 rm -rf out.d out.png z.npy
 echo
 echo "$n inputs; $failures broke the contract (exit 2, one line, nothing left)."
