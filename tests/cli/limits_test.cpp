@@ -462,6 +462,10 @@ TEST(CliLimits, WholeNumbersAreReadInDecimal) {
                    "zraster: --fovy: expected a decimal number, got '60 '\n");
     expect_refused(dir, "render builtin:cube --fovy 0x1p5 -o out.png",
                    "zraster: --fovy: expected a decimal number, got '0x1p5'\n");
+    // Digits past the option's type (CLI11: "Could not convert: --threads = ...").
+    expect_refused(dir, "render builtin:cube --threads 9223372036854775808 -o out.png",
+                   "zraster: --threads: '9223372036854775808' is past the largest number it takes "
+                   "(--help gives its range)\n");
     // An option given twice (CLI11: "At Most 1 required but received 2").
     expect_refused(dir, "render builtin:cube -o out.png -o out.png",
                    "zraster: --output: given 2 times: give it once\n");

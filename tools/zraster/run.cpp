@@ -31,6 +31,15 @@ namespace {
 
 // CLI11's words for an option given twice ("--output: At Most 1 required but received 2").
 std::string parse_error_cause(const std::string& text) {
+    // A whole number of digits only (read_numbers_in_decimal checked them) past its type.
+    const std::string_view conversion = "Could not convert: ";
+    if (text.starts_with(conversion)) {
+        const std::size_t equals = text.find(" = ", conversion.size());
+        if (equals != std::string::npos)
+            return text.substr(conversion.size(), equals - conversion.size()) + ": '" +
+                   text.substr(equals + 3) +
+                   "' is past the largest number it takes (--help gives its range)";
+    }
     const std::string_view marker = ": At Most 1 required but received ";
     const std::size_t at = text.find(marker);
     if (at == std::string::npos) return text;
