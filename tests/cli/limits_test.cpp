@@ -326,6 +326,12 @@ TEST(CliLimits, FlagsWithoutEffectAreRefused) {
         {"render builtin:cube -o out.png --aa 4 --msaa --no-depth-write",
          "zraster: --no-depth-write: sets the z-buffer's depth test, which --msaa does not use "
          "(its samples keep the nearest surface)\n"},
+        {"render builtin:cube -o out.png --visibility painter --reversed-z",
+         "zraster: --reversed-z: stores depth reversed, which changes only the --depth-out image "
+         "with --visibility painter: give --depth-out, or leave it out\n"},
+        {"svg builtin:cube -o out.svg --reversed-z",
+         "zraster: --reversed-z: stores depth reversed: svg orders polygons (--order), it keeps "
+         "no depth buffer\n"},
         {"render builtin:cube -o out.png --edge-color 255,0,0",
          "zraster: --edge-color: colors the edges of --wireframe or --hidden-line: give one of "
          "them\n"},

@@ -35,6 +35,13 @@ void check_depth_test_flags(const RenderArguments& a) {
                              "sets the depth test: --wireframe draws every edge, with no "
                              "depth test");
     if (a.visibility == "zbuffer" && !a.msaa) return;
+    // The object-space algorithms draw by their own ordering: reversed depth changes only the
+    // depth image they write.
+    if (a.reversed_z && a.depth_out.empty())
+        throw InputError("--reversed-z",
+                         "stores depth reversed, which changes only the --depth-out image with " +
+                             (a.msaa ? std::string("--msaa") : "--visibility " + a.visibility) +
+                             ": give --depth-out, or leave it out");
     if (const char* flag = depth_test_flag(a))
         throw InputError(flag, a.msaa ? "sets the z-buffer's depth test, which --msaa does not "
                                         "use (its samples keep the nearest surface)"
@@ -165,6 +172,10 @@ void check_svg_flags_take_effect(const RenderArguments& a, bool edges, bool edge
         throw InputError(flag,
                          "sets the z-buffer's depth test: svg orders polygons (--order), "
                          "it keeps no depth buffer");
+    if (a.reversed_z)
+        throw InputError("--reversed-z",
+                         "stores depth reversed: svg orders polygons (--order), it keeps no "
+                         "depth buffer");
     if (!edges && (a.edge_color != RenderArguments{}.edge_color || edge_width_given))
         throw InputError(edge_width_given ? "--edge-width" : "--edge-color",
                          "styles the outlines --edges draws: give --edges");
