@@ -51,6 +51,8 @@ constexpr Translation kTranslations[] = {
     {"No meshes loaded", "no meshes in it (is it a {} file?)"},
     {"Unable to open file", "cannot be opened"},
     {"Failed to open", "not a valid {} file: the importer could not open its contents"},
+    {"Buffer view with offset/length",
+     "malformed {} file: a buffer view reaches past its buffer's data (a buffer without data?)"},
     {"is out of range", "a face names a vertex past the mesh's vertices"},
     {"is already referenced by this node", "malformed {} file: a node places the same mesh twice"},
     {"there are more than one nodes with",

@@ -59,8 +59,20 @@ void copy_colors(const aiMesh& source, const MeshConversion& how, Mesh& mesh,
         }
         mesh.colors[v] = glm::vec4(in[0], in[1], in[2], in[3]);
     }
-    bool alpha_zero = true;
-    for (const glm::vec4& c : mesh.colors) alpha_zero &= c.w == 0.0f;
+    bool alpha_zero = true, all_zero = true;
+    for (const glm::vec4& c : mesh.colors) {
+        alpha_zero &= c.w == 0.0f;
+        all_zero &= c == glm::vec4(0.0f);
+    }
+    // Every color (0, 0, 0, 0): what Assimp gives an AMF file that has none. Multiplied in, it
+    // would hide the mesh; read as no colors.
+    if (all_zero && how.color_alpha != GltfColorAlpha::Opaque) {
+        mesh.colors.clear();
+        warnings.push_back("mesh " + label +
+                           ": vertex colors all (0, 0, 0, 0), as the importer reads a file "
+                           "without colors: ignored");
+        return;
+    }
     if (how.color_alpha == GltfColorAlpha::Opaque ||
         (how.color_alpha == GltfColorAlpha::OpaqueWhereZero && alpha_zero))
         for (glm::vec4& c : mesh.colors) c.w = 1.0f;

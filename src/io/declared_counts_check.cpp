@@ -355,8 +355,17 @@ void check_ply(const std::filesystem::path& path, const std::string& head, std::
         if (keyword != "property" && keyword != "comment" && keyword != "element")
             in_element = false;
         if (keyword == "format") {
-            std::string kind;
-            words >> kind;
+            std::string kind, version;
+            words >> kind >> version;
+            // The three formats of PLY 1.0 (Assimp took binary_middle_endian and version 2.0).
+            if ((kind != "ascii" && kind != "binary_little_endian" &&
+                 kind != "binary_big_endian") ||
+                version != "1.0")
+                throw InputError(path.string(),
+                                 "malformed PLY file: 'format " + one_line(kind) + " " +
+                                     one_line(version) +
+                                     "': the format is ascii, binary_little_endian or "
+                                     "binary_big_endian, version 1.0");
             ascii = kind == "ascii";
             big_endian = kind == "binary_big_endian";
         } else if (keyword == "element") {
@@ -383,6 +392,18 @@ void check_ply(const std::filesystem::path& path, const std::string& head, std::
                 property.item_bytes = ply_scalar_size(item);
                 property.item_float =
                     item == "float" || item == "float32" || item == "double" || item == "float64";
+                // A face's corners are vertex numbers (Assimp truncated a float index 2.5 to 2).
+                if (property.item_float && words.peek() != EOF) {
+                    std::string name;
+                    std::istringstream rest(words.str().substr(std::size_t(words.tellg())));
+                    rest >> name;
+                    if (name == "vertex_indices" || name == "vertex_index")
+                        throw InputError(path.string(),
+                                         "malformed PLY file: the list '" + one_line(name) +
+                                             "' holds vertex numbers as " + item +
+                                             ": they are integers (char, uchar, short, ushort, "
+                                             "int, uint)");
+                }
                 const auto is_signed = [](const std::string& t) {
                     return t == "char" || t == "int8" || t == "short" || t == "int16" ||
                            t == "int" || t == "int32";

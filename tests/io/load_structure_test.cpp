@@ -144,6 +144,30 @@ TEST(LoadStructure, MirroredPlacementsKeepTheMeshsOutsideFacingOut) {
     EXPECT_EQ(covered("child of a mirror"), 0u);
 }
 
+// Assimp gives an AMF file without colors vertex colors of (0, 0, 0, 0): multiplied in, they
+// hid every mesh. Read as no colors, with a warning.
+TEST(LoadStructure, VertexColorsAllZeroAreReadAsNone) {
+    const auto dir = test::temp_dir("io-structure-zero-colors");
+    const auto path = dir / "t.amf";
+    test::write_bytes(path,
+                      R"(<?xml version="1.0" encoding="UTF-8"?><amf unit="millimeter">)"
+                      R"(<object id="0"><mesh><vertices>)"
+                      R"(<vertex><coordinates><x>0</x><y>0</y><z>0</z></coordinates></vertex>)"
+                      R"(<vertex><coordinates><x>1</x><y>0</y><z>0</z></coordinates></vertex>)"
+                      R"(<vertex><coordinates><x>0</x><y>1</y><z>0</z></coordinates></vertex>)"
+                      R"(</vertices><volume><triangle><v1>0</v1><v2>1</v2><v3>2</v3>)"
+                      R"(</triangle></volume></mesh></object></amf>)");
+    std::vector<std::string> warnings;
+    const Scene scene = load_scene(path, LoadOptions{}, &warnings);
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    EXPECT_TRUE(scene.meshes[0].colors.empty());
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("vertex colors all (0, 0, 0, 0), as the importer reads a file "
+                               "without colors: ignored"),
+              std::string::npos)
+        << warnings[0];
+}
+
 TEST(LoadStructure, TransformThatOverflowsIsNonFinite) {
     const auto dir = test::temp_dir("io-structure-overflow");
     const auto path = write_gltf(dir, R"([

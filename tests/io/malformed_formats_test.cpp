@@ -225,6 +225,21 @@ std::vector<Malformed> malformed_files() {
          "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 4294967296\n",
          "malformed PLY file: face 0 names vertex 4294967296, but the file has 3 vertices (0 to "
          "2)"},
+        // PLY 1.0's three formats only (Assimp read binary_middle_endian and version 2.0), and
+        // vertex numbers that are integers (it truncated a float 2.5 to 2).
+        {"middle-endian.ply",
+         "ply\nformat binary_middle_endian 1.0\nelement vertex 3\nproperty float x\nend_header\n",
+         "malformed PLY file: 'format binary_middle_endian 1.0': the format is ascii, "
+         "binary_little_endian or binary_big_endian, version 1.0"},
+        {"version-2.ply", "ply\nformat ascii 2.0\nelement vertex 3\nproperty float x\nend_header\n",
+         "malformed PLY file: 'format ascii 2.0': the format is ascii, binary_little_endian or "
+         "binary_big_endian, version 1.0"},
+        {"float-index.ply",
+         "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+         "property float z\nelement face 1\nproperty list uchar float vertex_indices\n"
+         "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2.5\n",
+         "malformed PLY file: the list 'vertex_indices' holds vertex numbers as float: they are "
+         "integers (char, uchar, short, ushort, int, uint)"},
         {"negative-count.ply",
          "ply\nformat ascii 1.0\nelement vertex -1\nproperty float x\nend_header\n",
          "malformed PLY file: element 'vertex' declares the count '-1', not a number of 0 or "
