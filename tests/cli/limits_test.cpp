@@ -226,6 +226,14 @@ TEST(CliLimits, AFrameWithNothingInViewWarns) {
          "depth test: the image shows only the background (is --depth-format d16 too coarse for "
          "the near and far planes?)\n"},
         {"render builtin:cube -o a.png --size 32x32 --depth-format d16", ""},
+        // The object-space algorithms and supersampling: an image of the background alone.
+        {"render builtin:cube -o a.png --size 8x8 --visibility painter --near 1e29 --far 1e30",
+         "warning: builtin:cube: nothing of its 12 triangles was drawn: the image shows only the "
+         "background (is the camera or a clip plane leaving it out?)\n"},
+        {"render builtin:cube -o a.png --size 8x8 --aa 2 --clip-plane 1,0,0,-5",
+         "warning: builtin:cube: nothing of its 12 triangles was drawn: the image shows only the "
+         "background (is the camera or a clip plane leaving it out?)\n"},
+        {"render builtin:cube -o a.png --size 8x8 --visibility warnock", ""},
         // In view, every triangle turned away (the eye inside a closed mesh).
         {"render sphere:500 -o a.png --size 32x32 --eye 0,0,0.1 --target 0,0,-1",
          "warning: sphere:500: the 308 triangles in view all face away from the camera and were "

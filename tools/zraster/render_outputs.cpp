@@ -8,7 +8,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "debug_view_legend.hpp"
@@ -38,6 +40,18 @@ bool fully_transparent(const Scene& scene) {
                                                 [](const glm::vec4& c) { return c.w == 0.0f; });
         if (!clear && !colors_clear) return false;
     }
+    return true;
+}
+
+// Every pixel the background's color (to the rounding of its conversion): nothing drawn.
+bool only_background(const RenderTargets& t, const glm::vec3& background) {
+    if (t.color.size() < 4) return false;
+    for (int k = 0; k < 3; ++k) {
+        const long expected = std::lround(std::clamp(background[k], 0.0f, 1.0f) * 255.0f);
+        if (std::labs(long(t.color[std::size_t(k)]) - expected) > 1) return false;
+    }
+    for (std::size_t i = 4; i < t.color.size(); i += 4)
+        if (std::memcmp(&t.color[i], t.color.data(), 4) != 0) return false;
     return true;
 }
 
@@ -113,6 +127,14 @@ RenderedFrame render_outputs(const RenderArguments& a, const Scene& scene, Outpu
                    "both sides)\n",
                    scene.name, s.triangles_backface_culled,
                    options.cull == CullMode::Front ? "front" : "back");
+    // The object-space algorithms, MSAA and supersampling keep no pipeline counts: an image of
+    // the background alone says the same (a camera or clip planes that exclude everything).
+    else if (notes != nullptr && !renders_with_pipeline(a) && options.view == DebugView::None &&
+             !a.wireframe && scene.triangle_count() > 0 && only_background(t, options.background))
+        fmt::print(notes,
+                   "warning: {}: nothing of its {} triangles was drawn: the image shows only the "
+                   "background (is the camera or a clip plane leaving it out?)\n",
+                   scene.name, scene.triangle_count());
     // Surfaces that draw nothing: every material fully transparent, or every vertex color's
     // alpha 0 (an AMF file without colors, as Assimp reads it).
     else if (notes != nullptr && renders_with_pipeline(a) && options.view == DebugView::None &&
