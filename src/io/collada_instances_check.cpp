@@ -63,6 +63,16 @@ std::string_view xml_local_name(std::string_view name) {
     return colon == std::string_view::npos ? name : name.substr(colon + 1);
 }
 
+// Assimp reads nested nodes, and the nodes <instance_node> places, recursively: 100,000 levels
+// overflowed its stack. No model needs a thousand.
+constexpr std::size_t kMaxColladaDepth = 1000;
+InputError too_deep(const std::string& file) {
+    return InputError(file, "malformed COLLADA file: its nodes nest more than " +
+                                std::to_string(kMaxColladaDepth) +
+                                " levels deep (within each other or placed by <instance_node>; "
+                                "the importer reads them recursively)");
+}
+
 }  // namespace
 
 ColladaExpansion count_collada_expansion(std::string_view doc, const std::string& file) {
@@ -110,6 +120,7 @@ ColladaExpansion count_collada_expansion(std::string_view doc, const std::string
             else if (scene != kNoVisualScene)
                 scenes[scene].roots.push_back(index);
             if (!empty_element) open.push_back(index);
+            if (open.size() > kMaxColladaDepth) throw too_deep(file);
         } else if (name == "visual_scene") {
             scenes.push_back(VisualScene{xml_attribute(rest, "id"), {}});
             scene = empty_element ? kNoVisualScene : static_cast<std::uint32_t>(scenes.size() - 1);
@@ -139,6 +150,7 @@ ColladaExpansion count_collada_expansion(std::string_view doc, const std::string
     enum : std::uint8_t { kNew, kActive, kDone };
     std::vector<std::uint8_t> state(nodes.size(), kNew);
     std::vector<ColladaExpansion> expansion(nodes.size());
+    std::vector<std::size_t> depth(nodes.size(), 0);  // levels of the expanded subtree
     auto visit = [&](std::uint32_t root) {
         struct Frame {
             std::uint32_t node;
@@ -167,14 +179,19 @@ ColladaExpansion count_collada_expansion(std::string_view doc, const std::string
                 continue;
             }
             ColladaExpansion e{1, std::min(kManyColladaNodes, node.geometries)};
+            std::size_t levels = 1;
             for (std::uint32_t c : node.children) {
                 e.nodes = collada_sum(e.nodes, expansion[c].nodes);
                 e.placements = collada_sum(e.placements, expansion[c].placements);
+                levels = std::max(levels, depth[c] + 1);
             }
             for (std::uint32_t c : node.instances) {
                 e.nodes = collada_sum(e.nodes, expansion[c].nodes);
                 e.placements = collada_sum(e.placements, expansion[c].placements);
+                levels = std::max(levels, depth[c] + 1);
             }
+            if (levels > kMaxColladaDepth) throw too_deep(file);
+            depth[f.node] = levels;
             expansion[f.node] = e;
             state[f.node] = kDone;
             stack.pop_back();
@@ -201,22 +218,24 @@ void check_collada_instances(const std::filesystem::path& path, const LoadOption
     auto count = [](std::uint64_t n) {
         return n >= kManyColladaNodes ? "more than 2^62" : std::to_string(n);
     };
+    // (The parenthesis only where the file has <instance_node>s: they are what multiplies.)
+    const bool copies = doc.find("<instance_node") != std::string::npos;
     if (e.placements > options.max_instances)
-        throw LimitExceeded(file, "max_instances",
-                            "its nodes place " + count(e.placements) +
-                                " meshes (nodes placed again by <instance_node> multiply), more "
-                                "than max_instances (" +
-                                std::to_string(options.max_instances) + ")");
+        throw LimitExceeded(
+            file, "max_instances",
+            "its nodes place " + count(e.placements) + " meshes" +
+                (copies ? " (nodes placed again by <instance_node> multiply)" : "") +
+                ", more than max_instances (" + std::to_string(options.max_instances) + ")");
     // (e.nodes is at most 2^62: in long double the product is exact enough and cannot wrap.)
     const long double bytes = static_cast<long double>(e.nodes) * kColladaBytesPerNode;
     if (bytes > static_cast<long double>(options.max_geometry_bytes))
-        throw LimitExceeded(file, "max_geometry_bytes",
-                            "its node hierarchy expands to " + count(e.nodes) +
-                                " nodes (nodes placed again by <instance_node> are copied), "
-                                "about " +
-                                std::to_string(static_cast<std::uint64_t>(bytes / (1 << 20))) +
-                                " MiB, more than max_geometry_bytes (" +
-                                std::to_string(options.max_geometry_bytes >> 20) + " MiB)");
+        throw LimitExceeded(
+            file, "max_geometry_bytes",
+            "its node hierarchy expands to " + count(e.nodes) + " nodes" +
+                (copies ? " (nodes placed again by <instance_node> are copied)" : "") + ", about " +
+                std::to_string(static_cast<std::uint64_t>(bytes / (1 << 20))) +
+                " MiB, more than max_geometry_bytes (" +
+                std::to_string(options.max_geometry_bytes >> 20) + " MiB)");
 }
 
 }  // namespace zraster::io

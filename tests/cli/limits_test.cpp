@@ -496,6 +496,18 @@ TEST(CliLimits, CameraNumbersHaveRanges) {
         {"--near 1e-30", "--near: must be in 1e-20..1e30 scene units, not 1e-30"},
         {"--far 1e38", "--far: must be in 1e-20..1e30 scene units, not 1e+38"},
         {"--near 5 --far 1", "--near: 5 is not below --far 1: the view needs near < far"},
+        // One given, the other from the camera fit (the scene's name was blamed).
+        {"--near 1e30",
+         "--near: 1e+30 is not below the far plane 5.21347 of the camera: the "
+         "view needs near < far (give --far too)"},
+        {"--far 1e-20",
+         "--far: 1e-20 is not beyond the near plane 1.71473 of the camera: the "
+         "view needs near < far (give --near too)"},
+        {"--clip-plane 1,0,0,0 --clip-plane 1,0,0,0 --clip-plane 1,0,0,0 --clip-plane 1,0,0,0 "
+         "--clip-plane 1,0,0,0 --clip-plane 1,0,0,0 --clip-plane 1,0,0,0",
+         "--clip-plane: given 7 times: at most 6 planes"},
+        {"--visibility abuffer --aa 16",
+         "--aa: with --visibility abuffer must be 1, 2, 4 or 8 (its mask's samples a pixel side)"},
         {"--ortho --ortho-height 1e31",
          "--ortho-height: must be in 1e-20..1e30 scene units, not 1e+31"},
         {"--up 1e-40,0,0", "--up: the direction is zero (or shorter than 1e-30)"},

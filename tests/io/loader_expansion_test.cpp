@@ -219,6 +219,51 @@ TEST(LoaderExpansion, LightWaveObjectLoadsAreCountedBeforeTheImport) {
     }
 }
 
+// Nodes nested (or chained by <instance_node>) past 1,000 levels are refused before Assimp,
+// which reads them recursively: 100,000 levels crashed it in process.
+TEST(LoaderExpansion, ColladaNodesNestedPastAThousandLevelsAreRefused) {
+    const auto dir = test::temp_dir("expansion-dae-deep");
+    const std::string head = expansion_collada_graph(1);
+    const auto nested = [&](int levels) {
+        std::string nodes;
+        for (int k = 0; k < levels; ++k) nodes += "<node id=\"d" + std::to_string(k) + "\">";
+        nodes += "<instance_geometry url=\"#g\"/>";
+        for (int k = 0; k < levels; ++k) nodes += "</node>";
+        std::string doc = head;
+        const std::string scene = "<visual_scene id=\"s\">";
+        const std::size_t at = doc.find(scene) + scene.size();
+        doc.insert(at, nodes);
+        return doc;
+    };
+    const auto chain = [&](int levels) {  // d0 places d1, ..., each once
+        std::string library;
+        for (int k = 0; k + 1 < levels; ++k)
+            library += "<node id=\"c" + std::to_string(k) + "\"><instance_node url=\"#c" +
+                       std::to_string(k + 1) + "\"/></node>";
+        library += "<node id=\"c" + std::to_string(levels - 1) +
+                   "\"><instance_geometry url=\"#g\"/></node>";
+        std::string doc = head;
+        doc.insert(doc.find("<library_nodes>") + 15, library);
+        const std::string scene = "<visual_scene id=\"s\">";
+        doc.insert(doc.find(scene) + scene.size(),
+                   "<node id=\"top\"><instance_node url=\"#c0\"/></node>");
+        return doc;
+    };
+    test::write_bytes(dir / "ok.dae", nested(100));
+    test::write_bytes(dir / "deep.dae", nested(1001));
+    test::write_bytes(dir / "chain.dae", chain(1001));
+    for (const LoadIsolation isolation : kExpansionIsolations) {
+        SCOPED_TRACE(expansion_isolation_name(isolation));
+        LoadOptions o;
+        o.isolation = isolation;
+        EXPECT_GE(load_scene(dir / "ok.dae", o).instances.size(), 1u);
+        for (const char* name : {"deep.dae", "chain.dae"})
+            test::expect_input_error([&] { load_scene(dir / name, o); }, dir / name,
+                                     "malformed COLLADA file: its nodes nest more than 1000 "
+                                     "levels deep");
+    }
+}
+
 // A scene's objects are checked as if they were given directly (a COLLADA graph of 2^20
 // placements took the importer to 7.8 GB through a scene), and a scene among them is refused
 // (one loading itself crashed Assimp; two loading each other ran until stopped).

@@ -3,6 +3,7 @@
 #include "render_arguments.hpp"
 
 #include <zraster/abuffer.hpp>
+#include <zraster/clip.hpp>
 #include <zraster/depth_buffer.hpp>
 #include <zraster/scenes.hpp>
 
@@ -352,6 +353,18 @@ RenderOptions make_render_options(const RenderArguments& a,
         throw InputError(
             "--near",
             fmt::format("{} is not below --far {}: the view needs near < far", *a.near, *a.far));
+    // One of them given, the other from the camera fit (or the caller's camera).
+    if ((a.near || a.far) && !o.camera->infinite_far && !a.infinite_far &&
+        !(o.camera->near < o.camera->far))
+        throw a.near
+            ? InputError("--near", fmt::format("{:g} is not below the far plane {:g} of the "
+                                               "camera: the view needs near < far (give "
+                                               "--far too)",
+                                               o.camera->near, o.camera->far))
+            : InputError("--far", fmt::format("{:g} is not beyond the near plane {:g} of "
+                                              "the camera: the view needs near < far "
+                                              "(give --near too)",
+                                              o.camera->far, o.camera->near));
     // A given camera keeps its own depth conventions unless the flags add to them.
     if (!camera || a.reversed_z) o.camera->reversed_z = a.reversed_z;
     if (!camera || a.infinite_far) o.camera->infinite_far = a.infinite_far;
@@ -468,6 +481,13 @@ void check_frame_arguments(const RenderArguments& a) {
         throw InputError("--aa", "with --msaa must be 1, 2, 4 or 8");
     if (a.aa > 1 && a.visibility != "zbuffer" && a.visibility != "abuffer")
         throw InputError("--aa", "works with --visibility zbuffer or abuffer");
+    if (a.visibility == "abuffer" && a.aa != 1 && a.aa != 2 && a.aa != 4 && a.aa != 8)
+        throw InputError("--aa",
+                         "with --visibility abuffer must be 1, 2, 4 or 8 (its mask's "
+                         "samples a pixel side)");
+    if (a.clip_planes.size() > std::size_t(kMaxUserClipPlanes))
+        throw InputError("--clip-plane", fmt::format("given {} times: at most {} planes",
+                                                     a.clip_planes.size(), kMaxUserClipPlanes));
     if (a.view != "none" && !renders_with_pipeline(a))
         throw InputError("--view", "works with --visibility zbuffer, without --aa or --msaa");
 }
