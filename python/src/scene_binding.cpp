@@ -12,6 +12,7 @@
 
 #include "arrays.hpp"
 #include "binding.hpp"
+#include "command_line.hpp"
 #include "errors.hpp"
 
 namespace zraster::python {
@@ -157,10 +158,14 @@ std::shared_ptr<PyScene> load(const py::object& path_object, const std::string& 
         std::size_t(integer_in_range(max_triangles, "max_triangles", 1, 1LL << 40));
     options.max_texture_side =
         int(integer_in_range(max_texture_side, "max_texture_side", 1, 1 << 16));
-    options.max_texture_bytes =
-        std::size_t(integer_in_range(max_texture_bytes, "max_texture_bytes", 1, kMost));
-    options.max_geometry_bytes =
-        std::size_t(integer_in_range(max_geometry_bytes, "max_geometry_bytes", 1, kMost));
+    // Bytes, or a size as the command writes it ("512M", "2G"), as Renderer's max_frame_bytes.
+    const auto byte_count = [&](const py::object& value, const char* name) {
+        if (py::isinstance<py::str>(value))
+            return std::size_t(cli::parse_byte_size(name, value.cast<std::string>()));
+        return std::size_t(integer_in_range(value, name, 1, kMost));
+    };
+    options.max_texture_bytes = byte_count(max_texture_bytes, "max_texture_bytes");
+    options.max_geometry_bytes = byte_count(max_geometry_bytes, "max_geometry_bytes");
     options.max_triangulation_work = std::uint64_t(
         integer_in_range(max_triangulation_work, "max_triangulation_work", 1, 1LL << 40));
     options.max_materials =

@@ -127,8 +127,8 @@ def load(
     max_instances: int = 1000000,
     max_triangles: int = 50000000,
     max_texture_side: int = 8192,
-    max_texture_bytes: int = 536870912,
-    max_geometry_bytes: int = 1073741824,
+    max_texture_bytes: int | str = 536870912,
+    max_geometry_bytes: int | str = 1073741824,
     max_triangulation_work: int = 268435456,
     max_materials: int = 20000,
 ) -> Scene: ...
