@@ -704,6 +704,10 @@ printf 'LWSC\n3\n\nFirstFrame 1\nLastFrame 1\n\nLoadObjectLayer 1 loop.lws\n' >l
 row "LightWave scene loading itself" render loop.lws -o out.png
 buffer_gltf %2e%2e/secret.bin >model/escaped.gltf
 row "glTF buffer URI %2e%2e/secret.bin (an escaped ../)" render model/escaped.gltf -o out.png
+printf 'solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1,5 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n' >comma.stl
+row "ASCII STL coordinate '1,5' (Assimp read 1.5)" render comma.stl -o out.png
+printf 'ply\nformat binary_middle_endian 1.0\nelement vertex 3\nproperty float x\nend_header\n' >middle.ply
+row "PLY format binary_middle_endian" render middle.ply -o out.png
 rm -rf out.d out.png z.npy
 echo
 echo "$n inputs; $failures broke the contract (exit 2, one line, nothing left)."

@@ -1,6 +1,7 @@
 #include "io/format_structure_check.hpp"
 
 #include "io/json_errors.hpp"
+#include "io/obj_number_token.hpp"
 
 #include <zraster/error.hpp>
 
@@ -202,6 +203,8 @@ void check_stl_structure(const std::string& file, const std::string& bytes) {
         if (facets != 0) ++complete;
     };
     bool in_facet = false;
+    int numbers_due =
+        0;  // after "vertex" or "normal": its three numbers (Assimp read "1,5" as 1.5)
     while (at < size) {
         const char c = bytes[at];
         if (c == '\n') ++line;
@@ -216,6 +219,17 @@ void check_stl_structure(const std::string& file, const std::string& bytes) {
                bytes[end] != '\0')
             ++end;
         const std::string_view token(bytes.data() + at, end - at);
+        if (numbers_due > 0) {
+            if (!is_number_word(token))
+                throw InputError(file, "malformed ASCII STL: line " + std::to_string(line) + ": " +
+                                           not_a_number(token) +
+                                           " (vertices and normals are 3 "
+                                           "decimal numbers)");
+            --numbers_due;
+            at = end;
+            continue;
+        }
+        if (token == "vertex" || token == "normal") numbers_due = 3;
         if (token == "facet") {
             if (in_facet) end_facet();
             in_facet = true;

@@ -240,6 +240,17 @@ std::vector<Malformed> malformed_files() {
          "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2.5\n",
          "malformed PLY file: the list 'vertex_indices' holds vertex numbers as float: they are "
          "integers (char, uchar, short, ushort, int, uint)"},
+        // ASCII STL numbers whole (Assimp read '1,5' as 1.5 and '0x10' as 0).
+        {"comma.stl",
+         "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1,5 0 0\nvertex 0 1 0\n"
+         "endloop\nendfacet\nendsolid t\n",
+         "malformed ASCII STL: line 5: '1,5' is not a number (vertices and normals are 3 decimal "
+         "numbers)"},
+        {"hex.stl",
+         "solid t\nfacet normal 0 0 0x1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+         "endloop\nendfacet\nendsolid t\n",
+         "malformed ASCII STL: line 2: '0x1' is not a number (vertices and normals are 3 decimal "
+         "numbers)"},
         {"negative-count.ply",
          "ply\nformat ascii 1.0\nelement vertex -1\nproperty float x\nend_header\n",
          "malformed PLY file: element 'vertex' declares the count '-1', not a number of 0 or "
