@@ -2,9 +2,9 @@
 
 #include <zraster/error.hpp>
 
+#include "io/xml_scan.hpp"
+
 #include <algorithm>
-#include <fstream>
-#include <iterator>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -32,37 +32,6 @@ std::uint64_t collada_sum(std::uint64_t a, std::uint64_t b) {
     return std::min(kManyColladaNodes, a + b);  // both at most 2^62: no overflow
 }
 
-bool is_xml_name_char(char c) {
-    return c != '>' && c != '/' && c != ' ' && c != '\t' && c != '\n' && c != '\r';
-}
-
-// The value of attribute `name` in a start tag's text (after its element name), "" if none.
-std::string xml_attribute(std::string_view tag, std::string_view name) {
-    for (std::size_t at = tag.find(name); at != std::string_view::npos;
-         at = tag.find(name, at + 1)) {
-        if (at == 0 || !(tag[at - 1] == ' ' || tag[at - 1] == '\t' || tag[at - 1] == '\n' ||
-                         tag[at - 1] == '\r'))
-            continue;
-        std::size_t i = at + name.size();
-        while (i < tag.size() && (tag[i] == ' ' || tag[i] == '\t' || tag[i] == '\n')) ++i;
-        if (i >= tag.size() || tag[i] != '=') continue;
-        ++i;
-        while (i < tag.size() && (tag[i] == ' ' || tag[i] == '\t' || tag[i] == '\n')) ++i;
-        if (i >= tag.size() || (tag[i] != '"' && tag[i] != '\'')) continue;
-        const char quote = tag[i];
-        const std::size_t end = tag.find(quote, i + 1);
-        if (end == std::string_view::npos) return {};
-        return std::string(tag.substr(i + 1, end - i - 1));
-    }
-    return {};
-}
-
-// The element name without a namespace prefix.
-std::string_view xml_local_name(std::string_view name) {
-    const std::size_t colon = name.rfind(':');
-    return colon == std::string_view::npos ? name : name.substr(colon + 1);
-}
-
 // Assimp reads nested nodes, and the nodes <instance_node> places, recursively: 100,000 levels
 // overflowed its stack. No model needs a thousand.
 constexpr std::size_t kMaxColladaDepth = 1000;
@@ -81,37 +50,14 @@ ColladaExpansion count_collada_expansion(std::string_view doc, const std::string
     std::string chosen_scene;
     std::vector<std::uint32_t> open;       // enclosing <node>s
     std::uint32_t scene = kNoVisualScene;  // enclosing <visual_scene>
-    std::size_t i = 0;
-    while ((i = doc.find('<', i)) != std::string_view::npos) {
-        if (doc.compare(i, 4, "<!--") == 0) {
-            const std::size_t end = doc.find("-->", i + 4);
-            if (end == std::string_view::npos) break;
-            i = end + 3;
-            continue;
-        }
-        if (doc.compare(i, 9, "<![CDATA[") == 0) {
-            const std::size_t end = doc.find("]]>", i + 9);
-            if (end == std::string_view::npos) break;
-            i = end + 3;
-            continue;
-        }
-        const std::size_t close = doc.find('>', i);
-        if (close == std::string_view::npos) break;
-        std::string_view tag = doc.substr(i + 1, close - i - 1);
-        i = close + 1;
-        if (tag.empty() || tag[0] == '?' || tag[0] == '!') continue;
-        const bool end_tag = tag[0] == '/';
-        if (end_tag) tag.remove_prefix(1);
-        const bool empty_element = !tag.empty() && tag.back() == '/';
-        std::size_t name_end = 0;
-        while (name_end < tag.size() && is_xml_name_char(tag[name_end])) ++name_end;
-        const std::string_view name = xml_local_name(tag.substr(0, name_end));
-        const std::string_view rest = tag.substr(name_end);
-        if (end_tag) {
+    for_each_xml_tag(doc, [&](const XmlTag& tag) {
+        const std::string_view name = tag.name;
+        if (tag.end) {
             if (name == "node" && !open.empty()) open.pop_back();
             if (name == "visual_scene") scene = kNoVisualScene;
-            continue;
+            return;
         }
+        const std::string_view rest = tag.attributes;
         if (name == "node") {
             const auto index = static_cast<std::uint32_t>(nodes.size());
             nodes.push_back(Node{xml_attribute(rest, "id"), 0, {}, {}, {}});
@@ -119,11 +65,11 @@ ColladaExpansion count_collada_expansion(std::string_view doc, const std::string
                 nodes[open.back()].children.push_back(index);
             else if (scene != kNoVisualScene)
                 scenes[scene].roots.push_back(index);
-            if (!empty_element) open.push_back(index);
+            if (!tag.empty) open.push_back(index);
             if (open.size() > kMaxColladaDepth) throw too_deep(file);
         } else if (name == "visual_scene") {
             scenes.push_back(VisualScene{xml_attribute(rest, "id"), {}});
-            scene = empty_element ? kNoVisualScene : static_cast<std::uint32_t>(scenes.size() - 1);
+            scene = tag.empty ? kNoVisualScene : static_cast<std::uint32_t>(scenes.size() - 1);
         } else if (name == "instance_visual_scene") {
             const std::string url = xml_attribute(rest, "url");
             if (url.starts_with('#')) chosen_scene = url.substr(1);
@@ -135,7 +81,7 @@ ColladaExpansion count_collada_expansion(std::string_view doc, const std::string
                 if (url.starts_with('#')) nodes[open.back()].instanced.push_back(url.substr(1));
             }
         }
-    }
+    });
     if (scenes.empty()) return {};
 
     std::unordered_map<std::string, std::uint32_t> by_id;
@@ -210,16 +156,14 @@ ColladaExpansion count_collada_expansion(std::string_view doc, const std::string
     return total;
 }
 
-void check_collada_instances(const std::filesystem::path& path, const LoadOptions& options) {
-    std::ifstream in(path, std::ios::binary);
-    const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const std::string file = path.string();
+void check_collada_instances(std::string_view doc, const std::string& file,
+                             const LoadOptions& options) {
     const ColladaExpansion e = count_collada_expansion(doc, file);
     auto count = [](std::uint64_t n) {
         return n >= kManyColladaNodes ? "more than 2^62" : std::to_string(n);
     };
     // (The parenthesis only where the file has <instance_node>s: they are what multiplies.)
-    const bool copies = doc.find("<instance_node") != std::string::npos;
+    const bool copies = doc.find("<instance_node") != std::string_view::npos;
     if (e.placements > options.max_instances)
         throw LimitExceeded(
             file, "max_instances",

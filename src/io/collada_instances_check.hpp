@@ -6,7 +6,7 @@
 #include <zraster/load.hpp>
 
 #include <cstdint>
-#include <filesystem>
+#include <string>
 #include <string_view>
 
 namespace zraster::io {
@@ -29,9 +29,10 @@ inline constexpr std::uint64_t kColladaBytesPerNode = 1300;
 // until the stack overflowed).
 ColladaExpansion count_collada_expansion(std::string_view document, const std::string& file);
 
-// Refuses a .dae file whose expansion places more than max_instances meshes (LimitExceeded
+// Refuses a COLLADA document whose expansion places more than max_instances meshes (LimitExceeded
 // max_instances), or whose copied nodes take more than max_geometry_bytes at
 // kColladaBytesPerNode (LimitExceeded max_geometry_bytes), before Assimp reads it.
-void check_collada_instances(const std::filesystem::path& path, const LoadOptions& options);
+void check_collada_instances(std::string_view document, const std::string& file,
+                             const LoadOptions& options);
 
 }  // namespace zraster::io

@@ -1,6 +1,7 @@
 #include "io/declared_counts_check.hpp"
 
 #include "io/collada_instances_check.hpp"
+#include "io/collada_values_check.hpp"
 #include "io/gltf_bounds_check.hpp"
 #include "io/lightwave_scene_check.hpp"
 #include "io/obj_number_token.hpp"
@@ -679,7 +680,11 @@ void check_declared_counts(const std::filesystem::path& path, std::uintmax_t fil
     if (extension == ".dae" ||
         (extension != ".obj" && extension != ".ply" && extension != ".stl" && extension != ".off" &&
          head.find("<COLLADA") != std::string::npos)) {
-        check_collada_instances(path, options);
+        std::ifstream in(path, std::ios::binary);
+        const std::string doc((std::istreambuf_iterator<char>(in)),
+                              std::istreambuf_iterator<char>());
+        check_collada_values(doc, path.string());
+        check_collada_instances(doc, path.string(), options);
         return;
     }
     if (extension == ".lws" || head.starts_with("LWSC")) {

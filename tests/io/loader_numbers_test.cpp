@@ -154,5 +154,90 @@ TEST(LoaderNumbers, AsciiPlyWordsPastARecordAreRefused) {
                                  "properties");
 }
 
+// COLLADA numbers the importer used unchecked (hostile run 5's K8 and K13): a count of -1 or a
+// stride of 10^9 crashed it in process, "1,5" was read as 1.5, meter="-1" mirrored the model.
+TEST(LoaderNumbers, ColladaCountsStridesWordsAndUnitsAreChecked) {
+    const auto dir = test::temp_dir("numbers-dae");
+    const std::string ok_array =
+        R"(<float_array id="pa" count="9">0 0 0 1 0 0 0 1 0</float_array>)";
+    const std::string ok_accessor = R"(<accessor source="#pa" count="3" stride="3">)";
+    const std::string ok_primitive =
+        R"(<triangles count="1"><input semantic="VERTEX" source="#v" offset="0"/><p>0 1 2</p>)";
+    const std::string ok_asset = "<unit meter=\"0.01\"/><up_axis>Z_UP</up_axis>";
+    auto document = [&](const std::string& array, const std::string& accessor,
+                        const std::string& primitive, const std::string& asset,
+                        const std::string& node) {
+        return R"(<?xml version="1.0"?><COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1"><asset>)" +
+               asset + R"(</asset><library_geometries><geometry id="g"><mesh><source id="p">)" +
+               array + "<technique_common>" + accessor +
+               R"(<param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/></accessor></technique_common></source><vertices id="v"><input semantic="POSITION" source="#p"/></vertices>)" +
+               primitive +
+               R"(</triangles></mesh></geometry></library_geometries><library_visual_scenes><visual_scene id="s"><node id="a">)" +
+               node +
+               R"(<instance_geometry url="#g"/></node></visual_scene></library_visual_scenes><scene><instance_visual_scene url="#s"/></scene></COLLADA>)";
+    };
+    struct Case {
+        std::string array, accessor, primitive, asset, node;
+        const char* cause;  // empty: loads
+    };
+    const std::string a = ok_array, c = ok_accessor, p = ok_primitive, u = ok_asset;
+    const Case cases[] = {
+        {a, c, p, u, "", ""},
+        {R"(<float_array id="pa" count="9">0 0 0 1 0 0 0 1 NaN</float_array>)", c, p, u, "",
+         ""},  // (non-finite: refused later, as in every format)
+        {a, c, p, u, "<matrix>1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1</matrix>", ""},
+        {R"(<float_array id="pa" count="-1">0 0 0 1 0 0 0 1 0</float_array>)", c, p, u, "",
+         R"(<float_array id="pa"> has count="-1", not a whole number of values)"},
+        {R"(<float_array id="pa" count="10">0 0 0 1 0 0 0 1 0</float_array>)", c, p, u, "",
+         R"(<float_array id="pa"> has count="10" but 9 values)"},
+        {R"(<float_array id="pa" count="9">0 0 0 1,5 0 0 0 1 0</float_array>)", c, p, u, "",
+         R"(<float_array id="pa"> value 3: '1,5' is not a number)"},
+        {a, R"(<accessor source="#pa" count="3" stride="1000000000">)", p, u, "",
+         R"(<accessor source="#pa"> reads 3 elements of stride 1000000000 from offset 0, past the end of its array's 9 values)"},
+        {a, R"(<accessor source="#pa" count="3" stride="2">)", p, u, "",
+         R"(<accessor source="#pa"> has stride="2" but 3 <param>s)"},
+        {a, R"(<accessor source="#pa" count="3" stride="0">)", p, u, "",
+         R"(<accessor source="#pa"> has stride="0")"},
+        {a, c,
+         R"(<triangles count="2000000000"><input semantic="VERTEX" source="#v" offset="0"/><p>0 1 2</p>)",
+         u, "", R"(<triangles> has count="2000000000" but 3 indices in its <p>)"},
+        {a, c,
+         R"(<triangles count="1"><input semantic="VERTEX" source="#v" offset="2000000000"/><p>0 1 2</p>)",
+         u, "", R"(<triangles> has an <input> of offset="2000000000" but 3 indices in its <p>)"},
+        {a, c,
+         R"(<triangles count="1"><input semantic="VERTEX" source="#v" offset="0"/><p>0 1 -1</p>)",
+         u, "", R"(<triangles> <p> word 2 '-1' is not a whole number)"},
+        {a, c,
+         R"(<triangles count="1"><input semantic="VERTEX" source="#v" offset="0"/><p>0 1 4294967295</p>)",
+         u, "", R"(a <p> index 4294967295 is past every array's values (the largest has 9))"},
+        {a, c, p, "<unit meter=\"-1\"/>", "",
+         R"(<unit meter="-1"> is not a positive finite length in meters (single precision))"},
+        {a, c, p, "<unit meter=\"1e40\"/>", "",
+         R"(<unit meter="1e40"> is not a positive finite length in meters (single precision))"},
+        {a, c, p, "<up_axis>Q_UP</up_axis>", "", "<up_axis> 'Q_UP' is none of X_UP, Y_UP, Z_UP"},
+        {a, c, p, u, "<matrix>1 0 0</matrix>", "<matrix> has 3 numbers, not 16"},
+        {a, c, p, u, "<translate>1 0x10 0</translate>",
+         "<translate> value 1: '0x10' is not a number"},
+    };
+    int k = 0;
+    for (const Case& t : cases) {
+        SCOPED_TRACE(t.cause);
+        const auto path = dir / ("m" + std::to_string(k++) + ".dae");
+        test::write_bytes(path, document(t.array, t.accessor, t.primitive, t.asset, t.node));
+        for (const LoadIsolation isolation : kNumberIsolations) {
+            if (std::string(t.cause).empty()) {
+                if (t.array.find("NaN") == std::string::npos)
+                    EXPECT_EQ(load_scene(path, numbers_isolated(isolation)).triangle_count(), 1u);
+                else
+                    test::expect_input_error([&] { load_scene(path, numbers_isolated(isolation)); },
+                                             path, "non-finite vertex coordinates");
+            } else {
+                test::expect_input_error([&] { load_scene(path, numbers_isolated(isolation)); },
+                                         path, std::string("malformed COLLADA file: ") + t.cause);
+            }
+        }
+    }
+}
+
 }  // namespace
 }  // namespace zraster
