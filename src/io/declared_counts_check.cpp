@@ -4,6 +4,7 @@
 #include "io/collada_values_check.hpp"
 #include "io/gltf_bounds_check.hpp"
 #include "io/lightwave_scene_check.hpp"
+#include "io/nesting_depth_check.hpp"
 #include "io/obj_number_token.hpp"
 #include "io/text_util.hpp"
 #include "io/triangulation_budget.hpp"
@@ -691,6 +692,7 @@ void check_declared_counts(const std::filesystem::path& path, std::uintmax_t fil
         check_lightwave_scene(path, options);
         return;
     }
+    check_nesting_depth(path, head);
     for (const char* other : {".obj", ".ply", ".stl", ".glb", ".3ds"})
         if (extension == other) return;
     if (extension != ".off" && starts_json_object(head)) {

@@ -264,6 +264,53 @@ TEST(LoaderExpansion, ColladaNodesNestedPastAThousandLevelsAreRefused) {
     }
 }
 
+// X Frames and AC3D OBJECTs are read recursively: 100,000 levels (or 200,000 sibling X Frames
+// after data references, which the importer reads as nesting) overflowed its stack in process.
+TEST(LoaderExpansion, XFramesAndAc3dObjectsNestedPastAThousandLevelsAreRefused) {
+    const auto dir = test::temp_dir("expansion-nesting");
+    const std::string x_mesh = "Mesh m {\n3;\n0;0;0;,\n1;0;0;,\n0;1;0;;\n1;\n3;0,1,2;;\n}\n";
+    const auto x_nested = [&](int levels) {
+        std::string s = "xof 0303txt 0032\n";
+        for (int k = 0; k < levels; ++k) s += "Frame f" + std::to_string(k) + " {\n";
+        s += x_mesh;
+        for (int k = 0; k < levels; ++k) s += "}\n";
+        return s;
+    };
+    const auto x_references = [&](int frames) {
+        std::string s = "xof 0303txt 0032\n" + x_mesh;
+        for (int k = 0; k < frames; ++k) s += "Frame f" + std::to_string(k) + " {\n{ m }\n}\n";
+        return s;
+    };
+    const auto ac3d_nested = [](int groups) {
+        std::string s =
+            "AC3Db\nMATERIAL \"m\" rgb 1 1 1  amb 0.2 0.2 0.2  emis 0 0 0  spec 0 0 0  shi 10  "
+            "trans 0\nOBJECT world\n";
+        for (int k = 0; k < groups; ++k) s += "kids 1\nOBJECT group\n";
+        return s +
+               "kids 1\nOBJECT poly\nnumvert 3\n0 0 0\n1 0 0\n0 1 0\nnumsurf 1\nSURF 0x10\nmat "
+               "0\nrefs 3\n0 0 0\n1 0 0\n2 0 0\nkids 0\n";
+    };
+    test::write_bytes(dir / "ok.x", x_nested(1000));
+    test::write_bytes(dir / "deep.x", x_nested(1001));
+    test::write_bytes(dir / "references.x", x_references(2002));
+    test::write_bytes(dir / "ok.ac", ac3d_nested(998));  // world, 998 groups, poly: 1000 levels
+    test::write_bytes(dir / "deep.ac", ac3d_nested(999));
+    for (const LoadIsolation isolation : kExpansionIsolations) {
+        SCOPED_TRACE(expansion_isolation_name(isolation));
+        LoadOptions o;
+        o.isolation = isolation;
+        EXPECT_EQ(load_scene(dir / "ok.x", o).triangle_count(), 1u);
+        EXPECT_EQ(load_scene(dir / "ok.ac", o).triangle_count(), 1u);
+        test::expect_input_error([&] { load_scene(dir / "deep.x", o); }, dir / "deep.x",
+                                 "malformed X file: its Frames nest more than 1000 levels deep "
+                                 "as the importer reads them (recursively)");
+        test::expect_input_error([&] { load_scene(dir / "references.x", o); }, dir / "references.x",
+                                 "a data reference such as '{ m }' directly inside a Frame");
+        test::expect_input_error([&] { load_scene(dir / "deep.ac", o); }, dir / "deep.ac",
+                                 "malformed AC3D file: its OBJECTs nest more than 1000 levels");
+    }
+}
+
 // A scene's objects are checked as if they were given directly (a COLLADA graph of 2^20
 // placements took the importer to 7.8 GB through a scene), and a scene among them is refused
 // (one loading itself crashed Assimp; two loading each other ran until stopped).
