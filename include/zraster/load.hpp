@@ -119,8 +119,8 @@ ZRASTER_API std::size_t worker_memory_for(std::uint64_t file_bytes, const LoadOp
 // appended to *warnings when it is given, one line each, starting with the file name.
 // The other files the model named and the loader read (glTF buffers and images, material
 // libraries, textures, a cells file's mesh files and theirs), and those it names but zraster does
-// not read (every MTL map_* or bump statement's file, every glTF image: a clearcoat texture),
-// canonical and sorted, are appended to *files_read when it is given: a caller that writes files
+// not read (every MTL map_* or bump statement's file, every glTF image: a clearcoat texture; a
+// file refused for lying outside the model's folder), canonical and sorted, are appended to *files_read when it is given: a caller that writes files
 // must not replace them.
 // Throws InputError (one line naming the file and the cause) for a missing or unreadable file,
 // an unknown format, malformed or truncated content (an OBJ or MTL word that is not a number

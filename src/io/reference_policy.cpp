@@ -39,20 +39,26 @@ ReferencePolicy::Check ReferencePolicy::check(const std::filesystem::path& file)
     if (!root_.empty() && resolved != model_) {
         const auto [end, _] =
             std::mismatch(root_.begin(), root_.end(), resolved.begin(), resolved.end());
-        if (end != root_.end())
+        if (end != root_.end()) {
+            // Not read, but named: an output over it would destroy a file the model names.
+            note_named(resolved);
             return {Verdict::Refused,
                     "is outside the model's folder (" + resolved.string() + " is not under " +
                         root_.string() + ")",
                     true};
+        }
     }
     if (::access(resolved.c_str(), R_OK) != 0)
         return {Verdict::Refused,
                 "cannot be read (" + std::generic_category().message(errno) + ")"};
-    if (resolved != model_) {
-        const std::lock_guard lock(read_->mutex);
-        read_->files.insert(resolved);
-    }
+    note_named(resolved);
     return {Verdict::Readable, {}};
+}
+
+void ReferencePolicy::note_named(const std::filesystem::path& resolved) const {
+    if (resolved == model_) return;
+    const std::lock_guard lock(read_->mutex);
+    read_->files.insert(resolved);
 }
 
 std::vector<std::filesystem::path> ReferencePolicy::files_read() const {

@@ -41,12 +41,14 @@ class ReferencePolicy {
     // The advice appended to a refusal's message.
     static const char* how_to_allow();
 
-    // The files besides the model that check() found readable, canonical and sorted: what the
-    // loader read, which a command's outputs must not replace. Copies of a policy share the list
-    // (the texture loader holds one).
+    // The files besides the model that check() found readable, or refused only for lying outside
+    // the model's folder, canonical and sorted: the files the model names and the loader read or
+    // could have read, which a command's outputs must not replace (and whose changes a batch
+    // rerun notices). Copies of a policy share the list (the texture loader holds one).
     std::vector<std::filesystem::path> files_read() const;
 
   private:
+    void note_named(const std::filesystem::path& resolved) const;
     struct ReadLog {
         std::mutex mutex;
         std::set<std::filesystem::path> files;

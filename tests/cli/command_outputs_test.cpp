@@ -173,6 +173,33 @@ TEST(CommandOutputs, AnOutputMayNotOverwriteAFileTheModelReads) {
     EXPECT_EQ(read_text(dir / "img.png"), texture);
 }
 
+// A texture outside the model's folder is not read (refused, with a warning), but it is still a
+// file the model names: an output over it is refused as over one it read.
+TEST(CommandOutputs, AnOutputMayNotOverwriteATextureRefusedAsOutsideTheFolder) {
+    const auto dir = temp_dir("outputs-outside-texture");
+    std::filesystem::create_directories(dir / "model");
+    ASSERT_EQ(run_zraster("render builtin:cube --size 4x4 -o outside.png", dir).exit_code, 0);
+    const std::string texture = read_text(dir / "outside.png");
+    write_text(dir / "model" / "m.mtl", "newmtl t\nKd 1 1 1\nmap_Kd ../outside.png\n");
+    write_text(dir / "model" / "m.obj",
+               "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nusemtl t\nf 1/1 2/1 3/1\n");
+    const std::string canonical = std::filesystem::canonical(dir).string();
+    for (const char* isolation : {"", "--load-in-process "}) {
+        SCOPED_TRACE(isolation);
+        const CommandResult r = run_zraster(
+            std::string(isolation) + "render model/m.obj --size 8x8 -o outside.png", dir);
+        EXPECT_EQ(r.exit_code, 2) << r.output;
+        EXPECT_NE(r.output.find("zraster: -o outside.png: is the same file as the input file "
+                                "named by model/m.obj " +
+                                canonical +
+                                "/outside.png: an output may not overwrite a file "
+                                "the run reads\n"),
+                  std::string::npos)
+            << r.output;
+        EXPECT_EQ(read_text(dir / "outside.png"), texture);
+    }
+}
+
 TEST(CommandOutputs, ABadLogLeavesNoOutputFolder) {
     const auto dir = temp_dir("outputs-batch-log");
     write_text(dir / "m.ply", kTriangle);

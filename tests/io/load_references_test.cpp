@@ -160,9 +160,13 @@ TEST(LoadReferences, ObjLibrariesAndTexturesOutsideAreNotReadWithAWarning) {
 
 // What the loader read besides the model is reported (canonical), so that a command can keep its
 // outputs off it; what it refused is not.
+// The files a model names that exist: read, or refused for lying outside the folder (an output
+// must not replace those either).
 TEST(LoadReferences, FilesReadAreReported) {
     const auto dir = fixture("refs-files-read");
     const auto folder = std::filesystem::canonical(dir / "model");
+    const std::vector<std::filesystem::path> obj_named{
+        folder / "in.mtl", std::filesystem::canonical(dir) / "outside.mtl"};
     test::write_bytes(dir / "model" / "m.gltf", triangle_gltf("inside.bin"));
     test::write_bytes(dir / "model" / "in.mtl", "newmtl red\nKd 1 0 0\n");
     test::write_bytes(
@@ -176,11 +180,11 @@ TEST(LoadReferences, FilesReadAreReported) {
         load_scene(dir / "model" / "m.gltf", options, nullptr, &gltf_files);
         EXPECT_EQ(gltf_files, std::vector<std::filesystem::path>{folder / "inside.bin"});
         load_scene(dir / "model" / "m.obj", options, nullptr, &obj_files);
-        EXPECT_EQ(obj_files, std::vector<std::filesystem::path>{folder / "in.mtl"});
+        EXPECT_EQ(obj_files, obj_named);
     }
     // Assimp's OBJ path reports the same as zraster's reader.
     EXPECT_EQ(io::load_scene_with_assimp(dir / "model" / "m.obj", in_process()).files_read,
-              std::vector<std::filesystem::path>{folder / "in.mtl"});
+              obj_named);
 }
 
 // The triangle of triangle_gltf("inside.bin") with a base-color texture whose image is `uri`.
