@@ -13,7 +13,14 @@ std::uintmax_t check_input_file(const std::filesystem::path& path, std::uintmax_
     const std::string name = path.string();
     std::error_code ec;
     const auto status = std::filesystem::status(path, ec);
-    if (!std::filesystem::exists(status)) throw InputError(name, "file not found");
+    if (!std::filesystem::exists(status)) {
+        // status() follows links: a loop of them, or one to nothing, is not "not found".
+        if (ec == std::errc::too_many_symbolic_link_levels)
+            throw InputError(name, "is a loop of symbolic links");
+        if (std::filesystem::is_symlink(std::filesystem::symlink_status(path, ec)))
+            throw InputError(name, "is a symbolic link to a file that does not exist");
+        throw InputError(name, "file not found");
+    }
     if (!std::filesystem::is_regular_file(status)) throw InputError(name, "not a regular file");
     const std::uintmax_t size = std::filesystem::file_size(path, ec);
     if (ec) throw InputError(name, "cannot read: " + ec.message());

@@ -26,6 +26,16 @@ TEST(LoadErrors, MissingFile) {
     expect_load_error(path, "file not found");
 }
 
+// A link loop or a dangling link is named as what it is, not "file not found".
+TEST(LoadErrors, LinkLoopAndDanglingLink) {
+    const auto dir = test::temp_dir("io-errors-links");
+    std::filesystem::create_symlink("b.obj", dir / "a.obj");
+    std::filesystem::create_symlink("a.obj", dir / "b.obj");
+    std::filesystem::create_symlink("nothing.obj", dir / "dangling.obj");
+    expect_load_error(dir / "a.obj", "is a loop of symbolic links");
+    expect_load_error(dir / "dangling.obj", "is a symbolic link to a file that does not exist");
+}
+
 TEST(LoadErrors, Directory) {
     const auto dir = test::temp_dir("io-errors-dir") / "model.obj";
     std::filesystem::create_directory(dir);
