@@ -232,11 +232,13 @@ row() {
     [ -z "$left" ] && left="none"
     [ "$rc" -eq 0 ] && left="$left(success)"
     local message
-    message=$(sed 's/|/\\|/g' stderr.txt | tr '\n' ' ' | sed 's/ *$//')
+    # (| would end the cell; < would open an HTML tag in the rendered table.)
+    message=$(sed -e 's/|/\\|/g' -e 's/</\&lt;/g' stderr.txt | tr '\n' ' ' | sed 's/ *$//')
     [ -z "$message" ] && message="(nothing)"
     local lines
     lines=$(wc -l <stderr.txt)
     local command="zraster $*"
+    what=${what//</\&lt;}
     echo "| $n | $what | \`${command//|/\\|}\` | $rc | $message | $left |"
     if [ "$rc" -ne 0 ]; then
         if [ "$rc" -ne 2 ] || [ "$lines" -ne 1 ] ||
@@ -708,6 +710,18 @@ printf 'solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1,5 0 0\nv
 row "ASCII STL coordinate '1,5' (Assimp read 1.5)" render comma.stl -o out.png
 printf 'ply\nformat binary_middle_endian 1.0\nelement vertex 3\nproperty float x\nend_header\n' >middle.ply
 row "PLY format binary_middle_endian" render middle.ply -o out.png
+# Numbers and nesting the importers used unchecked (crashes in process, values read wrongly).
+dae_tri() { # $1: float array attributes, $2: asset elements
+    printf '<?xml version="1.0"?><COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1"><asset>%s</asset><library_geometries><geometry id="g"><mesh><source id="p"><float_array id="pa" %s>0 0 0 1 0 0 0 1 0</float_array><technique_common><accessor source="#pa" count="3" stride="3"><param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/></accessor></technique_common></source><vertices id="v"><input semantic="POSITION" source="#p"/></vertices><triangles count="1"><input semantic="VERTEX" source="#v" offset="0"/><p>0 1 2</p></triangles></mesh></geometry></library_geometries><library_visual_scenes><visual_scene id="s"><node id="a"><instance_geometry url="#g"/></node></visual_scene></library_visual_scenes><scene><instance_visual_scene url="#s"/></scene></COLLADA>' "$2" "$1"
+}
+dae_tri 'count="-1"' '' >count.dae
+row "COLLADA float_array count=\"-1\" (crashed the importer in process)" --load-in-process render count.dae -o out.png
+dae_tri 'count="9"' '<unit meter="-1"/>' >unit.dae
+row "COLLADA <unit meter=\"-1\"> (mirrored the model)" render unit.dae -o out.png
+{ printf 'xof 0303txt 0032\nMesh m {\n3;\n0;0;0;,\n1;0;0;,\n0;1;0;;\n1;\n3;0,1,2;;\n}\n'; for i in $(seq 2002); do printf 'Frame f {\n{ m }\n}\n'; done; } >frames.x
+row "X Frames holding data references, read as 1,001 levels of nesting (crashed in process)" --load-in-process render frames.x -o out.png
+ln -sf loop-b.obj loop-a.obj; ln -sf loop-a.obj loop-b.obj
+row "model that is a loop of symbolic links" render loop-a.obj -o out.png
 rm -rf out.d out.png z.npy
 echo
 echo "$n inputs; $failures broke the contract (exit 2, one line, nothing left)."
