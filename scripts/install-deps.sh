@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config git
   clang clang-format clang-tidy libclang-rt-14-dev
-  libglm-dev libassimp-dev libstb-dev libdeflate-dev libcli11-dev libfmt-dev nlohmann-json3-dev
+  libglm-dev libassimp-dev libminizip-dev libstb-dev libdeflate-dev libcli11-dev libfmt-dev nlohmann-json3-dev
   libhwy-dev libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev
   libegl-dev libgles-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-distributed

@@ -2,6 +2,7 @@
 
 #include <zraster/error.hpp>
 
+#include "io/node_graph_expansion.hpp"
 #include "io/xml_scan.hpp"
 
 #include <algorithm>
@@ -27,10 +28,6 @@ struct VisualScene {
     std::string id;
     std::vector<std::uint32_t> roots;
 };
-
-std::uint64_t collada_sum(std::uint64_t a, std::uint64_t b) {
-    return std::min(kManyColladaNodes, a + b);  // both at most 2^62: no overflow
-}
 
 // Assimp reads nested nodes, and the nodes <instance_node> places, recursively: 100,000 levels
 // overflowed its stack. No model needs a thousand.
@@ -92,66 +89,25 @@ ColladaExpansion count_collada_expansion(std::string_view doc, const std::string
             if (auto it = by_id.find(target); it != by_id.end())
                 node.instances.push_back(it->second);  // (unresolved: Assimp warns, skips)
 
-    // Each node's expansion, depth first without recursion (nesting may be deep).
-    enum : std::uint8_t { kNew, kActive, kDone };
-    std::vector<std::uint8_t> state(nodes.size(), kNew);
-    std::vector<ColladaExpansion> expansion(nodes.size());
-    std::vector<std::size_t> depth(nodes.size(), 0);  // levels of the expanded subtree
-    auto visit = [&](std::uint32_t root) {
-        struct Frame {
-            std::uint32_t node;
-            std::size_t next;  // over children, then instances
-        };
-        std::vector<Frame> stack;
-        if (state[root] == kDone) return;
-        stack.push_back({root, 0});
-        state[root] = kActive;
-        while (!stack.empty()) {
-            Frame& f = stack.back();
-            const Node& node = nodes[f.node];
-            const std::size_t count = node.children.size() + node.instances.size();
-            if (f.next < count) {
-                const std::uint32_t next = f.next < node.children.size()
-                                               ? node.children[f.next]
-                                               : node.instances[f.next - node.children.size()];
-                ++f.next;
-                if (state[next] == kActive)
-                    throw InputError(file, "malformed COLLADA file: node '" + nodes[next].id +
-                                               "' places itself (through <instance_node>)");
-                if (state[next] == kNew) {
-                    state[next] = kActive;
-                    stack.push_back({next, 0});
-                }
-                continue;
-            }
-            ColladaExpansion e{1, std::min(kManyColladaNodes, node.geometries)};
-            std::size_t levels = 1;
-            for (std::uint32_t c : node.children) {
-                e.nodes = collada_sum(e.nodes, expansion[c].nodes);
-                e.placements = collada_sum(e.placements, expansion[c].placements);
-                levels = std::max(levels, depth[c] + 1);
-            }
-            for (std::uint32_t c : node.instances) {
-                e.nodes = collada_sum(e.nodes, expansion[c].nodes);
-                e.placements = collada_sum(e.placements, expansion[c].placements);
-                levels = std::max(levels, depth[c] + 1);
-            }
-            if (levels > kMaxColladaDepth) throw too_deep(file);
-            depth[f.node] = levels;
-            expansion[f.node] = e;
-            state[f.node] = kDone;
-            stack.pop_back();
-        }
-    };
-
+    std::vector<GraphNode> graph(nodes.size());
+    for (std::size_t n = 0; n < nodes.size(); ++n) {
+        graph[n].meshes = nodes[n].geometries;
+        graph[n].children = nodes[n].children;
+        graph[n].children.insert(graph[n].children.end(), nodes[n].instances.begin(),
+                                 nodes[n].instances.end());
+    }
     const VisualScene* shown = &scenes.front();
     for (const VisualScene& s : scenes)
         if (!chosen_scene.empty() && s.id == chosen_scene) shown = &s;
+    const GraphExpansion expansion = expand_node_graph(graph, shown->roots, kMaxColladaDepth);
+    if (expansion.loop)
+        throw InputError(file, "malformed COLLADA file: node '" + nodes[*expansion.loop].id +
+                                   "' places itself (through <instance_node>)");
+    if (expansion.too_deep) throw too_deep(file);
     ColladaExpansion total;
     for (std::uint32_t root : shown->roots) {
-        visit(root);
-        total.nodes = collada_sum(total.nodes, expansion[root].nodes);
-        total.placements = collada_sum(total.placements, expansion[root].placements);
+        total.nodes = saturating_sum(total.nodes, expansion.of[root].nodes);
+        total.placements = saturating_sum(total.placements, expansion.of[root].placements);
     }
     return total;
 }

@@ -18,7 +18,7 @@ struct ColladaExpansion {
     std::uint64_t nodes = 0;
     std::uint64_t placements = 0;
 };
-inline constexpr std::uint64_t kManyColladaNodes = std::uint64_t{1} << 62;
+inline constexpr std::uint64_t kManyColladaNodes = std::uint64_t{1} << 62;  // = kManyNodes
 
 // Bytes a copied node takes in the import and the conversion (measured: 24 levels of nodes each
 // placing the next twice, 786,000 copies at 18 levels: 1.0 GB).

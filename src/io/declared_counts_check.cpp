@@ -8,6 +8,7 @@
 #include "io/obj_number_token.hpp"
 #include "io/text_util.hpp"
 #include "io/triangulation_budget.hpp"
+#include "io/zip_archive_check.hpp"
 
 #include <zraster/error.hpp>
 
@@ -693,6 +694,10 @@ void check_declared_counts(const std::filesystem::path& path, std::uintmax_t fil
         return;
     }
     check_nesting_depth(path, head);
+    if (head.starts_with(std::string_view("PK\x03\x04", 4))) {
+        check_zip_archive(path, options);
+        return;
+    }
     for (const char* other : {".obj", ".ply", ".stl", ".glb", ".3ds"})
         if (extension == other) return;
     if (extension != ".off" && starts_json_object(head)) {
