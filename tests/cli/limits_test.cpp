@@ -246,7 +246,24 @@ TEST(CliLimits, AFrameWithNothingInViewWarns) {
          "alpha cutoff, or vertex colors of alpha 0): the image shows only the background "
          "(--alpha-mode opaque draws them opaque)\n"},
         {"render clear.obj -o a.png --size 32x32 --alpha-mode opaque", ""},
+        // Every fragment cut by the alpha test: vertex colors of alpha 0.5, a MASK cutoff of 0.9.
+        {"render mask.gltf -o a.png --size 32x32",
+         "warning: mask.gltf: every fragment of its 1 triangles in view was cut out by the alpha "
+         "test (alpha below its material's cutoff): the image shows only the background "
+         "(--alpha-mode opaque draws them opaque)\n"},
+        {"render mask.gltf -o a.png --size 32x32 --alpha-mode opaque", ""},
     };
+    write(dir / "mask.gltf", R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],)"
+                             R"("nodes":[{"mesh":0}],"meshes":[{"primitives":[{"attributes":)"
+                             R"({"POSITION":0,"COLOR_0":1},"material":0}]}],"materials":)"
+                             R"([{"alphaMode":"MASK","alphaCutoff":0.9}],"accessors":)"
+                             R"([{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3",)"
+                             R"("min":[0,0,0],"max":[1,1,0]},{"bufferView":0,"byteOffset":36,)"
+                             R"("componentType":5126,"count":3,"type":"VEC4"}],"bufferViews":)"
+                             R"([{"buffer":0,"byteLength":84}],"buffers":[{"uri":"data:)"
+                             R"(application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAA)"
+                             R"(AAAAAAAAAAgD8AAAAAAACAPwAAAAAAAAAAAAAAPwAAgD8AAAAAAAAAAAAAAD8AAI)"
+                             R"(A/AAAAAAAAAAAAAAA/","byteLength":84}]})");
     write(dir / "clear.mtl", "newmtl m\nKd 1 0 0\nd 0\n");
     write(dir / "clear.obj", "mtllib clear.mtl\nusemtl m\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     for (const auto& [arguments, message] : cases) {

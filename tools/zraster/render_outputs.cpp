@@ -144,6 +144,16 @@ RenderedFrame render_outputs(const RenderArguments& a, const Scene& scene, Outpu
                    "alpha cutoff, or vertex colors of alpha 0): the image shows only the "
                    "background (--alpha-mode opaque draws them opaque)\n",
                    scene.name);
+    // Every fragment in view cut by the alpha test: a cutoff above every alpha the textures and
+    // vertex colors give (glTF MASK with alphaCutoff 1).
+    else if (notes != nullptr && renders_with_pipeline(a) && options.view == DebugView::None &&
+             s.triangles_rasterized > 0 && s.fragments_passed == 0 && s.fragments_blended == 0 &&
+             s.fragments_alpha_discarded > 0)
+        fmt::print(notes,
+                   "warning: {}: every fragment of its {} triangles in view was cut out by the "
+                   "alpha test (alpha below its material's cutoff): the image shows only the "
+                   "background (--alpha-mode opaque draws them opaque)\n",
+                   scene.name, s.triangles_rasterized);
     // Triangles in view, none of whose fragments passed: a depth format too coarse for the
     // near/far ratio rounds every depth to the cleared far plane (d16, near 1e-20).
     else if (notes != nullptr && renders_with_pipeline(a) && options.view == DebugView::None &&
