@@ -44,6 +44,7 @@ InputError too_deep(const std::string& file) {
 ColladaExpansion count_collada_expansion(std::string_view doc, const std::string& file) {
     std::vector<Node> nodes;
     std::vector<VisualScene> scenes;
+    std::uint64_t materials = 0;
     std::string chosen_scene;
     std::vector<std::uint32_t> open;       // enclosing <node>s
     std::uint32_t scene = kNoVisualScene;  // enclosing <visual_scene>
@@ -55,6 +56,7 @@ ColladaExpansion count_collada_expansion(std::string_view doc, const std::string
             return;
         }
         const std::string_view rest = tag.attributes;
+        if (name == "material") ++materials;
         if (name == "node") {
             const auto index = static_cast<std::uint32_t>(nodes.size());
             nodes.push_back(Node{xml_attribute(rest, "id"), 0, {}, {}, {}});
@@ -79,7 +81,7 @@ ColladaExpansion count_collada_expansion(std::string_view doc, const std::string
             }
         }
     });
-    if (scenes.empty()) return {};
+    if (scenes.empty()) return {0, 0, materials};
 
     std::unordered_map<std::string, std::uint32_t> by_id;
     for (std::uint32_t n = 0; n < nodes.size(); ++n)
@@ -105,6 +107,7 @@ ColladaExpansion count_collada_expansion(std::string_view doc, const std::string
                                    "' places itself (through <instance_node>)");
     if (expansion.too_deep) throw too_deep(file);
     ColladaExpansion total;
+    total.materials = materials;
     for (std::uint32_t root : shown->roots) {
         total.nodes = saturating_sum(total.nodes, expansion.of[root].nodes);
         total.placements = saturating_sum(total.placements, expansion.of[root].placements);
@@ -118,6 +121,12 @@ void check_collada_instances(std::string_view doc, const std::string& file,
     auto count = [](std::uint64_t n) {
         return n >= kManyColladaNodes ? "more than 2^62" : std::to_string(n);
     };
+    // (As the count after an import is worded, load_scene.cpp.)
+    if (e.materials > options.max_materials)
+        throw LimitExceeded(file, "max_materials",
+                            "it defines " + std::to_string(e.materials) +
+                                " materials, more than max_materials (" +
+                                std::to_string(options.max_materials) + ")");
     // (The parenthesis only where the file has <instance_node>s: they are what multiplies.)
     const bool copies = doc.find("<instance_node") != std::string_view::npos;
     if (e.placements > options.max_instances)
