@@ -136,6 +136,14 @@ void check_numbers(std::string_view line, const std::string& file, std::size_t n
         if (values) {
             const std::string_view w = line.substr(at, end - at);
             if (!is_number_word(w)) refuse(w);
+            // Assimp's OBJ reader does not count a word starting with a point as a number (it
+            // misreads the line); zraster's own reader takes it, this file needs Assimp's.
+            if (w.starts_with('.') || w.starts_with("-.") || w.starts_with("+."))
+                throw InputError(file, "line " + std::to_string(number) + ": '" +
+                                           std::string(w.substr(0, 40)) +
+                                           "' starts with a point, which the importer this "
+                                           "file needs does not read as a number (write 0" +
+                                           std::string(w.substr(w.find('.'), 40)) + ")");
             if (numbers >= 4 && numbers <= 6) colors[numbers - 4] = w;
         } else {
             const std::string_view w = line.substr(at, end - at);

@@ -9,8 +9,8 @@
 namespace zraster::io {
 
 // A coordinate or material value: an optional sign, digits with an optional point (at least one
-// digit), an optional exponent; or nan, inf, infinity in any case. (Not every such word is read
-// by zraster's OBJ reader: ".5" is left to Assimp, which reads it its own way.)
+// digit), an optional exponent; or nan, inf, infinity in any case. (".5" is one; Assimp's OBJ
+// reader does not read it, so the Assimp path's scan refuses it: obj_index_scan.cpp.)
 bool is_number_word(std::string_view word);
 
 // A face index: an optional sign and digits, however many (range is checked separately).

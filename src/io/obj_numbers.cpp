@@ -29,8 +29,6 @@ bool parse_float_slowly(const char*& q, const char* e, float& out) {
     if (*s == '-' || *s == '+') {
         negative = *s == '-';
         if (++s == e) return false;
-    } else if (*s == '.') {
-        return false;
     }
     const char c = *s;
     if (!((c >= '0' && c <= '9') || c == '.' || c == 'n' || c == 'N' || c == 'i' || c == 'I'))

@@ -131,10 +131,8 @@ inline constexpr double kDoublePowers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1
 [[gnu::noinline]] bool parse_float_slowly(const char*& q, const char* e, float& out);
 
 // One number: an optional sign, then what std::from_chars reads (decimal, exponent, nan, inf),
-// correctly rounded. The token must end at a blank or the end of the line. A token
-// starting with '.' is refused: Assimp does not count it as a component.
+// correctly rounded (".5" included). The token must end at a blank or the end of the line.
 [[gnu::always_inline]] inline bool parse_float(const char*& q, const char* e, float& out) {
-    if (*q == '.') return false;
     return parse_plain_float(q, e, out) || parse_float_slowly(q, e, out);
 }
 

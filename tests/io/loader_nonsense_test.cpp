@@ -96,6 +96,24 @@ TEST(LoaderNonsense, ObjNumbersStillRead) {
         EXPECT_EQ(load_scene(path, isolated(isolation)).meshes.at(0).indices.size(), 3u);
 }
 
+// A number starting with a point is a number (".5" is 0.5); Assimp's OBJ reader does not count it
+// as one, so a file only Assimp reads (here: a pentagon) is refused saying so.
+TEST(LoaderNonsense, ObjNumbersStartingWithAPoint) {
+    const auto dir = test::temp_dir("nonsense-obj-point");
+    test::write_bytes(dir / "t.obj", "v 0 0 0\nv .5 0 0\nv 0 -.5e1 0\nf 1 2 3\n");
+    test::write_bytes(dir / "p.obj",
+                      "v 0 0 0\nv .5 0 0\nv 0 1 0\nv -1 -1 0\nv 2 -1 0\nf 1 2 3 4 5\n");
+    for (const LoadIsolation isolation : kIsolations) {
+        const Scene scene = load_scene(dir / "t.obj", isolated(isolation));
+        EXPECT_EQ(scene.meshes.at(0).positions.at(1).x, 0.5f);
+        EXPECT_EQ(scene.meshes.at(0).positions.at(2).y, -5.0f);
+        test::expect_input_error([&] { load_scene(dir / "p.obj", isolated(isolation)); },
+                                 dir / "p.obj",
+                                 "line 2: '.5' starts with a point, which the importer this file "
+                                 "needs does not read as a number (write 0.5)");
+    }
+}
+
 TEST(LoaderNonsense, ObjFacesPastAssimpsCornerLimitAreRefusedInOurTerms) {
     for (const std::size_t corners : {std::size_t{40'000}, std::size_t{100'000}}) {
         std::string face = "f";

@@ -366,7 +366,6 @@ TEST(ObjParser, LeavesWhatAssimpBendsToTheAssimpPath) {
     expect_fallback(write_obj("ngon", v + "v 0.5 -1 0\nf 1 5 2 3 4\n"), 6);
     expect_fallback(write_obj("mixed-forms", v + "vn 0 0 1\nf 1//1 2 3\n"), 6);
     expect_fallback(write_obj("continuation", v + "f 1 2 \\\n3\n"), 5);
-    expect_fallback(write_obj("dot-number", "v .5 0 0\n" + v + "f 1 2 3\n"), 1);
     expect_fallback(write_obj("uv-before-uvs", v + "vn 0 0 1\nf 1/1 2/1 3/1\n"), 6);
     expect_fallback(write_obj("cstype", v + "cstype bspline\nf 1 2 3\nend\nf 1 2 3\n"), 5);
     expect_fallback(write_obj("lone-cr", v + "# x\rf 1 2 3\nf 1 3 4\n"), 5);
