@@ -497,6 +497,15 @@ TEST(CliLimits, WholeNumbersAreReadInDecimal) {
     expect_refused(dir, "render builtin:cube --threads 9223372036854775808 -o out.png",
                    "zraster: --threads: '9223372036854775808' is past the largest number it takes "
                    "(--help gives its range)\n");
+    // Out of range, in one wording (CLI11's "Value 0 not in range 1 to 65536"), and NaN, which
+    // CLI11's range check let through.
+    expect_refused(dir, "render builtin:cube --max-texture-side 0 -o out.png",
+                   "zraster: --max-texture-side: '0' is outside its range, 1 to 65536\n");
+    for (const char* seconds : {"nan", "-nan", "5s", "0"})
+        expect_refused(
+            dir, std::string("render builtin:cube --max-load-seconds ") + seconds + " -o out.png",
+            std::string("zraster: --max-load-seconds: '") + seconds +
+                "' is not a number of seconds from 1 to 1000000\n");
     // An option given twice (CLI11: "At Most 1 required but received 2").
     expect_refused(dir, "render builtin:cube -o out.png -o out.png",
                    "zraster: --output: given 2 times: give it once\n");

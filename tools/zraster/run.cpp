@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <charconv>
 #include <exception>
 #include <new>
 #include <string>
@@ -39,6 +40,23 @@ std::string parse_error_cause(const std::string& text) {
             return text.substr(conversion.size(), equals - conversion.size()) + ": '" +
                    text.substr(equals + 3) +
                    "' is past the largest number it takes (--help gives its range)";
+    }
+    // CLI::Range's "--jobs: Value 0 not in range 1 to 1000" (doubles as 1.000000).
+    const std::size_t value = text.find(": Value ");
+    const std::size_t range = text.find(" not in range ");
+    const std::size_t to = text.rfind(" to ");
+    if (value != std::string::npos && range != std::string::npos && to != std::string::npos &&
+        value < range && range < to) {
+        const auto trimmed = [](std::string number) {
+            if (number.find('.') != std::string::npos) {
+                while (number.ends_with('0')) number.pop_back();
+                if (number.ends_with('.')) number.pop_back();
+            }
+            return number;
+        };
+        return text.substr(0, value) + ": '" + text.substr(value + 8, range - value - 8) +
+               "' is outside its range, " + trimmed(text.substr(range + 14, to - range - 14)) +
+               " to " + trimmed(text.substr(to + 4));
     }
     const std::string_view marker = ": At Most 1 required but received ";
     const std::size_t at = text.find(marker);
@@ -109,7 +127,15 @@ int run_zraster(std::vector<std::string> args) {
     app.add_option("--max-load-seconds", max_load_seconds,
                    "Stop the importer (Assimp, in its worker process) after this many seconds "
                    "(default: 30 s plus 1 s per MiB of the file)")
-        ->check(CLI::Range(1.0, 1e6));
+        ->check([](const std::string& text) -> std::string {
+            // (CLI::Range lets NaN through: no comparison with it is true.)
+            double seconds = 0;
+            const char* end = text.data() + text.size();
+            const auto [ptr, ec] = std::from_chars(text.data(), end, seconds);
+            if (ec != std::errc() || ptr != end || !(seconds >= 1.0 && seconds <= 1e6))
+                return "'" + text + "' is not a number of seconds from 1 to 1000000";
+            return {};
+        });
     std::string max_geometry_memory = "1G";
     app.add_option("--max-geometry-memory", max_geometry_memory,
                    "Refuse glTF files the importer would decode to more bytes than this (e.g. "
