@@ -88,7 +88,8 @@ struct LoadOptions {
     // LimitExceeded "worker_timeout_seconds".
     double worker_timeout_seconds = kWorkerTimeoutFromFile;
     // The address space the child may add to what it inherits (0: no limit); by default
-    // (kWorkerMemoryFromBudgets) 256 MiB, 4 times the file's bytes and max_geometry_bytes: past
+    // (kWorkerMemoryFromBudgets) 256 MiB, 4 times the file's bytes, max_geometry_bytes and twice
+    // max_texture_bytes (the textures kept and one being decoded): past
     // it, LimitExceeded "max_geometry_bytes" (else "worker_memory_bytes"). The scene it sends
     // back may be at most this long.
     std::size_t worker_memory_bytes = kWorkerMemoryFromBudgets;
@@ -120,13 +121,12 @@ ZRASTER_API std::size_t worker_memory_for(std::uint64_t file_bytes, const LoadOp
 // The other files the model named and the loader read (glTF buffers and images, material
 // libraries, textures, a cells file's mesh files and theirs), and those it names but zraster does
 // not read (every MTL map_* or bump statement's file, every glTF image: a clearcoat texture; a
-// file refused for lying outside the model's folder), canonical and sorted, are appended to *files_read when it is given: a caller that writes files
-// must not replace them.
-// Throws InputError (one line naming the file and the cause) for a missing or unreadable file,
-// an unknown format, malformed or truncated content (an OBJ or MTL word that is not a number
-// included), no triangles (or none with an area), or NaN/Inf coordinates; LimitExceeded past a
-// LoadOptions budget; and with LoadIsolation::WorkerProcess when the importer process crashes,
-// times out or runs out of memory.
+// file refused for lying outside the model's folder), canonical and sorted, are appended to
+// *files_read when it is given: a caller that writes files must not replace them. Throws InputError
+// (one line naming the file and the cause) for a missing or unreadable file, an unknown format,
+// malformed or truncated content (an OBJ or MTL word that is not a number included), no triangles
+// (or none with an area), or NaN/Inf coordinates; LimitExceeded past a LoadOptions budget; and with
+// LoadIsolation::WorkerProcess when the importer process crashes, times out or runs out of memory.
 ZRASTER_API Scene load_scene(const std::filesystem::path& path, const LoadOptions& options = {},
                              std::vector<std::string>* warnings = nullptr,
                              std::vector<std::filesystem::path>* files_read = nullptr);

@@ -177,12 +177,12 @@ std::string mebibytes_text(std::uint64_t bytes) {
                          "expands in a part of the " +
                              format + " format zraster does not count before reading");
     if (options.worker_memory_bytes == LoadOptions::kWorkerMemoryFromBudgets)
-        throw LimitExceeded(
-            file, "max_geometry_bytes",
-            "the importer ran out of its " + mebibytes_text(memory) +
-                " (256 MiB, 4 times the file's size and max_geometry_bytes) reading it: it "
-                "expands in a part of the " +
-                format + " format zraster does not count before reading");
+        throw LimitExceeded(file, "max_geometry_bytes",
+                            "the importer ran out of its " + mebibytes_text(memory) +
+                                " (256 MiB, 4 times the file's size, max_geometry_bytes and twice "
+                                "max_texture_bytes) reading it: it "
+                                "expands in a part of the " +
+                                format + " format zraster does not count before reading");
     throw LimitExceeded(file, "worker_memory_bytes",
                         "the importer ran out of its " + mebibytes_text(memory) +
                             " (worker_memory_bytes) reading it: it expands in a part of the " +
@@ -390,10 +390,13 @@ double worker_timeout_for(std::uint64_t file_bytes, const LoadOptions& options) 
 std::size_t worker_memory_for(std::uint64_t file_bytes, const LoadOptions& options) {
     if (options.worker_memory_bytes != LoadOptions::kWorkerMemoryFromBudgets)
         return options.worker_memory_bytes;
-    // Saturating: 256 MiB + 4 * file_bytes + max_geometry_bytes.
+    // Saturating: 256 MiB + 4 * file_bytes + max_geometry_bytes + 2 * max_texture_bytes (the
+    // textures kept, within their budget, and one decoded before it is reduced: 40 textures of
+    // 4096x4096 stopped the worker at 1.25 GiB, in its budget for geometry).
     const std::uint64_t most = std::uint64_t{1} << 62;
     const std::uint64_t bytes = std::min(file_bytes, most / 8) * 4 + (std::uint64_t{256} << 20) +
-                                std::min<std::uint64_t>(options.max_geometry_bytes, most);
+                                std::min<std::uint64_t>(options.max_geometry_bytes, most / 4) +
+                                std::min<std::uint64_t>(options.max_texture_bytes, most / 4) * 2;
     return std::size_t(std::min(bytes, most));
 }
 

@@ -228,11 +228,14 @@ TEST(LoadWorker, DefaultBudgetsFollowTheFileAndTheGeometryBudget) {
     LoadOptions options;
     EXPECT_EQ(worker_timeout_for(0, options), 30.0);
     EXPECT_EQ(worker_timeout_for(std::uint64_t{100} << 20, options), 130.0);
-    EXPECT_EQ(worker_memory_for(1000, options),
-              (std::size_t{256} << 20) + 4000 + options.max_geometry_bytes);
+    EXPECT_EQ(worker_memory_for(1000, options), (std::size_t{256} << 20) + 4000 +
+                                                    options.max_geometry_bytes +
+                                                    2 * options.max_texture_bytes);
     options.max_geometry_bytes = std::size_t{2} << 30;
+    options.max_texture_bytes = std::size_t{1} << 20;
     EXPECT_EQ(worker_memory_for(std::uint64_t{1} << 30, options),
-              (std::size_t{256} << 20) + (std::size_t{4} << 30) + (std::size_t{2} << 30));
+              (std::size_t{256} << 20) + (std::size_t{4} << 30) + (std::size_t{2} << 30) +
+                  (std::size_t{2} << 20));
     EXPECT_GE(worker_memory_for(~std::uint64_t{0}, options), std::size_t{1} << 61);  // saturates
     options.worker_timeout_seconds = 5;
     options.worker_memory_bytes = 123;
@@ -242,20 +245,22 @@ TEST(LoadWorker, DefaultBudgetsFollowTheFileAndTheGeometryBudget) {
 
 // A 38-byte NFF file whose sphere Assimp tessellates 10 times (21 million triangles): 6.4 GB
 // in the importer. With the default memory budget it stops at 256 MiB + 152 bytes +
-// max_geometry_bytes, named as max_geometry_bytes, the flag a user raises.
+// max_geometry_bytes + 2 x max_texture_bytes, named as max_geometry_bytes, the flag a user raises.
 TEST(LoadWorker, AFileThatExpandsInTheImporterStopsAtTheGeometryBudget) {
     const auto dir = test::temp_dir("io-worker-expands");
     const auto path = dir / "tess.nff";
     test::write_bytes(path, "tess 10\nf 1 0 0 0 0 0 0 0 0\ns 0 0 0 1\n");
     LoadOptions options = worker_options();
     options.max_geometry_bytes = std::size_t{64} << 20;
+    options.max_texture_bytes = std::size_t{16} << 20;
 #ifdef ZRASTER_TEST_ASAN
     test::expect_input_error([&] { load_scene(path, options); }, path, "the importer");
 #else
     test::expect_limit_exceeded([&] { load_scene(path, options); }, path, "max_geometry_bytes",
-                                "the importer ran out of its 321 MiB (256 MiB, 4 times the "
-                                "file's size and max_geometry_bytes) reading it: it expands in a "
-                                "part of the NFF format zraster does not count before reading");
+                                "the importer ran out of its 353 MiB (256 MiB, 4 times the "
+                                "file's size, max_geometry_bytes and twice max_texture_bytes) "
+                                "reading it: it expands in a part of the NFF format zraster does "
+                                "not count before reading");
 #endif
 }
 

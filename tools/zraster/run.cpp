@@ -142,7 +142,7 @@ int run_zraster(std::vector<std::string> args) {
                    "2G; an accessor counts once per primitive that reads it; buffers, animation "
                    "keys, skin bones per placement and materials count too), COLLADA and "
                    "LightWave scenes that expand past it; the importer's memory in its worker "
-                   "process is 256 MiB, 4 times the file's size and this")
+                   "process is 256 MiB, 4 times the file's size, this and twice the texture budget")
         ->capture_default_str();
     int max_texture_side = LoadOptions{}.max_texture_side;
     app.add_option("--max-texture-side", max_texture_side,
