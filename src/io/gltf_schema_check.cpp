@@ -1,6 +1,8 @@
 // See gltf_schema_check.hpp.
 #include "io/gltf_schema_check.hpp"
 
+#include "io/gltf_texture_transform.hpp"
+
 #include "io/gltf_document.hpp"
 
 #include <zraster/error.hpp>
@@ -334,6 +336,7 @@ class SchemaChecker {
 
 void check_gltf_schema(const std::filesystem::path& path, const json& document) {
     SchemaChecker(path, document).run();
+    check_gltf_texture_transforms(document, path.string());
 }
 
 }  // namespace zraster::io

@@ -17,7 +17,8 @@ namespace zraster::io {
 // - a node child that is not a node index; a "scene" past the file's scenes;
 // and InputError("... requires the glTF extension X, which zraster does not read") for an
 // extensionsRequired entry that changes geometry or is unknown (material extensions, which only
-// change shading that zraster approximates anyway, are accepted).
+// change shading that zraster approximates anyway, are accepted); and KHR_texture_transform's
+// members (gltf_texture_transform.hpp).
 void check_gltf_schema(const std::filesystem::path& path, const nlohmann::json& document);
 
 }  // namespace zraster::io

@@ -14,6 +14,7 @@
 #include "io/drawable_check.hpp"
 #include "io/format_structure_check.hpp"
 #include "io/gltf_material_types.hpp"
+#include "io/gltf_texture_transform.hpp"
 #include "io/input_file_check.hpp"
 #include "io/load_worker.hpp"
 #include "io/mirrored_mesh.hpp"
@@ -308,6 +309,11 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
         any_colors |= referenced[m] && ai->mMeshes[m]->HasVertexColors(0);
     const io::GltfColorAlpha color_alpha =
         any_colors ? io::gltf_color_alpha(path) : io::GltfColorAlpha::AsRead;
+    // glTF's KHR_texture_transform of each material's base color texture (Assimp's material
+    // indices are glTF's, its default material appended).
+    const std::vector<std::optional<io::TextureTransform>> uv_transforms =
+        is_obj(path) ? std::vector<std::optional<io::TextureTransform>>{}
+                     : io::gltf_base_color_transforms(path);
     std::vector<unsigned> our_mesh(ai->mNumMeshes, kUnset);
     std::vector<std::string> labels(ai->mNumMeshes);
     std::optional<std::string> recomputed;  // the first mesh whose normals were replaced
@@ -320,6 +326,9 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
                                      warnings, &normals_recomputed);
         if (mesh.indices.empty()) continue;
         if (normals_recomputed && !recomputed) recomputed = labels[m];
+        if (const unsigned mi = ai->mMeshes[m]->mMaterialIndex;
+            mi < uv_transforms.size() && uv_transforms[mi])
+            io::apply_texture_transform(*uv_transforms[mi], mesh.uvs);
         mesh.material = materials.index_of(ai->mMeshes[m]->mMaterialIndex);
         our_mesh[m] = static_cast<unsigned>(scene.meshes.size());
         scene.meshes.push_back(std::move(mesh));
