@@ -226,6 +226,10 @@ TEST(CliLimits, AFrameWithNothingInViewWarns) {
          "depth test: the image shows only the background (is --depth-format d16 too coarse for "
          "the near and far planes?)\n"},
         {"render builtin:cube -o a.png --size 32x32 --depth-format d16", ""},
+        // In view, but a sliver that covers no pixel center: not the depth test's doing.
+        {"render sliver.obj -o a.png --size 32x32",
+         "warning: sliver.obj: its 1 triangles in view cover no pixel center (too thin or too "
+         "small for --size 32x32): the image shows only the background\n"},
         // The object-space algorithms and supersampling: an image of the background alone.
         {"render builtin:cube -o a.png --size 8x8 --visibility painter --near 1e29 --far 1e30",
          "warning: builtin:cube: nothing of its 12 triangles was drawn: the image shows only the "
@@ -264,6 +268,7 @@ TEST(CliLimits, AFrameWithNothingInViewWarns) {
                              R"(application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAA)"
                              R"(AAAAAAAAAAgD8AAAAAAACAPwAAAAAAAAAAAAAAPwAAgD8AAAAAAAAAAAAAAD8AAI)"
                              R"(A/AAAAAAAAAAAAAAA/","byteLength":84}]})");
+    write(dir / "sliver.obj", "v 0 0 0\nv 1 1.1 0\nv 1 1.1001 0\nf 1 2 3\n");
     write(dir / "clear.mtl", "newmtl m\nKd 1 0 0\nd 0\n");
     write(dir / "clear.obj", "mtllib clear.mtl\nusemtl m\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     for (const auto& [arguments, message] : cases) {

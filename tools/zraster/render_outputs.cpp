@@ -155,16 +155,28 @@ RenderedFrame render_outputs(const RenderArguments& a, const Scene& scene, Outpu
                    "background (--alpha-mode opaque draws them opaque)\n",
                    scene.name, s.triangles_rasterized);
     // Triangles in view, none of whose fragments passed: a depth format too coarse for the
-    // near/far ratio rounds every depth to the cleared far plane (d16, near 1e-20).
+    // near/far ratio rounds every depth to the cleared far plane (d16, near 1e-20); or slivers
+    // that cover no pixel center at all. The frame drawn again without the depth test tells
+    // them apart (only here: the image is blank).
     else if (notes != nullptr && renders_with_pipeline(a) && options.view == DebugView::None &&
              !a.no_depth_test && s.triangles_rasterized > 0 && s.fragments_passed == 0 &&
              s.fragments_blended == 0 && s.fragments_alpha_discarded == 0 &&
-             check_flags_take_effect(a).empty())
-        fmt::print(notes,
-                   "warning: {}: {} triangles in view, but none of their fragments passed the "
-                   "depth test: the image shows only the background (is --depth-format {} too "
-                   "coarse for the near and far planes?)\n",
-                   scene.name, s.triangles_rasterized, a.depth_format);
+             check_flags_take_effect(a).empty()) {
+        RenderOptions probe = options;
+        probe.depth_test = false;
+        probe.progress = nullptr;
+        if (render(scene, probe).stats.fragments_passed == 0)
+            fmt::print(notes,
+                       "warning: {}: its {} triangles in view cover no pixel center (too thin or "
+                       "too small for --size {}x{}): the image shows only the background\n",
+                       scene.name, s.triangles_rasterized, options.width, options.height);
+        else
+            fmt::print(notes,
+                       "warning: {}: {} triangles in view, but none of their fragments passed "
+                       "the depth test: the image shows only the background (is --depth-format "
+                       "{} too coarse for the near and far planes?)\n",
+                       scene.name, s.triangles_rasterized, a.depth_format);
+    }
 
     const Clock::time_point encode_start = Clock::now();
     // RGBA -> RGB: the alpha channel is always opaque. Byte by byte: a 3-byte copy_n per pixel
