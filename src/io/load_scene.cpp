@@ -13,6 +13,7 @@
 #include "io/declared_counts_check.hpp"
 #include "io/drawable_check.hpp"
 #include "io/format_structure_check.hpp"
+#include "io/gltf_image_uris.hpp"
 #include "io/gltf_material_types.hpp"
 #include "io/gltf_texture_transform.hpp"
 #include "io/input_file_check.hpp"
@@ -301,6 +302,8 @@ io::LoadedScene io::import_with_assimp(const std::filesystem::path& path,
             warnings.push_back(io::refusal_text(refusal, "not read"));
     for (std::string& warning : assimp_warnings.take()) warnings.push_back(std::move(warning));
     for (std::string& warning : io::gltf_material_type_warnings(path))
+        warnings.push_back(std::move(warning));
+    for (std::string& warning : io::gltf_image_uri_warnings(path))
         warnings.push_back(std::move(warning));
     MaterialTable materials(*ai, path, policy, options, scene, warnings, obj_libraries);
     // (The document is read again only when a mesh has vertex colors.)

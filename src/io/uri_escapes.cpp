@@ -28,7 +28,11 @@ std::optional<std::string> percent_decoded(std::string_view uri) {
     for (std::size_t i = 0; i < uri.size(); ++i) {
         if (uri[i] == '%' && i + 2 < uri.size() && hex_digit(uri[i + 1]) >= 0 &&
             hex_digit(uri[i + 2]) >= 0) {
-            out += static_cast<char>(hex_digit(uri[i + 1]) * 16 + hex_digit(uri[i + 2]));
+            const char c = static_cast<char>(hex_digit(uri[i + 1]) * 16 + hex_digit(uri[i + 2]));
+            // A NUL would end the name where the file system reads it ("ok.png%00../x" opened
+            // ok.png): such a URI is taken as written.
+            if (c == '\0') return std::nullopt;
+            out += c;
             i += 2;
             decoded = true;
         } else {

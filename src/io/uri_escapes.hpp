@@ -10,7 +10,8 @@
 
 namespace zraster::io {
 
-// `uri` with its %XX escapes decoded; nullopt when it has none.
+// `uri` with its %XX escapes decoded; nullopt when it has none, or when one is %00 (a name
+// cannot hold a NUL: the URI is taken as written).
 std::optional<std::string> percent_decoded(std::string_view uri);
 
 // The file `uri` names inside `folder`: folder / uri when that exists, else folder / the decoded

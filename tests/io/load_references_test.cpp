@@ -92,6 +92,21 @@ TEST(LoadReferences, GltfBufferUrisAreReadWithTheirEscapesDecoded) {
     }
 }
 
+// An escaped NUL would end the name where the system reads it ("ok.bin%00../x" opened ok.bin):
+// such a URI is taken as written, a file that does not exist.
+TEST(LoadReferences, AnEscapedNulIsNotDecoded) {
+    const auto dir = fixture("refs-escaped-nul");
+    test::write_bytes(dir / "model" / "ok.bin", triangle_bytes());
+    const auto model = dir / "model" / "nul.gltf";
+    test::write_bytes(model, triangle_gltf("ok.bin%00../outside.bin"));
+    for (const LoadIsolation isolation : {LoadIsolation::InProcess, LoadIsolation::WorkerProcess}) {
+        LoadOptions o = in_process();
+        o.isolation = isolation;
+        test::expect_input_error([&] { load_scene(model, o); }, model,
+                                 "'ok.bin%00../outside.bin', is missing or cannot be read");
+    }
+}
+
 TEST(LoadReferences, AbsolutePathsAndSymbolicLinksOutAreRefused) {
     const auto dir = fixture("refs-links");
     // An absolute URI (Assimp 5.2 joins it to the model's folder when the model's path is
@@ -284,6 +299,33 @@ TEST(LoadReferences, EachRefusalSaysItsCauseAndOnlyOutsideNamesTheFlag) {
         EXPECT_NE(warnings[0].find("cannot be read (Permission denied)"), std::string::npos)
             << warnings[0];
         EXPECT_EQ(warnings[0].find(flag), std::string::npos) << warnings[0];
+    }
+}
+
+// Image URIs Assimp drops without a word (empty, a data: URI it cannot decode, one of no data)
+// warn as a texture not found does.
+TEST(LoadReferences, ImageUrisTheImporterDropsWarn) {
+    const auto dir = fixture("refs-image-uris");
+    const std::pair<const char*, const char*> cases[] = {
+        {"", "image 0's uri '' is empty: its texture is not used"},
+        {"data:image/png;base64,", "image 0's uri 'data:image/png;base64,' holds no data"},
+        {"data:../outside.png", "image 0's uri 'data:../outside.png' is not a base64 data URI"},
+        {"ok.png%00../outside.png", "texture 'ok.png%00../outside.png' not found"},
+    };
+    int k = 0;
+    for (const auto& [uri, warning] : cases) {
+        SCOPED_TRACE(uri);
+        const auto model = dir / "model" / ("m" + std::to_string(k++) + ".gltf");
+        test::write_bytes(model, textured_gltf(uri));
+        for (const LoadIsolation isolation :
+             {LoadIsolation::InProcess, LoadIsolation::WorkerProcess}) {
+            LoadOptions o = in_process();
+            o.isolation = isolation;
+            std::vector<std::string> warnings;
+            load_scene(model, o, &warnings);
+            ASSERT_EQ(warnings.size(), 1u);
+            EXPECT_NE(warnings[0].find(warning), std::string::npos) << warnings[0];
+        }
     }
 }
 
