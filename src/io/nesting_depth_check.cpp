@@ -2,10 +2,13 @@
 
 #include <zraster/error.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cstdint>
 #include <fstream>
 #include <iterator>
+#include <unordered_map>
 #include <vector>
 
 namespace zraster::io {
@@ -119,11 +122,79 @@ std::size_t ac3d_object_depth(std::string_view text) {
     return deepest;
 }
 
+std::size_t smd_bone_depth(std::string_view text, const std::string& file) {
+    // The "nodes" section: `id "name" parent` lines up to "end".
+    std::unordered_map<std::int64_t, std::int64_t> parent_of;
+    std::vector<std::int64_t> order;
+    bool in_nodes = false;
+    for (std::size_t at = 0; at < text.size();) {
+        std::size_t end = text.find('\n', at);
+        if (end == std::string_view::npos) end = text.size();
+        std::string_view line = text.substr(at, end - at);
+        at = end + 1;
+        while (!line.empty() && is_space(line.front())) line.remove_prefix(1);
+        while (!line.empty() && is_space(line.back())) line.remove_suffix(1);
+        if (!in_nodes) {
+            in_nodes = line == "nodes";
+            continue;
+        }
+        if (line == "end") break;
+        std::int64_t id = 0, parent = 0;
+        const auto [id_end, id_ec] = std::from_chars(line.data(), line.data() + line.size(), id);
+        const std::size_t last_blank = line.find_last_of(" \t");
+        if (id_ec != std::errc() || last_blank == std::string_view::npos) continue;
+        const std::string_view parent_text = line.substr(last_blank + 1);
+        const auto [p_end, p_ec] =
+            std::from_chars(parent_text.data(), parent_text.data() + parent_text.size(), parent);
+        if (p_ec != std::errc()) continue;  // (the importer says what is wrong with the line)
+        if (parent_of.emplace(id, parent).second) order.push_back(id);
+    }
+    // Ids are 0 to n-1; the importer sizes its bone array by the largest (2,000,000,000: out of
+    // memory).
+    for (const std::int64_t id : order)
+        if (id < 0 || static_cast<std::uint64_t>(id) >= order.size())
+            throw InputError(file, "malformed SMD file: node id " + std::to_string(id) +
+                                       " is outside 0.." + std::to_string(order.size() - 1) +
+                                       " (the nodes section has " + std::to_string(order.size()) +
+                                       " nodes)");
+    std::unordered_map<std::int64_t, std::size_t> depth;  // levels from the root, 1 for a root
+    std::size_t deepest = 0;
+    std::vector<std::int64_t> chain;  // from a node up to the first whose depth is known
+    for (const std::int64_t start : order) {
+        chain.clear();
+        std::size_t above = 0;  // the depth above the chain's last node
+        for (std::int64_t node = start;;) {
+            if (const auto known = depth.find(node); known != depth.end()) {
+                above = known->second;
+                break;
+            }
+            if (std::find(chain.begin(), chain.end(), node) != chain.end())
+                throw InputError(file, "malformed SMD file: node " + std::to_string(node) +
+                                           " is its own ancestor (a loop of parents)");
+            chain.push_back(node);
+            const std::int64_t parent = parent_of[node];
+            if (parent < 0 || chain.size() > kMaxNestingDepth) break;
+            if (!parent_of.contains(parent))
+                throw InputError(file, "malformed SMD file: node " + std::to_string(node) +
+                                           "'s parent " + std::to_string(parent) +
+                                           " is not a node");
+            node = parent;
+        }
+        for (auto it = chain.rbegin(); it != chain.rend(); ++it) depth[*it] = ++above;
+        deepest = std::max(deepest, above);
+        if (deepest > kMaxNestingDepth) break;
+    }
+    return deepest;
+}
+
 void check_nesting_depth(const std::filesystem::path& path, std::string_view head) {
     const bool x_text =
         head.size() >= 16 && head.starts_with("xof ") && head.substr(8, 4) == "txt ";
     const bool ac3d = head.starts_with("AC3D");
-    if (!x_text && !ac3d) return;
+    std::string extension = path.extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const bool smd = extension == ".smd" || extension == ".vta";
+    if (!x_text && !ac3d && !smd) return;
     std::ifstream in(path, std::ios::binary);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const std::string limit = std::to_string(kMaxNestingDepth);
@@ -139,6 +210,10 @@ void check_nesting_depth(const std::filesystem::path& path, std::string_view hea
                                             "it nest)"
                                           : ")"));
     }
+    if (smd && smd_bone_depth(text, path.string()) > kMaxNestingDepth)
+        throw InputError(path.string(), "malformed SMD file: its bones nest more than " + limit +
+                                            " levels deep (each node's parent; the importer "
+                                            "reads them recursively)");
     if (ac3d && ac3d_object_depth(text) > kMaxNestingDepth)
         throw InputError(path.string(), "malformed AC3D file: its OBJECTs nest more than " + limit +
                                             " levels deep ('kids' lines; the importer reads "

@@ -8,6 +8,8 @@
 //             the importer as an unknown object that ends inside the next Frame, so sibling
 //             Frames after it nest: 200,000 such frames overflowed its stack.
 //   AC3D      OBJECTs within OBJECTs ("kids N" lines).
+//   SMD       bones: each node's parent in the "nodes" section (100,000 bones in a chain crashed
+//             the importer); a parent that is no node, or a loop of parents, is refused too.
 #pragma once
 #include <cstddef>
 #include <filesystem>
@@ -29,8 +31,13 @@ XFrameDepth x_frame_depth(std::string_view body);
 // The deepest OBJECT nesting of an AC3D file.
 std::size_t ac3d_object_depth(std::string_view text);
 
-// Throws InputError(file, "malformed X/AC3D file: ...") for a text X or AC3D file (by its
-// header) nested past kMaxNestingDepth; does nothing for other files.
+// The deepest chain of parents of an SMD file's "nodes" section; throws InputError(file, ...)
+// for a parent that is not a node or a loop of parents.
+std::size_t smd_bone_depth(std::string_view text, const std::string& file);
+
+// Throws InputError(file, "malformed X/AC3D/SMD file: ...") for a text X or AC3D file (by its
+// header) or an SMD file (by its extension, as Assimp picks it) nested past kMaxNestingDepth;
+// does nothing for other files.
 void check_nesting_depth(const std::filesystem::path& path, std::string_view head);
 
 }  // namespace zraster::io

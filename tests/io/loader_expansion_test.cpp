@@ -335,6 +335,43 @@ TEST(LoaderExpansion, XFramesAndAc3dObjectsNestedPastAThousandLevelsAreRefused) 
     }
 }
 
+// SMD bones are read recursively by their parents: 100,000 in a chain crashed the importer; a
+// parent that is no node, a loop of parents and ids past the nodes are refused too.
+TEST(LoaderExpansion, SmdBonesNestedPastAThousandLevelsAreRefused) {
+    const auto dir = test::temp_dir("expansion-smd");
+    const auto smd = [](const std::string& nodes) {
+        return "version 1\nnodes\n" + nodes +
+               "end\nskeleton\ntime 0\n0 0 0 0 0 0 0\nend\ntriangles\nmat\n0 0 0 0 0 0 1 0 0\n0 "
+               "1 0 0 0 0 1 1 0\n0 0 1 0 0 0 1 0 1\nend\n";
+    };
+    const auto chain = [](int bones) {
+        std::string nodes;
+        for (int k = 0; k < bones; ++k)
+            nodes += std::to_string(k) + " \"b" + std::to_string(k) + "\" " +
+                     std::to_string(k - 1) + "\n";
+        return nodes;
+    };
+    test::write_bytes(dir / "ok.smd", smd(chain(1000)));
+    test::write_bytes(dir / "deep.smd", smd(chain(1001)));
+    test::write_bytes(dir / "loop.smd", smd("0 \"a\" 1\n1 \"b\" 0\n"));
+    test::write_bytes(dir / "orphan.smd", smd("0 \"a\" -1\n1 \"b\" 7\n"));
+    test::write_bytes(dir / "sparse.smd", smd("2000000000 \"a\" -1\n"));
+    const std::pair<const char*, const char*> refused[] = {
+        {"deep.smd", "malformed SMD file: its bones nest more than 1000 levels deep"},
+        {"loop.smd", "malformed SMD file: node 0 is its own ancestor (a loop of parents)"},
+        {"orphan.smd", "malformed SMD file: node 1's parent 7 is not a node"},
+        {"sparse.smd", "malformed SMD file: node id 2000000000 is outside 0..0"},
+    };
+    for (const LoadIsolation isolation : kExpansionIsolations) {
+        SCOPED_TRACE(expansion_isolation_name(isolation));
+        LoadOptions o;
+        o.isolation = isolation;
+        EXPECT_EQ(load_scene(dir / "ok.smd", o).triangle_count(), 1u);
+        for (const auto& [name, cause] : refused)
+            test::expect_input_error([&] { load_scene(dir / name, o); }, dir / name, cause);
+    }
+}
+
 // A scene's objects are checked as if they were given directly (a COLLADA graph of 2^20
 // placements took the importer to 7.8 GB through a scene), and a scene among them is refused
 // (one loading itself crashed Assimp; two loading each other ran until stopped).
