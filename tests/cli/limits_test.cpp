@@ -502,6 +502,14 @@ TEST(CliLimits, WholeNumbersAreReadInDecimal) {
     expect_refused(dir, "render builtin:cube --threads 9223372036854775808 -o out.png",
                    "zraster: --threads: '9223372036854775808' is past the largest number it takes "
                    "(--help gives its range)\n");
+    // An option of another command, or a word no option takes (CLI11: "The following arguments
+    // were not expected: 4 --aa", reversed and without the command).
+    expect_refused(dir, "svg builtin:cube --aa 4 -o out.svg",
+                   "zraster: --aa: not an option of zraster svg (zraster svg --help lists its "
+                   "options)\n");
+    expect_refused(dir, "render builtin:cube -o out.png extra",
+                   "zraster: 'extra': an argument zraster render does not take (zraster render "
+                   "--help lists what it takes)\n");
     // Out of range, in one wording (CLI11's "Value 0 not in range 1 to 65536"), and NaN, which
     // CLI11's range check let through.
     expect_refused(dir, "render builtin:cube --max-texture-side 0 -o out.png",

@@ -65,6 +65,25 @@ std::string parse_error_cause(const std::string& text) {
            " times: give it once";
 }
 
+// The first argument, in the order given, that the command did not take: an option of another
+// command ("svg --aa 4"), or a word no option reads.
+std::string unexpected_arguments_cause(const CLI::App& app,
+                                       const std::vector<std::string>& given) {
+    std::string command = "zraster";
+    for (const CLI::App* sub : app.get_subcommands()) command += " " + sub->get_name();
+    const std::vector<std::string> remaining = app.remaining(true);
+    for (auto it = given.begin(); it != given.end(); ++it) {
+        if (std::find(remaining.begin(), remaining.end(), *it) == remaining.end()) continue;
+        const std::string word = it->substr(0, it->find('='));
+        if (word.starts_with("-"))
+            return word + ": not an option of " + command + " (" + command +
+                   " --help lists its options)";
+        return "'" + *it + "': an argument " + command + " does not take (" + command +
+               " --help lists what it takes)";
+    }
+    return "arguments " + command + " does not take (" + command + " --help lists them)";
+}
+
 }  // namespace
 
 int run_zraster(std::vector<std::string> args) {
@@ -198,7 +217,8 @@ int run_zraster(std::vector<std::string> args) {
                    where);
         return kExitBadInput;
     }
-    std::reverse(args.begin(), args.end());  // CLI11 takes a reversed vector
+    const std::vector<std::string> given = args;
+    std::reverse(args.begin(), args.end());  // CLI11 takes a reversed vector (and consumes it)
     try {
         app.parse(args);
     } catch (const CLI::CallForHelp& e) {
@@ -207,6 +227,10 @@ int run_zraster(std::vector<std::string> args) {
         return app.exit(e);
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
+    } catch (const CLI::ExtrasError&) {
+        // CLI11: "The following arguments were not expected: 4 --aa" (reversed, no command).
+        fmt::print(stderr, "zraster: {}\n", io::one_line(unexpected_arguments_cause(app, given)));
+        return kExitBadInput;
     } catch (const CLI::ParseError& e) {
         fmt::print(stderr, "zraster: {}\n", io::one_line(parse_error_cause(e.what())));
         return kExitBadInput;
