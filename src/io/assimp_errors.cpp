@@ -58,8 +58,43 @@ constexpr Translation kTranslations[] = {
     {"there are more than one nodes with",
      "malformed {} file: a camera or light is placed by two nodes (a node with two parents?)"},
     {"has the same name as aiMesh::mBones", "malformed {} file: a skin names the same joint twice"},
+    {"mAngleInnerCone is larger than",
+     "malformed {} file: a spot light's inner cone angle is larger than its outer one"},
+    {"Empty node animation channel",
+     "malformed {} file: an animation channel without keys (a bone its own parent, or no "
+     "skeleton frame?)"},
+    {"mNumChannels is 0",
+     "malformed {} file: an animation without channels (no nodes section, or no skeleton?)"},
     {"Validation failed", "malformed {} file: the importer made an inconsistent scene of it"},
 };
+
+// Assimp's own words as the detail after ours, in the user's terms: none for its validation's
+// texts, which name its data structures ("aiNode::mMeshes[1]"); its source file and line cut;
+// a number it cannot parse quoted alone (it quoted the rest of the file).
+std::string assimp_detail_text(std::string text) {
+    if (text.find("Validation failed") != std::string::npos) return {};
+    for (std::size_t at = text.find("::m"); at != std::string::npos;
+         at = text.find("::m", at + 3)) {
+        std::size_t start = at;
+        while (start > 0 && std::isalnum(static_cast<unsigned char>(text[start - 1]))) --start;
+        if (text.compare(start, 2, "ai") == 0) return {};
+    }
+    if (const std::size_t file = text.find(" (File: "); file != std::string::npos)
+        if (const std::size_t end = text.find(')', file); end != std::string::npos)
+            text.erase(file, end + 1 - file);
+    const std::string_view parse = "Cannot parse string \"";
+    if (const std::size_t at = text.find(parse); at != std::string::npos) {
+        const std::size_t first = at + parse.size();
+        const std::size_t quote = text.find('"', first);
+        std::size_t word_end = first;
+        while (word_end < text.size() && word_end < quote && text[word_end] != ' ' &&
+               text[word_end] != '?' && text[word_end] != '\n')
+            ++word_end;
+        if (quote != std::string::npos && word_end < quote)
+            text.replace(word_end, quote - word_end, "");
+    }
+    return std::string(kDetail) + text + ")";
+}
 
 std::string with_format(std::string_view text, const std::string& format) {
     std::string out(text);
@@ -95,7 +130,7 @@ std::string assimp_error_cause(const std::filesystem::path& path, const std::str
         return "the importer ran out of memory reading it: it expands past the memory this "
                "process may use, in a part of the " +
                format_name(path) + " format zraster does not count before reading";
-    const std::string detail = std::string(kDetail) + text + ")";
+    const std::string detail = assimp_detail_text(text);
     if (const std::optional<std::string> reference = quoted_reference(text))
         return "the file it refers to, '" + *reference + "', is missing or cannot be read" + detail;
     const std::string format = format_name(path);

@@ -492,7 +492,28 @@ class OffHeaderReader {
     // wrap the count to 2^32 - 1 and the importer crashes freeing them (found by
     // fuzz_load_off). So any such face is refused here.
     void check_faces(const std::filesystem::path& path) {
-        for (std::uint64_t v = 0; v < vertices_ && next_line(); ++v) {
+        // Vertex words are numbers (Assimp read the prefix of "1e5x" and failed on "0x1p3"
+        // quoting the rest of the file).
+        for (std::uint64_t v = 0; v < vertices_; ++v) {
+            const char* line = p_;
+            if (!next_line()) break;
+            const char* line_end = p_;
+            for (const char* q = line; q < line_end;) {
+                while (q < line_end &&
+                       (*q == ' ' || *q == '\t' || *q == '\r' || *q == '\n' || *q == '\f'))
+                    ++q;
+                if (q == line_end || *q == '#') break;
+                const char* token = q;
+                while (q < line_end && *q != ' ' && *q != '\t' && *q != '\r' && *q != '\n' &&
+                       *q != '\f')
+                    ++q;
+                const std::string_view word(token, static_cast<std::size_t>(q - token));
+                if (!is_number_word(word))
+                    throw InputError(path.string(), "malformed OFF file: vertex " +
+                                                        std::to_string(v) + " (line " +
+                                                        std::to_string(line_number(line)) +
+                                                        "): " + not_a_number(word));
+            }
         }
         for (std::uint64_t f = 0; f < faces_; ++f) {
             const char* line = p_;

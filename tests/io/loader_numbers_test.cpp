@@ -55,6 +55,32 @@ TEST(LoaderNumbers, OffFaceColorsOfOtherCountsOrOutOfRangeAreRefused) {
     }
 }
 
+// OFF vertex words are numbers (Assimp read the prefix of "1e5x", and failed on "0x1p3" quoting
+// the rest of the file).
+TEST(LoaderNumbers, OffVertexWordsAreNumbers) {
+    const auto dir = test::temp_dir("numbers-off-vertices");
+    const std::pair<const char*, const char*> cases[] = {
+        {"0 0 0\n1e5x 0 0\n0 1 0\n",
+         "malformed OFF file: vertex 1 (line 4): '1e5x' is not a number"},
+        {"0x1p3 0 0\n1 0 0\n0 1 0\n",
+         "malformed OFF file: vertex 0 (line 3): '0x1p3' is not a number"},
+        {"0 0 0 # a comment\n1 0 0\n0 1 0\n", ""},
+    };
+    int k = 0;
+    for (const auto& [vertices, cause] : cases) {
+        SCOPED_TRACE(vertices);
+        const auto path = dir / ("v" + std::to_string(k++) + ".off");
+        test::write_bytes(path, std::string("OFF\n3 1 0\n") + vertices + "3 0 1 2\n");
+        for (const LoadIsolation isolation : kNumberIsolations) {
+            if (std::string(cause).empty())
+                EXPECT_EQ(load_scene(path, numbers_isolated(isolation)).triangle_count(), 1u);
+            else
+                test::expect_input_error([&] { load_scene(path, numbers_isolated(isolation)); },
+                                         path, cause);
+        }
+    }
+}
+
 TEST(LoaderNumbers, ObjNormalsOfOtherThanThreeNumbersAreRefused) {
     const auto dir = test::temp_dir("numbers-vn");
     // The second file starts with a pentagon: it takes the Assimp path, whose scan refuses it too.

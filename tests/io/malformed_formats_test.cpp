@@ -361,6 +361,28 @@ TEST(MalformedFormats, AssimpMessagesAreTranslated) {
               "the importer ran out of memory reading it: it expands past the memory this "
               "process may use, in a part of the DAE format zraster does not count before "
               "reading");
+    // Its validation's texts name its data structures: ours alone.
+    EXPECT_EQ(io::assimp_error_cause(
+                  "m.gltf",
+                  "Validation failed: aiNode::mMeshes[1] is already referenced by this "
+                  "node n (value: 0)"),
+              "malformed GLTF file: a node places the same mesh twice");
+    EXPECT_EQ(io::assimp_error_cause("m.gltf",
+                                     "Validation failed: aiLight::mAngleInnerCone is "
+                                     "larger than aiLight::mAngleOuterCone"),
+              "malformed GLTF file: a spot light's inner cone angle is larger than its outer one");
+    EXPECT_EQ(io::assimp_error_cause("m.smd", "Validation failed: Empty node animation channel"),
+              "malformed SMD file: an animation channel without keys (a bone its own parent, or "
+              "no skeleton frame?)");
+    // Its source file and line cut; a number it cannot parse quoted alone, not the rest of the
+    // file.
+    EXPECT_EQ(io::assimp_error_cause("m.mdl", "MDL: bad header (File: MDLLoader.cpp Line: 424)"),
+              "malformed or unsupported MDL file (Assimp: MDL: bad header)");
+    EXPECT_EQ(io::assimp_error_cause("m.off",
+                                     "Cannot parse string \"x1p3 0 0?1 0 0?\" as a real "
+                                     "number: does not start with digit"),
+              "malformed or unsupported OFF file (Assimp: Cannot parse string \"x1p3\" as a real "
+              "number: does not start with digit)");
     EXPECT_EQ(io::assimp_detail("x (Assimp: y (z))"), "y (z)");
     EXPECT_EQ(io::assimp_detail("no detail"), std::nullopt);
 }
