@@ -284,6 +284,10 @@ py::dict render(PyRenderer& r, const py::object& scene_object, const py::object&
                     depth_camera_images(depth_camera, scene->view(), options, r.stats.camera);
             });
         r.rendered = true;
+    } catch (const LimitExceeded& e) {
+        // A render budget (max_painter_comparisons, max_bin_bytes, ...): still a LimitExceeded,
+        // e.limit the keyword that raises it.
+        throw LimitExceeded(keyword_name(e.file()), e.limit(), with_keyword_names(e.cause()));
     } catch (const InputError& e) {
         throw InputError(keyword_name(e.file()), with_keyword_names(e.cause()));
     }

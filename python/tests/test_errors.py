@@ -254,6 +254,20 @@ def cube():
     return zraster.load("builtin:cube")
 
 
+@pytest.mark.parametrize("keywords, limit, fragment", [
+    (dict(visibility="bsp", max_bsp_polygons=3), "max_bsp_polygons",
+     "BSP tree: 12 input triangles, more than the budget of 3 polygons"),
+    (dict(visibility="painter", max_painter_comparisons=3), "max_painter_comparisons",
+     "more than 3 polygon comparisons"),
+    (dict(visibility="abuffer", max_abuffer_fragments=10), "max_abuffer_fragments", "A-buffer"),
+    (dict(max_frame_bytes=10), "max_frame_bytes", "more than"),
+])
+def test_render_budgets_raise_limit_exceeded(cube, keywords, limit, fragment):
+    with raises(zraster.LimitExceeded, "builtin:cube", fragment) as info:
+        zraster.Renderer(64, 64).render(cube, **keywords)
+    assert info.value.limit == limit
+
+
 def test_bad_outputs(cube):
     r = zraster.Renderer(16, 16)
     with raises(zraster.InputError, "outputs", "unknown output 'colour'", "expected color"):
