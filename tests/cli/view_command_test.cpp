@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 
 #include "support/test_support.hpp"
+#include "view_script.hpp"
 
 namespace zraster::test {
 namespace {
@@ -198,6 +199,22 @@ TEST(ViewCommand, ResizingToOnePixelAndQuittingMidFrameAreClean) {
     EXPECT_EQ(last.width, 97);
     EXPECT_EQ(last.height, 41);
     EXPECT_GE(read_image_rgba8(dir / "zraster-view-1.png").width, 1);  // the s key's
+}
+
+// Resizes in a row within one frame: the last one counts (each was carried out: a thousand
+// alternating 1x1 and 8192x8192 took minutes before the first frame).
+TEST(ViewCommand, ResizesInARowWithinAFrameKeepTheLast) {
+    std::string text;
+    for (int k = 0; k < 1000; ++k) text += k % 2 ? "0 resize 8192 8192\n" : "0 resize 1 1\n";
+    text += "0 key a\n0 resize 5 6\n1 resize 7 8\n1 resize 9 10\n";
+    const std::vector<cli::ScriptEvent> events = cli::parse_view_script(text, "s.txt");
+    ASSERT_EQ(events.size(), 4u);
+    EXPECT_EQ(events[0].event.width, 8192);
+    EXPECT_EQ(events[1].event.kind, cli::InputEvent::Kind::Key);
+    EXPECT_EQ(events[2].event.width, 5);
+    EXPECT_EQ(events[3].frame, 1);
+    EXPECT_EQ(events[3].event.width, 9);
+    EXPECT_EQ(events[3].event.height, 10);
 }
 
 TEST(ViewCommand, BadFilesAreExitTwoWithOneLine) {

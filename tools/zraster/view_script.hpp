@@ -9,7 +9,8 @@
 //   FRAME quit
 //
 // An event with FRAME f is applied once f frames have been shown (0: before the first); events
-// of one frame apply in file order. Frames must not decrease.
+// of one frame apply in file order (resizes in a row within one frame: the last). Frames must not
+// decrease.
 #pragma once
 #include <filesystem>
 #include <string>
