@@ -105,6 +105,11 @@ TEST(CliLimits, NumbersOutOfRange) {
     expect_refused(dir, "bench builtin:cube --frames 1 --warmup 2147483647",
                    "zraster: --warmup: must be in 0..1000000, not 2147483647");
     expect_refused(dir, "bench builtin:cube --frames 2000000", "zraster: --frames: must be in");
+    // Within range, but 10^6 frames of 4096x4096: all their pixels past bench's 2^34.
+    expect_refused(dir, "bench builtin:cube --size 4096x4096 --frames 1000000",
+                   "zraster: --frames: 1000000 frames and 2 warmup frames of 4096x4096 are "
+                   "16777249554432 pixels in all, more than bench's 2^34 (17179869184): fewer "
+                   "frames or a smaller --size");
     const CommandResult bench = run_limited(
         "bench builtin:cube --frames 1 --warmup 0 --threads 2147483647 --size 16x16", dir);
     EXPECT_EQ(bench.exit_code, 0) << bench.output;

@@ -110,6 +110,17 @@ int run_bench(const BenchArguments& a) {
                                        " pixels, more than the renderer's limit of " +
                                        std::to_string(RenderLimits{}.max_pixels) +
                                        " (render --max-pixels raises it; bench does not)");
+    // All the frames' pixels within 2^34 (a thousand 4K frames; about 10 s of a small scene):
+    // bench prints nothing until it is done, and 10^6 frames of 4096x4096 ran for hours.
+    constexpr std::uint64_t kMaxBenchPixelFrames = std::uint64_t{1} << 34;
+    const std::uint64_t pixel_frames = pixels * std::uint64_t(a.frames + a.warmup);
+    if (pixel_frames > kMaxBenchPixelFrames)
+        throw InputError("--frames", std::to_string(a.frames) + " frames and " +
+                                         std::to_string(a.warmup) + " warmup frames of " + a.size +
+                                         " are " + std::to_string(pixel_frames) +
+                                         " pixels in all, more than bench's 2^34 (" +
+                                         std::to_string(kMaxBenchPixelFrames) +
+                                         "): fewer frames or a smaller --size");
     const int threads = capped_threads("--threads", checked_thread_count("--threads", a.threads));
     const std::uint64_t max_frame_bytes =
         parse_byte_size("--max-frame-bytes", a.max_frame_bytes_text);
