@@ -375,6 +375,9 @@ TEST(CliLimits, FlagsWithoutEffectAreRefused) {
          "are)\n"},
         {"render builtin:cube -o out.png --no-textures --texture-filter nearest",
          "zraster: --texture-filter: filters textures, which --no-textures turns off\n"},
+        {"render builtin:cube -o out.png --ortho --interpolation linear",
+         "zraster: --interpolation: linear: with --ortho every interpolation is linear on screen "
+         "already (no perspective to correct for): it changes nothing\n"},
         {"batch builtin:cube -o out.png --visibility warnock --no-depth-test",
          "zraster: --no-depth-test: sets the z-buffer's depth test, which --visibility warnock "
          "does not use\n"},

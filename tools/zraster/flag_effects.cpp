@@ -118,6 +118,10 @@ void check_shading_flags(const RenderArguments& a) {
                          "shapes highlights, which --shading unlit does not draw");
     if (a.no_textures && a.texture_filter != RenderArguments{}.texture_filter)
         throw InputError("--texture-filter", "filters textures, which --no-textures turns off");
+    if (a.ortho && a.interpolation == "linear")
+        throw InputError("--interpolation",
+                         "linear: with --ortho every interpolation is linear on screen already "
+                         "(no perspective to correct for): it changes nothing");
 }
 
 }  // namespace
