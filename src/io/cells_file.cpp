@@ -12,6 +12,7 @@
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <memory>
 
 #include "io/input_file_check.hpp"
 #include "io/json_errors.hpp"
@@ -47,7 +48,8 @@ class CellsReader {
         known_fields(document, "", "the file",
                      {"zraster_cells", "meshes", "instances", "cells", "portals"});
         scene_.name = file_;
-        read_meshes(member(document, "meshes", "", json::value_t::object));
+        read_meshes(member(document, "meshes", "", json::value_t::object),
+                    document.contains("instances") ? document["instances"] : json());
         read_instances(member(document, "instances", "", json::value_t::array));
         read_cells(member(document, "cells", "", json::value_t::array));
         if (document.contains("portals"))
@@ -133,7 +135,19 @@ class CellsReader {
         return v;
     }
 
-    void read_meshes(const json& meshes) {
+    // Each mesh file is loaded once, however its name is spelled ("./x.obj", "d/../x.obj": 1,000
+    // spellings of a 100,000-triangle file were 1,000 loads and 3 GB), and the triangles the
+    // instances will place are counted as the files load: past max_triangles the file is refused
+    // before the rest are read.
+    void read_meshes(const json& meshes, const json& instances) {
+        std::map<std::string, std::uint64_t> uses;  // instances naming each mesh
+        if (instances.is_array())
+            for (const json& instance : instances)
+                if (instance.is_object() && instance.contains("mesh") &&
+                    instance["mesh"].is_string())
+                    ++uses[instance["mesh"].get<std::string>()];
+        std::map<std::filesystem::path, std::shared_ptr<LoadedScene>> by_file;
+        std::uint64_t placed = 0;  // triangles the instances place, of the meshes read so far
         for (const auto& [name, value] : meshes.items()) {
             const std::string at = "meshes." + name;
             if (!value.is_string()) fail(at, "expected a file name");
@@ -145,8 +159,25 @@ class CellsReader {
             if (check.verdict == ReferencePolicy::Verdict::Refused)
                 fail(at, check.reason + ": refused" + check.advice());
             if (is_cells_file(file)) fail(at, "a cells file cannot place another cells file");
-            LoadedScene& loaded = meshes_[name];
-            loaded.scene = load_scene(file, options_, &loaded.warnings, &files_read_);
+            std::error_code ec;
+            const std::filesystem::path canonical = std::filesystem::canonical(file, ec);
+            std::shared_ptr<LoadedScene>& loaded = by_file[ec ? file : canonical];
+            if (!loaded) {
+                loaded = std::make_shared<LoadedScene>();
+                loaded->scene = load_scene(file, options_, &loaded->warnings, &files_read_);
+            }
+            meshes_[name] = loaded;
+            const auto count = uses.find(name);
+            if (count == uses.end()) continue;
+            placed += std::min<std::uint64_t>(loaded->scene.triangle_count(),
+                                              ~std::uint64_t{0} / count->second) *
+                      count->second;
+            if (placed > options_.max_triangles)
+                throw LimitExceeded(file_, "max_triangles",
+                                    at + ": with the meshes before it, its " +
+                                        std::to_string(count->second) +
+                                        " instances place more than max_triangles (" +
+                                        std::to_string(options_.max_triangles) + ") triangles");
         }
     }
 
@@ -192,7 +223,7 @@ class CellsReader {
             over_limit("instances", std::to_string(instances.size()) +
                                         " instances, more than max_instances " +
                                         std::to_string(options_.max_instances));
-        std::map<std::string, std::uint32_t> mesh_base;
+        std::map<const LoadedScene*, std::uint32_t> mesh_base;
         for (std::size_t k = 0; k < instances.size(); ++k) {
             const std::string at = "instances[" + std::to_string(k) + "]";
             const json& instance = instances[k];
@@ -208,13 +239,15 @@ class CellsReader {
             const auto found = meshes_.find(mesh);
             if (found == meshes_.end())
                 fail(at + ".mesh", "no mesh named '" + mesh + "' in \"meshes\"");
-            const Scene& source = found->second.scene;
-            if (!mesh_base.contains(mesh)) mesh_base[mesh] = append_meshes(found->second);
+            const Scene& source = found->second->scene;
+            // (Names spelling one file share its meshes.)
+            const LoadedScene* key = found->second.get();
+            if (!mesh_base.contains(key)) mesh_base[key] = append_meshes(*found->second);
             const glm::mat4 placement = transform(instance, at);
             const auto first = std::uint32_t(scene_.instances.size());
             for (const Instance& placed : source.instances) {
                 Instance out = placed;
-                out.mesh += mesh_base[mesh];
+                out.mesh += mesh_base[key];
                 out.transform = placement * placed.transform;
                 out.name = source.instances.size() == 1 ? name : name + "/" + placed.name;
                 scene_.instances.push_back(std::move(out));
@@ -352,7 +385,7 @@ class CellsReader {
     Scene scene_;
     std::vector<std::string> warnings_;  // of the meshes placed
     CellGraph graph_;
-    std::map<std::string, LoadedScene> meshes_;
+    std::map<std::string, std::shared_ptr<LoadedScene>> meshes_;
     std::vector<std::filesystem::path> files_read_;  // by the mesh files' loaders
     std::vector<std::size_t> placed_by_;  // per scene instance: its element of "instances"
     std::map<std::string, std::pair<std::uint32_t, std::uint32_t>> instance_ranges_;

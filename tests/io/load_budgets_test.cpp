@@ -578,5 +578,38 @@ TEST(LoadBudgets, MaterialsThePrimitivesUseAreCounted) {
                                 "mostly the primitives' 5 materials: about 66730 bytes");
 }
 
+// A cells file's meshes: one file under many spellings is loaded once (1,000 spellings of a
+// 100,000-triangle file were 1,000 loads, 3 GB), and the triangles the instances place are
+// counted as the files load (refused before the rest are read).
+TEST(LoadBudgets, CellsMeshFilesAreLoadedOnceAndCountedAsTheyLoad) {
+    const auto dir = test::temp_dir("budgets-cells-spellings");
+    std::filesystem::create_directories(dir / "d");
+    test::write_bytes(dir / "t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n");
+    const char* const spellings[] = {"t.obj", "./t.obj", "d/../t.obj", "././d/../t.obj"};
+    const auto cells = [&] {
+        std::string names, instances, listed;
+        for (int k = 0; k < 4; ++k) {
+            const std::string comma = k ? "," : "", n = std::to_string(k);
+            names += comma + "\"m" + n + "\":\"" + spellings[k] + "\"";
+            instances += comma + "{\"name\":\"i" + n + "\",\"mesh\":\"m" + n + "\"}";
+            listed += comma + "\"i" + n + "\"";
+        }
+        return R"({"zraster_cells":1,"meshes":{)" + names + R"(},"instances":[)" + instances +
+               R"(],"cells":[{"name":"a","box":[[-5,-5,-5],[5,5,5]],"instances":[)" + listed +
+               "]}]}";
+    };
+    const auto path = dir / "s.cells.json";
+    test::write_bytes(path, cells());
+    const Scene scene = load_scene(path);
+    EXPECT_EQ(scene.meshes.size(), 1u);  // one file, four spellings
+    EXPECT_EQ(scene.instances.size(), 4u);
+    EXPECT_EQ(scene.triangle_count(), 8u);
+    LoadOptions few;
+    few.max_triangles = 5;  // the third instance's mesh passes it
+    test::expect_limit_exceeded([&] { load_scene(path, few); }, path, "max_triangles",
+                                "meshes.m2: with the meshes before it, its 1 instances place "
+                                "more than max_triangles (5) triangles");
+}
+
 }  // namespace
 }  // namespace zraster
