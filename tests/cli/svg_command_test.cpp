@@ -31,6 +31,27 @@ TEST(SvgCommand, WritesAnSvgAndReportsCounts) {
         EXPECT_EQ(entry.path().filename(), "out.svg");  // no temporary left behind
 }
 
+// Nothing in view, or every triangle facing away: the SVG is written, with a warning (as render
+// warns for the same frame); a drawing says nothing.
+TEST(SvgCommand, AnSvgOfTheBackgroundAloneWarns) {
+    const auto dir = temp_dir("svg-command-empty");
+    for (const char* arguments :
+         {"svg builtin:cube --size 16x16 -o out.svg --clip-plane 0,0,1,-100",
+          "svg sphere:500 --size 16x16 -o out.svg --eye 0,0,0.1 --target "
+          "0,0,-1 --order painter"}) {
+        SCOPED_TRACE(arguments);
+        const CommandResult r = run_zraster(arguments, dir);
+        EXPECT_EQ(r.exit_code, 0) << r.output;
+        EXPECT_NE(r.output.find("triangles is drawn (outside the view or the clip planes, or "
+                                "facing away): the SVG shows only the background\n"),
+                  std::string::npos)
+            << r.output;
+        EXPECT_NE(r.output.find("wrote out.svg: 0 polygons"), std::string::npos) << r.output;
+    }
+    const CommandResult drawn = run_zraster("svg builtin:cube --size 16x16 -o out.svg", dir);
+    EXPECT_EQ(drawn.output.find("warning"), std::string::npos) << drawn.output;
+}
+
 TEST(SvgCommand, PainterOrderWithEdgesAndCameraOptions) {
     const auto dir = temp_dir("svg-command-painter");
     const CommandResult r = run_zraster(

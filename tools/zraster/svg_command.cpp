@@ -100,6 +100,13 @@ int run_svg(const SvgArguments& a) {
     svg.merge_coplanar = !a.no_merge;
     SvgStats stats;
     const std::string document = render_svg(scene, options, svg, &stats);
+    // No polygon in view (a camera or clip planes that exclude everything, or every triangle
+    // facing away): legal, but rarely meant, as render warns for the same frame.
+    if (stats.polygons_in == 0 && scene.triangle_count() > 0)
+        fmt::print(stderr,
+                   "warning: {}: none of its {} triangles is drawn (outside the view or the clip "
+                   "planes, or facing away): the SVG shows only the background\n",
+                   scene.name, scene.triangle_count());
     outputs.add(a.output, std::vector<std::uint8_t>(document.begin(), document.end()));
     outputs.commit();
     fmt::print("wrote {}: {} polygons ({} after merging, {} paths), {} bytes\n", a.output,
