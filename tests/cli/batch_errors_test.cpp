@@ -50,6 +50,22 @@ TEST(BatchErrors, BrokenFilesAreErrorRecordsAndTheRestIsRendered) {
               (std::set<std::string>{"batch.jsonl", "good1.png", "good2.png"}));
 }
 
+// A frame's warnings (here: nothing in view) reach the record, as render prints them.
+TEST(BatchErrors, FrameWarningsAreInTheRecord) {
+    const auto dir = temp_dir("batch-frame-warnings");
+    write_box_stl(dir / "in" / "box.stl", 2);
+    const CommandResult r =
+        run_zraster("batch in -o out --size 16x16 --progress none --clip-plane 0,0,1,-100", dir);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    const auto records = records_by_input(read_log(dir / "out" / "batch.jsonl"));
+    const auto& warnings = records.at("in/box.stl").at("warnings");
+    ASSERT_EQ(warnings.size(), 1u) << warnings;
+    EXPECT_TRUE(
+        warnings[0].get<std::string>().starts_with("in/box.stl: none of its 12 triangles "
+                                                   "is in view"))
+        << warnings;
+}
+
 TEST(BatchErrors, FilesOverTheLimitsAreErrorRecords) {
     const auto dir = temp_dir("batch-limits");
     write_sphere_obj(dir / "in" / "small.obj", 6, 1);   // 24 triangles

@@ -6,10 +6,16 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <new>
 #include <span>
+#include <string>
+#include <string_view>
 #include <system_error>
+#include <vector>
 
 #include "command_line.hpp"
 #include "flag_effects.hpp"
@@ -17,6 +23,38 @@
 
 namespace zraster::cli {
 namespace {
+
+// A FILE* the frame prints its notes to, its warnings read back as lines (without "warning: ":
+// a record's warnings are warnings).
+class FrameNotes {
+  public:
+    FrameNotes() : file_(open_memstream(&buffer_, &size_)) {}
+    ~FrameNotes() {
+        if (file_ != nullptr) std::fclose(file_);
+        std::free(buffer_);
+    }
+    FrameNotes(const FrameNotes&) = delete;
+    FrameNotes& operator=(const FrameNotes&) = delete;
+    std::FILE* file() const { return file_; }
+    std::vector<std::string> lines() {
+        std::vector<std::string> out;
+        if (file_ == nullptr || std::fflush(file_) != 0) return out;
+        std::string_view text(buffer_, size_);
+        while (!text.empty()) {
+            const std::size_t end = std::min(text.find('\n'), text.size());
+            std::string_view line = text.substr(0, end);
+            text.remove_prefix(std::min(end + 1, text.size()));
+            // (Other notes, such as a debug view's legend, are not warnings.)
+            if (line.starts_with("warning: ")) out.emplace_back(line.substr(9));
+        }
+        return out;
+    }
+
+  private:
+    char* buffer_ = nullptr;
+    std::size_t size_ = 0;
+    std::FILE* file_;
+};
 
 using Clock = std::chrono::steady_clock;
 
@@ -151,8 +189,12 @@ BatchRecord run_batch_job(const BatchInput& input, const BatchSettings& settings
         double encode_ms = 0.0;
         for (const RenderArguments& view : views) {
             if (stopping(stop)) return dropped();
+            // The frame's warnings (nothing in view, every triangle facing away, ...) go to the
+            // record with the loader's, as render prints them.
+            FrameNotes notes;
             const RenderedFrame frame =
-                render_outputs(view, scene, outputs, nullptr, nullptr, renderer);
+                render_outputs(view, scene, outputs, nullptr, notes.file(), renderer);
+            for (std::string& line : notes.lines()) record.warnings.push_back(std::move(line));
             record.render_ms += frame.render_ms;
             encode_ms += frame.encode_ms;
         }
