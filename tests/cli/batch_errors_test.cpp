@@ -59,10 +59,9 @@ TEST(BatchErrors, FrameWarningsAreInTheRecord) {
     EXPECT_EQ(r.exit_code, 0) << r.output;
     const auto records = records_by_input(read_log(dir / "out" / "batch.jsonl"));
     const auto& warnings = records.at("in/box.stl").at("warnings");
-    ASSERT_EQ(warnings.size(), 1u) << warnings;
-    EXPECT_TRUE(
-        warnings[0].get<std::string>().starts_with("in/box.stl: none of its 12 triangles "
-                                                   "is in view"))
+    ASSERT_FALSE(warnings.empty());
+    EXPECT_TRUE(warnings.back().get<std::string>().starts_with(
+        "in/box.stl: none of its 12 triangles is in view"))
         << warnings;
 }
 
