@@ -65,6 +65,30 @@ TEST(BatchErrors, FrameWarningsAreInTheRecord) {
         << warnings;
 }
 
+// An input whose model reads a file another input's output goes to (m.mtl's texture t.png, t.obj's
+// image) fails, whichever job runs first: its image would otherwise depend on the order.
+TEST(BatchErrors, AModelReadingAnotherInputsOutputFailsInEveryOrder) {
+    for (const char* order : {"t.obj m.obj", "m.obj t.obj"}) {
+        SCOPED_TRACE(order);
+        const auto dir = temp_dir("batch-reads-an-output");
+        write_box_stl(dir / "t.stl", 1);
+        ASSERT_EQ(run_zraster("render t.stl --size 8x8 -o t.png", dir).exit_code, 0);
+        write_text(dir / "m.mtl", "newmtl t\nKd 1 1 1\nmap_Kd t.png\n");
+        write_text(dir / "m.obj",
+                   "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nusemtl t\nf 1/1 2/1 3/1\n");
+        write_text(dir / "t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        const CommandResult r = run_zraster(
+            std::string("batch ") + order + " -o . --size 16x16 --progress none --jobs 1", dir);
+        EXPECT_EQ(r.exit_code, 3) << r.output;
+        const auto records = records_by_input(read_log(dir / "batch.jsonl"));
+        EXPECT_EQ(records.at("t.obj").at("status"), "ok");
+        EXPECT_EQ(records.at("m.obj").at("error"),
+                  "m.obj: it reads " + std::filesystem::canonical(dir / "t.png").string() +
+                      ", which this batch writes as t.obj's output: give -o a folder apart from "
+                      "the models");
+    }
+}
+
 TEST(BatchErrors, FilesOverTheLimitsAreErrorRecords) {
     const auto dir = temp_dir("batch-limits");
     write_sphere_obj(dir / "in" / "small.obj", 6, 1);   // 24 triangles

@@ -181,8 +181,18 @@ BatchRecord run_batch_job(const BatchInput& input, const BatchSettings& settings
             throw;
         }
         record.load_ms = ms_since(load_start);
-        for (const std::filesystem::path& file : files_read)
+        for (const std::filesystem::path& file : files_read) {
             outputs.check_input(file, file_named_by(input.source.string()));
+            // Another input's output over a file this model reads: refused whichever job runs
+            // first (the texture would be this run's image, or the other's output refused).
+            const auto writer = settings.planned_writers->find(file);
+            if (writer != settings.planned_writers->end() &&
+                writer->second != input.source.string())
+                throw InputError(input.source.string(),
+                                 "it reads " + file.string() + ", which this batch writes as " +
+                                     writer->second +
+                                     "'s output: give -o a folder apart from the models");
+        }
         record.triangles = scene.triangle_count();
         check_batch_limits(scene, views, settings.limits);
 

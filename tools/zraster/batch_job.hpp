@@ -9,6 +9,7 @@
 
 #include <atomic>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -45,6 +46,10 @@ struct BatchSettings {
     bool force = false;  // render even when the outputs are up to date
     // What the log says earlier runs wrote (empty with force): see batch_history.hpp.
     std::shared_ptr<const BatchHistory> history = std::make_shared<BatchHistory>();
+    // Every output the batch plans (every input's, all shards'), weakly canonical, and the input
+    // that writes it: an input whose model reads one of them fails, whichever job runs first.
+    std::shared_ptr<const std::map<std::filesystem::path, std::string>> planned_writers =
+        std::make_shared<std::map<std::filesystem::path, std::string>>();
 };
 
 // The render arguments of one view of one input: `settings.render` with the view's camera, the

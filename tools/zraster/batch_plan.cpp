@@ -153,11 +153,19 @@ void plan_inputs(const BatchArguments& a, std::vector<std::string> paths, const 
     plan.log = batch_log_path(a);
     std::error_code ec;
     const std::filesystem::path log_file = std::filesystem::weakly_canonical(plan.log, ec);
+    auto writers = std::make_shared<std::map<std::filesystem::path, std::string>>();
     check_output_clashes(all, [&](const BatchInput& input) {
         std::vector<std::filesystem::path> outputs = planned_outputs(input, plan.settings);
         if (!ec) check_log_against(plan.log, log_file, input, outputs);
+        for (const std::filesystem::path& output : outputs) {
+            std::error_code canonical_ec;
+            const std::filesystem::path key =
+                std::filesystem::weakly_canonical(output, canonical_ec);
+            if (!canonical_ec) writers->emplace(key, input.source.string());
+        }
         return outputs;
     });
+    plan.settings.planned_writers = std::move(writers);
     std::copy_if(all.begin(), all.end(), std::back_inserter(plan.inputs),
                  [&](const BatchInput& input) { return in_shard(input, shard); });
 }
