@@ -6,6 +6,7 @@
 #include "io/lightwave_scene_check.hpp"
 #include "io/nesting_depth_check.hpp"
 #include "io/obj_number_token.hpp"
+#include "io/opengex_check.hpp"
 #include "io/text_util.hpp"
 #include "io/triangulation_budget.hpp"
 #include "io/zip_archive_check.hpp"
@@ -715,6 +716,13 @@ void check_declared_counts(const std::filesystem::path& path, std::uintmax_t fil
         return;
     }
     check_nesting_depth(path, head);
+    if (extension == ".ogex") {
+        std::ifstream in(path, std::ios::binary);
+        check_opengex(
+            std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()),
+            path.string());
+        return;
+    }
     if (head.starts_with(std::string_view("PK\x03\x04", 4))) {
         check_zip_archive(path, options);
         return;
