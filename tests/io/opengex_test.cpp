@@ -26,6 +26,14 @@ std::string indices(const std::string& data) {
     return "IndexArray { " + data + " }";
 }
 
+// `levels` Metric structures, each inside the one before.
+std::string nested(int levels) {
+    std::string s;
+    for (int k = 0; k < levels; ++k) s += "Metric { ";
+    for (int k = 0; k < levels; ++k) s += "} ";
+    return s;
+}
+
 TEST(OpenGex, MeshesAreCheckedBeforeTheImport) {
     const auto dir = test::temp_dir("opengex");
     const std::pair<std::string, std::string> cases[] = {
