@@ -61,10 +61,11 @@ constexpr Translation kTranslations[] = {
     {"mAngleInnerCone is larger than",
      "malformed {} file: a spot light's inner cone angle is larger than its outer one"},
     {"Empty node animation channel",
-     "malformed {} file: an animation channel without keys (a bone its own parent, or no "
-     "skeleton frame?)"},
+     "malformed {} file: an animation channel without keys (its bones or skeleton are "
+     "inconsistent: a bone its own parent, or no skeleton frame?)"},
     {"mNumChannels is 0",
-     "malformed {} file: an animation without channels (no nodes section, or no skeleton?)"},
+     "malformed {} file: an animation without channels (its bones or skeleton are "
+     "inconsistent: a missing or looping parent, or no skeleton?)"},
     {"Validation failed", "malformed {} file: the importer made an inconsistent scene of it"},
 };
 

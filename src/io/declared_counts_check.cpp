@@ -4,6 +4,7 @@
 #include "io/collada_values_check.hpp"
 #include "io/gltf_bounds_check.hpp"
 #include "io/lightwave_scene_check.hpp"
+#include "io/md5_ms3d_check.hpp"
 #include "io/nesting_depth_check.hpp"
 #include "io/obj_number_token.hpp"
 #include "io/opengex_check.hpp"
@@ -716,6 +717,15 @@ void check_declared_counts(const std::filesystem::path& path, std::uintmax_t fil
         return;
     }
     check_nesting_depth(path, head);
+    if (extension == ".md5mesh" || extension == ".ms3d") {
+        std::ifstream in(path, std::ios::binary);
+        const std::string bytes(std::istreambuf_iterator<char>(in), {});
+        if (extension == ".ms3d")
+            check_ms3d(bytes, path.string());
+        else
+            check_md5_mesh(bytes, path.string());
+        return;
+    }
     if (extension == ".ogex") {
         std::ifstream in(path, std::ios::binary);
         check_opengex(
