@@ -7,6 +7,7 @@
 #include "io/md5_ms3d_check.hpp"
 #include "io/nesting_depth_check.hpp"
 #include "io/obj_number_token.hpp"
+#include "io/ogre_xml_check.hpp"
 #include "io/opengex_check.hpp"
 #include "io/text_util.hpp"
 #include "io/triangulation_budget.hpp"
@@ -724,6 +725,12 @@ void check_declared_counts(const std::filesystem::path& path, std::uintmax_t fil
             check_ms3d(bytes, path.string());
         else
             check_md5_mesh(bytes, path.string());
+        return;
+    }
+    if (path.filename().string().ends_with(".mesh.xml") ||
+        (extension == ".xml" && head.find("<mesh") != std::string::npos)) {
+        std::ifstream in(path, std::ios::binary);
+        check_ogre_xml(std::string(std::istreambuf_iterator<char>(in), {}), path.string());
         return;
     }
     if (extension == ".ogex") {

@@ -265,5 +265,38 @@ TEST(LoaderNumbers, ColladaCountsStridesWordsAndUnitsAreChecked) {
     }
 }
 
+// Ogre XML meshes: numbers Assimp read a prefix of, counts it reserved (2,000,000,000 vertices:
+// out of memory) and face indices it did not check (drawn as garbage).
+TEST(LoaderNumbers, OgreXmlCountsIndicesAndCoordinatesAreChecked) {
+    const auto dir = test::temp_dir("numbers-ogre");
+    const auto mesh = [](const std::string& x, const std::string& count, const std::string& v3) {
+        return R"(<mesh><submeshes><submesh material="m" usesharedvertices="false"><faces count="1"><face v1="0" v2="1" v3=")" +
+               v3 + R"("/></faces><geometry vertexcount=")" + count +
+               R"("><vertexbuffer positions="true"><vertex><position x="0" y="0" z="0"/></vertex><vertex><position x=")" +
+               x +
+               R"(" y="0" z="0"/></vertex><vertex><position x="0" y="1" z="0"/></vertex></vertexbuffer></geometry></submesh></submeshes></mesh>)";
+    };
+    const std::pair<std::string, const char*> cases[] = {
+        {mesh("1", "3", "2"), ""},
+        {mesh("1,5", "3", "2"), "<position x=\"...\">: '1,5' is not a number"},
+        {mesh("1e5x", "3", "2"), "<position x=\"...\">: '1e5x' is not a number"},
+        {mesh("1", "2000000000", "2"), "<geometry vertexcount=\"2000000000\"> holds 3 vertices"},
+        {mesh("1", "3", "99"), "submesh 0: a face names vertex 99, its geometry has 3 vertices"},
+    };
+    int k = 0;
+    for (const auto& [text, cause] : cases) {
+        SCOPED_TRACE(cause);
+        const auto path = dir / ("m" + std::to_string(k++) + ".mesh.xml");
+        test::write_bytes(path, text);
+        for (const LoadIsolation isolation : kNumberIsolations) {
+            if (std::string(cause).empty())
+                EXPECT_EQ(load_scene(path, numbers_isolated(isolation)).triangle_count(), 1u);
+            else
+                test::expect_input_error([&] { load_scene(path, numbers_isolated(isolation)); },
+                                         path, std::string("malformed Ogre XML file: ") + cause);
+        }
+    }
+}
+
 }  // namespace
 }  // namespace zraster
