@@ -372,8 +372,8 @@ TEST(MalformedFormats, AssimpMessagesAreTranslated) {
                                      "larger than aiLight::mAngleOuterCone"),
               "malformed GLTF file: a spot light's inner cone angle is larger than its outer one");
     EXPECT_EQ(io::assimp_error_cause("m.smd", "Validation failed: Empty node animation channel"),
-              "malformed SMD file: an animation channel without keys (a bone its own parent, or "
-              "no skeleton frame?)");
+              "malformed SMD file: an animation channel without keys (its bones or skeleton are "
+              "inconsistent: a bone its own parent, or no skeleton frame?)");
     // Its source file and line cut; a number it cannot parse quoted alone, not the rest of the
     // file.
     EXPECT_EQ(io::assimp_error_cause("m.mdl", "MDL: bad header (File: MDLLoader.cpp Line: 424)"),
