@@ -722,6 +722,42 @@ row "COLLADA <unit meter=\"-1\"> (mirrored the model)" render unit.dae -o out.pn
 row "X Frames holding data references, read as 1,001 levels of nesting (crashed in process)" --load-in-process render frames.x -o out.png
 ln -sf loop-b.obj loop-a.obj; ln -sf loop-a.obj loop-b.obj
 row "model that is a loop of symbolic links" render loop-a.obj -o out.png
+# Formats the sixth hostile run reached: importers that crashed or read past their arrays, and
+# budgets a small input got round.
+python3 - <<'PY'
+import zipfile
+ct = ('<?xml version="1.0" encoding="UTF-8"?><Types xmlns="http://schemas.openxmlformats.org/'
+      'package/2006/content-types"><Default Extension="rels" ContentType="application/'
+      'vnd.openxmlformats-package.relationships+xml"/><Default Extension="model" ContentType='
+      '"application/vnd.ms-package.3dmanufacturing-3dmodel+xml"/></Types>')
+rels = ('<?xml version="1.0" encoding="UTF-8"?><Relationships xmlns="http://schemas.openxmlformats'
+        '.org/package/2006/relationships"><Relationship Target="/3D/3dmodel.model" Id="rel0" '
+        'Type="http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"/></Relationships>')
+mesh = ('<mesh><vertices><vertex x="0" y="0" z="0"/><vertex x="1" y="0" z="0"/><vertex x="0" '
+        'y="1" z="0"/></vertices><triangles><triangle v1="0" v2="1" v3="2"/></triangles></mesh>')
+model = ('<?xml version="1.0" encoding="UTF-8"?><model unit="millimeter" xmlns="http://schemas.'
+         'microsoft.com/3dmanufacturing/core/2015/02"><resources><object id="1" type="model">' +
+         mesh + '</object><object id="2" type="model"><components><component objectid="1"/>'
+         '<component objectid="2"/></components></object></resources><build><item objectid="2"/>'
+         '</build></model>')
+with zipfile.ZipFile('self.3mf', 'w', zipfile.ZIP_DEFLATED) as z:
+    z.writestr('[Content_Types].xml', ct)
+    z.writestr('_rels/.rels', rels)
+    z.writestr('3D/3dmodel.model', model)
+PY
+row "3MF component naming its own object (crashed the importer in process)" --load-in-process render self.3mf -o out.png
+printf 'GeometryNode { ObjectRef {ref {$g}} }\nGeometryObject $g { Mesh { VertexArray (attrib = "position") { float[3] { {0, 0, 0}, {1, 0, 0}, {0, 1, 0} } } IndexArray { unsigned_int32[3] { {0, 1, 3} } } } }\n' >past.ogex
+row "OpenGEX index equal to the vertex count (read from past the array)" render past.ogex -o out.png
+printf 'MD5Version 10\ncommandline ""\nnumJoints 1\nnumMeshes 1\njoints {\n"root" -1 ( 0 0 0 ) ( 0 0 0 )\n}\nmesh {\nshader "x"\nnumverts 3\nvert 0 ( 0 0 ) 0 1\nvert 1 ( 0 0 ) 1 1\nvert 2 ( 0 0 ) 2 1\nnumtris 1\ntri 0 0 1 -1\nnumweights 3\nweight 0 0 1 ( 0 0 0 )\nweight 1 0 1 ( 1 0 0 )\nweight 2 0 1 ( 0 1 0 )\n}\n' >neg.md5mesh
+row "MD5 triangle index -1 (an assertion in the importer)" render neg.md5mesh -o out.png
+python3 -c "
+n = 1001
+open('chain.smd', 'w').write('version 1\nnodes\n' + ''.join('%d \"b%d\" %d\n' % (i, i, i - 1) for i in range(n)) + 'end\nskeleton\ntime 0\n0 0 0 0 0 0 0\nend\ntriangles\nmat\n0 0 0 0 0 0 1 0 0\n0 1 0 0 0 0 1 1 0\n0 0 1 0 0 0 1 0 1\nend\n')"
+row "SMD of 1,001 bones in a chain (100,000 crashed the importer)" render chain.smd -o out.png
+printf '{"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],"meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0}]}],"materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0,"extensions":{"KHR_texture_transform":{"scale":[1]}}}}}],"textures":[{"source":0}],"images":[{"uri":"t.png"}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],"bufferViews":[{"buffer":0,"byteLength":36}],"buffers":[{"uri":"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA","byteLength":36}]}' >transform.gltf
+row "glTF KHR_texture_transform scale of one number (the importer aborted)" render transform.gltf -o out.png
+row "--max-load-seconds nan (accepted as the default)" render builtin:cube --max-load-seconds nan -o out.png
+row "bench of 10^6 frames of 4096x4096 (ran for hours, printing nothing)" bench builtin:cube --size 4096x4096 --frames 1000000
 rm -rf out.d out.png z.npy
 echo
 echo "$n inputs; $failures broke the contract (exit 2, one line, nothing left)."
