@@ -19,6 +19,17 @@ bool is_space(char c) {
     return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';
 }
 
+// The line at `at` (without its newline), blanks trimmed at both ends; `at` moves past it.
+std::string_view take_line(std::string_view text, std::size_t& at) {
+    std::size_t end = text.find('\n', at);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view line = text.substr(at, end - at);
+    at = end + 1;
+    while (!line.empty() && is_space(line.front())) line.remove_prefix(1);
+    while (!line.empty() && is_space(line.back())) line.remove_suffix(1);
+    return line;
+}
+
 // Tokens as the X importer's text reader splits them: whitespace and comments ("//", "#" to the
 // end of the line) separate, and ; , { } are tokens of their own.
 class XTokens {
@@ -98,11 +109,7 @@ std::size_t ac3d_object_depth(std::string_view text) {
     std::vector<std::uint64_t> remaining;
     std::size_t deepest = 0;
     for (std::size_t at = 0; at < text.size();) {
-        std::size_t end = text.find('\n', at);
-        if (end == std::string_view::npos) end = text.size();
-        std::string_view line = text.substr(at, end - at);
-        at = end + 1;
-        while (!line.empty() && is_space(line.front())) line.remove_prefix(1);
+        std::string_view line = take_line(text, at);
         if (line.starts_with("OBJECT")) {
             if (!remaining.empty() && remaining.back() > 0) --remaining.back();
             deepest = std::max(deepest, remaining.size() + 1);
@@ -128,12 +135,7 @@ std::size_t smd_bone_depth(std::string_view text, const std::string& file) {
     std::vector<std::int64_t> order;
     bool in_nodes = false;
     for (std::size_t at = 0; at < text.size();) {
-        std::size_t end = text.find('\n', at);
-        if (end == std::string_view::npos) end = text.size();
-        std::string_view line = text.substr(at, end - at);
-        at = end + 1;
-        while (!line.empty() && is_space(line.front())) line.remove_prefix(1);
-        while (!line.empty() && is_space(line.back())) line.remove_suffix(1);
+        const std::string_view line = take_line(text, at);
         if (!in_nodes) {
             in_nodes = line == "nodes";
             continue;
