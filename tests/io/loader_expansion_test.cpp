@@ -367,8 +367,10 @@ TEST(LoaderExpansion, SmdBonesNestedPastAThousandLevelsAreRefused) {
         LoadOptions o;
         o.isolation = isolation;
         EXPECT_EQ(load_scene(dir / "ok.smd", o).triangle_count(), 1u);
-        for (const auto& [name, cause] : refused)
-            test::expect_input_error([&] { load_scene(dir / name, o); }, dir / name, cause);
+        for (const auto& [name, cause] : refused) {
+            const auto path = dir / name;  // (a structured binding is not captured before C++23)
+            test::expect_input_error([&] { load_scene(path, o); }, path, cause);
+        }
     }
 }
 
