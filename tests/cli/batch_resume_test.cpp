@@ -119,6 +119,19 @@ TEST(BatchResume, OnlyOutputsTheLogRecordsAreUpToDateAndTheirModelsFilesCount) {
     EXPECT_NE(no_log.output.find("2 ok, 0 failed, 0 skipped"), std::string::npos) << no_log.output;
 }
 
+// A folder made where an output was is not an output: the rerun renders the file (and fails
+// writing over the folder) instead of skipping it.
+TEST(BatchResume, AFolderWhereAnOutputWasIsNotUpToDate) {
+    const auto dir = temp_dir("batch-rerun-folder");
+    write_text(dir / "m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    ASSERT_EQ(run_zraster("batch m.obj -o out --size 8x8 --progress none", dir).exit_code, 0);
+    std::filesystem::remove(dir / "out" / "m.png");
+    std::filesystem::create_directory(dir / "out" / "m.png");
+    const CommandResult r = run_zraster("batch m.obj -o out --size 8x8 --progress none", dir);
+    EXPECT_EQ(r.exit_code, 3) << r.output;
+    EXPECT_NE(r.output.find("0 ok, 1 failed, 0 skipped"), std::string::npos) << r.output;
+}
+
 TEST(BatchResume, AFileTheBatchDidNotWriteIsNeverTakenForAnOutput) {
     // m.obj's image would be ./m.png, which is its own texture: refused, and refused again on
     // every rerun however new the texture is (it was never an output).

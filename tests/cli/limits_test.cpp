@@ -105,11 +105,14 @@ TEST(CliLimits, NumbersOutOfRange) {
     expect_refused(dir, "bench builtin:cube --frames 1 --warmup 2147483647",
                    "zraster: --warmup: must be in 0..1000000, not 2147483647");
     expect_refused(dir, "bench builtin:cube --frames 2000000", "zraster: --frames: must be in");
-    // Within range, but 10^6 frames of 4096x4096: all their pixels past bench's 2^34.
+    // Within range, but more work than one run takes: 10^6 frames of 4096x4096, or of 1x1 (each
+    // frame has its fixed costs).
     expect_refused(dir, "bench builtin:cube --size 4096x4096 --frames 1000000",
-                   "zraster: --frames: 1000000 frames and 2 warmup frames of 4096x4096 are "
-                   "16777249554432 pixels in all, more than bench's 2^34 (17179869184): fewer "
-                   "frames or a smaller --size");
+                   "zraster: --frames: 1000000 frames and 2 warmup frames of 4096x4096 with 12 "
+                   "triangles are more work than bench takes in one run (at most 1020 frames of "
+                   "these): fewer frames or a smaller --size");
+    expect_refused(dir, "bench builtin:cube --size 1x1 --frames 1000000",
+                   "(at most 343508 frames of these)");
     const CommandResult bench = run_limited(
         "bench builtin:cube --frames 1 --warmup 0 --threads 2147483647 --size 16x16", dir);
     EXPECT_EQ(bench.exit_code, 0) << bench.output;

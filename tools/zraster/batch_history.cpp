@@ -98,6 +98,8 @@ bool outputs_up_to_date(const std::filesystem::path& input,
         newest = std::max(newest, time);
     }
     for (const std::filesystem::path& output : outputs) {
+        // (A folder made where the image was is no output: render it again.)
+        if (!std::filesystem::is_regular_file(output, ec)) return false;
         const auto output_time = std::filesystem::last_write_time(output, ec);
         if (ec || !(output_time > newest)) return false;
     }

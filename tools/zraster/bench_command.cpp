@@ -85,6 +85,24 @@ std::vector<std::uint8_t> encode_frame(const RenderTargets& t, BenchMode mode) {
     return encode_png8(t.width, t.height, 3, rgb);
 }
 
+// All the frames' work within 2^34 units (about 20 s): a pixel or a triangle one unit each, and
+// 50,000 a frame for its fixed costs (about 30 us: a million 1x1 frames took 30 s). bench prints
+// nothing until it is done; 10^6 frames of 4096x4096 ran for hours.
+void check_bench_work(const BenchArguments& a, std::uint64_t pixels, std::uint64_t triangles) {
+    constexpr std::uint64_t kMaxBenchWork = std::uint64_t{1} << 34;
+    constexpr std::uint64_t kFrameWork = 50'000;
+    const std::uint64_t frames = std::uint64_t(a.frames) + std::uint64_t(a.warmup);
+    const std::uint64_t per_frame = pixels + triangles + kFrameWork;
+    if (per_frame > kMaxBenchWork / frames)
+        throw InputError("--frames", std::to_string(a.frames) + " frames and " +
+                                         std::to_string(a.warmup) + " warmup frames of " + a.size +
+                                         " with " + std::to_string(triangles) +
+                                         " triangles are more work than bench takes in one run "
+                                         "(at most " +
+                                         std::to_string(kMaxBenchWork / per_frame) +
+                                         " frames of these): fewer frames or a smaller --size");
+}
+
 }  // namespace
 
 int run_bench(const BenchArguments& a) {
@@ -110,17 +128,6 @@ int run_bench(const BenchArguments& a) {
                                        " pixels, more than the renderer's limit of " +
                                        std::to_string(RenderLimits{}.max_pixels) +
                                        " (render --max-pixels raises it; bench does not)");
-    // All the frames' pixels within 2^34 (a thousand 4K frames; about 10 s of a small scene):
-    // bench prints nothing until it is done, and 10^6 frames of 4096x4096 ran for hours.
-    constexpr std::uint64_t kMaxBenchPixelFrames = std::uint64_t{1} << 34;
-    const std::uint64_t pixel_frames = pixels * std::uint64_t(a.frames + a.warmup);
-    if (pixel_frames > kMaxBenchPixelFrames)
-        throw InputError("--frames", std::to_string(a.frames) + " frames and " +
-                                         std::to_string(a.warmup) + " warmup frames of " + a.size +
-                                         " are " + std::to_string(pixel_frames) +
-                                         " pixels in all, more than bench's 2^34 (" +
-                                         std::to_string(kMaxBenchPixelFrames) +
-                                         "): fewer frames or a smaller --size");
     const int threads = capped_threads("--threads", checked_thread_count("--threads", a.threads));
     const std::uint64_t max_frame_bytes =
         parse_byte_size("--max-frame-bytes", a.max_frame_bytes_text);
@@ -131,6 +138,7 @@ int run_bench(const BenchArguments& a) {
 
     // Loading, shading setup and framing stay outside the timed loop, as in glbench.
     Scene scene = load_scene_or_procedural(a.scene, nullptr, &outputs);
+    check_bench_work(a, pixels, scene.triangle_count());
     apply_bench_shading(scene, mode);
     RenderOptions options = bench_render_options(mode, size.x, size.y, threads, !a.no_cull);
     options.hierarchical_z = !a.no_hierarchical_z;

@@ -7,12 +7,15 @@
 #include <mutex>
 #include <string>
 
+#include <unistd.h>
+
 namespace zraster::cli {
 namespace {
 
 class StderrProgress final : public ProgressReporter {
   public:
     void report(const char* stage, double fraction) override {
+        if (!terminal_) return;
         const std::lock_guard lock(mutex_);
         const Clock::time_point now = Clock::now();
         if (now - start_ < kQuiet) return;
@@ -26,6 +29,9 @@ class StderrProgress final : public ProgressReporter {
   private:
     using Clock = std::chrono::steady_clock;
     static constexpr std::chrono::seconds kQuiet{2}, kEvery{2};
+    // Only for a person watching: on a pipe or a file (a service, a script, a log) a refusal
+    // stays the one line it is.
+    const bool terminal_ = ::isatty(STDERR_FILENO) == 1;
     std::mutex mutex_;
     const Clock::time_point start_ = Clock::now();
     Clock::time_point last_;

@@ -4,8 +4,9 @@
 
 namespace zraster::cli {
 
-// The command's reporter (one per process): silent for the first two seconds of a run, then a
-// line on stderr at most every two seconds, and when the stage changes.
+// The command's reporter (one per process): when stderr is a terminal, silent for the first two
+// seconds of a run, then a line on stderr at most every two seconds, and when the stage changes;
+// silent when stderr is not a terminal (a refusal stays one line for the programs reading it).
 ProgressReporter* stderr_progress();
 
 }  // namespace zraster::cli
