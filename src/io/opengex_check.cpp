@@ -133,6 +133,7 @@ bool is_data_type(std::string_view s) {
 
 // A data list: its elements (subarrays, or single values) and each element's values.
 struct DataList {
+    std::string_view type;  // float, unsigned_int32, ...
     std::size_t width = 0;  // [N], 0 without
     std::vector<std::vector<std::string_view>> elements;
     std::size_t line = 1;
@@ -233,6 +234,7 @@ void check_opengex(std::string_view text, const std::string& file) {
             // A data list: type [N] name? { ... }
             DataList list;
             list.line = identifier.line;
+            list.type = identifier.text;
             if (t.kind == Kind::Punct && t.text == "[") {
                 t = tokens.next();
                 std::size_t width = 0;
@@ -259,6 +261,25 @@ void check_opengex(std::string_view text, const std::string& file) {
                         current.push_back(t.text);
                 }
             }
+            // Debian's Assimp reads vertex arrays of float and index arrays of unsigned_int32
+            // only (other types failed its parser's assertions or were read as zeros), and
+            // light colors of 4 numbers (3 failed an assertion).
+            const std::string_view owner =
+                open.empty() ? std::string_view() : open.back().identifier;
+            if (owner == "VertexArray" && list.type != "float" && list.type != "float32" &&
+                list.type != "f")
+                throw refuse(list.line, "a vertex array of " + std::string(list.type) +
+                                            ": the importer reads float arrays only");
+            if (owner == "IndexArray" && list.type != "unsigned_int32" && list.type != "u32" &&
+                list.type != "uint32")
+                throw refuse(list.line, "an index array of " + std::string(list.type) +
+                                            ": the importer reads unsigned_int32 indices only");
+            const bool in_light = std::any_of(open.begin(), open.end(), [](const Structure& o) {
+                return o.identifier == "LightObject";
+            });
+            if (owner == "Color" && in_light && list.width != 4)
+                throw refuse(list.line, "a light's Color of " + std::to_string(list.width) +
+                                            " numbers: the importer reads 4 (r g b a)");
             Structure* m = mesh();
             if (m != nullptr && !open.empty() && open.back().identifier == "VertexArray")
                 m->vertex_arrays.push_back(

@@ -56,6 +56,14 @@ TEST(OpenGex, MeshesAreCheckedBeforeTheImport) {
         {opengex(kPositions + indices("unsigned_int32[3] { {0, 1, 2} }"), "$nosuch"),
          "line 1: a reference to $nosuch, which no structure is named"},
         {nested(1001), "line 1: structures nest more than 1000 levels deep"},
+        // Types the importer does not read: its parser asserted, or read zeros.
+        {opengex(kPositions + indices("unsigned_int16[3] { {0, 1, 2} }")),
+         "line 3: an index array of unsigned_int16: the importer reads unsigned_int32 indices "
+         "only"},
+        {opengex(
+             R"(VertexArray (attrib = "position") { double[3] { {0, 0, 0}, {1, 0, 0}, {0, 1, 0} } })" +
+             indices("unsigned_int32[3] { {0, 1, 2} }")),
+         "line 3: a vertex array of double: the importer reads float arrays only"},
     };
     int k = 0;
     for (const auto& [text, cause] : cases) {
