@@ -2,6 +2,7 @@
 // files claiming 2^40 faces are refused quickly with exit status 2, one line naming the option or
 // file, no output file, and (outside sanitizer builds, whose shadow memory needs terabytes of
 // address space) within a 2 GiB address-space limit: no big allocation was attempted.
+#include <zraster/image_io.hpp>
 #include <zraster/render.hpp>
 #include <zraster/scenes.hpp>
 
@@ -258,6 +259,11 @@ TEST(CliLimits, AFrameWithNothingInViewWarns) {
          "alpha cutoff, or vertex colors of alpha 0): the image shows only the background "
          "(--alpha-mode opaque draws them opaque)\n"},
         {"render clear.obj -o a.png --size 32x32 --alpha-mode opaque", ""},
+        // A texture of alpha 0 everywhere: drawn fully transparent, not slivers.
+        {"render see-through.obj -o a.png --size 32x32",
+         "warning: see-through.obj: its 1 triangles in view are drawn fully transparent (their "
+         "textures' or colors' alpha is 0 where they cover pixels): the image shows only the "
+         "background (--alpha-mode opaque draws them opaque)\n"},
         // Every fragment cut by the alpha test: vertex colors of alpha 0.5, a MASK cutoff of 0.9.
         {"render mask.gltf -o a.png --size 32x32",
          "warning: mask.gltf: every fragment of its 1 triangles in view was cut out by the alpha "
@@ -277,6 +283,12 @@ TEST(CliLimits, AFrameWithNothingInViewWarns) {
                              R"(AAAAAAAAAAgD8AAAAAAACAPwAAAAAAAAAAAAAAPwAAgD8AAAAAAAAAAAAAAD8AAI)"
                              R"(A/AAAAAAAAAAAAAAA/","byteLength":84}]})");
     write(dir / "sliver.obj", "v 0 0 0\nv 1 1.1 0\nv 1 1.1001 0\nf 1 2 3\n");
+    const std::vector<std::uint8_t> clear_texels(2 * 2 * 4, 0);
+    write_png8(dir / "clear.png", 2, 2, 4, clear_texels);
+    write(dir / "see-through.mtl", "newmtl t\nKd 1 1 1\nmap_Kd clear.png\n");
+    write(dir / "see-through.obj",
+          "mtllib see-through.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 "
+          "0\nvt 0 1\nusemtl t\nf 1/1 2/2 3/3\n");
     write(dir / "clear.mtl", "newmtl m\nKd 1 0 0\nd 0\n");
     write(dir / "clear.obj", "mtllib clear.mtl\nusemtl m\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     for (const auto& [arguments, message] : cases) {

@@ -162,14 +162,25 @@ RenderedFrame render_outputs(const RenderArguments& a, const Scene& scene, Outpu
              !a.no_depth_test && s.triangles_rasterized > 0 && s.fragments_passed == 0 &&
              s.fragments_blended == 0 && s.fragments_alpha_discarded == 0 &&
              check_flags_take_effect(a).empty()) {
+        // Drawn opaque without the depth test: nothing means slivers; drawn opaque with it,
+        // something means the surfaces' alpha hid them (a texture or colors of alpha 0).
         RenderOptions probe = options;
-        probe.depth_test = false;
         probe.progress = nullptr;
-        if (render(scene, probe).stats.fragments_passed == 0)
+        probe.alpha_mode = MaterialAlpha::Opaque;
+        probe.depth_test = false;
+        const bool covered = render(scene, probe).stats.fragments_passed > 0;
+        probe.depth_test = true;
+        if (!covered)
             fmt::print(notes,
                        "warning: {}: its {} triangles in view cover no pixel center (too thin or "
                        "too small for --size {}x{}): the image shows only the background\n",
                        scene.name, s.triangles_rasterized, options.width, options.height);
+        else if (a.alpha_mode != "opaque" && render(scene, probe).stats.fragments_passed > 0)
+            fmt::print(notes,
+                       "warning: {}: its {} triangles in view are drawn fully transparent (their "
+                       "textures' or colors' alpha is 0 where they cover pixels): the image "
+                       "shows only the background (--alpha-mode opaque draws them opaque)\n",
+                       scene.name, s.triangles_rasterized);
         else
             fmt::print(notes,
                        "warning: {}: {} triangles in view, but none of their fragments passed "
