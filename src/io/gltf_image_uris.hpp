@@ -1,6 +1,6 @@
 // glTF image URIs Assimp drops without a word: an empty one, a data: URI that is not
-// "data:<type>;base64,<data>" (it decodes base64 only), and one of no data. The texture is then missing, as a file
-// that is not found is, and warned about the same way.
+// "data:<type>;base64,<data>" (it decodes base64 only), and one of no data. The texture is then
+// missing, as a file that is not found is, and warned about the same way.
 #pragma once
 #include <filesystem>
 #include <string>

@@ -67,8 +67,7 @@ std::string parse_error_cause(const std::string& text) {
 
 // The first argument, in the order given, that the command did not take: an option of another
 // command ("svg --aa 4"), or a word no option reads.
-std::string unexpected_arguments_cause(const CLI::App& app,
-                                       const std::vector<std::string>& given) {
+std::string unexpected_arguments_cause(const CLI::App& app, const std::vector<std::string>& given) {
     std::string command = "zraster";
     for (const CLI::App* sub : app.get_subcommands()) command += " " + sub->get_name();
     const std::vector<std::string> remaining = app.remaining(true);
