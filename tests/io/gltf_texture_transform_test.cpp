@@ -34,9 +34,6 @@ std::string transformed_gltf(const std::string& transform) {
            test::base64(bytes) + R"(","byteLength":60}]})";
 }
 
-constexpr LoadIsolation kTransformIsolations[] = {LoadIsolation::InProcess,
-                                                  LoadIsolation::WorkerProcess};
-
 TEST(GltfTextureTransform, TheBaseColorTransformMovesTheTextureCoordinates) {
     const auto dir = test::temp_dir("gltf-texture-transform");
     // (t.png is missing: a warning; the coordinates are what is checked.)
@@ -58,7 +55,7 @@ TEST(GltfTextureTransform, TheBaseColorTransformMovesTheTextureCoordinates) {
         SCOPED_TRACE(c.transform);
         const auto path = dir / ("m" + std::to_string(k++) + ".gltf");
         test::write_bytes(path, transformed_gltf(c.transform));
-        for (const LoadIsolation isolation : kTransformIsolations) {
+        for (const LoadIsolation isolation : test::kBothIsolations) {
             LoadOptions o;
             o.isolation = isolation;
             std::vector<std::string> warnings;
@@ -96,11 +93,7 @@ TEST(GltfTextureTransform, MalformedMembersAreRefusedBeforeTheImport) {
         SCOPED_TRACE(transform);
         const auto path = dir / ("m" + std::to_string(k++) + ".gltf");
         test::write_bytes(path, transformed_gltf(transform));
-        for (const LoadIsolation isolation : kTransformIsolations) {
-            LoadOptions o;
-            o.isolation = isolation;
-            test::expect_input_error([&] { load_scene(path, o); }, path, cause);
-        }
+        test::expect_refused_both_ways(path, cause);
     }
 }
 

@@ -1,6 +1,7 @@
 // Helpers for the io tests: fixture files and checks on InputError.
 #pragma once
 #include <zraster/error.hpp>
+#include <zraster/load.hpp>
 
 #include <gtest/gtest.h>
 
@@ -82,6 +83,21 @@ void expect_limit_exceeded(Action&& action, const std::filesystem::path& file,
         expect_input_error([&] { throw e; }, file, cause);
     } catch (const InputError& e) {
         ADD_FAILURE() << "an InputError, not a LimitExceeded: " << e.what();
+    }
+}
+
+// Both ways a model file is loaded: in this process, and through the importer's worker process.
+inline constexpr LoadIsolation kBothIsolations[] = {LoadIsolation::InProcess,
+                                                    LoadIsolation::WorkerProcess};
+
+// load_scene(path, options) refuses the file with an InputError whose cause contains `cause`, in
+// process and through the worker alike (expect_input_error).
+inline void expect_refused_both_ways(const std::filesystem::path& path, std::string_view cause,
+                                     LoadOptions options = {}) {
+    for (const LoadIsolation isolation : kBothIsolations) {
+        SCOPED_TRACE(isolation == LoadIsolation::InProcess ? "in process" : "worker");
+        options.isolation = isolation;
+        expect_input_error([&] { load_scene(path, options); }, path, cause);
     }
 }
 

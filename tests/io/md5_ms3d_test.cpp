@@ -12,9 +12,6 @@
 namespace zraster {
 namespace {
 
-constexpr LoadIsolation kGameIsolations[] = {LoadIsolation::InProcess,
-                                             LoadIsolation::WorkerProcess};
-
 std::string md5(const std::string& verts, const std::string& tri) {
     return "MD5Version 10\ncommandline \"\"\nnumJoints 1\nnumMeshes 1\njoints {\n\"root\" -1 ( 0 0 "
            "0 ) ( 0 0 0 )\n}\nmesh {\nshader \"x\"\nnumverts 3\n" +
@@ -41,11 +38,7 @@ TEST(GameFormats, Md5IndicesAndWeightsAreCheckedBeforeTheImport) {
         SCOPED_TRACE(cause);
         const auto path = dir / ("m" + std::to_string(k++) + ".md5mesh");
         test::write_bytes(path, text);
-        for (const LoadIsolation isolation : kGameIsolations) {
-            LoadOptions o;
-            o.isolation = isolation;
-            test::expect_input_error([&] { load_scene(path, o); }, path, cause);
-        }
+        test::expect_refused_both_ways(path, cause);
     }
 }
 
@@ -83,11 +76,7 @@ TEST(GameFormats, Ms3dTrianglesAreCheckedBeforeTheImport) {
         SCOPED_TRACE(cause);
         const auto path = dir / ("m" + std::to_string(k++) + ".ms3d");
         test::write_bytes(path, bytes);
-        for (const LoadIsolation isolation : kGameIsolations) {
-            LoadOptions o;
-            o.isolation = isolation;
-            test::expect_input_error([&] { load_scene(path, o); }, path, cause);
-        }
+        test::expect_refused_both_ways(path, cause);
     }
 }
 

@@ -61,8 +61,6 @@ std::string component_object(int id, const std::vector<int>& children) {
     return s + "</components></object>";
 }
 
-constexpr LoadIsolation kZipIsolations[] = {LoadIsolation::InProcess, LoadIsolation::WorkerProcess};
-
 TEST(ZipArchives, ThreeMfComponentGraphsAreCheckedBeforeTheImport) {
     const auto dir = test::temp_dir("zip-3mf");
     write_3mf(dir / "ok.3mf", mesh_object(1) + component_object(2, {1, 1}),
@@ -78,7 +76,7 @@ TEST(ZipArchives, ThreeMfComponentGraphsAreCheckedBeforeTheImport) {
     std::string items;
     for (int k = 0; k < 101; ++k) items += R"(<item objectid="1"/>)";
     write_3mf(dir / "items.3mf", mesh_object(1), items);
-    for (const LoadIsolation isolation : kZipIsolations) {
+    for (const LoadIsolation isolation : test::kBothIsolations) {
         LoadOptions o;
         o.isolation = isolation;
         EXPECT_EQ(load_scene(dir / "ok.3mf", o).triangle_count(), 2u);
@@ -105,7 +103,7 @@ TEST(ZipArchives, MembersInflatingPastTheGeometryBudgetAreRefusedUnread) {
     // 3 MiB of spaces before the model: deflated to a few KB.
     write_3mf(dir / "wide.3mf", std::string(3 << 20, ' ') + mesh_object(1),
               R"(<item objectid="1"/>)");
-    for (const LoadIsolation isolation : kZipIsolations) {
+    for (const LoadIsolation isolation : test::kBothIsolations) {
         LoadOptions o;
         o.isolation = isolation;
         EXPECT_EQ(load_scene(dir / "wide.3mf", o).triangle_count(), 1u);
@@ -124,12 +122,8 @@ TEST(ZipArchives, ColladaInsideAZaeIsCheckedAsADaeFile) {
     write_zip(
         dir / "m.zae",
         {{"manifest.xml", R"(<?xml version="1.0"?><dae_root>./m.dae</dae_root>)"}, {"m.dae", dae}});
-    for (const LoadIsolation isolation : kZipIsolations) {
-        LoadOptions o;
-        o.isolation = isolation;
-        test::expect_input_error([&] { load_scene(dir / "m.zae", o); }, dir / "m.zae",
-                                 R"(malformed COLLADA file: <float_array id="pa"> has count="-1")");
-    }
+    test::expect_refused_both_ways(
+        dir / "m.zae", R"(malformed COLLADA file: <float_array id="pa"> has count="-1")");
 }
 
 }  // namespace
