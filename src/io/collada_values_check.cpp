@@ -37,13 +37,6 @@ std::optional<std::uint64_t> whole_number(std::string_view s) {
     return value;
 }
 
-// A word or attribute as quoted in a message: one line, at most 40 characters.
-std::string excerpt(std::string_view text) {
-    std::string shown = one_line(text.substr(0, 40));
-    if (text.size() > 40) shown += "...";
-    return shown;
-}
-
 // The array's name in messages: <float_array id="positions">.
 std::string array_label(std::string_view element, const std::string& id) {
     return "<" + std::string(element) + (id.empty() ? "" : " id=\"" + id + "\"") + ">";
@@ -141,18 +134,18 @@ void check_collada_values(std::string_view doc, const std::string& file) {
             const std::string count_text = xml_attribute(tag.attributes, "count");
             const std::optional<std::uint64_t> count = whole_number(count_text);
             if (!count)
-                throw refuse(label + " has count=\"" + excerpt(count_text) +
+                throw refuse(label + " has count=\"" + quoted_word(count_text) +
                              "\", not a whole number of values");
             std::uint64_t words = 0;
             if (!tag.empty)
-                words = for_each_word(
-                    xml_text_at(doc, tag.after), [&](std::string_view word, std::uint64_t n) {
-                        // (xs:float's INF and NaN are among the number words.)
-                        if (floats ? is_number_word(word) : is_index_word(word)) return;
-                        throw refuse(label + " value " + std::to_string(n) + ": " +
-                                     (floats ? not_a_number(word)
-                                             : "'" + excerpt(word) + "' is not a whole number"));
-                    });
+                words = for_each_word(xml_text_at(doc, tag.after), [&](std::string_view word,
+                                                                       std::uint64_t n) {
+                    // (xs:float's INF and NaN are among the number words.)
+                    if (floats ? is_number_word(word) : is_index_word(word)) return;
+                    throw refuse(label + " value " + std::to_string(n) + ": " +
+                                 (floats ? not_a_number(word)
+                                         : "'" + quoted_word(word) + "' is not a whole number"));
+                });
             if (words < *count)
                 throw refuse(label + " has count=\"" + std::to_string(*count) + "\" but " +
                              std::to_string(words) + " values");
@@ -161,14 +154,14 @@ void check_collada_values(std::string_view doc, const std::string& file) {
         } else if (tag.name == "accessor") {
             Accessor a;
             a.source = xml_attribute(tag.attributes, "source");
-            a.label = "<accessor source=\"" + excerpt(a.source) + "\">";
+            a.label = "<accessor source=\"" + quoted_word(a.source) + "\">";
             if (a.source.starts_with('#')) a.source.erase(0, 1);
             for (const char* name : {"count", "offset", "stride"}) {
                 const std::string text = xml_attribute(tag.attributes, name);
                 if (text.empty() && std::string_view(name) != "count") continue;
                 const std::optional<std::uint64_t> value = whole_number(text);
                 if (!value)
-                    throw refuse(a.label + " has " + name + "=\"" + excerpt(text) +
+                    throw refuse(a.label + " has " + name + "=\"" + quoted_word(text) +
                                  "\", not a whole number");
                 (std::string_view(name) == "count"    ? a.count
                  : std::string_view(name) == "offset" ? a.offset
@@ -185,7 +178,7 @@ void check_collada_values(std::string_view doc, const std::string& file) {
             const std::string text = xml_attribute(tag.attributes, "count");
             const std::optional<std::uint64_t> count = whole_number(text);
             if (!count)
-                throw refuse(prim.label + " has count=\"" + excerpt(text) +
+                throw refuse(prim.label + " has count=\"" + quoted_word(text) +
                              "\", not a whole number");
             prim.count = *count;
             if (tag.empty)
@@ -197,7 +190,7 @@ void check_collada_values(std::string_view doc, const std::string& file) {
             if (text.empty()) return;  // (required by the schema; the importer takes 0)
             const std::optional<std::uint64_t> offset = whole_number(text);
             if (!offset)
-                throw refuse(primitive->label + " has an <input> of offset=\"" + excerpt(text) +
+                throw refuse(primitive->label + " has an <input> of offset=\"" + quoted_word(text) +
                              "\", not a whole number");
             primitive->max_offset = std::max(primitive->max_offset, *offset);
         } else if (primitive && (tag.name == "p" || tag.name == "vcount") && !tag.empty) {
@@ -207,7 +200,7 @@ void check_collada_values(std::string_view doc, const std::string& file) {
                     const std::optional<std::uint64_t> value = whole_number(word);
                     if (!value)
                         throw refuse(primitive->label + " <" + std::string(tag.name) + "> word " +
-                                     std::to_string(n) + " '" + excerpt(word) +
+                                     std::to_string(n) + " '" + quoted_word(word) +
                                      "' is not a whole number");
                     if (indices)
                         primitive->largest_index = std::max(primitive->largest_index, *value);
@@ -233,7 +226,7 @@ void check_collada_values(std::string_view doc, const std::string& file) {
             // (Past the largest float the importer's single-precision scale is infinite.)
             if (ec != std::errc() || end != t.data() + t.size() || !(meter > 0) ||
                 meter > std::numeric_limits<float>::max())
-                throw refuse("<unit meter=\"" + excerpt(text) +
+                throw refuse("<unit meter=\"" + quoted_word(text) +
                              "\"> is not a positive finite length in meters (single precision)");
         } else if (tag.name == "up_axis" && !tag.empty) {
             up_axis_text = tag.after;
@@ -243,7 +236,7 @@ void check_collada_values(std::string_view doc, const std::string& file) {
     if (up_axis_text) {
         const std::string_view axis = trimmed(xml_text_at(doc, *up_axis_text));
         if (axis != "X_UP" && axis != "Y_UP" && axis != "Z_UP")
-            throw refuse("<up_axis> '" + excerpt(axis) + "' is none of X_UP, Y_UP, Z_UP");
+            throw refuse("<up_axis> '" + quoted_word(axis) + "' is none of X_UP, Y_UP, Z_UP");
     }
     // An index addresses an element of an accessor, which lies within one array.
     if (!array_counts.empty() && primitives_largest_index >= largest_array)

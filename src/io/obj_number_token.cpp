@@ -46,10 +46,14 @@ bool is_index_word(std::string_view w) {
     return !w.empty() && std::all_of(w.begin(), w.end(), digit);
 }
 
-std::string not_a_number(std::string_view word) {
+std::string quoted_word(std::string_view word) {
     std::string shown = one_line(word.substr(0, 40));
     if (word.size() > 40) shown += "...";
-    return "'" + shown + "' is not a number";
+    return shown;
+}
+
+std::string not_a_number(std::string_view word) {
+    return "'" + quoted_word(word) + "' is not a number";
 }
 
 }  // namespace zraster::io

@@ -16,7 +16,10 @@ bool is_number_word(std::string_view word);
 // A face index: an optional sign and digits, however many (range is checked separately).
 bool is_index_word(std::string_view word);
 
-// "'WORD' is not a number", the word cut to 40 characters and made printable.
+// A word of a file as a message quotes it: cut to 40 characters ("..." after) and made printable.
+std::string quoted_word(std::string_view word);
+
+// "'WORD' is not a number", the word as quoted_word shows it.
 std::string not_a_number(std::string_view word);
 
 }  // namespace zraster::io
